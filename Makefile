@@ -1,0 +1,37 @@
+# One obvious way to run things. FreeCAD's Python is the system interpreter: never the
+# `python3` that happens to be first on PATH.
+PYTHON := /usr/bin/python3
+DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis xvfb xauth
+OUT := build
+
+.PHONY: deps model-test-1 model-test-2 test benchmark models install
+
+# Install the Debian packages that are missing (as root, or through sudo).
+deps:
+	@missing=$$(for p in $(DEBS); do dpkg -s $$p >/dev/null 2>&1 || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  sudo=$$([ "$$(id -u)" -eq 0 ] || echo sudo); \
+	  echo "installing:" $$missing; \
+	  $$sudo apt-get update && DEBIAN_FRONTEND=noninteractive $$sudo apt-get install -y --no-install-recommends $$missing; \
+	fi
+
+# The main job: model test 1, headless, to a results CSV, its summary and a plot.
+model-test-1 model-test-2: model-test-%: deps
+	$(PYTHON) -m abm_workbench engage --job resources/models/model_test_$*/job.json \
+	  --stock resources/models/model_test_$*/stock.json --toolpath resources/models/model_test_$*/toolpath.csv \
+	  --out $(OUT)/model_test_$*/results.csv --plot $(OUT)/model_test_$*/results.png
+
+test: deps
+	$(PYTHON) -m pytest -q tests
+
+benchmark: deps
+	$(PYTHON) benchmarks/engine_throughput.py
+
+# Re-make the bundled model tests from their design surfaces.
+models: deps
+	$(PYTHON) resources/models/make_model_tests.py
+
+# Development install: link the checkout into FreeCAD's user Mod folder.
+install:
+	mkdir -p $(HOME)/.local/share/FreeCAD/Mod
+	ln -sfn $(CURDIR) $(HOME)/.local/share/FreeCAD/Mod/ABM

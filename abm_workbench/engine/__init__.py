@@ -1,0 +1,18 @@
+"""The ABM engine: pure numpy (and scipy), never FreeCAD.
+
+Inputs are validated dataclasses (:class:`Tool`, :class:`Staircase`, :class:`Toolpath`,
+:class:`CutSettings`); :func:`engage` returns an :class:`Engagement` of arrays over
+CL points × rotation angles. Lengths in mm, angles in degrees.
+"""
+
+from .engagement import CASES, SURFACES, Engagement, cut_thickness, edge_lines, engage, segment_letter
+from .frames import angles_to_axis, axis_to_angles, rotation_matrix
+from .model import CutSettings, Staircase, Tool, Toolpath
+from .polynomials import k_coefficients
+from .walls import Wall
+
+__all__ = [
+    "CASES", "SURFACES", "CutSettings", "Engagement", "Staircase", "Tool", "Toolpath", "Wall",
+    "angles_to_axis", "axis_to_angles", "cut_thickness", "edge_lines", "engage", "k_coefficients",
+    "rotation_matrix", "segment_letter",
+]

@@ -1,0 +1,401 @@
+"""Engagement of a flat-end mill's side cutting edge with staircase stock, for a whole pass.
+
+For every CL point i and rotation angle φ_k the edge is the segment
+S(l) = T_i + R_i·(R_t sin φ_k, R_t cos φ_k, l), 0 ≤ l ≤ L (notes §2). It is clipped to the
+stock's bounding box, cut at every crossing with the section tops (Z-cylindrical), the
+straight walls (X-cylindrical) and the curved walls (curve boundary, real roots of the
+composed quintic), and each piece between crossings is classified by the height field at its
+midpoint (notes §5). LEP is the start of the first inside piece, UEP the end of the last, and
+the length of cut the total inside length. All instants of a chunk of CL points are solved in
+one set of array operations; only the walls (few) are looped over.
+
+Lengths are in mm, φ in degrees at the interface.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .frames import rotation_matrix
+from .model import CutSettings, Staircase, Tool, Toolpath
+from .polynomials import compose_linear, horner, monotone_root_unit, real_roots_unit
+from .walls import Wall
+from .tolerances import LENGTH_EPS, PARALLEL_EPS
+
+#: Names of the surfaces that can hold the UEP; results store indices into this tuple.
+SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side")
+#: Names of the Table 1 cases; results store indices into this tuple.
+CASES = ("none", "A.1", "A.2", "A.3", "A.4", "B.1", "B.2", "B.3", "B.4", "B.5", "B.6", "multi")
+
+_NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = range(6)
+_CASE = {name: i for i, name in enumerate(CASES)}
+
+
+@dataclass(frozen=True)
+class Engagement:
+    """Cut geometry of a pass: m CL points × p rotation angles.
+
+    phi: (p,) rotation angles (deg). h: (p,) cut thickness f·sin φ·cos α (mm, 0 where sin φ < 0).
+    Per instant, (m, p): lep_l, uep_l (mm along the edge, NaN without engagement),
+    length (total inside length, mm), pieces (inside runs), uep_surface (index into SURFACES),
+    uep_section (section whose material holds the UEP, −1 none), uep_wall (wall index j of the
+    UEP's wall, 0 and n for the x limits, −1 otherwise), case (index into CASES),
+    segment (engagement segment 0 = A, 1 = B, … per CL point, −1 without engagement),
+    area (length·h, mm²); lep_xyz, uep_xyz: (m, p, 3) (mm, NaN without engagement).
+    Per CL point, (m,): depth_of_cut (z span from lowest LEP to highest UEP, NaN if none).
+    """
+
+    phi: np.ndarray
+    h: np.ndarray
+    lep_l: np.ndarray
+    uep_l: np.ndarray
+    length: np.ndarray
+    pieces: np.ndarray
+    uep_surface: np.ndarray
+    uep_section: np.ndarray
+    uep_wall: np.ndarray
+    case: np.ndarray
+    segment: np.ndarray
+    area: np.ndarray
+    lep_xyz: np.ndarray
+    uep_xyz: np.ndarray
+    depth_of_cut: np.ndarray
+
+    @property
+    def shape(self):
+        """(m, p): CL points × rotation angles."""
+        return self.length.shape
+
+    @property
+    def engaged(self):
+        """(m, p) bool: the edge is in the stock at this instant."""
+        return self.length > 0.0
+
+    def surface_names(self):
+        """(m, p) str array of UEP surface names."""
+        return np.asarray(SURFACES)[self.uep_surface]
+
+    def case_names(self):
+        """(m, p) str array of Table 1 case names."""
+        return np.asarray(CASES)[self.case]
+
+    def segments(self, cl):
+        """Engagement segments of CL point `cl`, in φ order.
+
+        Returns a list of dicts: letter, phi_start, phi_end (deg), surface, section, wall, and
+        the mean and max length of cut (mm) over the segment.
+        """
+        rows = []
+        seg = self.segment[cl]
+        for s in range(int(seg.max()) + 1 if seg.size else 0):
+            k = np.flatnonzero(seg == s)
+            rows.append(
+                {
+                    "letter": segment_letter(s),
+                    "phi_start": float(self.phi[k[0]]),
+                    "phi_end": float(self.phi[k[-1]]),
+                    "surface": SURFACES[self.uep_surface[cl, k[0]]],
+                    "section": int(self.uep_section[cl, k[0]]),
+                    "wall": int(self.uep_wall[cl, k[0]]),
+                    "mean_length": float(self.length[cl, k].mean()),
+                    "max_length": float(self.length[cl, k].max()),
+                }
+            )
+        return rows
+
+
+def segment_letter(index):
+    """0 -> 'A', 25 -> 'Z', 26 -> 'AA', … (spreadsheet-column style)."""
+    letters = ""
+    index = int(index) + 1
+    while index:
+        index, rest = divmod(index - 1, 26)
+        letters = chr(ord("A") + rest) + letters
+    return letters
+
+
+def cut_thickness(phi_deg, feed_per_tooth, inclination_deg):
+    """h = f·sin φ·cos α (mm) for φ (p,) in degrees; 0 where sin φ < 0 (the flute is not cutting)."""
+    h = feed_per_tooth * np.sin(np.radians(phi_deg)) * np.cos(np.radians(inclination_deg))
+    return np.maximum(h, 0.0)
+
+
+def edge_lines(toolpath, tool, phi_deg):
+    """Base points (m, p, 3) at l = 0 and unit directions (m, 3) of the cutting edge lines (mm)."""
+    rot = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
+    phi = np.radians(np.asarray(phi_deg, dtype=float))
+    radial = np.sin(phi)[None, :, None] * rot[:, None, :, 0] + np.cos(phi)[None, :, None] * rot[:, None, :, 1]
+    return toolpath.cl[:, None, :] + tool.radius * radial, rot[:, :, 2]
+
+
+def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettings, *, chunk_instants=1 << 15,
+           progress=None):
+    """Cut geometry of every CL point × every rotation angle of `settings.phi`.
+
+    Work is done in chunks of CL points holding about `chunk_instants` instants each, so
+    memory stays bounded. `progress(done, total)` is called after each chunk, if given.
+    Returns an Engagement.
+    """
+    phi = settings.phi
+    m, p = len(toolpath), phi.size
+    out = {
+        name: np.full((m, p), fill, dtype=dtype)
+        for name, fill, dtype in (
+            ("lep_l", np.nan, float), ("uep_l", np.nan, float), ("length", 0.0, float),
+            ("pieces", 0, np.int32), ("uep_surface", _NONE, np.int8), ("uep_section", -1, np.int32),
+            ("uep_wall", -1, np.int32), ("case", 0, np.int8),
+        )
+    }
+    lep_xyz, uep_xyz = np.full((m, p, 3), np.nan), np.full((m, p, 3), np.nan)
+    step = max(1, int(chunk_instants) // max(p, 1))
+    for start in range(0, m, step):
+        stop = min(m, start + step)
+        base, direction = edge_lines(_slice(toolpath, start, stop), tool, phi)
+        n_cl = stop - start
+        x0, y0, z0 = (base[..., i].reshape(-1) for i in range(3))
+        d = np.repeat(direction, p, axis=0)
+        chunk = _solve_lines(stock, tool.flute_length, x0, y0, z0, d[:, 0], d[:, 1], d[:, 2])
+        for name in out:
+            out[name][start:stop] = chunk[name].reshape(n_cl, p)
+        lep_xyz[start:stop] = (base + chunk["lep_l"].reshape(n_cl, p, 1) * direction[:, None, :])
+        uep_xyz[start:stop] = (base + chunk["uep_l"].reshape(n_cl, p, 1) * direction[:, None, :])
+        if progress is not None:
+            progress(stop, m)
+    h = cut_thickness(phi, settings.feed_per_tooth, settings.inclination)
+    engaged = out["length"] > 0.0
+    with np.errstate(invalid="ignore"):
+        top = np.where(engaged, uep_xyz[..., 2], -np.inf).max(axis=1)
+        bottom = np.where(engaged, lep_xyz[..., 2], np.inf).min(axis=1)
+    depth = np.where(engaged.any(axis=1), top - bottom, np.nan)
+    return Engagement(
+        phi=phi, h=h, area=out["length"] * h, lep_xyz=lep_xyz, uep_xyz=uep_xyz, depth_of_cut=depth,
+        segment=_segments(engaged, out["uep_surface"], out["uep_section"], out["uep_wall"]), **out,
+    )
+
+
+def _slice(toolpath, start, stop):
+    """CL points start:stop of a toolpath, without re-validating them."""
+    part = object.__new__(Toolpath)
+    for name in ("cl", "theta_a", "theta_b"):
+        object.__setattr__(part, name, getattr(toolpath, name)[start:stop])
+    object.__setattr__(part, "cc", None)
+    return part
+
+
+def _clip(stock, length, x0, y0, z0, dx, dy, dz):
+    """Part [lo, hi] of each edge line inside the stock's bounding box, and what bounds it at hi.
+
+    Returns lo, hi (N,) in mm along the edge, and at hi the surface (index into SURFACES:
+    flute end, x-limit wall, y-limit side, top) and wall index (0 or n at the x limits, −1
+    otherwise). The edge rises (dz > 0), so the base can only bound it at lo.
+    """
+    n = x0.size
+    lo, hi = np.zeros(n), np.full(n, float(length))
+    hi_surface = np.full(n, _FLUTE_END)
+    hi_wall = np.full(n, -1)
+    limits = (
+        (x0, dx, stock.x_min, stock.x_max, _STRAIGHT, (0, stock.n_sections)),
+        (y0, dy, stock.y_min, stock.y_max, _SIDE, (-1, -1)),
+        (z0, dz, stock.base_z, float(stock.z_top.max()), _TOP, (-1, -1)),
+    )
+    for start, slope, low, high, surface, (wall_low, wall_high) in limits:
+        flat = np.abs(slope) <= PARALLEL_EPS
+        with np.errstate(divide="ignore", invalid="ignore"):
+            at_low, at_high = (low - start) / slope, (high - start) / slope
+        rising = slope > 0.0
+        enter = np.where(flat, np.where((start >= low) & (start <= high), -np.inf, np.inf),
+                         np.where(rising, at_low, at_high))
+        leave = np.where(flat, np.inf, np.where(rising, at_high, at_low))
+        lo = np.maximum(lo, enter)
+        sooner = leave < hi
+        hi = np.where(sooner, leave, hi)
+        hi_surface = np.where(sooner, surface, hi_surface)
+        hi_wall = np.where(sooner, np.where(rising, wall_high, wall_low), hi_wall)
+    return lo, hi, hi_surface, hi_wall
+
+
+def _quintic_table(stock, walls):
+    """Coefficients (P, 6), y_mid (P,) and y_half (P,) of the quintic walls with indices `walls` (P,)."""
+    table = [(w.coefficients, w.y_mid, w.y_half) if isinstance(w, Wall) else (np.zeros(6), 0.0, 1.0)
+             for w in stock.walls]
+    coefficients = np.array([t[0] for t in table])[walls]
+    return coefficients, np.array([t[1] for t in table])[walls], np.array([t[2] for t in table])[walls]
+
+
+def _wall_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
+    """Edge parameters l (P, 5) where line rows[i] crosses wall walls[i] inside [lo, hi], NaN-padded.
+
+    The curve boundary of the notes §4 on the unit interval l = lo + u·(hi − lo): the wall's
+    quintic composed with the line (a straight wall is a constant polynomial and needs no
+    special case). Where the wall's slope bound proves the composition monotone, one
+    bracketed root; otherwise all real roots by derivative isolation.
+    """
+    coefficients, y_mid, y_half = _quintic_table(stock, walls)
+    lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
+    span = hi - lo
+    k = compose_linear(coefficients, (y0 + dy * lo - y_mid) / y_half, dy * span / y_half)
+    k[:, 0] -= x0 + dx * lo
+    k[:, 1] -= dx * span
+    monotone = np.abs(dy) * stock.wall_slopes[walls] < np.abs(dx)
+    u = np.full((rows.size, 5), np.nan)
+    u[monotone, 0] = monotone_root_unit(k[monotone])
+    if not monotone.all():
+        u[~monotone] = real_roots_unit(k[~monotone])
+    return lo[:, None] + u * span[:, None]
+
+
+def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
+    """Engagement of N edge lines S(l) = (x0, y0, z0) + l·(dx, dy, dz), 0 ≤ l ≤ length.
+
+    Returns a dict of (N,) arrays: lep_l, uep_l, length, pieces, uep_surface, uep_section,
+    uep_wall, case.
+    """
+    n = x0.size
+    lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
+    live = hi > lo
+    seg_x = np.stack([x0 + dx * lo, x0 + dx * hi])
+    seg_min, seg_max = seg_x.min(axis=0), seg_x.max(axis=0)
+    band_min, band_max = stock.wall_bands[:, 0], stock.wall_bands[:, 1]
+    candidate = live[:, None] & (seg_max[:, None] >= band_min) & (seg_min[:, None] <= band_max)
+    left_of = (seg_min[:, None] > band_max).sum(axis=1)
+
+    # Breakpoints: the clipped ends, the section tops, the wall crossings. Each column also
+    # carries the surface it lies on and its wall index, looked up at the UEP only.
+    with np.errstate(divide="ignore", invalid="ignore"):
+        tops = (stock.z_top[None, :] - z0[:, None]) / dz[:, None]
+    tops = np.where((tops > lo[:, None]) & (tops < hi[:, None]), tops, np.nan)
+    crossed = ~np.isnan(tops).all(axis=0)
+    columns = [lo[:, None], hi[:, None], tops[:, crossed]]
+    surfaces = [np.full((n, 1), _NONE), hi_surface[:, None], np.full((n, int(crossed.sum())), _TOP)]
+    wall_ids = [np.full((n, 1), -1), hi_wall[:, None], np.full((n, int(crossed.sum())), -1)]
+    quintic = np.array([isinstance(w, Wall) for w in stock.walls], dtype=bool)
+    rows, walls = np.nonzero(candidate & quintic)
+    rank = np.arange(rows.size) - np.searchsorted(rows, rows)
+    per_row = int(rank.max()) + 1 if rows.size else 0
+    if rows.size:
+        found = _wall_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy)
+        found = found[:, ~np.isnan(found).all(axis=0)]
+        crossing = np.full((n, per_row, found.shape[1]), np.nan)
+        crossing[rows, rank] = found
+        columns.append(crossing.reshape(n, -1))
+        kind = np.where(np.array([w.is_straight for w in stock.walls])[walls], _STRAIGHT, _CURVED)
+        for target, value in ((surfaces, kind), (wall_ids, walls + 1)):
+            block = np.full(crossing.shape, -1)
+            block[rows, rank] = value[:, None]
+            target.append(block.reshape(n, -1))
+    exact = [(j, np.flatnonzero(candidate[:, j])) for j in np.flatnonzero(~quintic)]
+    for j, on in exact:
+        wall = stock.walls[j]
+        found = wall.crossings(x0[on], y0[on], dx[on], dy[on], lo[on], hi[on])
+        crossing = np.full((n, found.shape[1]), np.nan)
+        crossing[on] = found
+        columns.append(crossing)
+        surfaces.append(np.full(crossing.shape, _STRAIGHT if wall.is_straight else _CURVED))
+        wall_ids.append(np.full(crossing.shape, j + 1))
+    at = np.concatenate(columns, axis=1)
+    at[~live] = np.nan
+    order = np.argsort(at, axis=1)
+    order = order[:, : max(int((~np.isnan(at)).sum(axis=1).max()), 2)]
+    at = np.take_along_axis(at, order, axis=1)
+
+    # Classify each piece between consecutive breakpoints at its midpoint.
+    start, end = at[:, :-1], at[:, 1:]
+    real = end - start > LENGTH_EPS
+    mid = 0.5 * (start + end)
+    section = left_of[:, None] + _walls_left_of(stock, rows, walls, rank, per_row, x0, y0, dx, dy, mid)
+    for j, on in exact:
+        with np.errstate(invalid="ignore"):
+            section[on] += x0[on, None] + dx[on, None] * mid[on] >= stock.walls[j].x_at(y0[on, None] + dy[on, None] * mid[on])
+    with np.errstate(invalid="ignore"):
+        inside = real & (z0[:, None] + dz[:, None] * mid <= stock.z_top[np.clip(section, 0, stock.n_sections - 1)])
+
+    # Runs of inside pieces: zero-length pieces neither start nor break a run.
+    column = np.arange(inside.shape[1])
+    last_real = np.maximum.accumulate(np.where(real, column, -1), axis=1)
+    state = np.where(last_real >= 0, np.take_along_axis(inside, np.maximum(last_real, 0), axis=1), False)
+    before = np.concatenate([np.zeros((n, 1), dtype=bool), state[:, :-1]], axis=1)
+    pieces = (inside & ~before).sum(axis=1)
+    any_inside = inside.any(axis=1)
+    first = np.argmax(inside, axis=1)
+    last = inside.shape[1] - 1 - np.argmax(inside[:, ::-1], axis=1)
+    rows = np.arange(n)
+    lep = np.where(any_inside, start[rows, first], np.nan)
+    uep = np.where(any_inside, end[rows, last], np.nan)
+    uep_column = order[rows, last + 1]
+    surface = np.where(any_inside, np.concatenate(surfaces, axis=1)[rows, uep_column], _NONE)
+    wall_index = np.where(any_inside, np.concatenate(wall_ids, axis=1)[rows, uep_column], -1)
+    uep_section = np.where(any_inside, section[rows, last], -1)
+    inside_section = np.where(inside, section, -1)
+    case = _table1_case(stock, x0, y0, dx, inside_section, any_inside, pieces, wall_index)
+    return {
+        "lep_l": lep, "uep_l": uep, "length": np.where(inside, end - start, 0.0).sum(axis=1),
+        "pieces": pieces, "uep_surface": surface, "uep_section": uep_section, "uep_wall": wall_index, "case": case,
+    }
+
+
+def _walls_left_of(stock, rows, walls, rank, width, x0, y0, dx, dy, along):
+    """(N, W) count of the candidate quintic walls (rows[i], walls[i]) with W_j(y) ≤ x at the points `along` (N, W)."""
+    n = x0.size
+    if rows.size == 0:
+        return np.zeros(along.shape, dtype=np.intp)
+    coefficients, y_mid, y_half = _quintic_table(stock, walls)
+    l = along[rows]
+    t = (y0[rows, None] + dy[rows, None] * l - y_mid[:, None]) / y_half[:, None]
+    with np.errstate(invalid="ignore"):
+        left = x0[rows, None] + dx[rows, None] * l >= horner(coefficients[:, None, :], t)
+    block = np.zeros((n, width, along.shape[1]), dtype=np.intp)
+    block[rows, rank] = left
+    return block.sum(axis=1)
+
+
+def _table1_case(stock, x0, y0, dx, inside_section, engaged, pieces, uep_wall):
+    """Table 1 case of each line (index into CASES); see docs/ENGINE.md for the rules.
+
+    Sec. A holds the edge's bottom point; Sec. B is the next section when the edge leans
+    towards +x (θ_B > 0), the previous one when it leans towards −x.
+    """
+    n_sec = stock.n_sections
+    a = np.clip(stock.section_at(x0, y0), 0, n_sec - 1)
+    lean = np.where(dx > PARALLEL_EPS, 1, np.where(dx < -PARALLEL_EPS, -1, 0))
+    b = a + lean
+    has_b = (lean != 0) & (b >= 0) & (b < n_sec)
+    b = np.clip(b, 0, n_sec - 1)
+    z_a, z_b = stock.z_top[a], stock.z_top[b]
+    in_a = (inside_section == a[:, None]).any(axis=1)
+    in_b = has_b & (inside_section == b[:, None]).any(axis=1)
+    other = ((inside_section >= 0) & (inside_section != a[:, None]) & ~(has_b[:, None] & (inside_section == b[:, None]))).any(axis=1)
+    forward = lean > 0
+    between = np.maximum(a, b)  # index of the wall between A and B
+    down, up = has_b & (z_a > z_b), has_b & (z_a < z_b)
+    c = _CASE
+    return np.select(
+        [
+            ~engaged & up,
+            ~engaged,
+            other,
+            in_a & in_b & down,
+            in_a & in_b & up & (pieces == 1),
+            in_a & in_b & up,
+            in_a & ~in_b & down & (uep_wall == between),
+            ~in_a & in_b & up,
+        ],
+        [
+            c["B.5"],
+            c["none"],
+            c["multi"],
+            np.where(forward, c["A.2"], c["A.1"]),
+            np.where(forward, c["B.1"], c["B.2"]),
+            np.where(forward, c["B.3"], c["B.4"]),
+            np.where(forward, c["A.4"], c["A.3"]),
+            c["B.6"],
+        ],
+        default=c["none"],
+    ).astype(np.int8)
+
+
+def _segments(engaged, surface, section, wall):
+    """(m, p) engagement segment index per CL point: runs of equal UEP surface, section and wall."""
+    key = np.where(engaged, (surface.astype(np.int64) * 4096 + section) * 4096 + wall + 1, -1)
+    previous = np.concatenate([np.full((key.shape[0], 1), -2), key[:, :-1]], axis=1)
+    starts = engaged & (key != previous)
+    return np.where(engaged, np.cumsum(starts, axis=1) - 1, -1).astype(np.int32)

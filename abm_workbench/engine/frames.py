@@ -1,0 +1,61 @@
+"""Tool frames: the rotation R = Rx(θ_A)·Ry(θ_B) and tool-axis vectors (notes §2).
+
+Angles are in degrees here as at every interface. The tool axis is w = R·e_z =
+(sin θ_B, −sin θ_A cos θ_B, cos θ_A cos θ_B); an axis with k ≤ 0 points down or sideways
+and has no (θ_A, θ_B) with |θ_A|, |θ_B| < 90°.
+"""
+
+import numpy as np
+
+
+def rotation_matrix(theta_a, theta_b):
+    """R = Rx(θ_A)·Ry(θ_B) for angles in degrees: (...,) and (...,) -> (..., 3, 3)."""
+    ta = np.radians(np.asarray(theta_a, dtype=float))
+    tb = np.radians(np.asarray(theta_b, dtype=float))
+    ta, tb = np.broadcast_arrays(ta, tb)
+    ca, sa, cb, sb = np.cos(ta), np.sin(ta), np.cos(tb), np.sin(tb)
+    zero = np.zeros_like(ca)
+    return np.stack(
+        [
+            np.stack([cb, zero, sb], axis=-1),
+            np.stack([sa * sb, ca, -sa * cb], axis=-1),
+            np.stack([-ca * sb, sa, ca * cb], axis=-1),
+        ],
+        axis=-2,
+    )
+
+
+def angles_to_axis(theta_a, theta_b):
+    """Unit tool axes (..., 3) for angles θ_A, θ_B in degrees (...,)."""
+    ta = np.radians(np.asarray(theta_a, dtype=float))
+    tb = np.radians(np.asarray(theta_b, dtype=float))
+    ta, tb = np.broadcast_arrays(ta, tb)
+    return np.stack([np.sin(tb), -np.sin(ta) * np.cos(tb), np.cos(ta) * np.cos(tb)], axis=-1)
+
+
+def axis_to_angles(axes):
+    """(θ_A, θ_B) in degrees, each (m,), for tool-axis vectors (m, 3), normalised here.
+
+    Raises ValueError naming the first row whose axis is zero, not finite, or has k ≤ 0
+    (a tool pointing down or sideways cannot be written as Rx(θ_A)·Ry(θ_B)·e_z with
+    |θ_A|, |θ_B| < 90°).
+    """
+    axes = np.asarray(axes, dtype=float)
+    if axes.ndim != 2 or axes.shape[1] != 3:
+        raise ValueError(f"tool axes must have shape (m, 3), got {axes.shape}")
+    norm = np.linalg.norm(axes, axis=1)
+    bad = ~np.isfinite(norm) | (norm == 0.0)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(f"tool axis {i}: {axes[i].tolist()} is zero or not finite")
+    unit = axes / norm[:, None]
+    down = unit[:, 2] <= 0.0
+    if down.any():
+        i = int(np.flatnonzero(down)[0])
+        raise ValueError(
+            f"tool axis {i}: {axes[i].tolist()} has k <= 0; only axes pointing up "
+            "(k > 0) can be expressed as (theta_a, theta_b)"
+        )
+    theta_b = np.degrees(np.arcsin(np.clip(unit[:, 0], -1.0, 1.0)))
+    theta_a = np.degrees(np.arctan2(-unit[:, 1], unit[:, 2]))
+    return theta_a, theta_b

@@ -1,0 +1,265 @@
+"""The engine's inputs: tool, staircase stock, toolpath and cut settings (mm, degrees).
+
+Each is a frozen dataclass validated on construction; a bad value raises ValueError naming
+the field (and the section or CL index) that is wrong.
+"""
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+import numpy as np
+
+from .frames import axis_to_angles
+from .tolerances import WALL_CHECK_SAMPLES
+from .walls import SplineWall, Wall
+
+
+def _number(name, value, *, positive=False):
+    """A finite real number as float; ValueError naming `name` otherwise."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number, got {value!r}") from None
+    if isinstance(value, bool) or not np.isfinite(number):
+        raise ValueError(f"{name} must be a finite number, got {value!r}")
+    if positive and number <= 0.0:
+        raise ValueError(f"{name} must be positive, got {value!r}")
+    return number
+
+
+def _array(name, value, shape):
+    """A finite float array of the given shape (None in `shape` matches any length)."""
+    try:
+        array = np.array(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be an array of numbers") from None
+    if array.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, array.shape)):
+        expected = "(" + ", ".join("n" if s is None else str(s) for s in shape) + ")"
+        raise ValueError(f"{name} must have shape {expected}, got {array.shape}")
+    bad = ~np.isfinite(array)
+    if bad.any():
+        index = tuple(int(i) for i in np.argwhere(bad)[0])
+        raise ValueError(f"{name}{list(index)} is not a finite number")
+    array.setflags(write=False)
+    return array
+
+
+@dataclass(frozen=True)
+class Tool:
+    """Flat-end mill: diameter and flute length in mm, number of flutes."""
+
+    diameter: float
+    flutes: int
+    flute_length: float
+
+    def __post_init__(self):
+        object.__setattr__(self, "diameter", _number("diameter", self.diameter, positive=True))
+        object.__setattr__(self, "flute_length", _number("flute_length", self.flute_length, positive=True))
+        flutes = _number("flutes", self.flutes, positive=True)
+        if flutes != int(flutes):
+            raise ValueError(f"flutes must be a whole number, got {self.flutes!r}")
+        object.__setattr__(self, "flutes", int(flutes))
+
+    @property
+    def radius(self):
+        """R_t = diameter / 2 (mm)."""
+        return 0.5 * self.diameter
+
+
+@dataclass(frozen=True)
+class Staircase:
+    """Staircase stock of n sections ordered along +x (notes §1).
+
+    z_top: (n,) top height of each section (mm).
+    wall_points: (n−1, 6, 2) [x, y] points of walls 1..n−1; wall j is where section j starts.
+    wall_curves: None (the walls are the quintics through wall_points, the paper's model) or
+    n−1 exact wall curves (SplineWall, or Wall) that replace them; wall_points then only
+    record six points on each.
+    Inside means x_min ≤ x ≤ x_max, y_min ≤ y ≤ y_max and base_z ≤ z ≤ z_top of the section
+    holding (x, y); section j holds W_j(y) ≤ x < W_{j+1}(y).
+    Derived: walls (n−1 Wall), wall_bands (n−1, 2) min and max x of each wall and
+    wall_slopes (n−1,) max |dx/dy| of each quintic wall (inf for exact curves), both over
+    [y_min, y_max].
+    """
+
+    x_min: float
+    x_max: float
+    y_min: float
+    y_max: float
+    base_z: float
+    z_top: np.ndarray
+    wall_points: np.ndarray
+    wall_curves: Optional[tuple] = field(default=None, repr=False, compare=False)
+    walls: tuple = field(init=False, repr=False, compare=False)
+    wall_bands: np.ndarray = field(init=False, repr=False, compare=False)
+    wall_slopes: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        for name in ("x_min", "x_max", "y_min", "y_max", "base_z"):
+            object.__setattr__(self, name, _number(name, getattr(self, name)))
+        if self.x_min >= self.x_max:
+            raise ValueError(f"x_min ({self.x_min}) must be below x_max ({self.x_max})")
+        if self.y_min >= self.y_max:
+            raise ValueError(f"y_min ({self.y_min}) must be below y_max ({self.y_max})")
+        z_top = _array("z_top", self.z_top, (None,))
+        if z_top.size == 0:
+            raise ValueError("a staircase needs at least one section")
+        low = np.flatnonzero(z_top <= self.base_z)
+        if low.size:
+            j = int(low[0])
+            raise ValueError(f"sections[{j}]: z_top {z_top[j]} must be above base_z {self.base_z}")
+        object.__setattr__(self, "z_top", z_top)
+        points = np.array(self.wall_points, dtype=float).reshape(-1, 6, 2) if np.size(self.wall_points) else np.empty((0, 6, 2))
+        if points.shape[0] != z_top.size - 1:
+            raise ValueError(f"{z_top.size} sections need {z_top.size - 1} walls, got {points.shape[0]}")
+        walls = []
+        for j, p in enumerate(points, start=1):
+            try:
+                walls.append(Wall.from_points(p))
+            except ValueError as error:
+                raise ValueError(f"sections[{j}].wall: {error}") from None
+        if self.wall_curves is not None:
+            curves = tuple(self.wall_curves)
+            if len(curves) != len(walls) or not all(isinstance(c, (Wall, SplineWall)) for c in curves):
+                raise ValueError(f"wall_curves must be {len(walls)} Wall or SplineWall objects")
+            walls = list(curves)
+            object.__setattr__(self, "wall_curves", curves)
+        object.__setattr__(self, "wall_points", _array("wall_points", points, (None, 6, 2)))
+        object.__setattr__(self, "walls", tuple(walls))
+        self._check_wall_order()
+        bands = np.array([w.x_range(self.y_min, self.y_max) for w in walls]).reshape(-1, 2)
+        slopes = np.array([w.max_slope(self.y_min, self.y_max) if isinstance(w, Wall) else np.inf for w in walls])
+        object.__setattr__(self, "wall_bands", bands)
+        object.__setattr__(self, "wall_slopes", slopes)
+
+    def _check_wall_order(self):
+        """Walls must lie strictly inside (x_min, x_max) and in order along +x over the y window."""
+        y = np.linspace(self.y_min, self.y_max, WALL_CHECK_SAMPLES)
+        previous, previous_name = np.full_like(y, self.x_min), "x_min"
+        for j, wall in enumerate(self.walls, start=1):
+            x = wall.x_at(y)
+            crossing = np.flatnonzero(x <= previous)
+            if crossing.size:
+                k = int(crossing[0])
+                raise ValueError(
+                    f"sections[{j}].wall: x = {x[k]:.6g} at y = {y[k]:.6g} is not beyond "
+                    f"{previous_name} ({previous[k]:.6g}); walls must be ordered along +x "
+                    "inside [y_min, y_max]"
+                )
+            previous, previous_name = x, f"the wall of section {j}"
+        beyond = np.flatnonzero(previous >= self.x_max)
+        if self.walls and beyond.size:
+            k = int(beyond[0])
+            raise ValueError(
+                f"sections[{len(self.walls)}].wall: x = {previous[k]:.6g} at y = {y[k]:.6g} "
+                f"is not below x_max ({self.x_max})"
+            )
+
+    @property
+    def n_sections(self):
+        """Number of sections n."""
+        return int(self.z_top.size)
+
+    def section_at(self, x, y):
+        """Index of the section holding (x, y): the number of walls with W_j(y) ≤ x (int array).
+
+        Inside the y window a wall is only evaluated where x falls in its band.
+        """
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        shape = x.shape
+        x, y = x.reshape(-1), y.reshape(-1)
+        in_window = (y >= self.y_min) & (y <= self.y_max)
+        count = np.zeros(x.shape, dtype=np.intp)
+        for wall, (low, high) in zip(self.walls, self.wall_bands):
+            sure = in_window & ((x < low) | (x > high))
+            count += sure & (x > high)
+            rows = np.flatnonzero(~sure)
+            count[rows] += x[rows] >= wall.x_at(y[rows])
+        return count.reshape(shape)
+
+    def translated(self, offset):
+        """The same staircase moved by offset (3,) mm."""
+        dx, dy, dz = (float(v) for v in offset)
+        points = self.wall_points + np.array([dx, dy])
+        curves = None if self.wall_curves is None else tuple(c.translated(dx, dy) for c in self.wall_curves)
+        return Staircase(self.x_min + dx, self.x_max + dx, self.y_min + dy, self.y_max + dy,
+                         self.base_z + dz, self.z_top + dz, points, curves)
+
+
+@dataclass(frozen=True)
+class Toolpath:
+    """CL points of one pass with their tool orientation.
+
+    cl: (m, 3) centres of the tool's bottom face (mm), in pass order.
+    theta_a, theta_b: (m,) rotations about x and y (degrees), |θ| < 90.
+    cc: (m, 3) cutter-contact points (mm), or None.
+    """
+
+    cl: np.ndarray
+    theta_a: np.ndarray
+    theta_b: np.ndarray
+    cc: Optional[np.ndarray] = None
+
+    def __post_init__(self):
+        cl = _array("cl", self.cl, (None, 3))
+        if cl.shape[0] == 0:
+            raise ValueError("a toolpath needs at least one CL point")
+        object.__setattr__(self, "cl", cl)
+        for name in ("theta_a", "theta_b"):
+            angles = _array(name, getattr(self, name), (cl.shape[0],))
+            steep = np.flatnonzero(np.abs(angles) >= 90.0)
+            if steep.size:
+                i = int(steep[0])
+                raise ValueError(f"CL {i}: {name} = {angles[i]} must be within (-90, 90) degrees")
+            object.__setattr__(self, name, angles)
+        if self.cc is not None:
+            object.__setattr__(self, "cc", _array("cc", self.cc, (cl.shape[0], 3)))
+
+    @classmethod
+    def from_axes(cls, cl, axes, cc=None):
+        """Toolpath from tool-axis vectors (m, 3) (normalised; k must be > 0)."""
+        theta_a, theta_b = axis_to_angles(axes)
+        return cls(cl, theta_a, theta_b, cc)
+
+    def __len__(self):
+        return int(self.cl.shape[0])
+
+    def translated(self, offset):
+        """The same toolpath moved by offset (3,) mm."""
+        offset = np.asarray(offset, dtype=float)
+        return Toolpath(self.cl + offset, self.theta_a, self.theta_b,
+                        None if self.cc is None else self.cc + offset)
+
+
+@dataclass(frozen=True)
+class CutSettings:
+    """Feed per tooth (mm), inclination α (deg), the rotation angles φ reported (deg), spindle (rpm)."""
+
+    feed_per_tooth: float
+    inclination: float = 0.0
+    phi_start: float = 0.0
+    phi_end: float = 180.0
+    phi_step: float = 1.0
+    spindle_rpm: Optional[float] = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "feed_per_tooth", _number("feed_per_tooth", self.feed_per_tooth, positive=True))
+        inclination = _number("inclination", self.inclination)
+        if not -90.0 < inclination < 90.0:
+            raise ValueError(f"inclination must be within (-90, 90) degrees, got {inclination}")
+        object.__setattr__(self, "inclination", inclination)
+        object.__setattr__(self, "phi_start", _number("phi_start", self.phi_start))
+        object.__setattr__(self, "phi_end", _number("phi_end", self.phi_end))
+        object.__setattr__(self, "phi_step", _number("phi_step", self.phi_step, positive=True))
+        if self.phi_end < self.phi_start:
+            raise ValueError(f"phi range {self.phi_start}:{self.phi_end} must not be decreasing")
+        if (self.phi_end - self.phi_start) / self.phi_step > 1e6:
+            raise ValueError("phi range / phi step gives more than 10^6 angles")
+        if self.spindle_rpm is not None:
+            object.__setattr__(self, "spindle_rpm", _number("spindle_rpm", self.spindle_rpm, positive=True))
+
+    @property
+    def phi(self):
+        """Rotation angles φ (p,) in degrees: start, start + step, … up to end (inclusive)."""
+        count = int(np.floor((self.phi_end - self.phi_start) / self.phi_step + 1e-9)) + 1
+        return self.phi_start + self.phi_step * np.arange(count)

@@ -1,0 +1,12 @@
+"""Tolerances of the engine, in one place (lengths in mm)."""
+
+#: Relative tolerance of the root finders on the unit interval of a boundary search.
+ROOT_TOL = 1e-15
+#: Iteration cap of the safeguarded Newton-bisection root finder.
+ROOT_MAX_ITER = 100
+#: Pieces of the cutting edge shorter than this (mm) are merged with their neighbours.
+LENGTH_EPS = 1e-12
+#: A direction component below this counts as zero (edge parallel to a plane).
+PARALLEL_EPS = 1e-14
+#: Points sampled per wall when checking that walls are ordered and inside the x limits.
+WALL_CHECK_SAMPLES = 2049

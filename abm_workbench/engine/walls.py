@@ -1,0 +1,236 @@
+"""Wall curves: the paper's quintic x = P(y) through six points on a wall's top edge (notes §3),
+and the exact B-spline top edge of a wall read from a solid.
+
+The polynomial is kept in the centred, scaled variable t = (y − y_mid) / y_half, where
+y_mid and y_half are the middle and half-span of the six points' y values: in raw y the 6×6
+Vandermonde system of Eq. (6) is hopelessly ill-conditioned. Lengths in mm.
+"""
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+import numpy as np
+from scipy.interpolate import BSpline, PPoly
+
+from .polynomials import bracketed_root, compose_linear, horner, real_roots_unit
+
+#: Six x values within this (mm) of each other make a straight wall.
+STRAIGHT_EPS = 1e-12
+
+
+def _real_roots_between(ascending, lo, hi):
+    """Real roots of a small polynomial (ascending coefficients) inside [lo, hi]."""
+    trimmed = np.trim_zeros(np.asarray(ascending, dtype=float), "b")
+    if trimmed.size <= 1:
+        return np.empty(0)
+    roots = np.roots(trimmed[::-1])
+    real = roots[np.abs(roots.imag) <= 1e-9 * (1.0 + np.abs(roots.real))].real
+    return real[(real >= lo) & (real <= hi)]
+
+
+def _derivative(ascending):
+    """Ascending coefficients of the derivative."""
+    return ascending[1:] * np.arange(1, ascending.size)
+
+
+@dataclass(frozen=True)
+class Wall:
+    """One wall x = P(y) = Σ c_k t^k with t = (y − y_mid) / y_half.
+
+    points: (6, 2) float, the [x, y] points it interpolates (mm).
+    coefficients: (6,) float, c_0..c_5 in t (mm).
+    """
+
+    points: np.ndarray
+    y_mid: float
+    y_half: float
+    coefficients: np.ndarray
+
+    @classmethod
+    def from_points(cls, points):
+        """Interpolate six [x, y] points (6, 2); ValueError for a wrong shape or repeated y."""
+        points = np.array(points, dtype=float)
+        if points.shape != (6, 2):
+            raise ValueError(f"a wall needs six [x, y] points, shape (6, 2); got {points.shape}")
+        if not np.isfinite(points).all():
+            raise ValueError("wall points must be finite numbers")
+        x, y = points[:, 0], points[:, 1]
+        y_lo, y_hi = y.min(), y.max()
+        y_mid, y_half = 0.5 * (y_lo + y_hi), 0.5 * (y_hi - y_lo)
+        gaps = np.diff(np.sort(y))
+        if y_half <= 0.0 or gaps.min() <= 1e-9 * y_half:
+            raise ValueError(f"wall points need six distinct y values, got {y.tolist()}")
+        if np.ptp(x) <= STRAIGHT_EPS:
+            coefficients = np.array([x.mean(), 0.0, 0.0, 0.0, 0.0, 0.0])
+        else:
+            t = (y - y_mid) / y_half
+            coefficients = np.linalg.solve(np.vander(t, 6, increasing=True), x)
+        points.setflags(write=False)
+        coefficients.setflags(write=False)
+        return cls(points, float(y_mid), float(y_half), coefficients)
+
+    @property
+    def is_straight(self):
+        """True when the six points share one x: the wall is the plane x = c_0."""
+        return not self.coefficients[1:].any()
+
+    def x_at(self, y):
+        """x = P(y) for y of any shape (mm)."""
+        return horner(self.coefficients, (np.asarray(y, dtype=float) - self.y_mid) / self.y_half)
+
+    def slope_at(self, y):
+        """dP/dy for y of any shape."""
+        t = (np.asarray(y, dtype=float) - self.y_mid) / self.y_half
+        return horner(_derivative(self.coefficients), t) / self.y_half
+
+    def x_range(self, y_lo, y_hi):
+        """(min, max) of P over y in [y_lo, y_hi], from its critical points."""
+        t_lo, t_hi = (y_lo - self.y_mid) / self.y_half, (y_hi - self.y_mid) / self.y_half
+        t = np.concatenate([[t_lo, t_hi], _real_roots_between(_derivative(self.coefficients), t_lo, t_hi)])
+        x = horner(self.coefficients, t)
+        return float(x.min()), float(x.max())
+
+    def translated(self, dx, dy):
+        """The same wall moved by (dx, dy) mm."""
+        return Wall.from_points(self.points + np.array([dx, dy]))
+
+    def max_slope(self, y_lo, y_hi):
+        """max |dP/dy| over y in [y_lo, y_hi], from the critical points of P'."""
+        first = _derivative(self.coefficients)
+        t_lo, t_hi = (y_lo - self.y_mid) / self.y_half, (y_hi - self.y_mid) / self.y_half
+        t = np.concatenate([[t_lo, t_hi], _real_roots_between(_derivative(first), t_lo, t_hi)])
+        return float(np.abs(horner(first, t)).max() / self.y_half)
+
+
+@dataclass(frozen=True)
+class SplineWall:
+    """A wall's exact top-edge curve C(s) = (x(s), y(s)), a (rational) B-spline, as in the solid.
+
+    degree: p; knots: (k+p+1,) float; poles: (k, 2) [x, y] (mm); weights: (k,) or None.
+    The curve must be monotone in y (one x per y over the window: recognition checks it).
+    Each knot span is kept as power-basis polynomials in a local u ∈ [0, 1]:
+    spans_x, spans_y, spans_w: (S, p+1) ascending, so that x = X(u)/W(u), y = Y(u)/W(u).
+    span_y: (S+1,) y at the span ends, increasing; span_boxes: (S, 4) x_min, x_max, y_min,
+    y_max of each span's control polygon (the span lies inside it).
+    """
+
+    degree: int
+    knots: np.ndarray
+    poles: np.ndarray
+    weights: Optional[np.ndarray]
+    spans_x: np.ndarray = field(init=False, repr=False)
+    spans_y: np.ndarray = field(init=False, repr=False)
+    spans_w: np.ndarray = field(init=False, repr=False)
+    span_y: np.ndarray = field(init=False, repr=False)
+    span_boxes: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self):
+        poles = np.array(self.poles, dtype=float)
+        knots = np.array(self.knots, dtype=float)
+        p = int(self.degree)
+        if poles.ndim != 2 or poles.shape[1] != 2 or poles.shape[0] < p + 1 or knots.size != poles.shape[0] + p + 1:
+            raise ValueError(f"B-spline wall: {poles.shape[0]} poles of degree {p} need {poles.shape[0] + p + 1} knots")
+        weights = np.ones(poles.shape[0]) if self.weights is None else np.array(self.weights, dtype=float)
+        if weights.shape != (poles.shape[0],) or not (weights > 0).all():
+            raise ValueError("B-spline wall: weights must be positive, one per pole")
+        pieces = [_power_spans(knots, weights * poles[:, i], p) for i in range(2)] + [_power_spans(knots, weights, p)]
+        (sx, first), (sy, _), (sw, _) = pieces
+        boxes = np.array([[poles[i:i + p + 1, 0].min(), poles[i:i + p + 1, 0].max(),
+                           poles[i:i + p + 1, 1].min(), poles[i:i + p + 1, 1].max()] for i in first])
+        ends_y = np.concatenate([sy[:, 0] / sw[:, 0], [sy[-1].sum() / sw[-1].sum()]])
+        if ends_y[-1] < ends_y[0]:  # keep spans in increasing y
+            sx, sy, sw = (_reverse(c) for c in (sx, sy, sw))
+            boxes, ends_y = boxes[::-1], ends_y[::-1]
+        if not (np.diff(ends_y) > 0).all():
+            raise ValueError("B-spline wall: y must be strictly monotone along the curve")
+        for name, value in (("degree", p), ("knots", knots), ("poles", poles), ("weights", weights),
+                            ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y), ("span_boxes", boxes)):
+            if isinstance(value, np.ndarray):
+                value.setflags(write=False)
+            object.__setattr__(self, name, value)
+
+    @property
+    def is_straight(self):
+        """True when every pole has the same x: the wall is the plane x = const."""
+        return bool(np.ptp(self.poles[:, 0]) <= STRAIGHT_EPS)
+
+    def translated(self, dx, dy):
+        """The same wall moved by (dx, dy) mm."""
+        return SplineWall(self.degree, self.knots, self.poles + np.array([dx, dy]), self.weights)
+
+    def _span_parameter(self, y):
+        """Span index and local u (same shape as y) where the curve has height y (clamped to its ends)."""
+        y = np.clip(np.asarray(y, dtype=float), self.span_y[0], self.span_y[-1])
+        span = np.clip(np.searchsorted(self.span_y, y, side="right") - 1, 0, self.span_y.size - 2)
+        flat_span, flat_y = span.reshape(-1), y.reshape(-1)
+        c = self.spans_y[flat_span] - flat_y[:, None] * self.spans_w[flat_span]
+        f_lo, f_hi = c[:, 0], c.sum(axis=1)
+        u = bracketed_root(c, np.zeros(flat_y.size), np.ones(flat_y.size), f_lo, f_hi)
+        return span, u.reshape(y.shape)
+
+    def x_at(self, y):
+        """x = W(y) for y of any shape (mm); beyond the curve's ends, the end's x."""
+        span, u = self._span_parameter(y)
+        return horner(self.spans_x[span], u) / horner(self.spans_w[span], u)
+
+    def x_range(self, y_lo, y_hi):
+        """(min, max) bound of x over y in [y_lo, y_hi], from the control polygons (conservative)."""
+        boxes = self.span_boxes[(self.span_boxes[:, 3] >= y_lo) & (self.span_boxes[:, 2] <= y_hi)]
+        ends = self.x_at(np.array([y_lo, y_hi]))
+        low = min(ends.min(), boxes[:, 0].min()) if boxes.size else ends.min()
+        high = max(ends.max(), boxes[:, 1].max()) if boxes.size else ends.max()
+        return float(low), float(high)
+
+    def crossings(self, x0, y0, dx, dy, lo, hi):
+        """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the curve.
+
+        Per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u; its real
+        roots in [0, 1] (only spans whose control box meets the line segment's box) give the
+        points, and l their projection on the line. NaN-padded; a line with dx = dy = 0 never
+        crosses.
+        """
+        k = x0.size
+        sx = np.stack([x0 + dx * lo, x0 + dx * hi])
+        sy = np.stack([y0 + dy * lo, y0 + dy * hi])
+        b = self.span_boxes
+        meet = ((sx.max(0)[:, None] >= b[:, 0]) & (sx.min(0)[:, None] <= b[:, 1])
+                & (sy.max(0)[:, None] >= b[:, 2]) & (sy.min(0)[:, None] <= b[:, 3]))
+        line, span = np.nonzero(meet)
+        out = np.full((k, 0), np.nan)
+        if line.size == 0:
+            return out
+        poly = ((self.spans_x[span] - x0[line, None] * self.spans_w[span]) * dy[line, None]
+                - (self.spans_y[span] - y0[line, None] * self.spans_w[span]) * dx[line, None])
+        u = real_roots_unit(poly)
+        w = horner(self.spans_w[span][:, None, :], u)
+        px = horner(self.spans_x[span][:, None, :], u) / w
+        py = horner(self.spans_y[span][:, None, :], u) / w
+        d2 = dx[line] ** 2 + dy[line] ** 2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            l = ((px - x0[line, None]) * dx[line, None] + (py - y0[line, None]) * dy[line, None]) / d2[:, None]
+        l = np.where((l >= lo[line, None]) & (l <= hi[line, None]) & (d2[:, None] > 0), l, np.nan)
+        rank = np.arange(line.size) - np.searchsorted(line, line)
+        out = np.full((k, int(rank.max()) + 1, u.shape[1]), np.nan)
+        out[line, rank] = l
+        out = out.reshape(k, -1)
+        return out[:, ~np.isnan(out).all(axis=0)]
+
+
+def _power_spans(knots, coefficients, degree):
+    """Power-basis coefficients (S, p+1) in local u ∈ [0, 1] of each non-empty knot span, and
+    the index of each span's first pole."""
+    spline = BSpline(knots, coefficients, degree, extrapolate=False)
+    pp = PPoly.from_spline(spline)
+    widths = np.diff(pp.x)
+    keep = np.flatnonzero(widths > 0)
+    keep = keep[(pp.x[keep] >= knots[degree]) & (pp.x[keep + 1] <= knots[-degree - 1])]
+    local = pp.c[::-1, keep].T  # ascending in (s − s_i)
+    scaled = local * widths[keep, None] ** np.arange(degree + 1)
+    first = np.searchsorted(knots, pp.x[keep], side="right") - 1 - degree
+    return scaled, first
+
+
+def _reverse(coefficients):
+    """Coefficients of each span in u' = 1 − u, spans in reverse order."""
+    d = coefficients.shape[1] - 1
+    return compose_linear(coefficients[::-1], np.ones(coefficients.shape[0]), -np.ones(coefficients.shape[0]))[:, : d + 1]

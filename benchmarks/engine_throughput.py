@@ -1,0 +1,81 @@
+"""Engine throughput: instants per second for model test 1 and for a toolpath of ≥ 10^6 instants.
+
+Run with FreeCAD's Python from the repository root: `/usr/bin/python3 benchmarks/engine_throughput.py`
+(or `make benchmark`). Times are engine time only (files are loaded before the clock starts),
+the median of several runs on one core (numpy here is single-threaded for these operations).
+Peak memory is what tracemalloc sees numpy allocate during one run.
+"""
+
+import argparse
+import json
+import os
+import sys
+import time
+import tracemalloc
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, ROOT)
+
+from abm_workbench.engine import CutSettings, Tool, Toolpath, engage  # noqa: E402
+from abm_workbench.formats.staircase_json import load_staircase  # noqa: E402
+from abm_workbench.formats.toolpath_csv import load_toolpath  # noqa: E402
+
+MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
+
+
+def load_model(folder):
+    """Stock, tool, toolpath and settings of a bundled model test."""
+    with open(os.path.join(folder, "job.json")) as handle:
+        job = json.load(handle)
+    tool = Tool(job["diameter"], job["flutes"], job["flute_length"])
+    settings = CutSettings(job["feed_per_tooth"], job["inclination"], *job["phi_range"], job["phi_step"])
+    stock = load_staircase(os.path.join(folder, "stock.json"))
+    return stock, tool, load_toolpath(os.path.join(folder, "toolpath.csv")), settings
+
+
+def densified(toolpath, count):
+    """The pass resampled to `count` CL points by linear interpolation along its index."""
+    old = np.arange(len(toolpath))
+    new = np.linspace(0, len(toolpath) - 1, count)
+    cl = np.column_stack([np.interp(new, old, toolpath.cl[:, i]) for i in range(3)])
+    return Toolpath(cl, np.interp(new, old, toolpath.theta_a), np.interp(new, old, toolpath.theta_b))
+
+
+def measure(stock, tool, path, settings, repeats, chunk):
+    """(median seconds, peak MiB) of engage() over `repeats` runs."""
+    engage(stock, tool, path, settings, chunk_instants=chunk)
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        engage(stock, tool, path, settings, chunk_instants=chunk)
+        times.append(time.perf_counter() - start)
+    tracemalloc.start()
+    engage(stock, tool, path, settings, chunk_instants=chunk)
+    peak = tracemalloc.get_traced_memory()[1] / 2**20
+    tracemalloc.stop()
+    return float(np.median(times)), peak
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=20, help="runs of the 53-point pass (median taken)")
+    parser.add_argument("--large", type=int, default=1_000_000, help="instants in the large toolpath")
+    args = parser.parse_args()
+    stock, tool, path, settings = load_model(MODEL)
+    p = settings.phi.size
+    rows = [("model test 1, 53 CL x %d phi" % p, path, args.repeats, 1 << 15)]
+    large = densified(path, -(-args.large // p))
+    rows.append(("%d CL x %d phi (chunks of 2^15 instants)" % (len(large), p), large, 3, 1 << 15))
+    rows.append(("%d CL x %d phi (chunks of 2^17 instants)" % (len(large), p), large, 3, 1 << 17))
+    print(f"{'case':<44} {'instants':>10} {'time ms':>10} {'instants/s':>12} {'peak MiB':>9}")
+    for name, toolpath, repeats, chunk in rows:
+        seconds, peak = measure(stock, tool, toolpath, settings, repeats, chunk)
+        n = len(toolpath) * p
+        print(f"{name:<44} {n:>10} {seconds * 1e3:>10.2f} {n / seconds:>12.3g} {peak:>9.1f}")
+    print("paper (MATLAB, i7 2.7 GHz): ABM 713.87 s for one 53-point pass")
+
+
+if __name__ == "__main__":
+    main()
