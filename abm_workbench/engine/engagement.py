@@ -214,6 +214,47 @@ def _clip(stock, length, x0, y0, z0, dx, dy, dz):
     return lo, hi, hi_surface, hi_wall
 
 
+def _reachable_walls(stock, live, seg_min, seg_max, y_a, y_b):
+    """Which walls each clipped edge segment can cross, and how many lie wholly left of it.
+
+    seg_min, seg_max: (N,) x range of each segment, y_a, y_b: (N,) y at its ends. The walls
+    are ordered along +x, so the ones whose x range over the window meets the segment's are a
+    run of indices, found by bisection; each is then kept only if its x range over the
+    segment's y bins still meets it. Returns the pairs rows, walls (P,) (by row, then wall),
+    left_of (N,) and steepness (P,): the wall's max |dx/dy| over the segment's y range.
+    """
+    # Monotone envelopes of the walls' x ranges (exact bands already are; bounds may not be).
+    reach_low = np.minimum.accumulate(stock.bands.whole[::-1, 0])[::-1]
+    reach_high = np.maximum.accumulate(stock.bands.whole[:, 1])
+    first = np.searchsorted(reach_high, seg_min, side="left")
+    count = np.where(live, np.searchsorted(reach_low, seg_max, side="right") - first, 0).clip(0)
+    rows = np.repeat(np.arange(seg_min.size), count)
+    walls = first[rows] + (np.arange(rows.size) - np.repeat(np.cumsum(count) - count, count))
+    low, high, slope = stock.bands.query(y_a[rows], y_b[rows], walls)
+    beyond = seg_min[rows] > high
+    keep = ~beyond & (seg_max[rows] >= low)
+    left_of = first + np.bincount(rows[beyond], minlength=seg_min.size)
+    return rows[keep], walls[keep], left_of, slope[keep]
+
+
+def _uep_surface(stock, column, hi_surface, hi_wall, blocks):
+    """Surface (index into SURFACES) and wall index of the breakpoint in `column` (N,) of each line.
+
+    Columns: 0 the clipped start, 1 the clipped end (surface hi_surface, wall hi_wall), then
+    the tops, then the wall-crossing blocks (first column, columns per wall, wall ids (N, k)).
+    """
+    rows = np.arange(column.size)
+    wall = np.where(column == 1, hi_wall, -1)
+    for first, per_wall, ids in blocks:
+        within = (column >= first) & (column < first + per_wall * ids.shape[1])
+        slot = np.clip((column - first) // per_wall, 0, ids.shape[1] - 1)
+        wall = np.where(within, ids[rows, slot], wall)
+    straight = np.array([True] + [w.is_straight for w in stock.walls] + [True])  # walls 0..n
+    surface = np.where(column == 1, hi_surface, _TOP)
+    is_wall = (wall > 0) & (column != 1)
+    return np.where(is_wall, np.where(straight[np.maximum(wall, 0)], _STRAIGHT, _CURVED), surface), wall
+
+
 def _quintic_table(stock, walls):
     """Coefficients (P, 6), y_mid (P,) and y_half (P,) of the quintic walls with indices `walls` (P,)."""
     table = [(w.coefficients, w.y_mid, w.y_half) if isinstance(w, Wall) else (np.zeros(6), 0.0, 1.0)
@@ -222,13 +263,16 @@ def _quintic_table(stock, walls):
     return coefficients, np.array([t[1] for t in table])[walls], np.array([t[2] for t in table])[walls]
 
 
-def _wall_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
-    """Edge parameters l (P, 5) where line rows[i] crosses wall walls[i] inside [lo, hi], NaN-padded.
+def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
+    """Where line rows[i] crosses quintic wall walls[i] inside [lo, hi] (P pairs).
 
     The curve boundary of the notes §4 on the unit interval l = lo + u·(hi − lo): the wall's
-    quintic composed with the line (a straight wall is a constant polynomial and needs no
-    special case). Where the wall's slope bound proves the composition monotone, one
-    bracketed root; otherwise all real roots by derivative isolation.
+    quintic composed with the line, g(u) = P(y(u)) − x(u) (a straight wall is a constant
+    polynomial and needs no special case). Where the wall's slope bound over the segment
+    (steepness (P,), max |dx/dy|) proves g monotone, one bracketed root; otherwise all real
+    roots by derivative isolation.
+    Returns l (P, 5) NaN-padded, monotone (P,), and whether the line is at or beyond the wall
+    (x ≥ W(y), i.e. g ≤ 0) at lo and at hi, each (P,).
     """
     coefficients, y_mid, y_half = _quintic_table(stock, walls)
     lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
@@ -236,12 +280,12 @@ def _wall_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
     k = compose_linear(coefficients, (y0 + dy * lo - y_mid) / y_half, dy * span / y_half)
     k[:, 0] -= x0 + dx * lo
     k[:, 1] -= dx * span
-    monotone = np.abs(dy) * stock.wall_slopes[walls] < np.abs(dx)
+    monotone = np.abs(dy) * steepness < np.abs(dx)
     u = np.full((rows.size, 5), np.nan)
     u[monotone, 0] = monotone_root_unit(k[monotone])
     if not monotone.all():
         u[~monotone] = real_roots_unit(k[~monotone])
-    return lo[:, None] + u * span[:, None]
+    return lo[:, None] + u * span[:, None], monotone, k[:, 0] <= 0.0, k.sum(axis=1) <= 0.0
 
 
 def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
@@ -253,45 +297,46 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     n = x0.size
     lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
     live = hi > lo
+    lo, hi = np.where(live, lo, 0.0), np.where(live, hi, 0.0)
     seg_x = np.stack([x0 + dx * lo, x0 + dx * hi])
     seg_min, seg_max = seg_x.min(axis=0), seg_x.max(axis=0)
-    band_min, band_max = stock.wall_bands[:, 0], stock.wall_bands[:, 1]
-    candidate = live[:, None] & (seg_max[:, None] >= band_min) & (seg_min[:, None] <= band_max)
-    left_of = (seg_min[:, None] > band_max).sum(axis=1)
+    pair_rows, pair_walls, left_of, steepness = _reachable_walls(
+        stock, live, seg_min, seg_max, y0 + dy * lo, y0 + dy * hi)
 
-    # Breakpoints: the clipped ends, the section tops, the wall crossings. Each column also
-    # carries the surface it lies on and its wall index, looked up at the UEP only.
+    # Breakpoints: the clipped ends, the section tops, the wall crossings. Only the tops of
+    # the sections the segment can reach count: those from the first one right of every wall
+    # wholly left of it, over each wall it may cross.
+    reach = np.bincount(pair_rows, minlength=n)
+    section = left_of[:, None] + np.arange(int(reach.max()) + 1 if n else 1)
     with np.errstate(divide="ignore", invalid="ignore"):
-        tops = (stock.z_top[None, :] - z0[:, None]) / dz[:, None]
-    tops = np.where((tops > lo[:, None]) & (tops < hi[:, None]), tops, np.nan)
-    crossed = ~np.isnan(tops).all(axis=0)
-    columns = [lo[:, None], hi[:, None], tops[:, crossed]]
-    surfaces = [np.full((n, 1), _NONE), hi_surface[:, None], np.full((n, int(crossed.sum())), _TOP)]
-    wall_ids = [np.full((n, 1), -1), hi_wall[:, None], np.full((n, int(crossed.sum())), -1)]
+        tops = (stock.z_top[np.minimum(section, stock.n_sections - 1)] - z0[:, None]) / dz[:, None]
+    tops = np.where((section <= (left_of + reach)[:, None]) & (tops > lo[:, None]) & (tops < hi[:, None]), tops, np.nan)
+    columns = [lo[:, None], hi[:, None], tops]
     quintic = np.array([isinstance(w, Wall) for w in stock.walls], dtype=bool)
-    rows, walls = np.nonzero(candidate & quintic)
+    is_quintic = quintic[pair_walls]
+    rows, walls = pair_rows[is_quintic], pair_walls[is_quintic]
     rank = np.arange(rows.size) - np.searchsorted(rows, rows)
-    per_row = int(rank.max()) + 1 if rows.size else 0
+    # wall index (j ≥ 1) of each column block after the tops: (first column, columns per
+    # wall, (N, walls in block) wall indices)
+    blocks = []
     if rows.size:
-        found = _wall_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy)
-        found = found[:, ~np.isnan(found).all(axis=0)]
-        crossing = np.full((n, per_row, found.shape[1]), np.nan)
+        crossings = _wall_crossings(stock, rows, walls, steepness[is_quintic], lo, hi, x0, y0, dx, dy)
+        found = crossings[0][:, ~np.isnan(crossings[0]).all(axis=0)]
+    if rows.size and found.size:
+        crossing = np.full((n, int(rank.max()) + 1, found.shape[1]), np.nan)
         crossing[rows, rank] = found
+        ids = np.full(crossing.shape[:2], -1)
+        ids[rows, rank] = walls + 1
+        blocks.append((sum(c.shape[1] for c in columns), found.shape[1], ids))
         columns.append(crossing.reshape(n, -1))
-        kind = np.where(np.array([w.is_straight for w in stock.walls])[walls], _STRAIGHT, _CURVED)
-        for target, value in ((surfaces, kind), (wall_ids, walls + 1)):
-            block = np.full(crossing.shape, -1)
-            block[rows, rank] = value[:, None]
-            target.append(block.reshape(n, -1))
-    exact = [(j, np.flatnonzero(candidate[:, j])) for j in np.flatnonzero(~quintic)]
+    exact = [(j, pair_rows[pair_walls == j]) for j in np.flatnonzero(~quintic)]
     for j, on in exact:
-        wall = stock.walls[j]
-        found = wall.crossings(x0[on], y0[on], dx[on], dy[on], lo[on], hi[on])
-        crossing = np.full((n, found.shape[1]), np.nan)
-        crossing[on] = found
-        columns.append(crossing)
-        surfaces.append(np.full(crossing.shape, _STRAIGHT if wall.is_straight else _CURVED))
-        wall_ids.append(np.full(crossing.shape, j + 1))
+        found = stock.walls[j].crossings(x0[on], y0[on], dx[on], dy[on], lo[on], hi[on])
+        if found.size:
+            crossing = np.full((n, found.shape[1]), np.nan)
+            crossing[on] = found
+            blocks.append((sum(c.shape[1] for c in columns), found.shape[1], np.full((n, 1), j + 1)))
+            columns.append(crossing)
     at = np.concatenate(columns, axis=1)
     at[~live] = np.nan
     order = np.argsort(at, axis=1)
@@ -302,7 +347,9 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     start, end = at[:, :-1], at[:, 1:]
     real = end - start > LENGTH_EPS
     mid = 0.5 * (start + end)
-    section = left_of[:, None] + _walls_left_of(stock, rows, walls, rank, per_row, x0, y0, dx, dy, mid)
+    section = np.repeat(left_of[:, None], mid.shape[1], axis=1)
+    if rows.size:
+        section = section + _walls_left_of(stock, rows, walls, rank, crossings, x0, y0, dx, dy, mid)
     for j, on in exact:
         with np.errstate(invalid="ignore"):
             section[on] += x0[on, None] + dx[on, None] * mid[on] >= stock.walls[j].x_at(y0[on, None] + dy[on, None] * mid[on])
@@ -321,49 +368,64 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     rows = np.arange(n)
     lep = np.where(any_inside, start[rows, first], np.nan)
     uep = np.where(any_inside, end[rows, last], np.nan)
-    uep_column = order[rows, last + 1]
-    surface = np.where(any_inside, np.concatenate(surfaces, axis=1)[rows, uep_column], _NONE)
-    wall_index = np.where(any_inside, np.concatenate(wall_ids, axis=1)[rows, uep_column], -1)
+    surface, wall_index = _uep_surface(stock, order[rows, last + 1], hi_surface, hi_wall, blocks)
+    surface = np.where(any_inside, surface, _NONE)
+    wall_index = np.where(any_inside, wall_index, -1)
     uep_section = np.where(any_inside, section[rows, last], -1)
     inside_section = np.where(inside, section, -1)
-    case = _table1_case(stock, x0, y0, dx, inside_section, any_inside, pieces, wall_index)
+    bottom = np.where((lo == 0.0) & real[:, 0], section[:, 0], -1)
+    case = _table1_case(stock, x0, y0, dx, bottom, inside_section, any_inside, pieces, wall_index)
     return {
         "lep_l": lep, "uep_l": uep, "length": np.where(inside, end - start, 0.0).sum(axis=1),
         "pieces": pieces, "uep_surface": surface, "uep_section": uep_section, "uep_wall": wall_index, "case": case,
     }
 
 
-def _walls_left_of(stock, rows, walls, rank, width, x0, y0, dx, dy, along):
-    """(N, W) count of the candidate quintic walls (rows[i], walls[i]) with W_j(y) ≤ x at the points `along` (N, W)."""
-    n = x0.size
-    if rows.size == 0:
-        return np.zeros(along.shape, dtype=np.intp)
-    coefficients, y_mid, y_half = _quintic_table(stock, walls)
+def _walls_left_of(stock, rows, walls, rank, crossings, x0, y0, dx, dy, along):
+    """(N, W) count of the candidate quintic walls (rows[i], walls[i]) with W_j(y) ≤ x at the points `along` (N, W).
+
+    crossings: what _wall_crossings returned for these pairs. A monotone pair changes side
+    only at its one root, so its side follows from the sides at the segment's ends; the others
+    are evaluated.
+    """
+    found, monotone, left_at_lo, left_at_hi = crossings
     l = along[rows]
-    t = (y0[rows, None] + dy[rows, None] * l - y_mid[:, None]) / y_half[:, None]
     with np.errstate(invalid="ignore"):
-        left = x0[rows, None] + dx[rows, None] * l >= horner(coefficients[:, None, :], t)
-    block = np.zeros((n, width, along.shape[1]), dtype=np.intp)
-    block[rows, rank] = left
-    return block.sum(axis=1)
+        left = np.where(l < found[:, :1], left_at_lo[:, None], left_at_hi[:, None])
+    other = np.flatnonzero(~monotone)
+    if other.size:
+        coefficients, y_mid, y_half = _quintic_table(stock, walls[other])
+        r, lo = rows[other], l[other]
+        t = (y0[r, None] + dy[r, None] * lo - y_mid[:, None]) / y_half[:, None]
+        with np.errstate(invalid="ignore"):
+            left[other] = x0[r, None] + dx[r, None] * lo >= horner(coefficients[:, None, :], t)
+    count = np.zeros(along.shape, dtype=np.intp)
+    starts = np.flatnonzero(rank == 0)  # pairs come grouped by row
+    count[rows[starts]] = np.add.reduceat(left.astype(np.intp), starts, axis=0)
+    return count
 
 
-def _table1_case(stock, x0, y0, dx, inside_section, engaged, pieces, uep_wall):
+def _table1_case(stock, x0, y0, dx, bottom, inside_section, engaged, pieces, uep_wall):
     """Table 1 case of each line (index into CASES); see docs/ENGINE.md for the rules.
 
     Sec. A holds the edge's bottom point; Sec. B is the next section when the edge leans
     towards +x (θ_B > 0), the previous one when it leans towards −x.
     """
     n_sec = stock.n_sections
-    a = np.clip(stock.section_at(x0, y0), 0, n_sec - 1)
+    unknown = np.flatnonzero(bottom < 0)
+    if unknown.size:
+        bottom = bottom.copy()
+        bottom[unknown] = stock.section_at(x0[unknown], y0[unknown])
+    a = np.clip(bottom, 0, n_sec - 1)
     lean = np.where(dx > PARALLEL_EPS, 1, np.where(dx < -PARALLEL_EPS, -1, 0))
     b = a + lean
     has_b = (lean != 0) & (b >= 0) & (b < n_sec)
     b = np.clip(b, 0, n_sec - 1)
     z_a, z_b = stock.z_top[a], stock.z_top[b]
-    in_a = (inside_section == a[:, None]).any(axis=1)
-    in_b = has_b & (inside_section == b[:, None]).any(axis=1)
-    other = ((inside_section >= 0) & (inside_section != a[:, None]) & ~(has_b[:, None] & (inside_section == b[:, None]))).any(axis=1)
+    is_a = inside_section == a[:, None]
+    is_b = (inside_section == b[:, None]) & has_b[:, None]
+    in_a, in_b = is_a.any(axis=1), is_b.any(axis=1)
+    other = ((inside_section >= 0) & ~is_a & ~is_b).any(axis=1)
     forward = lean > 0
     between = np.maximum(a, b)  # index of the wall between A and B
     down, up = has_b & (z_a > z_b), has_b & (z_a < z_b)

@@ -7,6 +7,8 @@ and has no (θ_A, θ_B) with |θ_A|, |θ_B| < 90°.
 
 import numpy as np
 
+from ..errors import CLPointError
+
 
 def rotation_matrix(theta_a, theta_b):
     """R = Rx(θ_A)·Ry(θ_B) for angles in degrees: (...,) and (...,) -> (..., 3, 3)."""
@@ -36,7 +38,7 @@ def angles_to_axis(theta_a, theta_b):
 def axis_to_angles(axes):
     """(θ_A, θ_B) in degrees, each (m,), for tool-axis vectors (m, 3), normalised here.
 
-    Raises ValueError naming the first row whose axis is zero, not finite, or has k ≤ 0
+    Raises CLPointError (a ValueError) naming the first row whose axis is zero, not finite, or has k ≤ 0
     (a tool pointing down or sideways cannot be written as Rx(θ_A)·Ry(θ_B)·e_z with
     |θ_A|, |θ_B| < 90°).
     """
@@ -47,14 +49,14 @@ def axis_to_angles(axes):
     bad = ~np.isfinite(norm) | (norm == 0.0)
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"tool axis {i}: {axes[i].tolist()} is zero or not finite")
+        raise CLPointError(i, f"tool axis {axes[i].tolist()} is zero or not finite")
     unit = axes / norm[:, None]
     down = unit[:, 2] <= 0.0
     if down.any():
         i = int(np.flatnonzero(down)[0])
-        raise ValueError(
-            f"tool axis {i}: {axes[i].tolist()} has k <= 0; only axes pointing up "
-            "(k > 0) can be expressed as (theta_a, theta_b)"
+        raise CLPointError(
+            i, f"tool axis {axes[i].tolist()} has k <= 0; only axes pointing up (k > 0) can be "
+            "expressed as (theta_a, theta_b)"
         )
     theta_b = np.degrees(np.arcsin(np.clip(unit[:, 0], -1.0, 1.0)))
     theta_a = np.degrees(np.arctan2(-unit[:, 1], unit[:, 2]))

@@ -9,6 +9,8 @@ from typing import Optional
 
 import numpy as np
 
+from ..errors import CLPointError
+from .bands import WallBands
 from .frames import axis_to_angles
 from .tolerances import WALL_CHECK_SAMPLES
 from .walls import SplineWall, Wall
@@ -77,9 +79,8 @@ class Staircase:
     record six points on each.
     Inside means x_min ≤ x ≤ x_max, y_min ≤ y ≤ y_max and base_z ≤ z ≤ z_top of the section
     holding (x, y); section j holds W_j(y) ≤ x < W_{j+1}(y).
-    Derived: walls (n−1 Wall), wall_bands (n−1, 2) min and max x of each wall and
-    wall_slopes (n−1,) max |dx/dy| of each quintic wall (inf for exact curves), both over
-    [y_min, y_max].
+    Derived: walls (n−1 Wall or SplineWall) and bands (WallBands: where each wall can be,
+    and how steep it is, over any y interval of the window).
     """
 
     x_min: float
@@ -91,8 +92,7 @@ class Staircase:
     wall_points: np.ndarray
     wall_curves: Optional[tuple] = field(default=None, repr=False, compare=False)
     walls: tuple = field(init=False, repr=False, compare=False)
-    wall_bands: np.ndarray = field(init=False, repr=False, compare=False)
-    wall_slopes: np.ndarray = field(init=False, repr=False, compare=False)
+    bands: WallBands = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         for name in ("x_min", "x_max", "y_min", "y_max", "base_z"):
@@ -127,10 +127,7 @@ class Staircase:
         object.__setattr__(self, "wall_points", _array("wall_points", points, (None, 6, 2)))
         object.__setattr__(self, "walls", tuple(walls))
         self._check_wall_order()
-        bands = np.array([w.x_range(self.y_min, self.y_max) for w in walls]).reshape(-1, 2)
-        slopes = np.array([w.max_slope(self.y_min, self.y_max) if isinstance(w, Wall) else np.inf for w in walls])
-        object.__setattr__(self, "wall_bands", bands)
-        object.__setattr__(self, "wall_slopes", slopes)
+        object.__setattr__(self, "bands", WallBands(walls, self.y_min, self.y_max))
 
     def _check_wall_order(self):
         """Walls must lie strictly inside (x_min, x_max) and in order along +x over the y window."""
@@ -163,14 +160,15 @@ class Staircase:
     def section_at(self, x, y):
         """Index of the section holding (x, y): the number of walls with W_j(y) ≤ x (int array).
 
-        Inside the y window a wall is only evaluated where x falls in its band.
+        Inside the y window a wall is only evaluated where x falls in its band at that y.
         """
         x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
         shape = x.shape
         x, y = x.reshape(-1), y.reshape(-1)
         in_window = (y >= self.y_min) & (y <= self.y_max)
         count = np.zeros(x.shape, dtype=np.intp)
-        for wall, (low, high) in zip(self.walls, self.wall_bands):
+        for j, wall in enumerate(self.walls):
+            low, high, _ = self.bands.query(y, y, np.full(y.shape, j))
             sure = in_window & ((x < low) | (x > high))
             count += sure & (x > high)
             rows = np.flatnonzero(~sure)
@@ -210,7 +208,7 @@ class Toolpath:
             steep = np.flatnonzero(np.abs(angles) >= 90.0)
             if steep.size:
                 i = int(steep[0])
-                raise ValueError(f"CL {i}: {name} = {angles[i]} must be within (-90, 90) degrees")
+                raise CLPointError(i, f"{name} = {angles[i]} must be within (-90, 90) degrees")
             object.__setattr__(self, name, angles)
         if self.cc is not None:
             object.__setattr__(self, "cc", _array("cc", self.cc, (cl.shape[0], 3)))

@@ -60,10 +60,21 @@ def k_coefficients(h, a, b, s, sin_b):
     h: (6,) raw coefficients H_0..H_5 of x = P(y); a, b, s (= sin θ_A cos θ_B) and sin_b
     (= sin θ_B) broadcast together. Σ K_k l^k = P(b − s·l) − (a + sin_b·l).
     """
-    k = compose_linear(h, np.asarray(b, dtype=float), -np.asarray(s, dtype=float))
+    a, b, s, sin_b = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (a, b, s, sin_b)))
+    k = compose_linear(h, b, -s)
     k[..., 0] -= a
     k[..., 1] -= sin_b
     return k
+
+
+def value_and_slope(columns, t):
+    """p(t) and p′(t) by one Horner pass; columns (d+1, m): the coefficients, ascending, by row."""
+    value = columns[-1]
+    slope = np.zeros_like(value)
+    for k in range(columns.shape[0] - 2, -1, -1):
+        slope = slope * t + value
+        value = value * t + columns[k]
+    return value, slope
 
 
 def bracketed_root(coefficients, lo, hi, f_lo, f_hi):
@@ -71,33 +82,30 @@ def bracketed_root(coefficients, lo, hi, f_lo, f_hi):
 
     coefficients: (m, d+1); lo, hi, f_lo, f_hi: (m,). Safeguarded Newton: a Newton step
     that leaves the bracket is replaced by bisection, the bracket shrinks every step.
-    Returns (m,) roots, accurate to ROOT_TOL on the unit scale.
+    All rows step together (a finished row stays put), which at these sizes is cheaper than
+    gathering the unfinished ones. Returns (m,) roots, accurate to ROOT_TOL on the unit scale.
     """
     lo, hi, f_lo = lo.copy(), hi.copy(), f_lo.copy()
     with np.errstate(divide="ignore", invalid="ignore"):
         x = np.where(f_hi != f_lo, lo - f_lo * (hi - lo) / (f_hi - f_lo), 0.5 * (lo + hi))
     x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
     x = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, x))
-    active = np.flatnonzero((f_lo != 0.0) & (f_hi != 0.0))
-    slope = derivative(coefficients)
+    done = (f_lo == 0.0) | (f_hi == 0.0)
+    negative_lo = f_lo < 0.0
+    columns = np.ascontiguousarray(coefficients.T)
     for _ in range(ROOT_MAX_ITER):
-        if active.size == 0:
+        if done.all():
             break
-        c, xa = coefficients[active], x[active]
-        f = horner(c, xa)
-        same = np.sign(f) == np.sign(f_lo[active])
-        lo[active] = np.where(same, xa, lo[active])
-        f_lo[active] = np.where(same, f, f_lo[active])
-        hi[active] = np.where(same, hi[active], xa)
+        f, slope = value_and_slope(columns, x)
+        toward_hi = (f < 0.0) == negative_lo  # same sign as at lo: the root is above x
+        lo = np.where(done | ~toward_hi, lo, x)
+        hi = np.where(done | toward_hi, hi, x)
         with np.errstate(divide="ignore", invalid="ignore"):
-            step = f / horner(slope[active], xa)
-            nxt = xa - step
-        a_lo, a_hi = lo[active], hi[active]
-        nxt = np.where((nxt > a_lo) & (nxt < a_hi), nxt, 0.5 * (a_lo + a_hi))
-        x[active] = nxt
-        done = (f == 0.0) | (np.abs(nxt - xa) <= ROOT_TOL) | (a_hi - a_lo <= ROOT_TOL)
-        x[active[f == 0.0]] = xa[f == 0.0]
-        active = active[~done]
+            nxt = x - f / slope
+        nxt = np.where((nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+        finished = done | (f == 0.0) | (np.abs(nxt - x) <= ROOT_TOL) | (hi - lo <= ROOT_TOL)
+        x = np.where(done | (f == 0.0), x, nxt)
+        done = finished
     return x
 
 
@@ -112,6 +120,8 @@ def real_roots_unit(coefficients):
         with np.errstate(divide="ignore", invalid="ignore"):
             r = -c[:, 0] / c[:, 1]
         return np.where((r >= 0.0) & (r <= 1.0), r, np.nan)[:, None]
+    if d == 2:
+        return _quadratic_roots_unit(c)
     critical = real_roots_unit(derivative(c))
     knots = np.sort(np.concatenate([np.zeros((m, 1)), critical, np.ones((m, 1))], axis=1), axis=1)
     knots = np.where(np.isnan(knots), 1.0, knots)
@@ -127,6 +137,24 @@ def real_roots_unit(coefficients):
     if r.size:
         out[r, k] = bracketed_root(c[r], lo[r, k], hi[r, k], f_lo[r, k], f_hi[r, k])
     return np.sort(out, axis=1)
+
+
+def _quadratic_roots_unit(c):
+    """Real roots in [0, 1] of c0 + c1 u + c2 u², (m, 3) -> (m, 2) sorted, NaN-padded.
+
+    The cancellation-free form: q = −(c1 + sign(c1)·√disc)/2, roots q/c2 and c0/q. A vanishing
+    c2 sends q/c2 off to infinity (dropped) and leaves c0/q = −c0/c1, the linear root; a double
+    root is kept once.
+    """
+    c0, c1, c2 = c[:, 0], c[:, 1], c[:, 2]
+    disc = c1 * c1 - 4.0 * c2 * c0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        q = -0.5 * (c1 + np.where(c1 < 0.0, -1.0, 1.0) * np.sqrt(np.maximum(disc, 0.0)))
+        roots = np.stack([q / c2, c0 / q], axis=1)
+    roots = np.where((disc >= 0.0)[:, None] & (roots >= 0.0) & (roots <= 1.0), roots, np.nan)
+    roots = np.sort(roots, axis=1)
+    roots[:, 1] = np.where(roots[:, 1] == roots[:, 0], np.nan, roots[:, 1])
+    return roots
 
 
 def monotone_root_unit(coefficients):

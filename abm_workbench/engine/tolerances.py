@@ -1,7 +1,8 @@
 """Tolerances of the engine, in one place (lengths in mm)."""
 
-#: Relative tolerance of the root finders on the unit interval of a boundary search.
-ROOT_TOL = 1e-15
+#: The root finders stop when a Newton step or the bracket is below this, on the unit interval
+#: of a boundary search (Newton converges quadratically, so the root is then good to ~1e-24).
+ROOT_TOL = 1e-12
 #: Iteration cap of the safeguarded Newton-bisection root finder.
 ROOT_MAX_ITER = 100
 #: Pieces of the cutting edge shorter than this (mm) are merged with their neighbours.

@@ -28,6 +28,19 @@ def _real_roots_between(ascending, lo, hi):
     return real[(real >= lo) & (real <= hi)]
 
 
+def _extremes_per_bin(ascending, t):
+    """min and max (B,) of a polynomial over each bin [t[b], t[b+1]] of increasing t (B+1,)."""
+    at_edges = horner(ascending, t)
+    low = np.minimum(at_edges[:-1], at_edges[1:])
+    high = np.maximum(at_edges[:-1], at_edges[1:])
+    critical = _real_roots_between(_derivative(ascending), t[0], t[-1])
+    where = np.clip(np.searchsorted(t, critical, side="right") - 1, 0, t.size - 2)
+    values = horner(ascending, critical)
+    np.minimum.at(low, where, values)
+    np.maximum.at(high, where, values)
+    return low, high
+
+
 def _derivative(ascending):
     """Ascending coefficients of the derivative."""
     return ascending[1:] * np.arange(1, ascending.size)
@@ -94,12 +107,13 @@ class Wall:
         """The same wall moved by (dx, dy) mm."""
         return Wall.from_points(self.points + np.array([dx, dy]))
 
-    def max_slope(self, y_lo, y_hi):
-        """max |dP/dy| over y in [y_lo, y_hi], from the critical points of P'."""
+    def bins(self, edges):
+        """Per bin [edges[b], edges[b+1]] of y (B+1,): min x, max x and max |dP/dy|, each (B,), exact."""
+        t = (np.asarray(edges, dtype=float) - self.y_mid) / self.y_half
         first = _derivative(self.coefficients)
-        t_lo, t_hi = (y_lo - self.y_mid) / self.y_half, (y_hi - self.y_mid) / self.y_half
-        t = np.concatenate([[t_lo, t_hi], _real_roots_between(_derivative(first), t_lo, t_hi)])
-        return float(np.abs(horner(first, t)).max() / self.y_half)
+        low, high = _extremes_per_bin(self.coefficients, t)
+        slope_low, slope_high = _extremes_per_bin(first, t)
+        return low, high, np.maximum(np.abs(slope_low), np.abs(slope_high)) / self.y_half
 
 
 @dataclass(frozen=True)
@@ -180,6 +194,11 @@ class SplineWall:
         low = min(ends.min(), boxes[:, 0].min()) if boxes.size else ends.min()
         high = max(ends.max(), boxes[:, 1].max()) if boxes.size else ends.max()
         return float(low), float(high)
+
+    def bins(self, edges):
+        """Per bin [edges[b], edges[b+1]] of y (B+1,): bounds of x (B,), (B,) and slope bound (inf)."""
+        ranges = np.array([self.x_range(a, b) for a, b in zip(edges[:-1], edges[1:])])
+        return ranges[:, 0], ranges[:, 1], np.full(len(ranges), np.inf)
 
     def crossings(self, x0, y0, dx, dy, lo, hi):
         """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the curve.

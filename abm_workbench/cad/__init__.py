@@ -1,0 +1,10 @@
+"""The CAD layer: solids in and out, staircase recognition, and the boolean reference.
+
+This subpackage is the only place that imports FreeCAD and Part (through
+:mod:`.freecad_env`); the engine stays pure numpy. Lengths in mm, angles in degrees.
+
+- :mod:`.solids`: a :class:`~abm_workbench.engine.Staircase` as an exact solid, STEP/BREP export.
+- :mod:`.recognise`: a solid (STEP, BREP, FCStd) back into a Staircase.
+- :mod:`.boolean`: lengths of cut by OpenCASCADE booleans, the reference the engine is
+  checked against (the paper's Siemens NX check).
+"""

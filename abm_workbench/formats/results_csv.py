@@ -1,0 +1,174 @@
+"""An Engagement as CSV: one row per (CL point, φ), and a summary per engagement segment.
+
+``R.csv`` columns, one row per instant, CL points in pass order and φ ascending within each:
+cl (0-based), phi_deg, lep_l, uep_l, length (mm along the edge), pieces, uep_surface (name),
+uep_section, uep_wall, case (Table 1 name), segment (letter, empty without engagement),
+h (mm), area (mm²), lep_x, lep_y, lep_z, uep_x, uep_y, uep_z (mm).
+
+``R.summary.csv`` columns, one row per CL point and engagement segment (one row with an
+empty segment for a CL point without engagement): cl, depth_of_cut (mm), segment,
+phi_start, phi_end (deg), uep_surface, uep_section, uep_wall, max_length, mean_length (mm);
+then, when the toolpath is given, cl_x, cl_y, cl_z (mm), theta_a, theta_b (deg).
+
+Numbers are rounded to DECIMALS places and written in the shortest form that reads back as
+the rounded value; NaN is an empty field.
+"""
+
+import os
+
+import numpy as np
+
+from ..engine import segment_letter
+from ..errors import InputError
+from . import read_text, replacing
+
+#: Decimal places kept (mm, deg, mm²): values read back within 5e-11 of what was computed.
+DECIMALS = 10
+RESULT_COLUMNS = (
+    "cl", "phi_deg", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall",
+    "case", "segment", "h", "area", "lep_x", "lep_y", "lep_z", "uep_x", "uep_y", "uep_z",
+)
+SUMMARY_COLUMNS = (
+    "cl", "depth_of_cut", "segment", "phi_start", "phi_end", "uep_surface", "uep_section", "uep_wall",
+    "max_length", "mean_length",
+)
+#: Summary columns added when the toolpath is given.
+TOOLPATH_COLUMNS = ("cl_x", "cl_y", "cl_z", "theta_a", "theta_b")
+_TEXT_COLUMNS = {"uep_surface", "case", "segment"}
+_INT_COLUMNS = {"cl", "pieces", "uep_section", "uep_wall"}
+
+
+def summary_path(path):
+    """Path of the summary beside results `path`: R.csv -> R.summary.csv (R.txt -> R.txt.summary.csv)."""
+    path = os.fspath(path)
+    stem = path[:-4] if path.lower().endswith(".csv") else path
+    return stem + ".summary.csv"
+
+
+def write_results(engagement, path, *, toolpath=None):
+    """Write the results and the summary CSV of `engagement`, both or neither.
+
+    toolpath: the Toolpath of the pass, to add each CL point's position and angles to the
+    summary. Returns (path, summary path) as str.
+    """
+    path, summary = os.fspath(path), summary_path(path)
+    texts = (results_text(engagement), summary_text(engagement, toolpath=toolpath))
+    with replacing(path, summary) as temporaries:
+        for temporary, text in zip(temporaries, texts):
+            write_text(temporary, text)
+    return path, summary
+
+
+def write_text(path, text):
+    """Write `text` to `path` as UTF-8 with \\n line ends."""
+    with open(path, "w", encoding="utf-8", newline="") as file:
+        file.write(text)
+
+
+def results_text(engagement):
+    """The results CSV of an Engagement (m CL points × p angles: m·p rows) as one string."""
+    m, p = engagement.shape
+    flat = {name: getattr(engagement, name).reshape(-1) for name in (
+        "lep_l", "uep_l", "length", "pieces", "uep_section", "uep_wall", "area")}
+    columns = {
+        "cl": np.repeat(np.arange(m), p).astype(str),
+        "phi_deg": _numbers(np.tile(engagement.phi, m)),
+        **{name: _numbers(flat[name]) for name in ("lep_l", "uep_l", "length")},
+        "pieces": flat["pieces"].astype(str),
+        "uep_surface": engagement.surface_names().reshape(-1),
+        "uep_section": flat["uep_section"].astype(str),
+        "uep_wall": flat["uep_wall"].astype(str),
+        "case": engagement.case_names().reshape(-1),
+        "segment": _letters(engagement.segment.reshape(-1)),
+        "h": _numbers(np.tile(engagement.h, m)),
+        "area": _numbers(flat["area"]),
+    }
+    for point in ("lep", "uep"):
+        xyz = getattr(engagement, f"{point}_xyz").reshape(-1, 3)
+        for axis, name in enumerate("xyz"):
+            columns[f"{point}_{name}"] = _numbers(xyz[:, axis])
+    return _csv(RESULT_COLUMNS, [columns[name] for name in RESULT_COLUMNS])
+
+
+def summary_text(engagement, *, toolpath=None):
+    """The summary CSV of an Engagement as one string (see the module docstring)."""
+    records = []
+    for cl in range(engagement.shape[0]):
+        segments = engagement.segments(cl) or [
+            {"letter": "", "phi_start": np.nan, "phi_end": np.nan, "surface": "none", "section": -1, "wall": -1,
+             "max_length": 0.0, "mean_length": 0.0}
+        ]
+        records += [(cl, segment) for segment in segments]
+    cl = np.array([cl for cl, _ in records], dtype=int)
+
+    def field(key):
+        return [segment[key] for _, segment in records]
+
+    columns = [
+        cl.astype(str), _numbers(engagement.depth_of_cut[cl]), field("letter"),
+        _numbers(field("phi_start")), _numbers(field("phi_end")), field("surface"),
+        np.array(field("section")).astype(str), np.array(field("wall")).astype(str),
+        _numbers(field("max_length")), _numbers(field("mean_length")),
+    ]
+    names = SUMMARY_COLUMNS
+    if toolpath is not None:
+        if len(toolpath) != engagement.shape[0]:
+            raise ValueError(f"toolpath has {len(toolpath)} CL points, the engagement {engagement.shape[0]}")
+        names += TOOLPATH_COLUMNS
+        columns += [_numbers(toolpath.cl[cl, axis]) for axis in range(3)]
+        columns += [_numbers(toolpath.theta_a[cl]), _numbers(toolpath.theta_b[cl])]
+    return _csv(names, columns)
+
+
+def _numbers(values):
+    """Text (same shape) of float `values`: rounded to DECIMALS places, '' for NaN."""
+    values = np.asarray(values, dtype=float)
+    text = (np.round(values, DECIMALS) + 0.0).astype(str)  # + 0.0 turns -0.0 into 0.0
+    return np.where(np.isnan(values), "", text)
+
+
+def _letters(segment):
+    """Segment letters for segment indices (N,), '' for −1."""
+    names = np.array([segment_letter(s) for s in range(int(segment.max(initial=-1)) + 1)] + [""])
+    return names[segment]
+
+
+def _csv(names, columns):
+    """CSV text: a header of `names`, then one line per row of the equal-length `columns`."""
+    table = np.stack([np.asarray(column, dtype=str) for column in columns], axis=1)
+    lines = [",".join(names)] + [",".join(row) for row in table.tolist()]
+    return "\n".join(lines) + "\n"
+
+
+def read_results(path):
+    """Columns of a results or summary CSV written here, as a dict name -> (rows,) array.
+
+    uep_surface, case and segment are str arrays; cl, pieces, uep_section and uep_wall int
+    arrays; every other column float (NaN for an empty field). InputError naming the file
+    and line for a malformed file.
+    """
+    name = os.fspath(path)
+    lines = read_text(path).splitlines()
+    if not lines:
+        raise InputError(f"{name}: empty file; expected a results header {','.join(RESULT_COLUMNS[:3])},...")
+    header = lines[0].split(",")
+    rows = [line.split(",") for line in lines[1:]]
+    for number, row in enumerate(rows, start=2):
+        if len(row) != len(header):
+            raise InputError(f"{name}:{number}: expected {len(header)} fields, got {len(row)}")
+    table = np.array(rows, dtype=str).reshape(len(rows), len(header))
+    return {column: _parse(column, table[:, c], name) for c, column in enumerate(header)}
+
+
+def _parse(column, text, name):
+    """One column's text (rows,) as str, int or float array (see read_results)."""
+    if column in _TEXT_COLUMNS:
+        return text
+    kind = int if column in _INT_COLUMNS else float
+    values = []
+    for row, field in enumerate(text.tolist(), start=2):
+        try:
+            values.append(kind(field) if field or kind is int else np.nan)
+        except ValueError:
+            raise InputError(f"{name}:{row}: column {column!r}: {field!r} is not a valid {kind.__name__}") from None
+    return np.array(values, dtype=kind)

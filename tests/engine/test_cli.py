@@ -1,0 +1,219 @@
+"""The command line, end to end: in-process through main() and once as `python -m abm_workbench`."""
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from abm_workbench import cli
+from abm_workbench.formats.results_csv import RESULT_COLUMNS, SUMMARY_COLUMNS, TOOLPATH_COLUMNS, read_results
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PYTHON = "/usr/bin/python3"
+M, P = 12, 37  # CL points of the test pass; angles 0:180 by 5 degrees
+JOB = {"diameter": 12, "flutes": 2, "flute_length": 30, "feed_per_tooth": 0.1, "inclination": 10,
+       "spindle_rpm": 4000, "phi_range": [0, 180], "phi_step": 5, "description": "test pass"}
+INPUTS = ["job.json", "stock.json", "toolpath.csv"]
+
+
+@pytest.fixture
+def case(tmp_path, monkeypatch):
+    """tmp_path holding stock.json, toolpath.csv (M points across a step and a curved wall), job.json.
+
+    The working directory is tmp_path, so the files go by their bare names.
+    """
+    y = [-15.0, -9.0, -3.0, 3.0, 9.0, 15.0]
+    stock = {
+        "format": "abm-staircase/1", "units": "mm", "base_z": -20, "x_min": 0, "x_max": 130,
+        "y_min": -15, "y_max": 15,
+        "sections": [{"z_top": 4.0}, {"z_top": 6.5, "wall": [[40, v] for v in y]},
+                     {"z_top": 3.0, "wall": [[80 + 3 * np.sin(v / 5), v] for v in y]}],
+    }
+    (tmp_path / "stock.json").write_text(json.dumps(stock))
+    rows = [f"{x:.6f},0,{x / 60 - 1:.6f},0,10" for x in np.linspace(10, 120, M)]
+    (tmp_path / "toolpath.csv").write_text("x,y,z,theta_a,theta_b\n" + "\n".join(rows) + "\n")
+    (tmp_path / "job.json").write_text(json.dumps(JOB))
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+BASE = ["engage", "--stock", "stock.json", "--toolpath", "toolpath.csv", "--job", "job.json", "--out", "R.csv"]
+FULL = ["engage", "--stock", "stock.json", "--toolpath", "toolpath.csv", "--diameter", "12", "--flutes", "2",
+        "--flute-length", "30", "--feed-per-tooth", "0.1", "--inclination", "10", "--phi-step", "5",
+        "--phi-range", "0:180", "--spindle-rpm", "4000", "--out", "R.csv", "--plot", "R.png"]
+
+
+def run(argv, capsys):
+    """main(argv) -> (status, stdout, stderr)."""
+    status = cli.main(argv)
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_engage_with_every_option(case, capsys):
+    status, out, err = run(FULL, capsys)
+    assert (status, err) == (0, "")
+    assert sorted(os.listdir(case)) == sorted(INPUTS + ["R.csv", "R.png", "R.summary.csv"])
+    assert out.count("\n") == 1
+    assert out.startswith(f"abm: {M} CL points x {P} angles = {M * P} instants in ")
+    assert "depth of cut " in out and out.endswith("wrote R.csv, R.summary.csv, R.png\n")
+    results = read_results(case / "R.csv")
+    assert list(results) == list(RESULT_COLUMNS) and len(results["cl"]) == M * P
+    np.testing.assert_array_equal(results["phi_deg"][:P], np.arange(0, 181, 5))
+    summary = read_results(case / "R.summary.csv")
+    assert list(summary) == [*SUMMARY_COLUMNS, *TOOLPATH_COLUMNS]
+    assert sorted(set(summary["cl"])) == list(range(M))
+    assert (case / "R.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_job_gives_defaults_and_options_override(case, capsys):
+    status, out, _ = run(BASE + ["--phi-step", "10", "--phi-range", "0:90"], capsys)
+    assert status == 0 and f"x 10 angles = {M * 10} instants" in out
+    assert sorted(os.listdir(case)) == sorted(INPUTS + ["R.csv", "R.summary.csv"])
+    status, out, _ = run(BASE, capsys)
+    assert status == 0 and f"x {P} angles" in out
+
+
+def test_engage_as_a_module_from_the_repository_root(case):
+    argv = [PYTHON, "-m", "abm_workbench", "engage", "--stock", str(case / "stock.json"),
+            "--toolpath", str(case / "toolpath.csv"), "--job", str(case / "job.json"), "--out", str(case / "R.csv")]
+    done = subprocess.run(argv, cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith(f"abm: {M} CL points") and done.stderr == ""
+    assert len(read_results(case / "R.csv")["cl"]) == M * P
+    bad = subprocess.run(argv[:-1] + [str(case / "R.csv"), "--phi-range", "a:b"], cwd=ROOT, capture_output=True,
+                         text=True, timeout=120)
+    assert bad.returncode == 2
+    assert bad.stderr == "abm: error: --phi-range: expected START:END in degrees such as 0:180, got 'a:b'\n"
+
+
+def _write(name, text):
+    def prepare(folder):
+        (folder / name).write_text(text)
+    return prepare
+
+
+def _job(**changes):
+    return _write("job.json", json.dumps({**JOB, **changes}))
+
+
+def _nothing(folder):
+    """No change to the inputs."""
+
+
+@pytest.mark.parametrize(
+    "prepare, extra, message",
+    [
+        (_write("stock.json", '{"format": "abm-staircase/1",\n "units": }'), [],
+         "stock.json:2:11: invalid JSON: Expecting value"),
+        (_write("stock.json", '{"format": "abm-staircase/9"}'), [], "stock.json: format must be 'abm-staircase/1'"),
+        (_write("toolpath.csv", "x,y,z,theta_a,theta_b\n10,0,0,0,10\n20,0,zero,0,10\n"), [],
+         "toolpath.csv:3: column 'z': 'zero' is not a number"),
+        (_write("toolpath.csv", "x,y,z,i,j,k\n10,0,0,0,0,1\n20,0,0,0,0,-1\n"), [],
+         "toolpath.csv:3: tool axis [0.0, 0.0, -1.0] has k <= 0"),
+        (_nothing, ["--stock", "missing.json"], "missing.json: cannot read: No such file or directory"),
+        (_nothing, ["--phi-range", "a:b"], "--phi-range: expected START:END in degrees such as 0:180, got 'a:b'"),
+        (_nothing, ["--phi-range", "0:90:180"], "--phi-range: expected START:END"),
+        (_nothing, ["--phi-range", "180:0"], "cut settings: phi range 180.0:0.0 must not be decreasing"),
+        (_nothing, ["--phi-step", "0"], "cut settings: phi_step must be positive, got 0.0"),
+        (_nothing, ["--diameter", "-12"], "tool: diameter must be positive, got -12.0"),
+        (_nothing, ["--flute-length", "nan"], "tool: flute_length must be a finite number, got nan"),
+        (_job(diameter=None), [], "job.json: diameter: must be a number, got null"),
+        (_job(flutes="two"), [], "job.json: flutes: must be a number, got \"two\""),
+        (_job(flutes=2.5), [], "tool: flutes must be a whole number, got 2.5"),
+        (_job(phi_range=[0]), [], "job.json: phi_range: must be [start, end] in degrees"),
+        (_job(description=3), [], "job.json: description: must be a string"),
+        (_job(tool="ball"), [], "job.json: unknown key 'tool'"),
+        (_write("job.json", json.dumps({k: v for k, v in JOB.items() if k != "feed_per_tooth"})), [],
+         "missing --feed-per-tooth (or 'feed_per_tooth' in a --job file)"),
+        (_write("toolpath.csv", "x,y,z,theta_a,theta_b\n10,0,40,0,0\n20,0,40,0,0\n"), [],
+         "toolpath.csv: the tool never touches the stock"),
+        (_nothing, ["--out", "toolpath.csv/R.csv"], "toolpath.csv/R.csv: cannot write: "),
+        (_nothing, ["--out", "new/R.csv", "--diameter", "0"], "tool: diameter must be positive"),
+        (_nothing, ["--plot", "R.csv"], "R.csv: written twice"),
+        (_nothing, ["--out", "toolpath.csv"], "toolpath.csv: is an input and would be overwritten"),
+    ],
+)
+def test_bad_input_exits_2_and_writes_nothing(case, capsys, prepare, extra, message):
+    prepare(case)
+    status, out, err = run(BASE + ["--plot", "R.png"] + extra, capsys)
+    assert status == 2 and out == ""
+    assert err.startswith(f"abm: error: {message}") and err.count("\n") == 1
+    assert sorted(os.listdir(case)) == INPUTS
+
+
+def test_output_folders_are_made(case, capsys):
+    status, out, _ = run(BASE[:-1] + ["out/pass 1/R.csv", "--plot", "plots/R.png"], capsys)
+    assert status == 0 and out.endswith("wrote out/pass 1/R.csv, out/pass 1/R.summary.csv, plots/R.png\n")
+    assert sorted(os.listdir(case / "out" / "pass 1")) == ["R.csv", "R.summary.csv"]
+    assert os.listdir(case / "plots") == ["R.png"]
+
+
+def test_missing_job_and_options(case, capsys):
+    status, _, err = run(BASE[:5] + ["--out", "R.csv"], capsys)
+    assert status == 2 and err == "abm: error: missing --diameter (or 'diameter' in a --job file)\n"
+
+
+def test_failure_leaves_older_results_untouched(case, capsys):
+    for name in ("R.csv", "R.summary.csv", "R.png"):
+        (case / name).write_text(f"old {name}")
+    status, _, _ = run(BASE + ["--plot", "R.png", "--diameter", "0"], capsys)
+    assert status == 2
+    for name in ("R.csv", "R.summary.csv", "R.png"):
+        assert (case / name).read_text() == f"old {name}"
+    assert sorted(os.listdir(case)) == sorted(INPUTS + ["R.csv", "R.png", "R.summary.csv"])
+
+
+def test_interrupt_while_writing_leaves_nothing(case, capsys, monkeypatch):
+    written = []
+
+    def interrupt_second(path, text):
+        written.append(path)
+        if len(written) == 2:
+            raise KeyboardInterrupt
+        with open(path, "w") as file:
+            file.write(text)
+
+    monkeypatch.setattr(cli, "write_text", interrupt_second)
+    status, _, err = run(BASE, capsys)
+    assert (status, err) == (130, "abm: interrupted\n")
+    assert len(written) == 2 and sorted(os.listdir(case)) == INPUTS
+
+
+def test_interrupt_in_the_engine(case, capsys, monkeypatch):
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(cli, "engage", interrupted)
+    status, _, _ = run(BASE, capsys)
+    assert status == 130 and sorted(os.listdir(case)) == INPUTS
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        ([], "abm: error: the following arguments are required: COMMAND"),
+        (["mill"], "abm: error: argument COMMAND: invalid choice: 'mill'"),
+        (BASE + ["--diameter", "twelve"], "abm: error: argument --diameter: invalid float value: 'twelve'"),
+        (BASE[:3], "abm: error: the following arguments are required: --toolpath, --out"),
+    ],
+)
+def test_usage_errors(case, capsys, argv, message):
+    status, _, err = run(argv, capsys)
+    assert status == 2 and err.startswith("usage: abm") and message in err
+
+
+def test_help(capsys):
+    status, out, _ = run(["engage", "--help"], capsys)
+    assert status == 0 and "--feed-per-tooth" in out and "--phi-range" in out
+
+
+def test_progress_only_on_a_terminal(case, capsys, monkeypatch):
+    status, _, err = run(BASE, capsys)
+    assert status == 0 and err == ""
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    status, _, err = run(BASE, capsys)
+    assert status == 0 and err.endswith(f"\rabm: CL points {M}/{M}\n")
