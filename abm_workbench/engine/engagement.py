@@ -292,17 +292,58 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     """Engagement of N edge lines S(l) = (x0, y0, z0) + l·(dx, dy, dz), 0 ≤ l ≤ length.
 
     Returns a dict of (N,) arrays: lep_l, uep_l, length, pieces, uep_surface, uep_section,
-    uep_wall, case.
+    uep_wall, case. Lines that can reach no wall stay in one section and are solved in closed
+    form; the others go through the breakpoints.
     """
     n = x0.size
     lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
     live = hi > lo
     lo, hi = np.where(live, lo, 0.0), np.where(live, hi, 0.0)
     seg_x = np.stack([x0 + dx * lo, x0 + dx * hi])
-    seg_min, seg_max = seg_x.min(axis=0), seg_x.max(axis=0)
     pair_rows, pair_walls, left_of, steepness = _reachable_walls(
-        stock, live, seg_min, seg_max, y0 + dy * lo, y0 + dy * hi)
+        stock, live, seg_x.min(axis=0), seg_x.max(axis=0), y0 + dy * lo, y0 + dy * hi)
+    walled = np.zeros(n, dtype=bool)
+    walled[pair_rows] = True
+    lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
+    result = {}
+    for subset, solve in ((~walled, _single_section), (walled, _broken_lines)):
+        rows = np.flatnonzero(subset)
+        if rows.size == 0:
+            continue
+        renumber = np.cumsum(subset) - 1
+        part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows], pair_walls, steepness)
+        for name, values in part.items():
+            result.setdefault(name, np.empty(n, dtype=values.dtype))[rows] = values
+    return result
 
+
+def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, *_):
+    """Engagement of lines whose clipped segment [lo, hi] stays in section left_of: inside from
+    lo up to that section's top or hi, whichever comes first (same dict as _solve_lines)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        top = (stock.z_top[np.minimum(left_of, stock.n_sections - 1)] - z0) / dz
+    end = np.minimum(hi, top)
+    engaged = (hi > lo) & (end - lo > LENGTH_EPS)
+    at_top = top < hi
+    surface = np.where(engaged, np.where(at_top, _TOP, hi_surface), _NONE)
+    wall_index = np.where(engaged & ~at_top, hi_wall, -1)
+    section = np.where(engaged, left_of, -1)
+    bottom = np.where((hi > lo) & (lo == 0.0), left_of, -1)  # else _table1_case looks it up
+    pieces = engaged.astype(np.intp)
+    return {
+        "lep_l": np.where(engaged, lo, np.nan), "uep_l": np.where(engaged, end, np.nan),
+        "length": np.where(engaged, end - lo, 0.0), "pieces": pieces, "uep_surface": surface,
+        "uep_section": section, "uep_wall": wall_index,
+        "case": _table1_case(stock, x0, y0, dx, bottom, section[:, None], engaged, pieces, wall_index),
+    }
+
+
+def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, pair_rows, pair_walls,
+                  steepness):
+    """Engagement of lines that may cross walls (pairs pair_rows, pair_walls, with the walls'
+    slope bounds steepness), cut at every breakpoint (same dict as _solve_lines)."""
+    n = x0.size
+    live = hi > lo
     # Breakpoints: the clipped ends, the section tops, the wall crossings. Only the tops of
     # the sections the segment can reach count: those from the first one right of every wall
     # wholly left of it, over each wall it may cross.
