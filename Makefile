@@ -27,9 +27,10 @@ test: deps
 benchmark: deps
 	$(PYTHON) benchmarks/engine_throughput.py
 
-# Re-make the bundled model tests from their design surfaces.
+# Re-make the bundled model tests from their design surfaces (JSON and CSV, then STEP solids).
 models: deps
 	$(PYTHON) resources/models/make_model_tests.py
+	$(PYTHON) resources/models/make_model_solids.py
 
 # Development install: link the checkout into FreeCAD's user Mod folder.
 install:

@@ -1,16 +1,26 @@
 """Command line of the ABM workbench: ``python -m abm_workbench <command> ...``.
 
 Commands:
-  engage   cut geometry of one pass: staircase JSON + toolpath CSV -> results CSV (+ PNG).
+  engage    cut geometry of one pass: stock + toolpath -> results CSV (+ PNG).
+  validate  the engine against OpenCASCADE booleans at every instant -> HTML report (+ FCStd).
+
+The stock is a staircase JSON or a solid (STEP, BREP, FCStd: FreeCAD is then needed), the
+toolpath a CSV or an APT / CL file. Cutting parameters come from the command line, else the
+APT file (CUTTER/TLDATA diameter and flute length, SPINDL speed, a constant FEDRAT as feed per
+tooth), else a --job file, else their defaults; the second line of the output says which.
+What the APT file could not read, or had to assume, is printed once as ``abm: warning: ...``.
 
 Errors in the input print ``abm: error: <message>`` on stderr and exit with status 2,
-leaving no output file behind (an existing one is replaced only on success); a failure to
-write exits with 1, an interrupt with 130, under the same rule. Missing output folders are
+leaving no output behind (an existing one is replaced only on success); a failure to write
+exits with 1, an interrupt (Ctrl-C) with 130, under the same rule. Missing output folders are
 made once the results are ready to be written.
 """
 
 import argparse
+import functools
+import contextlib
 import os
+import re
 import sys
 import time
 
@@ -18,18 +28,12 @@ import numpy as np
 
 from .engine import CutSettings, Tool, engage
 from .errors import InputError
-from .formats import check_keys, json_number, load_json_object, replacing
+from .formats import replacing
 from .formats.results_csv import results_text, summary_path, summary_text, write_text
-from .formats.staircase_json import load_staircase
-from .formats.toolpath_csv import load_toolpath
+from .jobs import (PARAMETERS, SOLID_SUFFIXES, WALL_MODELS, WALL_POINTS, load_job, load_path, load_stock,
+                   resolve_parameters, swept_y_window)
 
 PROG = "abm"
-_REQUIRED = object()
-#: Cutting parameters given by options or by a --job file, and their defaults.
-_PARAMETERS = {
-    "diameter": _REQUIRED, "flutes": _REQUIRED, "flute_length": _REQUIRED, "feed_per_tooth": _REQUIRED,
-    "inclination": 0.0, "spindle_rpm": None, "phi_range": (0.0, 180.0), "phi_step": 1.0,
-}
 
 
 class _Parser(argparse.ArgumentParser):
@@ -56,7 +60,8 @@ def main(argv=None):
         print(f"{PROG}: error: {error}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
-        print(f"{PROG}: interrupted", file=sys.stderr)
+        # On a terminal, end the line a progress bar (or the ^C echo) may have left open.
+        print(("\n" if sys.stderr.isatty() else "") + f"{PROG}: interrupted", file=sys.stderr)
         return 130
 
 
@@ -71,23 +76,45 @@ def _build_parser():
             "rotation angle), OUT with .summary.csv (one row per CL point and engagement segment) and, "
             "with --plot, a PNG."),
     )
-    _engage_arguments(engage_parser)
+    _input_arguments(engage_parser)
+    outputs = engage_parser.add_argument_group("outputs")
+    outputs.add_argument("--out", required=True, metavar="R.csv", help="results CSV; the summary goes to R.summary.csv")
+    outputs.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass")
     engage_parser.set_defaults(run=_run_engage)
+
+    validate_parser = commands.add_parser(
+        "validate", help="the engine against OpenCASCADE booleans, as an HTML report", description=(
+            "Length of cut by the engine (ABM) and by OpenCASCADE booleans of the cutting edges with the "
+            "stock solid, at every CL point and rotation angle; errors as the paper defines them, per "
+            "engagement segment and per UEP surface; timings. Writes the folder DIR (index.html and CSV "
+            "files) and, with --fcstd, an annotated FreeCAD document. Needs FreeCAD."),
+    )
+    _input_arguments(validate_parser)
+    outputs = validate_parser.add_argument_group("outputs")
+    outputs.add_argument("--report", required=True, metavar="DIR",
+                         help="report folder (index.html, comparison.csv, segments.csv, surfaces.csv, depth.csv); "
+                              "an older report there is replaced")
+    outputs.add_argument("--fcstd", metavar="OUT.FCStd", help="also write an annotated FreeCAD document")
+    outputs.add_argument("--cl", metavar="I,J,...",
+                         help="CL points (0-based) shown in detail and annotated in the FCStd "
+                              "(default: deepest, shallowest, middle and largest error; the FCStd all)")
+    validate_parser.set_defaults(run=_run_validate)
     return parser
 
 
-def _engage_arguments(parser):
-    """Options of the engage command."""
-    files = parser.add_argument_group("files")
-    files.add_argument("--stock", required=True, metavar="STOCK.json", help="staircase stock (abm-staircase/1 JSON)")
-    files.add_argument("--toolpath", required=True, metavar="PATH.csv",
-                       help="CL points: x,y,z,theta_a,theta_b or x,y,z,i,j,k (+ optional xc,yc,zc)")
-    files.add_argument("--out", required=True, metavar="R.csv", help="results CSV; the summary goes to R.summary.csv")
-    files.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass")
+def _input_arguments(parser):
+    """Input files, cutting parameters and stock options, shared by engage and validate."""
+    files = parser.add_argument_group("inputs")
+    files.add_argument("--stock", required=True, metavar="STOCK",
+                       help="staircase stock: abm-staircase/1 JSON, or a solid (.step, .stp, .brep, .brp, .FCStd)")
+    files.add_argument("--toolpath", required=True, metavar="PATH",
+                       help="CL points: CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k; + optional xc,yc,zc) "
+                            "or APT / CL file (.apt, .cls)")
     files.add_argument("--job", metavar="JOB.json",
                        help="JSON of default cutting parameters (keys as the options below, with _ for -; "
-                            "phi_range as [start, end]; description); options given here override it")
-    cutting = parser.add_argument_group("cutting parameters (required ones may come from --job)")
+                            "phi_range as [start, end]; description); options and the APT file override it")
+    cutting = parser.add_argument_group(
+        "cutting parameters (required ones may come from the APT file or --job; options override both)")
     cutting.add_argument("--diameter", type=float, help="tool diameter (mm), required")
     cutting.add_argument("--flutes", type=int, help="number of flutes, required")
     cutting.add_argument("--flute-length", type=float, help="flute length (mm), required")
@@ -97,19 +124,29 @@ def _engage_arguments(parser):
     cutting.add_argument("--phi-range", metavar="START:END",
                          help="tool rotation angles φ (deg), default 0:180 (--phi-range=-10:190 for a negative start)")
     cutting.add_argument("--phi-step", type=float, help="step of φ (deg), default 1")
+    solid = parser.add_argument_group("solid stock (STEP, BREP, FCStd) only")
+    solid.add_argument("--walls", choices=WALL_MODELS,
+                       help="wall model: the solid's own curves (exact, default) or the paper's quintic through "
+                            "six points (quintic)")
+    solid.add_argument("--wall-points", choices=WALL_POINTS,
+                       help="where the six points of each wall lie over the y window (default chebyshev)")
+    solid.add_argument("--y-window", metavar="whole|swept|Y0:Y1",
+                       help="y range recognised (mm): the stock's whole range (default), the range the cutting "
+                            "edges sweep in the pass plus 1 mm (swept; tightens quintic walls), or Y0:Y1 "
+                            "(--y-window=-10:10 for a negative start)")
 
 
-def _run_engage(args):
-    """The engage command; returns 0 or raises InputError."""
-    job = _load_job(args.job) if args.job else {}
-    given = {key: getattr(args, key) for key in _PARAMETERS}
+def _prepare(args):
+    """(job dict, Toolpath, Parameters, Tool, CutSettings) of the command line; warnings printed."""
+    job = load_job(args.job) if args.job else {}
+    toolpath, hints = load_path(args.toolpath)
+    given = {key: getattr(args, key) for key in PARAMETERS}
     if args.phi_range is not None:
         given["phi_range"] = _phi_range(args.phi_range)
-    values = {}
-    for key, default in _PARAMETERS.items():
-        values[key] = given[key] if given[key] is not None else job.get(key, default)
-        if values[key] is _REQUIRED:
-            raise InputError(f"missing --{key.replace('_', '-')} (or {key!r} in a --job file)")
+    parameters = resolve_parameters(given, hints, job, args.job)
+    for message in [*hints.messages(), *parameters.conflicts]:
+        print(f"{PROG}: warning: {message}", file=sys.stderr)
+    values = parameters.values
     try:
         tool = Tool(values["diameter"], values["flutes"], values["flute_length"])
     except ValueError as error:
@@ -119,17 +156,51 @@ def _run_engage(args):
                                values["phi_step"], values["spindle_rpm"])
     except ValueError as error:
         raise InputError(f"cut settings: {error}") from None
+    return job, toolpath, parameters, tool, settings
+
+
+def _load_stock(args, toolpath, tool):
+    """(Stock, seconds to read it): solid options checked, the y window chosen."""
+    is_solid = os.path.splitext(args.stock)[1].lower() in SOLID_SUFFIXES
+    options = {"--walls": args.walls, "--wall-points": args.wall_points, "--y-window": args.y_window}
+    for option, value in options.items():
+        if value is not None and not is_solid:
+            raise InputError(f"{option} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
+                             f"{args.stock}")
+    window = args.y_window
+    if window in (None, "whole"):
+        window = None
+    elif window == "swept":
+        window = functools.partial(swept_y_window, toolpath, tool)  # completed with the solid's top z
+    else:
+        window = _pair(window, "--y-window", "whole, swept or Y0:Y1 in mm such as -10:10")
+    started = time.perf_counter()
+    stock = load_stock(args.stock, walls=args.walls or "exact", wall_points=args.wall_points or "chebyshev",
+                       y_window=window)
+    return stock, time.perf_counter() - started
+
+
+def _stock_line(stock):
+    """'; stock: exact walls, y window -15..15 mm' for a solid stock, '' for JSON."""
+    if stock.shape is None:
+        return ""
+    y0, y1 = stock.y_window
+    return f"; stock: {stock.walls} walls, y window {y0:.6g}..{y1:.6g} mm"
+
+
+def _run_engage(args):
+    """The engage command; returns 0 or raises InputError."""
+    job, toolpath, parameters, tool, settings = _prepare(args)
     outputs = [args.out, summary_path(args.out)] + ([args.plot] if args.plot else [])
     _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
-    stock = load_staircase(args.stock)
-    toolpath = load_toolpath(args.toolpath)
+    stock, _ = _load_stock(args, toolpath, tool)
 
     started = time.perf_counter()
-    engagement = engage(stock, tool, toolpath, settings, progress=_progress() if sys.stderr.isatty() else None)
+    engagement = engage(stock.staircase, tool, toolpath, settings,
+                        progress=_engine_progress() if sys.stderr.isatty() else None)
     elapsed_ms = 1e3 * (time.perf_counter() - started)
     if not engagement.engaged.any():
-        raise InputError(f"{args.toolpath}: the tool never touches the stock: no CL point of the pass engages it "
-                         f"(are the toolpath and {args.stock} in the same frame?)")
+        raise InputError(_no_engagement(args))
 
     texts = (results_text(engagement), summary_text(engagement, toolpath=toolpath))
     title = job.get("description") or (
@@ -153,38 +224,93 @@ def _run_engage(args):
           f"depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage); "
           f"wrote {', '.join(outputs)}")
+    print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
     return 0
 
 
-def _load_job(path):
-    """Cutting parameters of a --job JSON file as a dict (keys as in _PARAMETERS, + description)."""
-    data = load_json_object(path)
-    check_keys(data, (), (*_PARAMETERS, "description"), path)
-    job = {}
-    for key, value in data.items():
-        where = f"{path}: {key}"
-        if key == "description":
-            if not isinstance(value, str):
-                raise InputError(f"{where}: must be a string")
-            job[key] = value
-        elif key == "phi_range":
-            if not isinstance(value, list) or len(value) != 2:
-                raise InputError(f"{where}: must be [start, end] in degrees, e.g. [0, 180]")
-            job[key] = tuple(json_number(v, f"{where}[{i}]") for i, v in enumerate(value))
-        else:
-            job[key] = json_number(value, where)
-    return job
+def _run_validate(args):
+    """The validate command; returns 0 or raises InputError."""
+    from .report.html import ReportJob, report_cls, write_report
+    from .report.staging import staged
+    from .validation import NoEngagementError, overall, validate
+
+    job, toolpath, parameters, tool, settings = _prepare(args)
+    cls = _cl_indices(args.cl, len(toolpath)) if args.cl else None
+    _check_validate_outputs(args)
+    stock, stock_seconds = _load_stock(args, toolpath, tool)
+    started = time.perf_counter()
+    solid = stock.solid()
+    stock_seconds += time.perf_counter() - started
+
+    try:
+        validation = validate(solid, stock.staircase, tool, toolpath, settings,
+                              progress=_Progress("boolean reference", sys.stderr))
+    except NoEngagementError:
+        raise InputError(_no_engagement(args)) from None
+    engagement = validation.engagement
+    shown = report_cls(validation, cls)
+    walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
+    title = f"ABM against booleans: {os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}"
+    report_job = ReportJob(title, job.get("description", ""), args.stock, args.toolpath, toolpath, tool, settings,
+                           parameters.describe(), walls, stock.y_window, stock_seconds)
+
+    outputs = [args.report] + ([args.fcstd] if args.fcstd else [])
+    for path in outputs:
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with staged(args.report, folder=True) as folder, \
+            (staged(args.fcstd) if args.fcstd else contextlib.nullcontext()) as fcstd:
+        page = write_report(folder, validation, report_job, shown)
+        if fcstd:
+            from .cad.annotate import write_annotated
+            name = re.sub(r"[^A-Za-z0-9_]", "_", os.path.splitext(os.path.basename(args.fcstd))[0])
+            write_annotated(fcstd, f"ABM_{name}", solid, engagement, toolpath, tool, cls=cls,
+                            intersections=[cl for cl, _ in shown])
+    total = overall(validation.comparison)
+    m, p = engagement.shape
+    written = [os.path.join(args.report, os.path.basename(page))] + ([args.fcstd] if args.fcstd else [])
+    print(f"{PROG}: {m} CL points x {p} angles: length of cut max |relative error| "
+          f"{100 * total['max_rel_error']:.3g} % (mean {100 * total['mean_rel_error']:.3g} %, "
+          f"{total['relative_instants']} instants), max |difference| {total['max_abs_difference']:.3g} mm; "
+          f"ABM {validation.seconds['abm']:.3g} s, boolean {validation.seconds['boolean']:.3g} s "
+          f"({validation.speed_ratio:.0f}x); wrote {', '.join(written)}")
+    print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
+    return 0
+
+
+def _no_engagement(args):
+    """The message for a pass whose tool never touches the stock."""
+    return (f"{args.toolpath}: the tool never touches the stock: no CL point of the pass engages it "
+            f"(are the toolpath and {args.stock} in the same frame?)")
 
 
 def _phi_range(text):
     """(start, end) in degrees from 'START:END'; InputError naming --phi-range otherwise."""
+    return _pair(text, "--phi-range", "START:END in degrees such as 0:180")
+
+
+def _pair(text, option, expected):
+    """(a, b) floats from 'A:B'; InputError naming `option` and what was `expected` otherwise."""
     parts = text.split(":")
     try:
         if len(parts) != 2:
             raise ValueError
         return float(parts[0]), float(parts[1])
     except ValueError:
-        raise InputError(f"--phi-range: expected START:END in degrees such as 0:180, got {text!r}") from None
+        raise InputError(f"{option}: expected {expected}, got {text!r}") from None
+
+
+def _cl_indices(text, m):
+    """Sorted distinct CL indices from '0,22,40'; InputError unless each is an integer in 0..m−1."""
+    indices = set()
+    for part in text.split(","):
+        try:
+            index = int(part)
+        except ValueError:
+            raise InputError(f"--cl: expected CL indices such as 0,22,40, got {text!r}") from None
+        if not 0 <= index < m:
+            raise InputError(f"--cl: CL point {index} is not in the pass (0..{m - 1})")
+        indices.add(index)
+    return sorted(indices)
 
 
 def _check_outputs(outputs, inputs):
@@ -198,17 +324,62 @@ def _check_outputs(outputs, inputs):
             raise InputError(f"{path}: cannot write: {folder} is not a folder")
         key = os.path.normcase(os.path.abspath(path))
         if key in seen:
-            raise InputError(f"{path}: written twice (as {seen[key]} too); choose another --plot or --out")
+            raise InputError(f"{path}: written twice (as {seen[key]} too); choose another name")
         seen[key] = path
     for path in inputs:
         if os.path.normcase(os.path.abspath(path)) in seen:
             raise InputError(f"{path}: is an input and would be overwritten by an output")
 
 
-def _progress():
+def _check_validate_outputs(args):
+    """The report folder and FCStd can be written, replace nothing but an older report, hold no input."""
+    inputs = [args.stock, args.toolpath] + ([args.job] if args.job else [])
+    _check_outputs([args.report] + ([args.fcstd] if args.fcstd else []), inputs)
+    report = os.path.abspath(args.report)
+    if os.path.exists(report) and not os.path.isdir(report):
+        raise InputError(f"{args.report}: --report must be a folder, and this is a file")
+    if os.path.isdir(report) and os.listdir(report) and not os.path.isfile(os.path.join(report, "index.html")):
+        raise InputError(f"{args.report}: folder holds files but no report (index.html); it would be replaced "
+                         "as a whole: choose a new or empty folder")
+    inside = [path for path in inputs + ([args.fcstd] if args.fcstd else [])
+              if os.path.abspath(path).startswith(report + os.sep)]
+    if inside:
+        raise InputError(f"{inside[0]}: lies inside the --report folder {args.report}, which is replaced as a whole")
+    if args.fcstd and not args.fcstd.lower().endswith(".fcstd"):
+        raise InputError(f"{args.fcstd}: --fcstd must end in .FCStd")
+
+
+def _engine_progress():
     """Progress callback for engage: 'abm: CL points 120/530' on one line of stderr."""
     def report(done, total):
         end = "\n" if done == total else ""
         print(f"\r{PROG}: CL points {done}/{total}", end=end, file=sys.stderr, flush=True)
     return report
 
+
+class _Progress:
+    """Progress of a long per-CL-point loop on `stream`, with elapsed time and ETA.
+
+    On a terminal one line redrawn as a bar; otherwise one line per CL point.
+    """
+
+    #: Width of the bar (characters).
+    BAR = 30
+
+    def __init__(self, label, stream):
+        self.label, self.stream = label, stream
+        self.started = time.perf_counter()
+        self.terminal = stream.isatty()
+
+    def __call__(self, done, total):
+        elapsed = time.perf_counter() - self.started
+        eta = elapsed / done * (total - done)
+        timing = f"{elapsed:.1f} s elapsed, ETA {eta:.0f} s"
+        if self.terminal:
+            filled = round(self.BAR * done / total)
+            bar = "#" * filled + "." * (self.BAR - filled)
+            end = "\n" if done == total else ""
+            print(f"\r{PROG}: {self.label} [{bar}] {done}/{total} CL points, {timing}", end=end, file=self.stream,
+                  flush=True)
+        else:
+            print(f"{PROG}: {self.label}: CL point {done}/{total}, {timing}", file=self.stream, flush=True)

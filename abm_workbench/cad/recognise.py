@@ -2,8 +2,20 @@
 
 :func:`load_solid` reads STEP, BREP or FCStd into a Part.Shape. :func:`recognise` finds
 in a solid the shape of the paper's staircase and returns it as a
-:class:`~abm_workbench.engine.Staircase` with the paper's wall model: each wall is the quintic
-through six points on its top edge, placed at Chebyshev nodes (or evenly) over a y window.
+:class:`~abm_workbench.engine.Staircase` over a y window, with one of two wall models:
+
+- ``walls="exact"`` (default): each wall is its top edge itself, as one (rational) B-spline
+  x(s), y(s) (:class:`~abm_workbench.engine.walls.SplineWall`). Every edge of the top edge is
+  converted exactly (``edge.toNurbs()``: lines become degree 1, conics rational degree 2) and
+  cut to the edge's own parameter range; the pieces are raised to one degree, turned to run
+  towards +y and joined end to end into one curve: their knot vectors are concatenated (each
+  shifted to start where the previous one ends), with multiplicity p at each junction (C0
+  there) and the junction's two end poles merged (rational pieces are first rescaled so that
+  the weights meet). The curve is then cut to the window.
+- ``walls="quintic"``: the paper's model, the quintic through six points on the top edge.
+
+Either way the Staircase records six points on each wall (``wall_points``), placed at
+Chebyshev nodes (or evenly) over the window.
 
 What the solid must be, checked face by face (faces are named as FreeCAD names them,
 ``Face1``, ``Face2``, … in ``shape.Faces`` order):
@@ -16,8 +28,7 @@ What the solid must be, checked face by face (faces are named as FreeCAD names t
 - the walls split the stock into sections ordered along +x, each with exactly one top face,
   and each wall rises from the lower to the higher of the two tops beside it.
 
-A wall's edges stay available (:class:`RecognisedWall`) for a wall model that keeps the
-solid's own curves.
+A wall's faces, edges and exact curve stay available in :class:`RecognisedWall`.
 """
 
 import os
@@ -26,8 +37,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine import Staircase
+from ..engine.walls import SplineWall
 from ..errors import InputError
 from .freecad_env import FreeCAD, Part
+from .solids import bspline_curve, parameter_at_y, trimmed_to_y
 
 #: A face is horizontal when its normal's horizontal part, vertical when its n_z, is below this.
 NORMAL_TOL = 1e-7
@@ -39,8 +52,6 @@ NORMAL_GRID = 5
 EDGE_SAMPLES = 257
 #: Number of y levels across the window at which every wall must have exactly one x.
 Y_LEVELS = 256
-#: The Newton solve for x at a given y stops when |y(u) − y| is below this (mm).
-Y_SOLVE_TOL = 1e-13
 
 _SUFFIXES = {".step": "STEP", ".stp": "STEP", ".brep": "BREP", ".brp": "BREP", ".fcstd": "FCStd"}
 
@@ -53,7 +64,8 @@ class RecognisedWall:
     objects, in order along +y (an edge may run either way). y_range: (2,) y span of the top
     edge (mm). z_range: (2,) lowest and highest z of the wall's faces (mm). points: (6, 2)
     [x, y] on the top edge at the window's sample y values (mm). is_straight: every edge is a
-    line at one x, and the six x values are set exactly equal.
+    line at one x, and the six x values (and the curve's poles' x) are set exactly equal.
+    curve: the top edge over the window as one SplineWall (the exact wall model).
     """
 
     faces: tuple
@@ -62,6 +74,7 @@ class RecognisedWall:
     z_range: tuple
     points: np.ndarray
     is_straight: bool
+    curve: SplineWall
 
 
 @dataclass(frozen=True)
@@ -148,14 +161,16 @@ def _has_solid(obj):
     return isinstance(shape, Part.Shape) and not shape.isNull() and bool(shape.Solids)
 
 
-def recognise_staircase(shape, *, wall_points="chebyshev", y_window=None, source=""):
+def recognise_staircase(shape, *, walls="exact", wall_points="chebyshev", y_window=None, source=""):
     """The Staircase of a solid: ``recognise(...).staircase`` (see :func:`recognise`)."""
-    return recognise(shape, wall_points=wall_points, y_window=y_window, source=source).staircase
+    return recognise(shape, walls=walls, wall_points=wall_points, y_window=y_window, source=source).staircase
 
 
-def recognise(shape, *, wall_points="chebyshev", y_window=None, source=""):
+def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, source=""):
     """Recognise a Part.Shape holding one solid as a staircase along +x; returns a Recognition.
 
+    walls: "exact" gives the Staircase the walls' own curves (``wall_curves``, one SplineWall
+    per wall, see the module's docstring); "quintic" the quintics through the six points.
     wall_points: "chebyshev" places the six points of each wall at the Chebyshev nodes
     y_mid − y_half·cos((2k+1)π/12), k = 0..5, of the window; "even" at six evenly spaced y
     including the window's ends. y_window: (y0, y1) in mm inside the stock's y range, default
@@ -164,6 +179,8 @@ def recognise(shape, *, wall_points="chebyshev", y_window=None, source=""):
     the face and what is wrong when the solid is not such a staircase.
     """
     where = f"{source}: " if source else ""
+    if walls not in ("exact", "quintic"):
+        raise ValueError(f"walls must be 'exact' or 'quintic', got {walls!r}")
     if wall_points not in ("chebyshev", "even"):
         raise ValueError(f"wall_points must be 'chebyshev' or 'even', got {wall_points!r}")
     solid = _single_solid(shape, where)
@@ -181,19 +198,21 @@ def recognise(shape, *, wall_points="chebyshev", y_window=None, source=""):
     if not tops:
         raise InputError(f"{where}the solid has no top face facing +z")
     y_samples = _sample_ys(window, wall_points)
-    walls = [_wall(chain, names, window, y_samples, where) for chain in _chains(wall_faces, names, where)]
+    found = [_wall(chain, names, window, y_samples, where) for chain in _chains(wall_faces, names, where)]
     # Sections are told apart at an inner sample y, where every wall's x is known.
-    walls.sort(key=lambda w: w.points[2, 0])
-    x_probe = [box.XMin] + [w.points[2, 0] for w in walls] + [box.XMax]
+    found.sort(key=lambda w: w.points[2, 0])
+    x_probe = [box.XMin] + [w.points[2, 0] for w in found] + [box.XMax]
     top_faces = _section_tops(tops, names, x_probe, y_samples[2], box, where)
     z_top = [face.BoundBox.ZMax for face in top_faces]
-    for j, wall in enumerate(walls, start=1):
+    for j, wall in enumerate(found, start=1):
         _check_wall_heights(wall, j, z_top[j - 1], z_top[j], where)
+    curves = tuple(w.curve for w in found) if walls == "exact" else None
     try:
-        staircase = Staircase(box.XMin, box.XMax, window[0], window[1], box.ZMin, z_top, [w.points for w in walls])
+        staircase = Staircase(box.XMin, box.XMax, window[0], window[1], box.ZMin, z_top,
+                              [w.points for w in found], curves)
     except ValueError as error:
         raise InputError(f"{where}{error}") from None
-    return Recognition(staircase, tuple(walls), tuple(names[f.hashCode()] for f in top_faces), window, limits)
+    return Recognition(staircase, tuple(found), tuple(names[f.hashCode()] for f in top_faces), window, limits)
 
 
 def _single_solid(shape, where):
@@ -352,10 +371,76 @@ def _wall(chain, names, window, y_samples, where):
         np.concatenate([s[:, 1] for s in samples])) <= LENGTH_TOL
     if straight:
         points[:, 0] = points[:, 0].mean()
+    try:
+        curve = _exact_curve(edges, window, points[0, 0] if straight else None)
+    except ValueError as error:
+        raise InputError(f"{where}{label}: {error}") from None
     z_low = min(face.BoundBox.ZMin for face, _ in chain)
     z_high = max(face.BoundBox.ZMax for face, _ in chain)
     return RecognisedWall(tuple(faces), tuple(edges), (float(y_all.min()), float(y_all.max())),
-                          (z_low, z_high), points, straight)
+                          (z_low, z_high), points, straight, curve)
+
+
+def _exact_curve(edges, window, straight_x):
+    """The top edge's edges (in order along +y) as one SplineWall over the window (mm).
+
+    straight_x: the common x of a straight wall, set on every pole, or None. ValueError from
+    SplineWall when the joined curve is not monotone in y.
+    """
+    pieces = [_edge_bspline(edge) for edge in edges]
+    degree = max(piece.Degree for piece in pieces)
+    for piece in pieces:
+        piece.increaseDegree(degree)
+    knots, poles, weights = _joined([_bspline_data(piece) for piece in pieces], degree)
+    curve = trimmed_to_y(bspline_curve(degree, knots, poles, weights, 0.0), *window)
+    knots, poles, weights = _bspline_data(curve)
+    if straight_x is not None:
+        poles[:, 0] = straight_x
+    return SplineWall(degree, knots, poles, None if np.ptp(weights) == 0.0 else weights)
+
+
+def _edge_bspline(edge):
+    """The edge's curve over its own parameter range as a Part.BSplineCurve running towards +y.
+
+    ``edge.toNurbs()`` converts exactly (a line to degree 1, a conic to a rational B-spline)
+    and keeps the edge's range; the curve is then cut to that range.
+    """
+    nurbs = edge.toNurbs().Edges[0]
+    curve = nurbs.Curve.copy()
+    if curve.isPeriodic():
+        curve.setNotPeriodic()
+    if (nurbs.FirstParameter, nurbs.LastParameter) != (curve.FirstParameter, curve.LastParameter):
+        curve.segment(nurbs.FirstParameter, nurbs.LastParameter)
+    if curve.StartPoint.y > curve.EndPoint.y:
+        curve.reverse()
+    return curve
+
+
+def _bspline_data(curve):
+    """(knots (k+p+1,), poles (k, 2) [x, y] mm, weights (k,)) of a Part.BSplineCurve."""
+    knots = np.repeat(curve.getKnots(), curve.getMultiplicities())
+    poles = np.array([(pole.x, pole.y) for pole in curve.getPoles()])
+    return knots, poles, np.array(curve.getWeights())
+
+
+def _joined(pieces, degree):
+    """One clamped B-spline (knots, poles (k, 2), weights) from pieces of one degree, end to end.
+
+    pieces: (knots, poles, weights) each, in order, each ending where the next starts. Each
+    piece's knots are shifted to start at the previous piece's last knot; the junction keeps p
+    copies of that knot (one fewer than a clamped end), so the curve is C0 there and passes
+    through the junction pole, the mean of the two pieces' end poles. A piece's weights are
+    scaled to meet the previous piece's last weight, which leaves its curve unchanged.
+    """
+    knots, poles, weights = pieces[0]
+    for next_knots, next_poles, next_weights in pieces[1:]:
+        shifted = next_knots - next_knots[0] + knots[-1]
+        scaled = next_weights * (weights[-1] / next_weights[0])
+        junction = 0.5 * (poles[-1] + next_poles[0])
+        knots = np.concatenate([knots[:-1], shifted[degree + 1:]])
+        poles = np.concatenate([poles[:-1], [junction], next_poles[1:]])
+        weights = np.concatenate([weights, scaled[1:]])
+    return knots, poles, weights
 
 
 def _ordered_edges(edges):
@@ -388,30 +473,10 @@ def _x_at(edges, samples, y):
         change = np.flatnonzero((rel[:-1] <= 0) != (rel[1:] <= 0))
         if change.size:
             k = change[0]
-            return _solve_x(edge, y, edge_samples[k, 0], edge_samples[k + 1, 0], rel[k])
+            return edge.valueAt(parameter_at_y(edge.Curve, y, edge_samples[k, 0], edge_samples[k + 1, 0])).x
     ends = [(abs(edge.valueAt(u).y - y), edge.valueAt(u).x) for edge in edges for u in edge.ParameterRange]
     distance, x = min(ends)
     return x if distance <= LENGTH_TOL else None
-
-
-def _solve_x(edge, y, lo, hi, f_lo):
-    """x at the parameter u in [lo, hi] where the edge's y equals `y`; y(lo) − y = f_lo."""
-    u = 0.5 * (lo + hi)
-    for _ in range(100):
-        point = edge.valueAt(u)
-        f = point.y - y
-        if abs(f) <= Y_SOLVE_TOL:
-            return point.x
-        if (f <= 0) == (f_lo <= 0):
-            lo, f_lo = u, f
-        else:
-            hi = u
-        slope = edge.derivative1At(u).y
-        newton = u - f / slope if slope else lo
-        u = newton if lo < newton < hi else 0.5 * (lo + hi)
-        if hi - lo <= 1e-15 * max(1.0, abs(hi)):
-            break
-    return edge.valueAt(u).x
 
 
 def _section_tops(tops, names, x_probe, y_probe, box, where):

@@ -196,9 +196,19 @@ class SplineWall:
         return float(low), float(high)
 
     def bins(self, edges):
-        """Per bin [edges[b], edges[b+1]] of y (B+1,): bounds of x (B,), (B,) and slope bound (inf)."""
-        ranges = np.array([self.x_range(a, b) for a, b in zip(edges[:-1], edges[1:])])
-        return ranges[:, 0], ranges[:, 1], np.full(len(ranges), np.inf)
+        """Per bin [edges[b], edges[b+1]] of y (B+1,): bounds of x (B,), (B,) and slope bound (inf).
+
+        The bounds are those of x_range, for all bins at once.
+        """
+        edges = np.asarray(edges, dtype=float)
+        at_edges = self.x_at(edges)
+        low = np.minimum(at_edges[:-1], at_edges[1:])
+        high = np.maximum(at_edges[:-1], at_edges[1:])
+        boxes = self.span_boxes
+        meets = (boxes[:, 3, None] >= edges[None, :-1]) & (boxes[:, 2, None] <= edges[None, 1:])  # (S, B)
+        low = np.minimum(low, np.where(meets, boxes[:, 0, None], np.inf).min(axis=0))
+        high = np.maximum(high, np.where(meets, boxes[:, 1, None], -np.inf).max(axis=0))
+        return low, high, np.full(low.size, np.inf)
 
     def crossings(self, x0, y0, dx, dy, lo, hi):
         """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the curve.

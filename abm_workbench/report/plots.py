@@ -65,7 +65,7 @@ def pass_figure(engagement, *, title=""):
                            title_fontsize="small")
 
     length = np.ma.masked_less_equal(engagement.length.T, 0.0)
-    mesh = heat.pcolormesh(_edges(index), _edges(engagement.phi), length, cmap=_HEAT_MAP, shading="flat")
+    mesh = heat.pcolormesh(cell_edges(index), cell_edges(engagement.phi), length, cmap=_HEAT_MAP, shading="flat")
     figure.colorbar(mesh, ax=heat, label="length of cut (mm)", pad=0.01)
     heat.set(xlabel="CL point index", ylabel="tool rotation angle φ (deg)",
              title="Length of cut over the pass (grey: no engagement)")
@@ -116,7 +116,7 @@ def representative_cl(depth_of_cut):
     return chosen
 
 
-def _edges(centres):
+def cell_edges(centres):
     """Cell edges (n+1,) around sorted cell centres (n,): midpoints, ends mirrored (1 wide if n = 1)."""
     centres = np.asarray(centres, dtype=float)
     if centres.size == 1:

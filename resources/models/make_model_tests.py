@@ -7,6 +7,10 @@ stand-ins that exercise the same things and writes, for each, into
 ``resources/models/model_test_<n>/``:
 
 * ``stock.json``  -- the staircase left by layer roughing (format ``abm-staircase/1``),
+  each wall given by six points for the paper's quintic,
+* ``walls.json``  -- the true contour walls: per wall, CONTOUR_POINTS points on the contour
+  across the window (the solids in ``stock.step`` interpolate them, see
+  ``make_model_solids.py``),
 * ``toolpath.csv`` -- 53 CL points with unit tool axis and CC point,
 * ``job.json``     -- the cut settings (tool, feed, inclination, rotation range).
 
@@ -34,6 +38,7 @@ from pathlib import Path
 from typing import Callable
 
 import numpy as np
+from scipy.interpolate import make_interp_spline
 from scipy.optimize import brentq
 
 OUT_DIR = Path(__file__).resolve().parent
@@ -41,6 +46,8 @@ OUT_DIR = Path(__file__).resolve().parent
 N_CC = 53  # CC points in the pass (as in the paper)
 N_WALL_POINTS = 6  # points per wall: the engine's quintic x = P(y)
 FIT_TOL = 0.05  # mm, allowed |P(y) - true contour| over [y_min, y_max]
+CONTOUR_POINTS = 65  # evenly spaced points per wall on the true contour (walls.json)
+SPLINE_TOL = 1e-4  # mm, allowed |cubic spline through them - true contour|
 STRAIGHT_TOL = 1e-9  # mm, spread of six contour points that makes a wall straight
 X_SCAN_STEP = 0.02  # mm, x grid used to bracket the contour crossings
 N_Y_CHECK = 241  # y samples for the wall checks
@@ -300,6 +307,38 @@ def make_walls(model: ModelTest) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return wall_y, wall_x, z_top
 
 
+def make_contours(model: ModelTest, wall_x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The true contour walls: CONTOUR_POINTS evenly spaced y over the window, x of every wall.
+
+    wall_x: (n_walls, 6) from make_walls; its straight rows (six equal x) give the straight
+    walls, whose dense x must agree with that value to STRAIGHT_TOL and are set to it.
+    Returns (y (N,), x (n_walls, N)).
+    """
+    y = np.linspace(model.y_min, model.y_max, CONTOUR_POINTS)
+    x = np.array([contour_crossings(model, yy)[0] for yy in y]).T
+    for row, six in zip(x, wall_x):
+        if np.all(six == six[0]):
+            require(np.abs(row - six[0]).max() < STRAIGHT_TOL, f"{model.name}: straight wall x = {six[0]} bends")
+            row[:] = six[0]
+    return y, x
+
+
+def contour_spline(y: np.ndarray, x_row: np.ndarray):
+    """The wall curve a solid is built with: the cubic B-spline x(y) interpolating the points
+    (y (N,) increasing, x_row (N,)), not-a-knot end conditions (scipy's make_interp_spline)."""
+    return make_interp_spline(y, x_row, k=3)
+
+
+def check_contour_splines(model: ModelTest, y: np.ndarray, x: np.ndarray) -> float:
+    """Largest |spline - true contour| (mm) over all walls, at the midpoints between the points
+    and at N_Y_CHECK values of y; must be below SPLINE_TOL."""
+    y_check = np.concatenate([0.5 * (y[1:] + y[:-1]), np.linspace(model.y_min, model.y_max, N_Y_CHECK)])
+    true = np.array([contour_crossings(model, yy)[0] for yy in y_check]).T
+    deviation = max(np.abs(contour_spline(y, row)(y_check) - t).max() for row, t in zip(x, true))
+    require(deviation < SPLINE_TOL, f"{model.name}: contour spline off its contour by {deviation:.2e} mm")
+    return float(deviation)
+
+
 # --------------------------------------------------------------------------- staircase
 
 
@@ -434,6 +473,32 @@ def write_model(model: ModelTest, wall_y, wall_x, z_top, path: dict[str, np.ndar
     }
     (folder / "job.json").write_text(json.dumps(job, indent=1) + "\n")
     return folder
+
+
+def write_contour_walls(model: ModelTest, folder: Path, z_top, contour_y, contour_x, deviation: float) -> None:
+    """Write walls.json: per wall j = 1..n-1 its contour level, straightness and [x, y] points."""
+    walls = []
+    for j, row in enumerate(contour_x, start=1):
+        walls.append({
+            "section": j,
+            "level": float(min(z_top[j - 1], z_top[j])),
+            "straight": bool(np.all(row == row[0])),
+            "points": [[float(x), float(y)] for x, y in zip(row, contour_y)],
+        })
+    data = {
+        "format": "abm-contour-walls/1",
+        "units": "mm",
+        "description": (
+            f"True walls of {model.name}: wall j (where section j starts) is the contour "
+            "f(x, y) + allowance = level of the design surface; points on it at evenly spaced y "
+            "over the window. A solid's wall is the line x = const when straight, else the cubic "
+            "B-spline x(y) interpolating the points with not-a-knot end conditions."
+        ),
+        "interpolation": "cubic B-spline x(y), not-a-knot",
+        "max_interpolation_error": deviation,
+        "walls": walls,
+    }
+    (folder / "walls.json").write_text(json.dumps(data, indent=1) + "\n")
 
 
 # --------------------------------------------------------------------------- self-check
@@ -605,7 +670,12 @@ def main() -> None:
         stair = Staircase.from_points(model, wall_y, wall_x, z_top)
         path = make_pass(model)
         self_check(model, stair, path)
+        contour_y, contour_x = make_contours(model, wall_x)
+        deviation = check_contour_splines(model, contour_y, contour_x)
+        print(f"  contour walls: {CONTOUR_POINTS} points each; cubic spline through them: "
+              f"max |S(y) - contour| = {deviation:.2e} mm")
         folder = write_model(model, wall_y, wall_x, z_top, path)
+        write_contour_walls(model, folder, z_top, contour_y, contour_x, deviation)
         print(f"  wrote {folder.relative_to(OUT_DIR.parent.parent)}")
 
 

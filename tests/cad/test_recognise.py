@@ -19,13 +19,15 @@ MODELS = os.path.join(os.path.dirname(__file__), "..", "..", "resources", "model
 
 
 def assert_same_staircase(found, expected):
-    """Limits, heights and wall points agree to TOL; the walls' straightness too."""
+    """Limits, heights, wall points and the walls themselves (at 101 y) agree to TOL; straightness too."""
     for name in ("x_min", "x_max", "y_min", "y_max", "base_z"):
         assert getattr(found, name) == pytest.approx(getattr(expected, name), abs=TOL), name
     assert found.z_top == pytest.approx(expected.z_top, abs=TOL)
     assert found.wall_points.shape == expected.wall_points.shape
-    for got, want in zip(found.walls, expected.walls):
-        assert np.abs(got.points[:, 0] - want.x_at(got.points[:, 1])).max() < TOL
+    y = np.linspace(found.y_min, found.y_max, 101)
+    for points, got, want in zip(found.wall_points, found.walls, expected.walls):
+        assert np.abs(points[:, 0] - want.x_at(points[:, 1])).max() < TOL
+        assert np.abs(got.x_at(y) - want.x_at(y)).max() < TOL
         assert got.is_straight == want.is_straight
 
 
@@ -51,8 +53,10 @@ def test_even_points_over_a_window(solids):
     stock = result.staircase
     assert (stock.y_min, stock.y_max) == (-5.0, 7.0) and result.y_window == (-5.0, 7.0)
     assert stock.wall_points[0, :, 1] == pytest.approx(np.linspace(-5.0, 7.0, 6))
-    for got, want in zip(stock.walls, STOCKS["descending"].walls):
-        assert np.abs(got.points[:, 0] - want.x_at(got.points[:, 1])).max() < TOL
+    y = np.linspace(-5.0, 7.0, 41)
+    for points, got, want in zip(stock.wall_points, stock.walls, STOCKS["descending"].walls):
+        assert np.abs(points[:, 0] - want.x_at(points[:, 1])).max() < TOL
+        assert np.abs(got.x_at(y) - want.x_at(y)).max() < TOL
 
 
 def test_each_wall_keeps_its_faces_and_edges(solids):

@@ -1,7 +1,7 @@
-"""Staircase solids: valid, the volume of the height field, walls equal to the engine's quintic."""
+"""Staircase solids: valid, the volume of the height field, walls equal to the engine's quintic
+(B-spline walls: test_exact_walls.py)."""
 
 import os
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -9,6 +9,7 @@ import pytest
 from abm_workbench.cad.freecad_env import Part
 from abm_workbench.cad.solids import bezier_poles, export_brep, export_step, staircase_solid, wall_edge
 from abm_workbench.engine import Staircase
+from abm_workbench.engine.walls import SplineWall
 
 from .conftest import STOCKS, Y_MAX, Y_MIN, wall
 
@@ -62,12 +63,10 @@ def test_equal_neighbouring_heights_merge_into_one_top():
     assert solid.isValid() and len(tops) == 2
 
 
-def test_refuses_walls_that_are_not_quintics():
-    class ExactWall:
-        """Stands in for a wall kept as the solid's own B-spline."""
-
-    stock = SimpleNamespace(walls=(STOCKS["ridge"].walls[0], ExactWall()))
-    with pytest.raises(ValueError, match=r"sections\[2\]\.wall: staircase_solid builds quintic walls, not ExactWall"):
+def test_refuses_a_spline_wall_that_does_not_span_the_window():
+    short = SplineWall(1, [0, 0, 1, 1], [[20.0, Y_MIN + 0.5], [22.0, Y_MAX]], None)
+    stock = Staircase(0, 60, Y_MIN, Y_MAX, 0, [4.0, 7.0], [wall(lambda y: 21.0 + y / 12)], (short,))
+    with pytest.raises(ValueError, match=r"sections\[1\]\.wall: the B-spline wall spans y -11\.5 to 12, not all of"):
         staircase_solid(stock)
 
 

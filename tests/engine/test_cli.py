@@ -1,5 +1,6 @@
 """The command line, end to end: in-process through main() and once as `python -m abm_workbench`."""
 
+import io
 import json
 import os
 import subprocess
@@ -57,9 +58,12 @@ def test_engage_with_every_option(case, capsys):
     status, out, err = run(FULL, capsys)
     assert (status, err) == (0, "")
     assert sorted(os.listdir(case)) == sorted(INPUTS + ["R.csv", "R.png", "R.summary.csv"])
-    assert out.count("\n") == 1
-    assert out.startswith(f"abm: {M} CL points x {P} angles = {M * P} instants in ")
-    assert "depth of cut " in out and out.endswith("wrote R.csv, R.summary.csv, R.png\n")
+    summary, sources = out.splitlines()
+    assert summary.startswith(f"abm: {M} CL points x {P} angles = {M * P} instants in ")
+    assert "depth of cut " in summary and summary.endswith("wrote R.csv, R.summary.csv, R.png")
+    assert sources == ("abm: parameters: diameter 12 mm [--diameter], 2 flutes [--flutes], flute length 30 mm "
+                       "[--flute-length], feed 0.1 mm/tooth [--feed-per-tooth], inclination 10° [--inclination], "
+                       "spindle 4000 rpm [--spindle-rpm], φ 0..180° [--phi-range], step 5° [--phi-step]")
     results = read_results(case / "R.csv")
     assert list(results) == list(RESULT_COLUMNS) and len(results["cl"]) == M * P
     np.testing.assert_array_equal(results["phi_deg"][:P], np.arange(0, 181, 5))
@@ -88,6 +92,32 @@ def test_engage_as_a_module_from_the_repository_root(case):
                          text=True, timeout=120)
     assert bad.returncode == 2
     assert bad.stderr == "abm: error: --phi-range: expected START:END in degrees such as 0:180, got 'a:b'\n"
+
+
+def test_apt_toolpath_gives_tool_and_spindle(case, capsys):
+    axes = ",".join(f"{v:.9f}" for v in (np.sin(np.radians(10)), 0, np.cos(np.radians(10))))
+    moves = "".join(f"GOTO/{x:.6f},0,{x / 60 - 1:.6f},{axes}\n" for x in np.linspace(10, 120, M))
+    (case / "path.apt").write_text(f"MULTAX\nCUTTER/10,0,5,0,0,0,25\nSPINDL/3000\nOPSKIP/ON\n{moves}OPSKIP/OFF\n")
+    status, out, err = run(BASE[:4] + ["path.apt", "--job", "job.json", "--spindle-rpm", "5000", "--out", "R.csv"],
+                           capsys)
+    assert status == 0
+    assert err.splitlines() == [
+        "abm: warning: path.apt:4: OPSKIP: record not understood, ignored (2 times)",
+        "abm: warning: path.apt gives diameter 10, job.json 12: using 10 from path.apt; give --diameter to choose",
+        "abm: warning: path.apt gives flute_length 25, job.json 30: using 25 from path.apt; give --flute-length "
+        "to choose",
+    ]
+    sources = out.splitlines()[1]
+    assert "diameter 10 mm [path.apt CUTTER]" in sources and "flute length 25 mm [path.apt CUTTER]" in sources
+    assert "spindle 5000 rpm [--spindle-rpm]" in sources and "2 flutes [job.json]" in sources
+    assert len(read_results(case / "R.csv")["cl"]) == M * P
+
+
+@pytest.mark.parametrize("option", [["--walls", "exact"], ["--wall-points", "even"], ["--y-window", "swept"]])
+def test_solid_options_refused_for_a_json_stock(case, capsys, option):
+    status, _, err = run(BASE + option, capsys)
+    assert status == 2 and err == (f"abm: error: {option[0]} applies to a solid stock (.step, .stp, .brep, .brp, "
+                                   ".FCStd), not to stock.json\n")
 
 
 def _write(name, text):
@@ -134,6 +164,8 @@ def _nothing(folder):
         (_nothing, ["--out", "toolpath.csv/R.csv"], "toolpath.csv/R.csv: cannot write: "),
         (_nothing, ["--out", "new/R.csv", "--diameter", "0"], "tool: diameter must be positive"),
         (_nothing, ["--plot", "R.csv"], "R.csv: written twice"),
+        (_nothing, ["--toolpath", "toolpath.nc"], "toolpath.nc: unknown toolpath file type"),
+        (_nothing, ["--stock", "stock.txt"], "stock.txt: unknown stock file type"),
         (_nothing, ["--out", "toolpath.csv"], "toolpath.csv: is an input and would be overwritten"),
     ],
 )
@@ -147,7 +179,7 @@ def test_bad_input_exits_2_and_writes_nothing(case, capsys, prepare, extra, mess
 
 def test_output_folders_are_made(case, capsys):
     status, out, _ = run(BASE[:-1] + ["out/pass 1/R.csv", "--plot", "plots/R.png"], capsys)
-    assert status == 0 and out.endswith("wrote out/pass 1/R.csv, out/pass 1/R.summary.csv, plots/R.png\n")
+    assert status == 0 and out.splitlines()[0].endswith("wrote out/pass 1/R.csv, out/pass 1/R.summary.csv, plots/R.png")
     assert sorted(os.listdir(case / "out" / "pass 1")) == ["R.csv", "R.summary.csv"]
     assert os.listdir(case / "plots") == ["R.png"]
 
@@ -217,3 +249,32 @@ def test_progress_only_on_a_terminal(case, capsys, monkeypatch):
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
     status, _, err = run(BASE, capsys)
     assert status == 0 and err.endswith(f"\rabm: CL points {M}/{M}\n")
+
+
+class _Stream(io.StringIO):
+    """A text stream that says whether it is a terminal."""
+
+    def __init__(self, terminal):
+        super().__init__()
+        self.terminal = terminal
+
+    def isatty(self):
+        return self.terminal
+
+
+def test_progress_lines_and_bar(monkeypatch):
+    clock = iter([0.0, 2.0, 8.0])
+    monkeypatch.setattr(cli.time, "perf_counter", lambda: next(clock))
+    stream = _Stream(False)
+    progress = cli._Progress("boolean reference", stream)
+    progress(1, 4)
+    progress(4, 4)
+    assert stream.getvalue() == ("abm: boolean reference: CL point 1/4, 2.0 s elapsed, ETA 6 s\n"
+                                 "abm: boolean reference: CL point 4/4, 8.0 s elapsed, ETA 0 s\n")
+    clock = iter([0.0, 2.0, 8.0])
+    stream = _Stream(True)
+    progress = cli._Progress("boolean", stream)
+    progress(1, 4)
+    progress(4, 4)
+    assert stream.getvalue() == (f"\rabm: boolean [{'#' * 8}{'.' * 22}] 1/4 CL points, 2.0 s elapsed, ETA 6 s"
+                                 f"\rabm: boolean [{'#' * 30}] 4/4 CL points, 8.0 s elapsed, ETA 0 s\n")

@@ -1,0 +1,201 @@
+"""An annotated FreeCAD document of a pass: stock, toolpath, and the cut at each CL point (mm).
+
+Objects (all Part::Feature unless said), per CL point i in a group ``CL<i>`` (zero-padded):
+
+- ``Stock``: the stock solid; ``Toolpath``: the polyline through the CL points;
+- ``CL<i>_LEP``, ``CL<i>_UEP``: polylines through the lowermost and uppermost engagement
+  points over φ (one polyline per run of consecutive engaged angles);
+- ``CL<i>_Seg_<letter>_<surface>``: per engagement segment, the engaged part of the cutter
+  surface, the ruled surface between the LEP and UEP polylines over the segment's φ range
+  (a line LEP–UEP for a segment of one angle);
+- ``CL<i>_Intersection``: the stock material inside the cutter (cad.boolean.cutter_intersection),
+  for the CL points asked for.
+
+Each segment object carries, in the property group "ABM", its CL point, letter, UEP surface,
+φ range (deg) and its colour (App::PropertyColor ``Colour``, by UEP surface kind). With the
+GUI up the colours, line widths and transparencies are set on the view objects; when FreeCAD
+saves no view properties (headless), :func:`write_annotated` adds them to the file as its
+``GuiDocument.xml`` (the part of an FCStd file FreeCAD's GUI restores them from), so the
+document opens coloured. Nothing of the engine is pickled into the document.
+"""
+
+import zipfile
+
+import numpy as np
+
+from ..engine import Engagement, Tool, Toolpath
+from ..report.colours import SURFACE_COLOURS
+from .boolean import cutter_intersection
+from .freecad_env import FreeCAD, Part
+
+V = FreeCAD.Vector
+#: Consecutive polyline points closer than this (mm) are merged.
+POINT_TOL = 1e-7
+
+
+def annotated_document(name, solid, engagement: Engagement, toolpath: Toolpath, tool: Tool, *, cls=None,
+                       intersections=()):
+    """A new FreeCAD document `name` holding the annotated pass (see the module docstring).
+
+    solid: the stock (Part.Shape). cls: CL indices to annotate (default all). intersections:
+    CL indices that also get the boolean intersection solid. Returns (document, styles):
+    styles maps object names to their view properties ({"ShapeColor": (r, g, b), ...}). The
+    caller saves and closes the document.
+    """
+    document = FreeCAD.newDocument(name, name, True)
+    builder = _Builder(document)
+    try:
+        builder.feature("Stock", solid, "the stock", transparency=70)
+        builder.feature("Toolpath", _polyline(toolpath.cl), "CL points of the pass, in order", line_width=3.0)
+        width = max(3, len(str(len(toolpath) - 1)))
+        for cl in range(len(toolpath)) if cls is None else cls:
+            prefix = f"CL{cl:0{width}d}"
+            group = document.addObject("App::DocumentObjectGroup", prefix)
+            for obj in _cl_objects(builder, prefix, engagement, int(cl)):
+                group.addObject(obj)
+            if cl in intersections:
+                shape = cutter_intersection(solid, tool, toolpath, int(cl))
+                group.addObject(builder.feature(f"{prefix}_Intersection", shape,
+                                                "stock material inside the cutter (boolean)", transparency=40))
+        document.recompute()
+    except BaseException:
+        FreeCAD.closeDocument(document.Name)
+        raise
+    return document, builder.styles
+
+
+def write_annotated(path, name, *args, **kwargs):
+    """Build the annotated document (arguments as annotated_document), save it to `path`, close it.
+
+    `path` must end in .FCStd (FreeCAD appends it otherwise). When FreeCAD saved no
+    GuiDocument.xml (no GUI, or a hidden document), the view properties are added as one.
+    """
+    document, styles = annotated_document(name, *args, **kwargs)
+    try:
+        document.saveAs(str(path))
+    finally:
+        FreeCAD.closeDocument(document.Name)
+    with zipfile.ZipFile(path, "a") as archive:
+        if "GuiDocument.xml" not in archive.namelist():
+            archive.writestr("GuiDocument.xml", gui_document_xml(styles))
+
+
+def gui_document_xml(styles):
+    """GuiDocument.xml text setting the view properties of `styles` ({object name: {property: value}}).
+
+    Colours (RGB 0..1) as App::PropertyColor, "Transparency" (%) as App::PropertyPercent,
+    "LineWidth" (px) as App::PropertyFloatConstraint; FreeCAD keeps its defaults for the rest.
+    """
+    providers = []
+    for name, properties in styles.items():
+        items = []
+        for prop, value in properties.items():
+            if prop == "Transparency":
+                items.append(f'<Property name="{prop}" type="App::PropertyPercent"><Integer value="{int(value)}"/>'
+                             "</Property>")
+            elif prop == "LineWidth":
+                items.append(f'<Property name="{prop}" type="App::PropertyFloatConstraint">'
+                             f'<Float value="{float(value)}"/></Property>')
+            else:
+                items.append(f'<Property name="{prop}" type="App::PropertyColor">'
+                             f'<PropertyColor value="{_packed(value)}"/></Property>')
+        providers.append(f'  <ViewProvider name="{name}" expanded="0"><Properties Count="{len(items)}" '
+                         f'TransientCount="0">{"".join(items)}</Properties></ViewProvider>')
+    return ("<?xml version='1.0' encoding='utf-8'?>\n<Document SchemaVersion=\"1\">\n"
+            f'<ViewProviderData Count="{len(providers)}">\n' + "\n".join(providers)
+            + '\n</ViewProviderData>\n<Camera settings=""/>\n</Document>\n')
+
+
+def _packed(rgb):
+    """FreeCAD's packed colour 0xRRGGBBAA of RGB (0..1), alpha byte 0."""
+    r, g, b = (int(round(255 * min(max(float(c), 0.0), 1.0))) for c in rgb[:3])
+    return (r << 24) | (g << 16) | (b << 8)
+
+
+def _cl_objects(builder, prefix, engagement, cl):
+    """The LEP and UEP polylines and one object per engagement segment of CL point `cl`."""
+    lep, uep = engagement.lep_xyz[cl], engagement.uep_xyz[cl]
+    runs = _runs(engagement.segment[cl] >= 0)
+    objects = []
+    if runs:
+        for points, label in ((lep, "LEP"), (uep, "UEP")):
+            shape = Part.Compound([_polyline(points[a:b]) for a, b in runs])
+            objects.append(builder.feature(f"{prefix}_{label}", shape, f"{label} over the engaged angles φ",
+                                           colour=(0.1, 0.1, 0.1), line_width=3.0))
+    for index, segment in enumerate(engagement.segments(cl)):
+        rows = np.flatnonzero(engagement.segment[cl] == index)
+        surface = segment["surface"]
+        obj = builder.feature(
+            f"{prefix}_Seg_{segment['letter']}_{surface}", _band(lep[rows], uep[rows]),
+            f"engaged cutter surface, segment {segment['letter']}, UEP on {surface.replace('_', ' ')}",
+            colour=SURFACE_COLOURS[surface])
+        for kind, prop, value, tip in (
+            ("App::PropertyInteger", "ClIndex", cl, "CL point (0-based)"),
+            ("App::PropertyString", "Segment", segment["letter"], "engagement segment letter"),
+            ("App::PropertyString", "UepSurface", surface, "surface holding the UEP"),
+            ("App::PropertyAngle", "PhiStart", segment["phi_start"], "first rotation angle φ of the segment"),
+            ("App::PropertyAngle", "PhiEnd", segment["phi_end"], "last rotation angle φ of the segment"),
+        ):
+            obj.addProperty(kind, prop, "ABM", tip)
+            setattr(obj, prop, value)
+            obj.setEditorMode(prop, 1)
+        objects.append(obj)
+    return objects
+
+
+def _runs(mask):
+    """[(start, stop)] of the runs of True in a 1-D bool array (stop exclusive)."""
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], mask.astype(np.int8), [0]])))
+    return list(zip(edges[::2].tolist(), edges[1::2].tolist()))
+
+
+def _band(lep, uep):
+    """The ruled surface between polylines through lep and uep (k, 3); a line LEP–UEP when k = 1."""
+    if len(lep) == 1:
+        return Part.LineSegment(V(*lep[0]), V(*uep[0])).toShape()
+    return Part.makeRuledSurface(_polyline(lep), _polyline(uep))
+
+
+def _polyline(points):
+    """A wire through points (k, 3) (mm), consecutive duplicates dropped; a vertex for one point."""
+    points = np.asarray(points, dtype=float)
+    keep = np.concatenate([[True], np.linalg.norm(np.diff(points, axis=0), axis=1) > POINT_TOL])
+    points = points[keep]
+    if len(points) == 1:
+        return Part.Vertex(V(*points[0]))
+    return Part.makePolygon([V(*p) for p in points])
+
+
+class _Builder:
+    """Adds Part::Features to a document and collects their view properties (styles)."""
+
+    def __init__(self, document):
+        self.document = document
+        self.styles = {}
+
+    def feature(self, name, shape, description, *, colour=None, transparency=None, line_width=None):
+        """A Part::Feature `name` holding `shape`, its description in the property group "ABM".
+
+        colour (RGB 0..1) is stored in the property Colour; colour, transparency (%) and
+        line_width (px) go into the styles and, with the GUI up, onto the view object.
+        """
+        obj = self.document.addObject("Part::Feature", name)
+        obj.Label = name
+        obj.Shape = shape
+        obj.addProperty("App::PropertyString", "Description", "ABM", "what this object is")
+        obj.Description = description
+        style = {}
+        if colour is not None:
+            obj.addProperty("App::PropertyColor", "Colour", "ABM", "display colour (by UEP surface kind)")
+            obj.Colour = tuple(colour)
+            style.update(ShapeColor=tuple(colour), LineColor=tuple(colour), PointColor=tuple(colour))
+        if transparency is not None:
+            style["Transparency"] = transparency
+        if line_width is not None:
+            style["LineWidth"] = line_width
+        if style:
+            self.styles[name] = style
+            view = obj.ViewObject if FreeCAD.GuiUp else None
+            for prop, value in style.items() if view is not None else ():
+                setattr(view, prop, value)
+        return obj

@@ -1,0 +1,311 @@
+"""A validation report as one self-contained HTML page, with the CSV files behind it.
+
+:func:`write_report` writes into a folder: ``index.html`` (plain HTML and a little CSS; every
+plot a PNG embedded as base64) and the tables of :mod:`.tables`. Lengths in mm, angles in
+degrees, times in s, relative errors in %.
+"""
+
+import base64
+import html
+import io
+import os
+import re
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..engine import CutSettings, Tool, Toolpath
+from ..validation import TINY_LENGTH, overall, segment_summary, surface_summary
+from . import figures
+from .plots import representative_cl
+from .tables import report_tables
+
+#: Depth of cut over the pass in the paper (mm), per model test.
+PAPER_DEPTH = {1: (1.78, 7.32), 2: (2.68, 6.38)}
+#: The paper's times for one pass of 53 CC points (MATLAB, Core i7 2.7 GHz), s.
+PAPER_SECONDS = {"ABM": 713.87, "Z-map (0.2 mm grid)": 2633.65}
+_MODEL_TEST = re.compile(r"\bmodel test ([12])\b", re.IGNORECASE)
+#: At most this many CL points get plots over φ (the 3D view: four).
+DETAIL_PLOTS = 8
+
+_CSS = """
+body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", sans-serif; color: #222; background: #f6f7f9;
+       margin: 0; }
+main { max-width: 1120px; margin: 0 auto; padding: 24px 32px 48px; background: #fff; }
+h1 { font-size: 1.6em; margin: 0 0 4px; }
+h2 { font-size: 1.2em; margin: 36px 0 8px; padding-bottom: 4px; border-bottom: 2px solid #e3e6ea; }
+p.lead { color: #555; margin-top: 0; }
+table { border-collapse: collapse; margin: 8px 0 12px; font-size: 0.92em; }
+th, td { padding: 4px 10px; border-bottom: 1px solid #e3e6ea; text-align: left; vertical-align: top; }
+th { background: #f0f2f5; font-weight: 600; }
+td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+table.wide { font-size: 0.85em; }
+table.wide td { white-space: nowrap; }
+.cards { display: flex; flex-wrap: wrap; gap: 12px; margin: 12px 0; }
+.card { flex: 1 1 150px; border: 1px solid #e3e6ea; border-radius: 6px; padding: 10px 14px; background: #fafbfc; }
+.card b { display: block; font-size: 1.35em; }
+.card span { color: #666; font-size: 0.88em; }
+img { width: 100%; height: auto; border: 1px solid #eee; }
+.note { color: #555; font-size: 0.92em; }
+code { background: #f0f2f5; padding: 0 3px; border-radius: 3px; }
+"""
+
+
+@dataclass(frozen=True)
+class ReportJob:
+    """What the report says about the job.
+
+    title: heading. description: the job's description ('' if none). stock, path: the input
+    files. toolpath, tool, settings: the pass as computed. parameters: one line of parameters
+    and their sources (jobs.Parameters.describe). walls: the wall model in words. y_window:
+    (2,) mm. stock_seconds: time to read or build the stock's solid and staircase (s).
+    """
+
+    title: str
+    description: str
+    stock: str
+    path: str
+    toolpath: Toolpath
+    tool: Tool
+    settings: CutSettings
+    parameters: str
+    walls: str
+    y_window: tuple
+    stock_seconds: float
+
+
+def paper_model_test(description):
+    """1 or 2 when `description` names the paper's model test 1 or 2 ('Model test 1 …'), else None."""
+    match = _MODEL_TEST.search(description or "")
+    return int(match.group(1)) if match else None
+
+
+def report_cls(validation, requested=None):
+    """The CL points shown in detail, as (index, why): `requested`, or the deepest, shallowest and
+    middle engaged CL points and the one with the largest relative error."""
+    if requested:
+        return [(int(cl), "chosen") for cl in requested]
+    chosen = representative_cl(validation.comparison.depth_abm)
+    error = np.abs(validation.comparison.relative_error)
+    if np.isfinite(error).any():
+        worst = int(np.unravel_index(np.nanargmax(error), error.shape)[0])
+        if worst not in [cl for cl, _ in chosen]:
+            chosen.append((worst, "largest error"))
+    return chosen
+
+
+def write_report(folder, validation, job: ReportJob, cls):
+    """Write index.html and the four CSV tables of `validation` into `folder` (which exists).
+
+    cls: (index, why) of the CL points shown in detail. Returns the path of index.html.
+    """
+    for name, text in report_tables(validation, job.toolpath).items():
+        with open(os.path.join(folder, name), "w", encoding="utf-8", newline="") as file:
+            file.write(text)
+    page = os.path.join(folder, "index.html")
+    with open(page, "w", encoding="utf-8") as file:
+        file.write(report_page(validation, job, cls))
+    return page
+
+
+def report_page(validation, job: ReportJob, cls):
+    """The HTML text of the report."""
+    shown = [cl for cl, _ in cls][:DETAIL_PLOTS]
+    model = paper_model_test(job.description)
+    paper_range = PAPER_DEPTH.get(model)
+    parts = [
+        f"<h1>{_e(job.title)}</h1>",
+        f"<p class='lead'>{_e(job.description)}</p>" if job.description else "",
+        _headline(validation, paper_range),
+        "<h2>Job</h2>", _job_table(validation, job),
+        "<h2>Error by UEP surface, whole pass</h2>", _error_definition(), _surface_table(validation),
+        "<p class='note'>The paper (Siemens NX reference): negligible error with the UEP on a top or a straight "
+        "wall, below 6 % with the UEP on a curved wall.</p>",
+        "<h2>Length of cut along the pass <small>(Fig. 6(e)/(f))</small></h2>",
+        _image(figures.pass_length_figure(validation)),
+        "<h2>Depth of cut along the pass</h2>", _depth_text(validation, model),
+        _image(figures.depth_figure(validation, paper_range, f"paper, model test {model}")),
+        "<h2>Length of cut and cut area over φ <small>(Fig. 7)</small></h2>",
+        f"<p class='note'>CL points shown: {_e(_cl_list(cls[:DETAIL_PLOTS]))}"
+        f"{f' (the first {DETAIL_PLOTS} of {len(cls)})' if len(cls) > DETAIL_PLOTS else ''}. "
+        "Shaded: the engagement segments (ABM).</p>",
+        _image(figures.phi_figure(validation, shown)),
+        "<h2>Shape of the cut <small>(Fig. 6(c)/(d))</small></h2>",
+        _image(figures.shape_figure(validation, shown[:4])),
+        "<h2>Error per engagement segment <small>(Fig. 8(c), 8(e))</small></h2>",
+        _image(figures.error_figure(validation, shown)), _segment_table(validation, shown),
+        "<h2>Error over the pass</h2>", _image(figures.error_pass_figure(validation)),
+        "<h2>Timings</h2>", _timings(validation, job),
+        "<h2>Files</h2>", _files(),
+    ]
+    body = "\n".join(part for part in parts if part)
+    return (f"<!DOCTYPE html>\n<html lang='en'>\n<head>\n<meta charset='utf-8'>\n<title>{_e(job.title)}</title>\n"
+            f"<style>{_CSS}</style>\n</head>\n<body>\n<main>\n{body}\n</main>\n</body>\n</html>\n")
+
+
+def _headline(validation, paper_range):
+    """The cards at the top: largest error, depth of cut, speed."""
+    total = overall(validation.comparison)
+    comparison, seconds = validation.comparison, validation.seconds
+    depth = f"{np.nanmin(comparison.depth_abm):.2f}–{np.nanmax(comparison.depth_abm):.2f} mm"
+    paper = f"paper {paper_range[0]:g}–{paper_range[1]:g} mm" if paper_range else "paper: not a model test"
+    cards = [
+        (_percent(total["max_rel_error"]), f"largest |relative error| over {total['relative_instants']} instants"),
+        (_percent(total["mean_rel_error"]), "mean |relative error|"),
+        (f"{total['max_abs_difference']:.3g} mm", "largest |l_ABM − l_ref|, all instants"),
+        (depth, f"depth of cut (ABM); {paper}"),
+        (f"{validation.speed_ratio:.0f} ×", f"ABM {seconds['abm']:.3g} s vs boolean {seconds['boolean']:.3g} s"),
+    ]
+    items = "".join(f"<div class='card'><b>{_e(value)}</b><span>{_e(text)}</span></div>" for value, text in cards)
+    return f"<div class='cards'>{items}</div>"
+
+
+def _job_table(validation, job):
+    """Inputs and parameters of the job."""
+    m, p = validation.engagement.shape
+    settings = job.settings
+    rows = [
+        ("stock", f"{job.stock} ({job.walls}; y window {job.y_window[0]:.6g}..{job.y_window[1]:.6g} mm)"),
+        ("toolpath", f"{job.path}: {m} CL points"),
+        ("rotation angles", f"φ {settings.phi_start:g}..{settings.phi_end:g}° step {settings.phi_step:g}°: "
+                            f"{p} angles, {m * p} instants"),
+        ("tool", f"flat end mill D {job.tool.diameter:g} mm, {job.tool.flutes} flutes, flute length "
+                 f"{job.tool.flute_length:g} mm"),
+        ("cutting", f"feed {settings.feed_per_tooth:g} mm/tooth, inclination {settings.inclination:g}°"
+                    + (f", {settings.spindle_rpm:g} rpm" if settings.spindle_rpm else "")),
+        ("parameters [from]", job.parameters),
+    ]
+    return _table(("", ""), rows, header=False)
+
+
+def _error_definition():
+    """How the error is defined."""
+    return (f"<p class='note'>Error of the length of cut as the paper defines it: relative, "
+            f"(l<sub>ABM</sub> − l<sub>ref</sub>)/l<sub>ref</sub>, with l<sub>ref</sub> from the OpenCASCADE "
+            f"boolean of the cutting edges with the stock solid. Where l<sub>ref</sub> &lt; {TINY_LENGTH:g} mm "
+            f"(the edge grazes the stock) the absolute difference l<sub>ABM</sub> − l<sub>ref</sub> in mm is "
+            f"used instead; those instants are counted apart. LEP/UEP: largest difference along the edge "
+            f"(mm). Mismatched: instants where only one method finds engagement.</p>")
+
+
+def _statistics_cells(row):
+    """Table cells of the statistics of one summary row."""
+    return [
+        str(row["instants"]), str(row["relative_instants"]), _percent(row["max_rel_error"]),
+        _percent(row["mean_rel_error"]), _mm(row["max_abs_difference"]), _mm(row["max_lep_difference"]),
+        _mm(row["max_uep_difference"]), str(row["mismatched"]),
+    ]
+
+
+_STATISTICS_HEAD = ("instants", "relative", "max |rel. error|", "mean |rel. error|", "max |Δl| (mm)",
+                    "max |ΔLEP| (mm)", "max |ΔUEP| (mm)", "mismatched")
+
+
+def _surface_table(validation):
+    """Errors per kind of UEP surface, and over the whole pass."""
+    rows = [[row["surface"].replace("_", " ")] + _statistics_cells(row)
+            for row in surface_summary(validation.engagement, validation.comparison)]
+    rows.append(["<b>whole pass</b>"] + _statistics_cells(overall(validation.comparison)))
+    return _table(("UEP on",) + _STATISTICS_HEAD, rows, escape_first=False, css="wide")
+
+
+def _segment_table(validation, cls):
+    """Errors per engagement segment at the CL points shown."""
+    rows = [
+        [str(row["cl"]), row["segment"], _phi_span(row["phi_start"], row["phi_end"]),
+         row["surface"].replace("_", " "), str(row["section"]), str(row["wall"])] + _statistics_cells(row)
+        for row in segment_summary(validation.engagement, validation.comparison, cls)
+    ]
+    head = ("CL", "segment", "φ (deg)", "UEP on", "section", "wall") + _STATISTICS_HEAD
+    return _table(head, rows, css="wide") + "<p class='note'>Every CL point: <code>segments.csv</code>.</p>"
+
+
+def _depth_text(validation, model):
+    """The depth of cut of both methods beside the paper's ranges."""
+    comparison = validation.comparison
+    ours = (f"ABM {np.nanmin(comparison.depth_abm):.2f}–{np.nanmax(comparison.depth_abm):.2f} mm, boolean "
+            f"{np.nanmin(comparison.depth_ref):.2f}–{np.nanmax(comparison.depth_ref):.2f} mm")
+    papers = "; ".join(f"model test {k} {low:g}–{high:g} mm" for k, (low, high) in PAPER_DEPTH.items())
+    which = f" This job is model test {model}." if model else ""
+    return (f"<p>Depth of cut over the pass (highest UEP z − lowest LEP z per CL point): {ours}. "
+            f"The paper's passes: {papers}.{_e(which)}</p>")
+
+
+def _timings(validation, job):
+    """Times of both methods, their ratio, and the paper's for scale."""
+    seconds = validation.seconds
+    m, p = validation.engagement.shape
+    rows = [
+        ("ABM engine, whole pass", f"{seconds['abm']:.4g} s", f"{1e6 * seconds['abm'] / (m * p):.3g} µs per instant"),
+        ("boolean reference (OpenCASCADE)", f"{seconds['boolean']:.4g} s",
+         f"{seconds['boolean'] / m:.3g} s per CL point"),
+        ("boolean / ABM", f"{validation.speed_ratio:.4g} ×", ""),
+        ("stock solid and staircase (read, build or recognise)", f"{job.stock_seconds:.3g} s", ""),
+    ]
+    rows += [(f"paper, {name}, 53 CC points (MATLAB, i7 2.7 GHz)", f"{value:g} s", "angle step not stated")
+             for name, value in PAPER_SECONDS.items()]
+    return _table(("", "time", ""), rows)
+
+
+def _files():
+    """The CSV files beside the page."""
+    rows = [
+        ("comparison.csv", "one row per instant: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, "
+                           "LEP and UEP of both, pieces of both, segment, uep_surface"),
+        ("segments.csv", "error per CL point and engagement segment"),
+        ("surfaces.csv", "error per kind of UEP surface"),
+        ("depth.csv", "depth of cut per CL point, both methods"),
+    ]
+    body = "".join(f"<tr><td><a href='{name}'><code>{name}</code></a></td><td>{_e(text)}</td></tr>"
+                   for name, text in rows)
+    return f"<table>{body}</table>"
+
+
+def _table(head, rows, *, header=True, escape_first=True, css=""):
+    """An HTML table of class `css`; cells escaped (but the first column's when escape_first is False);
+    numbers to the right."""
+    lines = [f"<table class='{css}'>" if css else "<table>"]
+    if header:
+        lines.append("<tr>" + "".join(f"<th>{_e(h)}</th>" for h in head) + "</tr>")
+    for row in rows:
+        cells = []
+        for k, cell in enumerate(row):
+            text = cell if (k == 0 and not escape_first) else _e(cell)
+            numeric = k > 0 and re.fullmatch(r"[-+0-9.e× %µs]+(mm)?", str(cell) or "x") is not None
+            cells.append(f"<td class='n'>{text}</td>" if numeric else f"<td>{text}</td>")
+        lines.append("<tr>" + "".join(cells) + "</tr>")
+    lines.append("</table>")
+    return "\n".join(lines)
+
+
+def _image(figure):
+    """An <img> of `figure` as an embedded PNG."""
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format="png")
+    data = base64.b64encode(buffer.getvalue()).decode("ascii")
+    return f"<img alt='' src='data:image/png;base64,{data}'>"
+
+
+def _phi_span(start, end):
+    """'30–42', or '59' for a segment of one angle."""
+    return f"{start:g}" if start == end else f"{start:g}–{end:g}"
+
+
+def _cl_list(cls):
+    """'22 (deepest), 3 (shallowest)'."""
+    return ", ".join(f"{cl} ({why})" for cl, why in cls)
+
+
+def _percent(value):
+    """A fraction as a percentage with 3 significant digits; '–' for NaN."""
+    return "–" if np.isnan(value) else f"{100.0 * value:.3g} %"
+
+
+def _mm(value):
+    """A length (mm) with 3 significant digits; '–' for NaN."""
+    return "–" if np.isnan(value) else f"{value:.3g}"
+
+
+def _e(text):
+    """HTML-escaped text."""
+    return html.escape(str(text), quote=True)

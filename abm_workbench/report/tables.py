@@ -1,0 +1,78 @@
+"""The CSV files behind a validation report (lengths in mm, angles in degrees, errors as fractions).
+
+- ``comparison.csv``: one row per instant (CL point × φ): cl, phi_deg, l_abm, l_ref,
+  difference (l_abm − l_ref), error (relative where error_kind is ``relative``, the
+  difference in mm where it is ``absolute_mm``: l_ref < 1e-3 mm), error_kind, lep_abm, lep_ref,
+  uep_abm, uep_ref (along the edge), pieces_abm, pieces_ref, segment, uep_surface (ABM's).
+- ``segments.csv``: one row per CL point and engagement segment (validation.segment_summary).
+- ``surfaces.csv``: one row per kind of UEP surface (validation.surface_summary).
+- ``depth.csv``: one row per CL point: cl, cl_x, cl_y, cl_z, depth_abm, depth_ref, difference.
+
+Numbers are written with 12 significant digits; NaN is an empty field.
+"""
+
+import numpy as np
+
+from ..validation import letters, segment_summary, surface_summary
+
+COMPARISON_COLUMNS = (
+    "cl", "phi_deg", "l_abm", "l_ref", "difference", "error", "error_kind", "lep_abm", "lep_ref", "uep_abm",
+    "uep_ref", "pieces_abm", "pieces_ref", "segment", "uep_surface",
+)
+STATISTICS_COLUMNS = (
+    "instants", "relative_instants", "max_rel_error", "mean_rel_error", "max_abs_difference",
+    "max_lep_difference", "max_uep_difference", "mismatched",
+)
+SEGMENT_COLUMNS = ("cl", "segment", "phi_start", "phi_end", "surface", "section", "wall", *STATISTICS_COLUMNS)
+SURFACE_COLUMNS = ("surface", *STATISTICS_COLUMNS)
+DEPTH_COLUMNS = ("cl", "cl_x", "cl_y", "cl_z", "depth_abm", "depth_ref", "difference")
+
+
+def report_tables(validation, toolpath):
+    """{file name: CSV text} of the four tables of a Validation of the pass `toolpath`."""
+    engagement, comparison = validation.engagement, validation.comparison
+    m, p = engagement.shape
+    columns = {
+        "cl": np.repeat(np.arange(m), p), "phi_deg": np.tile(engagement.phi, m),
+        "l_abm": comparison.l_abm, "l_ref": comparison.l_ref, "difference": comparison.difference,
+        "error": comparison.error,
+        "error_kind": np.where(comparison.relative, "relative", "absolute_mm"),
+        "lep_abm": comparison.lep_abm, "lep_ref": comparison.lep_ref,
+        "uep_abm": comparison.uep_abm, "uep_ref": comparison.uep_ref,
+        "pieces_abm": engagement.pieces, "pieces_ref": validation.reference["pieces"],
+        "segment": letters(engagement), "uep_surface": engagement.surface_names(),
+    }
+    depth = {
+        "cl": np.arange(m), "cl_x": toolpath.cl[:, 0], "cl_y": toolpath.cl[:, 1], "cl_z": toolpath.cl[:, 2],
+        "depth_abm": comparison.depth_abm, "depth_ref": comparison.depth_ref,
+        "difference": comparison.depth_abm - comparison.depth_ref,
+    }
+    return {
+        "comparison.csv": csv_text(COMPARISON_COLUMNS, [np.ravel(columns[c]) for c in COMPARISON_COLUMNS]),
+        "segments.csv": records_text(SEGMENT_COLUMNS, segment_summary(engagement, comparison)),
+        "surfaces.csv": records_text(SURFACE_COLUMNS, surface_summary(engagement, comparison)),
+        "depth.csv": csv_text(DEPTH_COLUMNS, [depth[c] for c in DEPTH_COLUMNS]),
+    }
+
+
+def records_text(names, records):
+    """CSV text of a list of dicts, columns `names` in order."""
+    return csv_text(names, [[record[name] for record in records] for name in names])
+
+
+def csv_text(names, columns):
+    """CSV text: a header of `names`, then one line per row of the equal-length `columns`.
+
+    Float columns are written with 12 significant digits ('' for NaN); others as str.
+    """
+    cells = [_cells(column) for column in columns]
+    lines = [",".join(names)] + [",".join(row) for row in zip(*cells)]
+    return "\n".join(lines) + "\n"
+
+
+def _cells(column):
+    """List of str cells of one column (any 1-D sequence)."""
+    values = np.asarray(column)
+    if values.dtype.kind == "f":
+        return ["" if np.isnan(v) else format(v + 0.0, ".12g") for v in values.tolist()]
+    return [str(v) for v in values.tolist()]

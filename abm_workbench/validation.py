@@ -1,0 +1,207 @@
+"""The engine against the boolean reference, instant by instant, as the paper reports it.
+
+The paper's error of the length of cut is relative: (l_ABM − l_ref) / l_ref. Where the
+reference length is tiny (l_ref < TINY_LENGTH = 1e-3 mm: the edge grazes the stock, or only
+one of the two methods engages) a relative error means nothing, and the absolute difference
+l_ABM − l_ref (mm) is reported instead; the two kinds are kept apart in every summary.
+
+Arrays are over m CL points × p rotation angles φ. Lengths in mm, angles in degrees,
+relative errors as fractions (0.01 = 1 %). Everything here is numpy, except :func:`validate`,
+which runs the boolean reference through :mod:`abm_workbench.cad.boolean` (FreeCAD).
+"""
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from .engine import SURFACES, Engagement, Tool, Toolpath, edge_lines, engage, segment_letter
+
+#: Below this reference length (mm) the error is absolute, not relative.
+TINY_LENGTH = 1e-3
+
+
+class NoEngagementError(ValueError):
+    """The engine finds no instant of the pass at which the tool touches the stock."""
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """ABM against the reference at every instant, (m, p) arrays unless said.
+
+    l_abm, l_ref: length of cut (mm). difference: l_abm − l_ref (mm). relative: bool, the
+    error is relative (l_ref ≥ TINY_LENGTH). error: difference / l_ref where relative, else
+    difference (mm). lep_abm, lep_ref, uep_abm, uep_ref: LEP and UEP along the edge (mm, NaN
+    without engagement). lep_difference, uep_difference: ABM − reference (mm, NaN unless both
+    engage). depth_abm, depth_ref: (m,) depth of cut (mm, NaN without engagement).
+    """
+
+    l_abm: np.ndarray
+    l_ref: np.ndarray
+    difference: np.ndarray
+    relative: np.ndarray
+    error: np.ndarray
+    lep_abm: np.ndarray
+    lep_ref: np.ndarray
+    uep_abm: np.ndarray
+    uep_ref: np.ndarray
+    lep_difference: np.ndarray
+    uep_difference: np.ndarray
+    depth_abm: np.ndarray
+    depth_ref: np.ndarray
+
+    @property
+    def relative_error(self):
+        """(m, p) relative error, NaN where the error is absolute."""
+        return np.where(self.relative, self.error, np.nan)
+
+    @property
+    def mismatched(self):
+        """(m, p) bool: exactly one of ABM and the reference engages."""
+        return (self.l_abm > 0.0) != (self.l_ref > 0.0)
+
+
+@dataclass(frozen=True)
+class Validation:
+    """A validated pass: the engine's Engagement, the reference, their Comparison, the timings.
+
+    reference: dict of (m, p) arrays length, lep_l, uep_l, pieces (see cad.boolean).
+    seconds: {"abm": engine time, "boolean": reference time} (s).
+    """
+
+    engagement: Engagement
+    reference: dict
+    comparison: Comparison
+    seconds: dict
+
+    @property
+    def speed_ratio(self):
+        """Boolean time / ABM time (how many times faster the engine is)."""
+        return self.seconds["boolean"] / max(self.seconds["abm"], 1e-9)
+
+
+def compare(engagement: Engagement, reference, toolpath: Toolpath, tool: Tool):
+    """The Comparison of an Engagement (m × p) with a reference dict of (m, p) arrays.
+
+    reference: length, lep_l, uep_l (mm along the edge, NaN without engagement), at the same
+    CL points of `toolpath` and the same angles engagement.phi. The reference depth of cut is
+    computed from its LEP and UEP on the edge lines of `tool`.
+    """
+    m, p = engagement.shape
+    arrays = {}
+    for name in ("length", "lep_l", "uep_l"):
+        array = np.asarray(reference[name], dtype=float)
+        if array.shape != (m, p):
+            raise ValueError(f"reference[{name!r}] must have shape {(m, p)}, got {array.shape}")
+        arrays[name] = array
+    l_abm, l_ref = engagement.length, arrays["length"]
+    difference = l_abm - l_ref
+    relative = l_ref >= TINY_LENGTH
+    error = np.where(relative, difference / np.where(relative, l_ref, 1.0), difference)
+    base, direction = edge_lines(toolpath, tool, engagement.phi)
+    z_lep = base[..., 2] + arrays["lep_l"] * direction[:, None, 2]
+    z_uep = base[..., 2] + arrays["uep_l"] * direction[:, None, 2]
+    return Comparison(
+        l_abm, l_ref, difference, relative, error,
+        engagement.lep_l, arrays["lep_l"], engagement.uep_l, arrays["uep_l"],
+        engagement.lep_l - arrays["lep_l"], engagement.uep_l - arrays["uep_l"],
+        engagement.depth_of_cut, _depth(z_lep, z_uep),
+    )
+
+
+def _depth(z_lep, z_uep):
+    """(m,) highest UEP z − lowest LEP z per row of (m, p) heights; NaN for a row without any."""
+    engaged = ~np.isnan(z_uep)
+    high = np.where(engaged, z_uep, -np.inf).max(axis=1)
+    low = np.where(engaged, z_lep, np.inf).min(axis=1)
+    return np.where(engaged.any(axis=1), high - low, np.nan)
+
+
+def _statistics(comparison, mask):
+    """Error statistics over the instants of bool `mask` (m, p): a dict (see segment_summary)."""
+    relative = mask & comparison.relative
+    rel = np.abs(comparison.error[relative])
+    lep = np.abs(comparison.lep_difference[mask])
+    uep = np.abs(comparison.uep_difference[mask])
+    return {
+        "instants": int(mask.sum()),
+        "relative_instants": int(relative.sum()),
+        "max_rel_error": float(rel.max()) if rel.size else np.nan,
+        "mean_rel_error": float(rel.mean()) if rel.size else np.nan,
+        "max_abs_difference": float(np.abs(comparison.difference[mask]).max()) if mask.any() else np.nan,
+        "max_lep_difference": float(np.nanmax(lep)) if np.isfinite(lep).any() else np.nan,
+        "max_uep_difference": float(np.nanmax(uep)) if np.isfinite(uep).any() else np.nan,
+        "mismatched": int((mask & comparison.mismatched).sum()),
+    }
+
+
+def segment_summary(engagement: Engagement, comparison: Comparison, cls=None):
+    """The error per CL point and engagement segment (the paper's Fig. 8(c), 8(e)): a list of dicts.
+
+    cls: CL indices to summarise (default all). Each dict: cl, segment (letter), phi_start,
+    phi_end (deg), surface, section, wall (the UEP's, as Engagement.segments), instants,
+    relative_instants (of them, those with l_ref ≥ TINY_LENGTH), max_rel_error,
+    mean_rel_error (|relative error| over those, NaN if none), max_abs_difference
+    (max |l_ABM − l_ref| over all instants, mm), max_lep_difference, max_uep_difference (mm),
+    mismatched (instants where the reference finds no engagement: ABM engages throughout a
+    segment). Instants without an ABM segment are counted in surface_summary's "none".
+    """
+    rows = []
+    for cl in range(engagement.shape[0]) if cls is None else cls:
+        for index, segment in enumerate(engagement.segments(cl)):
+            mask = np.zeros(engagement.shape, dtype=bool)
+            mask[cl] = engagement.segment[cl] == index
+            rows.append({"cl": int(cl), "segment": segment["letter"], "phi_start": segment["phi_start"],
+                         "phi_end": segment["phi_end"], "surface": segment["surface"],
+                         "section": segment["section"], "wall": segment["wall"], **_statistics(comparison, mask)})
+    return rows
+
+
+def surface_summary(engagement: Engagement, comparison: Comparison):
+    """The error per kind of UEP surface over the whole pass: a list of dicts, in SURFACES order.
+
+    Each dict: surface, then the statistics of segment_summary. Kinds that never hold the UEP
+    are left out; "none" holds the instants ABM finds no engagement at, and it is listed only
+    when the reference engages at some of them.
+    """
+    rows = []
+    for code, name in enumerate(SURFACES):
+        mask = engagement.uep_surface == code
+        if name == "none":
+            mask &= comparison.l_ref > 0.0
+        if mask.any():
+            rows.append({"surface": name, **_statistics(comparison, mask)})
+    return rows
+
+
+def overall(comparison: Comparison):
+    """The statistics of segment_summary over every instant of the pass."""
+    return _statistics(comparison, np.ones(comparison.l_abm.shape, dtype=bool))
+
+
+def letters(engagement: Engagement):
+    """(m, p) str array of segment letters, '' without engagement."""
+    names = np.array([segment_letter(s) for s in range(int(engagement.segment.max(initial=-1)) + 1)] + [""])
+    return names[engagement.segment]
+
+
+def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None):
+    """Run the engine and the boolean reference on one pass; a Validation.
+
+    solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's.
+    progress(done, total) is called after each CL point of the reference. Raises
+    NoEngagementError, before running the reference, when the engine finds no engagement at
+    all. Needs FreeCAD.
+    """
+    from .cad.boolean import edge_lengths_by_boolean
+
+    started = time.perf_counter()
+    engagement = engage(staircase, tool, toolpath, settings)
+    abm_seconds = time.perf_counter() - started
+    if not engagement.engaged.any():
+        raise NoEngagementError("no CL point of the pass engages the stock")
+    started = time.perf_counter()
+    reference = edge_lengths_by_boolean(solid, tool, toolpath, engagement.phi, progress)
+    boolean_seconds = time.perf_counter() - started
+    comparison = compare(engagement, reference, toolpath, tool)
+    return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds})

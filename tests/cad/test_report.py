@@ -1,0 +1,125 @@
+"""The validation report: its CSV tables, the self-contained HTML page, and outputs staged whole."""
+
+import csv
+import os
+import re
+
+import numpy as np
+import pytest
+
+from abm_workbench.engine import CutSettings, Tool, Toolpath, engage
+from abm_workbench.report.html import ReportJob, paper_model_test, report_cls, write_report
+from abm_workbench.report.staging import staged
+from abm_workbench.report.tables import (COMPARISON_COLUMNS, DEPTH_COLUMNS, SEGMENT_COLUMNS, SURFACE_COLUMNS,
+                                         csv_text)
+from abm_workbench.validation import Validation, compare
+
+from .conftest import STOCKS
+
+TOOL = Tool(12.0, 2, 25.0)
+SETTINGS = CutSettings(0.1, phi_start=0, phi_end=180, phi_step=15)
+PATH = Toolpath([[21.3, 0.7, 0.9], [44.9, 1.3, 2.1], [73.0, -0.4, 4.3]], [12.0, 0.0, -6.0], [18.0, 25.0, -30.0])
+
+
+@pytest.fixture(scope="module")
+def validation():
+    """A Validation whose reference is the engine's result with 1 % added to the lengths."""
+    engagement = engage(STOCKS["ridge"], TOOL, PATH, SETTINGS)
+    reference = {"length": engagement.length * 1.01, "lep_l": engagement.lep_l, "uep_l": engagement.uep_l,
+                 "pieces": engagement.pieces}
+    return Validation(engagement, reference, compare(engagement, reference, PATH, TOOL),
+                      {"abm": 0.01, "boolean": 2.0})
+
+
+def read_csv(path):
+    """{column: list of str} of a CSV file, columns in order."""
+    with open(path, newline="", encoding="utf-8") as file:
+        rows = list(csv.reader(file))
+    return {name: [row[k] for row in rows[1:]] for k, name in enumerate(rows[0])}
+
+
+def job(description="Model test 1 (after Hendriko 2020): a test"):
+    return ReportJob("ABM against booleans: s.json / p.csv", description, "s.json", "p.csv", PATH, TOOL, SETTINGS,
+                     "diameter 12 mm [job.json]", "quintic walls", (-12.0, 12.0), 0.5)
+
+
+def test_report_folder(tmp_path, validation):
+    page = write_report(tmp_path, validation, job(), report_cls(validation))
+    assert page == os.path.join(tmp_path, "index.html")
+    assert sorted(os.listdir(tmp_path)) == ["comparison.csv", "depth.csv", "index.html", "segments.csv",
+                                            "surfaces.csv"]
+    m, p = validation.engagement.shape
+    comparison = read_csv(tmp_path / "comparison.csv")
+    assert tuple(comparison) == COMPARISON_COLUMNS and len(comparison["cl"]) == m * p
+    errors = [float(e) for e, kind in zip(comparison["error"], comparison["error_kind"]) if kind == "relative"]
+    np.testing.assert_allclose(errors, -0.01 / 1.01, rtol=1e-9)
+    assert set(comparison["error_kind"]) <= {"relative", "absolute_mm"}
+    segments = read_csv(tmp_path / "segments.csv")
+    assert tuple(segments) == SEGMENT_COLUMNS
+    assert len(segments["cl"]) == sum(len(validation.engagement.segments(cl)) for cl in range(m))
+    assert tuple(read_csv(tmp_path / "surfaces.csv")) == SURFACE_COLUMNS
+    depth = read_csv(tmp_path / "depth.csv")
+    assert tuple(depth) == DEPTH_COLUMNS and depth["cl"] == [str(cl) for cl in range(m)]
+
+
+def test_page_is_self_contained(tmp_path, validation):
+    text = open(write_report(tmp_path, validation, job(), [(0, "chosen"), (2, "chosen")]), encoding="utf-8").read()
+    assert text.startswith("<!DOCTYPE html>") and text.rstrip().endswith("</html>")
+    images = re.findall(r"<img [^>]*src='([^']*)'", text)
+    assert len(images) == 6 and all(src.startswith("data:image/png;base64,iVBOR") for src in images)
+    links = re.findall(r"(?:href|src)='([^']*)'", text)
+    assert {link for link in links if not link.startswith("data:")} == {
+        "comparison.csv", "segments.csv", "surfaces.csv", "depth.csv"}
+    for heading in ("Error by UEP surface", "Length of cut along the pass", "Depth of cut along the pass",
+                    "cut area over φ", "Shape of the cut", "Error per engagement segment", "Timings"):
+        assert heading in text
+    assert "1.78–7.32 mm" in text and "This job is model test 1." in text
+    assert "0.99 %" in text  # |relative error|: ABM is 1/1.01 of the reference
+    assert "200 ×" in text  # boolean / ABM
+
+
+def test_paper_model_tests():
+    assert paper_model_test("Model test 2 (after Hendriko 2020): ...") == 2
+    assert paper_model_test("A pass of model test 1") == 1
+    assert paper_model_test("model test 12") is None and paper_model_test("") is None
+
+
+def test_cl_points_shown(validation):
+    assert report_cls(validation, [2, 0]) == [(2, "chosen"), (0, "chosen")]
+    shown = report_cls(validation)
+    assert [why for _, why in shown][:3] == ["deepest", "shallowest", "middle"]
+
+
+def test_csv_text():
+    text = csv_text(("a", "b", "c"), [np.array([1.5, np.nan]), ["x", "y"], np.array([-0.0, 1e-20])])
+    assert text == "a,b,c\n1.5,x,0\n,y,1e-20\n"
+
+
+def test_staged_folder_replaces_an_old_one_whole(tmp_path):
+    (tmp_path / "report").mkdir()
+    (tmp_path / "report" / "old.txt").write_text("old")
+    with staged(tmp_path / "report", folder=True) as folder:
+        assert os.path.dirname(folder) == str(tmp_path) and os.path.basename(folder).startswith(".report.")
+        (tmp_path / "report" / "old.txt").read_text()  # the old one is untouched meanwhile
+        open(os.path.join(folder, "index.html"), "w").close()
+    assert os.listdir(tmp_path) == ["report"] and os.listdir(tmp_path / "report") == ["index.html"]
+    assert (os.stat(tmp_path / "report").st_mode & 0o777) == 0o777 & ~_umask()
+
+
+def test_staged_outputs_left_as_they_were_on_an_interrupt(tmp_path):
+    (tmp_path / "report").mkdir()
+    (tmp_path / "out.FCStd").write_text("old")
+    with pytest.raises(KeyboardInterrupt):
+        with staged(tmp_path / "report", folder=True) as folder, staged(tmp_path / "out.FCStd") as fcstd:
+            assert fcstd.endswith(os.sep + "out.FCStd") and fcstd != str(tmp_path / "out.FCStd")
+            open(fcstd, "w").close()
+            open(os.path.join(folder, "index.html"), "w").close()
+            raise KeyboardInterrupt
+    assert sorted(os.listdir(tmp_path)) == ["out.FCStd", "report"]
+    assert os.listdir(tmp_path / "report") == [] and (tmp_path / "out.FCStd").read_text() == "old"
+
+
+def _umask():
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
