@@ -4,7 +4,7 @@ PYTHON := /usr/bin/python3
 DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis xvfb xauth
 OUT := build
 
-.PHONY: deps model-test-1 model-test-2 test benchmark models install
+.PHONY: deps model-test-1 model-test-2 validate-model-test-1 validate-model-test-2 test benchmark models install
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -20,6 +20,13 @@ model-test-1 model-test-2: model-test-%: deps
 	$(PYTHON) -m abm_workbench engage --job resources/models/model_test_$*/job.json \
 	  --stock resources/models/model_test_$*/stock.json --toolpath resources/models/model_test_$*/toolpath.csv \
 	  --out $(OUT)/model_test_$*/results.csv --plot $(OUT)/model_test_$*/results.png
+
+# Model test N against OpenCASCADE booleans on its STEP solid (true contour walls): HTML report
+# and annotated FreeCAD document. About a minute: the boolean costs ~1 s per CL point.
+validate-model-test-1 validate-model-test-2: validate-model-test-%: deps
+	$(PYTHON) -m abm_workbench validate --job resources/models/model_test_$*/job.json \
+	  --stock resources/models/model_test_$*/stock.step --toolpath resources/models/model_test_$*/toolpath.csv \
+	  --report $(OUT)/model_test_$*/validation --fcstd $(OUT)/model_test_$*/validation.FCStd --cl 0,22,40
 
 test: deps
 	$(PYTHON) -m pytest -q tests

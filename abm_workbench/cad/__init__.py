@@ -7,4 +7,6 @@ This subpackage is the only place that imports FreeCAD and Part (through
 - :mod:`.recognise`: a solid (STEP, BREP, FCStd) back into a Staircase.
 - :mod:`.boolean`: lengths of cut by OpenCASCADE booleans, the reference the engine is
   checked against (the paper's Siemens NX check).
+- :mod:`.annotate`: a FreeCAD document with the stock, the toolpath and the engagement of
+  chosen CL points drawn on the model.
 """
