@@ -1,9 +1,20 @@
-"""Test set-up shared by every tier: the checkout on sys.path, and hypothesis profiles."""
+"""Test set-up shared by every tier: the checkout on sys.path, an empty HOME, hypothesis profile.
 
+FreeCAD runs the Init.py of every folder in the user's Mod directory when it is imported, so
+HOME points at an empty temporary folder before any test can import it.
+"""
+
+import atexit
 import os
+import shutil
 import sys
+import tempfile
 
 from hypothesis import HealthCheck, settings
+
+_HOME = tempfile.mkdtemp(prefix="abm-test-home-")
+atexit.register(shutil.rmtree, _HOME, ignore_errors=True)
+os.environ["HOME"] = _HOME
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 if ROOT not in sys.path:

@@ -68,9 +68,11 @@ def write_annotated(path, name, *args, **kwargs):
     """Build the annotated document (arguments as annotated_document), save it to `path`, close it.
 
     `path` must end in .FCStd (FreeCAD appends it otherwise). When FreeCAD saved no
-    GuiDocument.xml (no GUI, or a hidden document), the view properties are added as one.
+    GuiDocument.xml (no GUI, or a hidden document), the view properties are added as one, with
+    every object visible (without it FreeCAD 0.20 opens such a document with all objects hidden).
     """
     document, styles = annotated_document(name, *args, **kwargs)
+    styles = {obj.Name: {"Visibility": True, **styles.get(obj.Name, {})} for obj in document.Objects}
     try:
         document.saveAs(str(path))
     finally:
@@ -84,13 +86,17 @@ def gui_document_xml(styles):
     """GuiDocument.xml text setting the view properties of `styles` ({object name: {property: value}}).
 
     Colours (RGB 0..1) as App::PropertyColor, "Transparency" (%) as App::PropertyPercent,
-    "LineWidth" (px) as App::PropertyFloatConstraint; FreeCAD keeps its defaults for the rest.
+    "LineWidth" (px) as App::PropertyFloatConstraint, "Visibility" as App::PropertyBool;
+    FreeCAD keeps its defaults for the rest.
     """
     providers = []
     for name, properties in styles.items():
         items = []
         for prop, value in properties.items():
-            if prop == "Transparency":
+            if prop == "Visibility":
+                items.append(f'<Property name="{prop}" type="App::PropertyBool"><Bool value="{str(bool(value)).lower()}"/>'
+                             "</Property>")
+            elif prop == "Transparency":
                 items.append(f'<Property name="{prop}" type="App::PropertyPercent"><Integer value="{int(value)}"/>'
                              "</Property>")
             elif prop == "LineWidth":

@@ -7,7 +7,7 @@ straight walls (X-cylindrical) and the curved walls (curve boundary, real roots 
 composed quintic), and each piece between crossings is classified by the height field at its
 midpoint (notes §5). LEP is the start of the first inside piece, UEP the end of the last, and
 the length of cut the total inside length. All instants of a chunk of CL points are solved in
-one set of array operations; only the walls (few) are looped over.
+one set of array operations; only exact (B-spline) walls are looped over, one at a time.
 
 Lengths are in mm, φ in degrees at the interface.
 """
@@ -19,8 +19,8 @@ import numpy as np
 from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_linear, horner, monotone_root_unit, real_roots_unit
-from .walls import Wall
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
+from .walls import Wall
 
 #: Names of the surfaces that can hold the UEP; results store indices into this tuple.
 SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side")

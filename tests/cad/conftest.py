@@ -1,25 +1,14 @@
-"""CAD tier: FreeCAD headless, with an empty HOME, and the stocks the tests share.
-
-FreeCAD runs the Init.py of every folder in the user's Mod directory when it is imported, so
-HOME is pointed at an empty temporary folder BEFORE the import. FreeCAD is imported here,
-not skipped: without it the tier fails with an ImportError naming the package to install.
+"""CAD tier: FreeCAD headless (HOME is already an empty folder: tests/conftest.py), and the
+stocks the tests share. FreeCAD is imported here, not skipped: without it the tier fails with
+an ImportError naming the package to install.
 """
-
-import atexit
-import os
-import shutil
-import tempfile
 
 import numpy as np
 import pytest
 
-_HOME = tempfile.mkdtemp(prefix="abm-cad-home-")
-atexit.register(shutil.rmtree, _HOME, ignore_errors=True)
-os.environ["HOME"] = _HOME
-
-import abm_workbench.cad.freecad_env  # noqa: E402,F401  (after HOME is set; fails loudly without FreeCAD)
-from abm_workbench.cad.solids import staircase_solid  # noqa: E402
-from abm_workbench.engine import Staircase  # noqa: E402
+import abm_workbench.cad.freecad_env  # noqa: F401  (fails loudly without FreeCAD)
+from abm_workbench.cad.solids import staircase_solid
+from abm_workbench.engine import Staircase
 
 Y_MIN, Y_MAX = -12.0, 12.0
 CHEBYSHEV = 0.5 * (Y_MIN + Y_MAX) - 0.5 * (Y_MAX - Y_MIN) * np.cos((2 * np.arange(6) + 1) * np.pi / 12)

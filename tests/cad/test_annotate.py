@@ -77,4 +77,6 @@ def test_gui_document_xml_is_well_formed():
     root = ElementTree.fromstring(text)
     assert [p.get("name") for p in root.iter("ViewProvider")] == ["A", "B"]
     assert root.find(".//Property[@name='ShapeColor']/PropertyColor").get("value") == str(0xFF800000)
+    shown = ElementTree.fromstring(gui_document_xml({"C": {"Visibility": True}}))
+    assert shown.find(".//Property[@name='Visibility']/Bool").get("value") == "true"
 

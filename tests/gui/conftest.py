@@ -1,0 +1,62 @@
+"""GUI tier: the real FreeCAD GUI under Xvfb, driven by a macro that writes a JSON verdict.
+
+FREECAD_NOTES: run as `xvfb-run -a freecad macro.py` with HOME isolated and the Qt WebEngine
+sandbox off; a macro that raises would leave the GUI open, so the macro always ends with
+os._exit and the run has a timeout.
+"""
+
+import json
+import os
+import shutil
+import subprocess
+import textwrap
+
+import pytest
+
+from tests.conftest import ROOT
+
+#: Seconds the GUI may take to start, run the macro and quit.
+GUI_TIMEOUT = 180
+
+MACRO = """
+import json, os, sys, traceback
+from PySide2 import QtCore
+sys.path.insert(0, {root!r})
+
+def run():
+    verdict = {{"ok": False}}
+    try:
+        import FreeCAD, FreeCADGui
+{body}
+        verdict["ok"] = True
+    except Exception:
+        verdict["error"] = traceback.format_exc()
+    finally:
+        with open({out!r}, "w") as handle:
+            json.dump(verdict, handle)
+        os._exit(0)
+
+QtCore.QTimer.singleShot(1500, run)
+"""
+
+
+@pytest.fixture
+def run_gui(tmp_path):
+    """run_gui(body) -> dict: run `body` (Python, sets keys of `verdict`) inside the FreeCAD GUI."""
+    if shutil.which("xvfb-run") is None or shutil.which("freecad") is None:
+        pytest.fail("the GUI tier needs xvfb-run and freecad (make deps installs them)")
+
+    def run(body):
+        out, macro = tmp_path / "verdict.json", tmp_path / "macro.py"
+        macro.write_text(MACRO.format(root=ROOT, out=str(out), body=textwrap.indent(textwrap.dedent(body), " " * 8)))
+        home = tmp_path / "home"
+        home.mkdir(exist_ok=True)
+        env = dict(os.environ, HOME=str(home), QTWEBENGINE_DISABLE_SANDBOX="1")
+        subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", str(macro)],
+                       env=env, cwd=tmp_path, timeout=GUI_TIMEOUT, capture_output=True)
+        assert out.exists(), "the FreeCAD GUI ended without running the macro"
+        verdict = json.loads(out.read_text())
+        assert verdict["ok"], verdict.get("error")
+        return verdict
+
+    return run
