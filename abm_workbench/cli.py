@@ -114,7 +114,8 @@ def _input_arguments(parser):
                        help="JSON of default cutting parameters (keys as the options below, with _ for -; "
                             "phi_range as [start, end]; description); options and the APT file override it")
     cutting = parser.add_argument_group(
-        "cutting parameters (required ones may come from the APT file or --job; options override both)")
+        "cutting parameters (the APT file's tool, spindle and feed win where it gives them; "
+        "options override --job)")
     cutting.add_argument("--diameter", type=float, help="tool diameter (mm), required")
     cutting.add_argument("--flutes", type=int, help="number of flutes, required")
     cutting.add_argument("--flute-length", type=float, help="flute length (mm), required")
@@ -131,9 +132,10 @@ def _input_arguments(parser):
     solid.add_argument("--wall-points", choices=WALL_POINTS,
                        help="where the six points of each wall lie over the y window (default chebyshev)")
     solid.add_argument("--y-window", metavar="whole|swept|Y0:Y1",
-                       help="y range recognised (mm): the stock's whole range (default), the range the cutting "
-                            "edges sweep in the pass plus 1 mm (swept; tightens quintic walls), or Y0:Y1 "
-                            "(--y-window=-10:10 for a negative start)")
+                       help="y range recognised (mm): the stock's whole range (whole, the default for exact "
+                            "walls), the range the cutting edges sweep below the stock's top in the pass plus 1 mm "
+                            "(swept, the default for quintic walls: the paper's six points cover the pass), or "
+                            "Y0:Y1 (--y-window=-10:10 for a negative start)")
 
 
 def _prepare(args):
@@ -167,8 +169,8 @@ def _load_stock(args, toolpath, tool):
         if value is not None and not is_solid:
             raise InputError(f"{option} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
                              f"{args.stock}")
-    window = args.y_window
-    if window in (None, "whole"):
+    window = args.y_window or ("swept" if args.walls == "quintic" else "whole")
+    if window == "whole":
         window = None
     elif window == "swept":
         window = functools.partial(swept_y_window, toolpath, tool)  # completed with the solid's top z

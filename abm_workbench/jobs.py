@@ -224,8 +224,10 @@ class Parameters:
 
 
 def resolve_parameters(given, hints: PathHints, job, job_source=None):
-    """Each cutting parameter from `given` (command-line values, None when not given), else the
-    toolpath file's hints, else the job, else its default; InputError for a missing required one.
+    """Each cutting parameter from the toolpath file where it gives it (the tool and feed the
+    path was made for), else from `given` (command-line values, None when not given), else the
+    job, else its default; InputError for a missing required one. Where the file and the
+    command line or the job disagree, the file's value is used and `conflicts` says so.
 
     given: {name: value or None} for the keys of PARAMETERS. The feed per tooth comes from the
     APT feed only when it is the same at every CL point and, for a feed per minute, the spindle
@@ -239,14 +241,15 @@ def resolve_parameters(given, hints: PathHints, job, job_source=None):
         if key == "feed_per_tooth":
             from_path[key] = (_feed_per_tooth(hints, values["flutes"], values["spindle_rpm"]), "FEDRAT")
         file_value, record = from_path.get(key, (None, None))
-        if given.get(key) is not None:
-            values[key], sources[key] = given[key], f"--{key.replace('_', '-')}"
-        elif file_value is not None:
+        if file_value is not None:
             values[key], sources[key] = file_value, f"{os.path.basename(hints.source)} {record}"
-            if key in job and not np.isclose(job[key], file_value, rtol=1e-9, atol=0.0):
-                conflicts.append(f"{hints.source} gives {key} {file_value:g}, {job_source} {job[key]:g}: "
-                                 f"using {file_value:g} from {os.path.basename(hints.source)}; "
-                                 f"give --{key.replace('_', '-')} to choose")
+            option = f"--{key.replace('_', '-')}"
+            for other, where in ((given.get(key), option), (job.get(key), job_source)):
+                if other is not None and not np.isclose(other, file_value, rtol=1e-9, atol=0.0):
+                    conflicts.append(f"{hints.source} gives {key} {file_value:g}, {where} {other:g}: "
+                                     f"using {file_value:g}, the value the toolpath was made for")
+        elif given.get(key) is not None:
+            values[key], sources[key] = given[key], f"--{key.replace('_', '-')}"
         elif key in job:
             values[key], sources[key] = job[key], os.path.basename(job_source)
         elif PARAMETERS[key] is REQUIRED:

@@ -75,14 +75,15 @@ def test_engage_on_step_and_apt_matches_the_json_stock(case, capsys):
 @pytest.mark.parametrize("options", [
     ["--walls", "quintic", "--wall-points", "even"],
     ["--walls", "quintic", "--y-window", "swept"],
-    ["--y-window=-10:10", "--diameter", "10"],
+    ["--y-window=-10:10", "--inclination", "5"],
 ])
 def test_engage_solid_options(case, capsys, options):
     status, out, err = run(ENGAGE + ["--stock", "stock.step", "--out", "R.csv"] + options, capsys)
     assert status == 0, err
     if "--y-window=-10:10" in options:
-        assert "diameter 10 mm [--diameter]" in out and "y window -10..10 mm" in out
-    if "swept" in options:  # inside the stock's y range -12..12 mm here
+        assert "inclination 5° [--inclination]" in out and "y window -10..10 mm" in out
+    if "swept" in options or options[:2] == ["--walls", "quintic"] and "--y-window" not in options:
+        # swept is the quintic's default; inside the stock's y range -12..12 mm here
         z_max = load_solid("stock.step").BoundBox.ZMax
         low, high = swept_y_window(load_path("path.apt")[0], Tool(12, 2, 25), z_max)
         assert -12 < low < high < 12 and f"quintic walls, y window {low:.6g}..{high:.6g} mm" in out

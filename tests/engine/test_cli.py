@@ -103,13 +103,15 @@ def test_apt_toolpath_gives_tool_and_spindle(case, capsys):
     assert status == 0
     assert err.splitlines() == [
         "abm: warning: path.apt:4: OPSKIP: record not understood, ignored (2 times)",
-        "abm: warning: path.apt gives diameter 10, job.json 12: using 10 from path.apt; give --diameter to choose",
-        "abm: warning: path.apt gives flute_length 25, job.json 30: using 25 from path.apt; give --flute-length "
-        "to choose",
+        "abm: warning: path.apt gives diameter 10, job.json 12: using 10, the value the toolpath was made for",
+        "abm: warning: path.apt gives flute_length 25, job.json 30: using 25, the value the toolpath was made for",
+        "abm: warning: path.apt gives spindle_rpm 3000, --spindle-rpm 5000: using 3000, the value the toolpath "
+        "was made for",
+        "abm: warning: path.apt gives spindle_rpm 3000, job.json 4000: using 3000, the value the toolpath was made for",
     ]
     sources = out.splitlines()[1]
     assert "diameter 10 mm [path.apt CUTTER]" in sources and "flute length 25 mm [path.apt CUTTER]" in sources
-    assert "spindle 5000 rpm [--spindle-rpm]" in sources and "2 flutes [job.json]" in sources
+    assert "spindle 3000 rpm [path.apt SPINDL]" in sources and "2 flutes [job.json]" in sources
     assert len(read_results(case / "R.csv")["cl"]) == M * P
 
 

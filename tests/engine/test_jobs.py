@@ -79,25 +79,29 @@ def test_bad_wall_options(files):
         load_stock(files / "stock.json", wall_points="random")
 
 
-def test_parameters_option_over_apt_over_job_over_default(files):
+def test_parameters_apt_over_option_over_job_over_default(files):
     _, hints = load_path(files / "path.apt")
     job = {"diameter": 10.0, "flutes": 2.0, "flute_length": 30.0, "feed_per_tooth": 0.2, "phi_step": 5.0}
-    given = {**NONE, "flute_length": 25.0}
+    given = {**NONE, "flute_length": 25.0, "spindle_rpm": 5000.0}
     parameters = resolve_parameters(given, hints, job, str(files / "job.json"))
     values, sources = parameters.values, parameters.sources
     assert (values["diameter"], sources["diameter"]) == (12.0, "path.apt CUTTER")
-    assert (values["flute_length"], sources["flute_length"]) == (25.0, "--flute-length")
+    assert (values["flute_length"], sources["flute_length"]) == (30.0, "path.apt CUTTER")
     assert (values["flutes"], sources["flutes"]) == (2.0, "job.json")
     assert (values["spindle_rpm"], sources["spindle_rpm"]) == (4000.0, "path.apt SPINDL")
     # A constant FEDRAT of 800 mm/min at 4000 rpm with 2 flutes: 0.1 mm per tooth.
     assert sources["feed_per_tooth"] == "path.apt FEDRAT" and values["feed_per_tooth"] == pytest.approx(0.1)
     assert (values["inclination"], sources["inclination"]) == (0.0, "default")
     assert (values["phi_step"], sources["phi_step"]) == (5.0, "job.json")
-    assert len(parameters.conflicts) == 2  # diameter 12 vs 10, feed per tooth 0.1 vs 0.2
-    assert parameters.conflicts[0].startswith(f"{files / 'path.apt'} gives diameter 12, ")
-    assert "give --diameter to choose" in parameters.conflicts[0]
+    # diameter 12 vs the job's 10, flute length 30 vs --flute-length 25, spindle 4000 vs
+    # --spindle-rpm 5000, feed per tooth 0.1 vs the job's 0.2
+    assert len(parameters.conflicts) == 4
+    assert parameters.conflicts[0] == (f"{files / 'path.apt'} gives diameter 12, {files / 'job.json'} 10: "
+                                       "using 12, the value the toolpath was made for")
+    assert parameters.conflicts[1].startswith(f"{files / 'path.apt'} gives flute_length 30, --flute-length 25: ")
+    assert parameters.conflicts[2].startswith(f"{files / 'path.apt'} gives spindle_rpm 4000, --spindle-rpm 5000: ")
     line = parameters.describe()
-    assert "diameter 12 mm [path.apt CUTTER]" in line and "flute length 25 mm [--flute-length]" in line
+    assert "diameter 12 mm [path.apt CUTTER]" in line and "flute length 30 mm [path.apt CUTTER]" in line
     assert "feed 0.1 mm/tooth [path.apt FEDRAT]" in line and "φ 0..180° [default]" in line
 
 
