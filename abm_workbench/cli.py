@@ -1,7 +1,8 @@
 """Command line of the ABM workbench: ``python -m abm_workbench <command> ...``.
 
 Commands:
-  engage    cut geometry of one pass: stock + toolpath -> results CSV (+ PNG).
+  engage    cut geometry of one pass: stock + toolpath -> results CSV (+ PNG); --method zmap
+            computes it with the discrete Z-map baseline instead of ABM (docs/ZMAP.md).
   validate  the engine against OpenCASCADE booleans at every instant -> HTML report (+ FCStd).
 
 The stock is a staircase JSON or a solid (STEP, BREP, FCStd: FreeCAD is then needed), the
@@ -26,7 +27,7 @@ import time
 
 import numpy as np
 
-from .engine import CutSettings, Tool, engage
+from .engine import CutSettings, Tool, engage, zmap_engage
 from .errors import InputError
 from .formats import replacing
 from .formats.results_csv import results_text, summary_path, summary_text, write_text
@@ -34,6 +35,10 @@ from .jobs import (PARAMETERS, SOLID_SUFFIXES, WALL_MODELS, WALL_POINTS, load_jo
                    resolve_parameters, swept_y_window)
 
 PROG = "abm"
+#: Methods of the engage command.
+METHODS = ("abm", "zmap")
+#: Default Z-map cell size (mm), the paper's.
+ZMAP_GRID = 0.2
 
 
 class _Parser(argparse.ArgumentParser):
@@ -80,6 +85,15 @@ def _build_parser():
     outputs = engage_parser.add_argument_group("outputs")
     outputs.add_argument("--out", required=True, metavar="R.csv", help="results CSV; the summary goes to R.summary.csv")
     outputs.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass")
+    method = engage_parser.add_argument_group("method")
+    method.add_argument("--method", choices=METHODS, default="abm",
+                        help="abm: the analytical boundary method (default); zmap: the discrete Z-map baseline "
+                             "(height grid updated CL point by CL point, edge sampled; docs/ZMAP.md)")
+    method.add_argument("--grid", type=float, metavar="MM",
+                        help="Z-map cell size (mm), default 0.2; --method zmap only")
+    method.add_argument("--edge-step", type=float, metavar="MM",
+                        help="Z-map sampling step along the cutting edge (mm), default the grid size; "
+                             "--method zmap only")
     engage_parser.set_defaults(run=_run_engage)
 
     validate_parser = commands.add_parser(
@@ -192,14 +206,15 @@ def _stock_line(stock):
 
 def _run_engage(args):
     """The engage command; returns 0 or raises InputError."""
+    compute, method_text = _engage_method(args)
     job, toolpath, parameters, tool, settings = _prepare(args)
     outputs = [args.out, summary_path(args.out)] + ([args.plot] if args.plot else [])
     _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
     stock, _ = _load_stock(args, toolpath, tool)
 
     started = time.perf_counter()
-    engagement = engage(stock.staircase, tool, toolpath, settings,
-                        progress=_engine_progress() if sys.stderr.isatty() else None)
+    engagement = compute(stock.staircase, tool, toolpath, settings,
+                         progress=_engine_progress() if sys.stderr.isatty() else None)
     elapsed_ms = 1e3 * (time.perf_counter() - started)
     if not engagement.engaged.any():
         raise InputError(_no_engagement(args))
@@ -222,12 +237,34 @@ def _run_engage(args):
 
     m, p = engagement.shape
     depth = engagement.depth_of_cut
-    print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms; "
+    print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms{method_text}; "
           f"depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage); "
           f"wrote {', '.join(outputs)}")
     print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
     return 0
+
+
+def _engage_method(args):
+    """(function computing the Engagement, text for the output line) of --method, --grid, --edge-step."""
+    if args.method == "abm":
+        given = [option for option, value in (("--grid", args.grid), ("--edge-step", args.edge_step))
+                 if value is not None]
+        if given:
+            raise InputError(f"{given[0]} applies to --method zmap, not to --method abm")
+        return engage, ""
+    grid = ZMAP_GRID if args.grid is None else args.grid
+    step = grid if args.edge_step is None else args.edge_step
+    for option, value in (("--grid", grid), ("--edge-step", step)):
+        if not (np.isfinite(value) and value > 0.0):
+            raise InputError(f"{option}: must be a positive number of mm, got {value:g}")
+
+    def compute(stock, tool, toolpath, settings, progress=None):
+        try:
+            return zmap_engage(stock, tool, toolpath, settings, grid=grid, edge_step=step, progress=progress)
+        except ValueError as error:
+            raise InputError(f"--method zmap: {error}") from None
+    return compute, f" (Z-map, grid {grid:g} mm, edge step {step:g} mm)"
 
 
 def _run_validate(args):

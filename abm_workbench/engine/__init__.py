@@ -10,9 +10,10 @@ from .frames import angles_to_axis, axis_to_angles, rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import k_coefficients
 from .walls import Wall
+from .zmap import ZMap, tool_floor, zmap_engage
 
 __all__ = [
     "CASES", "SURFACES", "CutSettings", "Engagement", "Staircase", "Tool", "Toolpath", "Wall",
     "angles_to_axis", "axis_to_angles", "cut_thickness", "edge_lines", "engage", "k_coefficients",
-    "rotation_matrix", "segment_letter",
+    "rotation_matrix", "segment_letter", "ZMap", "tool_floor", "zmap_engage",
 ]

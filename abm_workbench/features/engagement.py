@@ -1,0 +1,389 @@
+"""The engagement object: a stock, a toolpath and the cut settings; the engine runs in ``execute``.
+
+``create_engagement(doc, stock, toolpath, **settings)`` adds a ``Part::FeaturePython`` (proxy
+:class:`EngagementFeature`) with:
+
+- group "Inputs": ``Stock`` and ``Toolpath`` (links to the objects of :mod:`.stock` and
+  :mod:`.toolpath`), ``WallModel`` (stock: the stock object's; exact or quintic: that model,
+  for a solid stock only);
+- group "Tool": ``Diameter`` (mm), ``Flutes``, ``FluteLength`` (mm);
+- group "Cut": ``FeedPerTooth`` (mm), ``SpindleSpeed`` (rpm, 0: none), ``Inclination`` (deg),
+  ``PhiStart``, ``PhiEnd``, ``PhiStep`` (deg);
+- group "Display": ``ShowSurfaces``: the Shape is the engaged cutter surface (below), or empty;
+- group "Results" (read-only, set by ``execute``): ``DepthOfCutMin``, ``DepthOfCutMax``,
+  ``MaxLengthOfCut`` (mm), ``Instants`` (CL points × angles), ``EngagedInstants``,
+  ``EngagedCLPoints``, ``EngineTime`` (s), ``Parameters`` (each value and where it came from),
+  ``Warnings``, ``ResultsFile`` (where the results CSV is), ``ResultsDigest``.
+
+Parameters follow the command line's precedence (:func:`abm_workbench.jobs.resolve_parameters`):
+what an APT / CL toolpath file gives (tool diameter, flute length, spindle speed, a constant
+feed) wins over the properties, which play the command-line options; a required value that is
+0 and not in the file is "missing", with the command line's message. ``create_engagement``
+fills the properties not given from the file, so they show the values used.
+
+Results are not pickled into the document. ``execute`` writes the results CSV and its summary
+(:mod:`abm_workbench.formats.results_csv`) to ``<folder of the .FCStd>/<file stem>_abm/<object
+Name>.csv`` (and ``.summary.csv``); for a document never saved, to a temporary folder, and when
+the document is saved the results in memory are written beside it (a document observer, at
+the start of the save, so ``ResultsFile`` is saved right). ``ResultsDigest`` keeps the CSV's
+SHA-256. On restore (``onDocumentRestored``) the CSV is read back, with no recompute; when it
+is missing, or is not the file saved with the document (its digest differs: recomputed but not
+saved), the object is marked touched as the document is activated (FreeCAD 0.20 clears touched
+flags at the end of a restore) and the next recompute computes it again.
+
+The Shape: per CL point and engagement segment, the ruled surface between the LEP and UEP
+polylines over the segment's φ range (the engaged part of the cutter surface), all in one
+compound; see docs/FEATURES.md for its cost.
+"""
+
+import atexit
+import hashlib
+import os
+import shutil
+import tempfile
+import time
+
+import numpy as np
+
+from ..cad.freecad_env import FreeCAD, Part
+from ..engine import CutSettings, Tool, engage
+from ..errors import InputError
+from ..formats.results_csv import write_results
+from ..jobs import PARAMETERS, WALL_MODELS, Parameters, resolve_parameters
+from .base import FeatureProxy, add_properties, document_or_active
+from .stored import read_engagement
+from .stock import StockFeature
+from .toolpath import ToolpathFeature, polyline
+
+#: WallModel choices: the stock object's, or one of the wall models.
+WALL_CHOICES = ("stock",) + WALL_MODELS
+#: create_engagement keyword -> (property, value when not set). Required ones are 0 when not set.
+SETTINGS = {
+    "diameter": ("Diameter", 0.0), "flutes": ("Flutes", 0), "flute_length": ("FluteLength", 0.0),
+    "feed_per_tooth": ("FeedPerTooth", 0.0), "spindle_rpm": ("SpindleSpeed", 0.0),
+    "inclination": ("Inclination", PARAMETERS["inclination"]),
+    "phi_start": ("PhiStart", PARAMETERS["phi_range"][0]), "phi_end": ("PhiEnd", PARAMETERS["phi_range"][1]),
+    "phi_step": ("PhiStep", PARAMETERS["phi_step"]),
+}
+#: Where resolve_parameters says "--option", the engagement object took the value from this property.
+_PROPERTY_SOURCE = {
+    "--diameter": "Diameter", "--flutes": "Flutes", "--flute-length": "FluteLength",
+    "--feed-per-tooth": "FeedPerTooth", "--inclination": "Inclination", "--spindle-rpm": "SpindleSpeed",
+    "--phi-range": "PhiStart, PhiEnd", "--phi-step": "PhiStep",
+}
+#: Property type flag: changing it does not touch the object (FreeCAD's Prop_Output).
+_PROP_OUTPUT = 8
+_TEMP_FOLDERS = {}  # document Name -> temporary results folder of an unsaved document
+
+
+class EngagementFeature(FeatureProxy):
+    """Proxy of the engagement object (see the module docstring)."""
+
+    KIND = "ABM::Engagement"
+
+    def __init__(self, obj):
+        super().__init__(obj)
+        add_properties(obj, "Inputs", [
+            ("App::PropertyLink", "Stock", "the stock object (ABM Stock)"),
+            ("App::PropertyLink", "Toolpath", "the toolpath object (ABM Toolpath)"),
+            ("App::PropertyEnumeration", "WallModel", "stock: the stock object's wall model; exact or quintic: "
+                                                      "that model (solid stocks only)"),
+        ])
+        obj.WallModel = list(WALL_CHOICES)
+        obj.WallModel = "stock"
+        add_properties(obj, "Tool", [
+            ("App::PropertyLength", "Diameter", "tool diameter (required; the toolpath file's CUTTER wins)", 0.0),
+            ("App::PropertyInteger", "Flutes", "number of flutes (required)", 0),
+            ("App::PropertyLength", "FluteLength", "flute length (required; the toolpath file's CUTTER wins)", 0.0),
+        ])
+        add_properties(obj, "Cut", [
+            ("App::PropertyLength", "FeedPerTooth", "feed per tooth f (required; a constant FEDRAT in the "
+                                                    "toolpath file wins)", 0.0),
+            ("App::PropertyFloat", "SpindleSpeed", "spindle speed (rpm), 0 for none (the file's SPINDL wins)", 0.0),
+            ("App::PropertyAngle", "Inclination", "tool inclination angle α", PARAMETERS["inclination"]),
+            ("App::PropertyAngle", "PhiStart", "first tool rotation angle φ reported", PARAMETERS["phi_range"][0]),
+            ("App::PropertyAngle", "PhiEnd", "last tool rotation angle φ reported", PARAMETERS["phi_range"][1]),
+            ("App::PropertyAngle", "PhiStep", "step of the rotation angle φ", PARAMETERS["phi_step"]),
+        ])
+        add_properties(obj, "Display", [
+            ("App::PropertyBool", "ShowSurfaces", "Shape: the engaged cutter surface of every CL point "
+                                                  "(one ruled surface per engagement segment), or empty", True),
+        ])
+        add_properties(obj, "Results", [
+            ("App::PropertyLength", "DepthOfCutMin", "smallest depth of cut over the engaged CL points"),
+            ("App::PropertyLength", "DepthOfCutMax", "largest depth of cut over the engaged CL points"),
+            ("App::PropertyLength", "MaxLengthOfCut", "largest length of cut over all instants"),
+            ("App::PropertyInteger", "Instants", "CL points × rotation angles computed"),
+            ("App::PropertyInteger", "EngagedInstants", "instants at which the edge is in the stock"),
+            ("App::PropertyInteger", "EngagedCLPoints", "CL points at which the tool engages the stock"),
+            ("App::PropertyFloat", "EngineTime", "time the engine took (s)"),
+            ("App::PropertyString", "Parameters", "each cutting parameter used and where it came from"),
+            ("App::PropertyStringList", "Warnings", "what the toolpath file could not read, conflicts"),
+        ], read_only=True)
+        for name, tip in (("ResultsFile", "results CSV: relative to the document's folder, or a temporary path "
+                                          "before it is saved"),
+                          ("ResultsDigest", "SHA-256 of the results CSV written last: on restore, a CSV that "
+                                            "differs (recomputed but not saved) is not used")):
+            if name not in obj.PropertiesList:
+                obj.addProperty("App::PropertyString", name, "Results", tip, _PROP_OUTPUT)
+            obj.setEditorMode(name, 1)
+
+    def _reset(self):
+        self._result = None  # the Engagement, computed or read back
+        self._written = None  # path the results were last written to
+        self._stale = False  # restored without results: touched once the document is restored
+        self._toolpath = None  # the Toolpath of the results (for the summary's CL point columns)
+
+    # ---- computing -------------------------------------------------------------------------
+    def execute(self, obj):
+        """Run the engine; store the results (CSV, read-only properties, Shape)."""
+        self._result, self._written = None, None
+        toolpath, hints = _proxy(obj.Toolpath, ToolpathFeature, "Toolpath", obj).load(obj.Toolpath)
+        stock_obj = obj.Stock
+        stock_proxy = _proxy(stock_obj, StockFeature, "Stock", obj)
+        given = {
+            "diameter": _or_none(obj.Diameter.Value), "flutes": _or_none(obj.Flutes),
+            "flute_length": _or_none(obj.FluteLength.Value), "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
+            "inclination": obj.Inclination.Value, "spindle_rpm": _or_none(obj.SpindleSpeed),
+            "phi_range": (obj.PhiStart.Value, obj.PhiEnd.Value), "phi_step": obj.PhiStep.Value,
+        }
+        parameters = resolve_parameters(given, hints, {})
+        sources = {key: _PROPERTY_SOURCE.get(source, source) for key, source in parameters.sources.items()}
+        parameters = Parameters(parameters.values, sources, parameters.conflicts)
+        values = parameters.values
+        try:
+            tool = Tool(values["diameter"], values["flutes"], values["flute_length"])
+        except ValueError as error:
+            raise InputError(f"tool: {error}") from None
+        try:
+            settings = CutSettings(values["feed_per_tooth"], values["inclination"], *values["phi_range"],
+                                   values["phi_step"], values["spindle_rpm"])
+        except ValueError as error:
+            raise InputError(f"cut settings: {error}") from None
+        walls = None if obj.WallModel == "stock" else obj.WallModel
+        if walls is not None and not stock_proxy.is_solid(stock_obj):
+            raise InputError(f"WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
+                             f"{stock_proxy.source_name(stock_obj)}")
+        staircase = stock_proxy.staircase(stock_obj, walls)
+
+        started = time.perf_counter()
+        result = engage(staircase, tool, toolpath, settings)
+        elapsed = time.perf_counter() - started
+        if not result.engaged.any():
+            raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "
+                             f"engages it (are the toolpath and {stock_proxy.source_name(stock_obj)} in the "
+                             "same frame?)")
+        warnings = [*hints.messages(), *parameters.conflicts]
+        for message in warnings:
+            FreeCAD.Console.PrintWarning(f"{obj.Label}: {message}\n")
+        self._result, self._toolpath = result, toolpath
+        self._write(obj, results_path(obj))
+        self._summary(obj, result)
+        obj.EngineTime = elapsed
+        obj.Parameters = parameters.describe()
+        obj.Warnings = warnings
+        obj.Shape = engaged_surfaces(result) if obj.ShowSurfaces else Part.Shape()
+
+    def _summary(self, obj, result):
+        depth = result.depth_of_cut
+        engaged = ~np.isnan(depth)
+        obj.DepthOfCutMin = float(np.nanmin(depth)) if engaged.any() else 0.0
+        obj.DepthOfCutMax = float(np.nanmax(depth)) if engaged.any() else 0.0
+        obj.MaxLengthOfCut = float(result.length.max())
+        obj.Instants = int(result.length.size)
+        obj.EngagedInstants = int(np.count_nonzero(result.engaged))
+        obj.EngagedCLPoints = int(np.count_nonzero(engaged))
+
+    def _write(self, obj, path):
+        """Write the results and summary CSV to `path`, and note where in ResultsFile."""
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        toolpath = self._toolpath
+        if toolpath is None and isinstance(getattr(obj.Toolpath, "Proxy", None), ToolpathFeature):
+            try:  # results read back: the toolpath file gives the summary's CL point columns
+                toolpath = obj.Toolpath.Proxy.load(obj.Toolpath)[0]
+            except InputError:
+                toolpath = None
+        if toolpath is not None and len(toolpath) != self._result.shape[0]:
+            toolpath = None
+        write_results(self._result, path, toolpath=toolpath)
+        self._written = path
+        obj.ResultsFile = _relative(obj.Document, path)
+        obj.ResultsDigest = _digest(path)
+
+    # ---- results --------------------------------------------------------------------------
+    def result(self, obj):
+        """The Engagement (arrays over CL points × φ), or None before a successful recompute."""
+        return self._result
+
+    def save_results(self, obj):
+        """Write the results in memory beside the document, unless they are there already."""
+        if self._result is None:
+            return
+        path = results_path(obj)
+        if self._written != path or not os.path.isfile(path):
+            self._write(obj, path)
+
+    def restored(self, obj):
+        """Read the results CSV back (no recompute); mark the object touched when it is not there."""
+        path = _absolute(obj.Document, obj.ResultsFile) if obj.ResultsFile else results_path(obj)
+        if not os.path.isfile(path):
+            path = results_path(obj)
+        try:
+            if not os.path.isfile(path):
+                raise InputError(f"{path}: no such file")
+            if _digest(path) != obj.ResultsDigest:
+                raise InputError(f"{path}: not the results saved with the document (recomputed since?)")
+            result = read_engagement(path)
+            if result.length.size != obj.Instants:
+                raise InputError(f"{path}: {result.length.size} instants, the object says {obj.Instants}")
+        except (InputError, OSError) as error:
+            FreeCAD.Console.PrintWarning(f"{obj.Label}: results not restored ({error}); recompute to compute them\n")
+            # FreeCAD 0.20 clears touched flags at the end of a restore and tells Python observers
+            # nothing after that but the document's activation: the observer touches it then.
+            self._stale = True
+            return
+        self._result, self._written = result, path
+
+
+def _proxy(linked, kind, role, obj):
+    """The proxy (of class `kind`) of a linked ABM object; InputError when the link is missing or wrong."""
+    proxy = getattr(linked, "Proxy", None) if linked is not None else None
+    if not isinstance(proxy, kind):
+        raise InputError(f"{obj.Label}: {role} must link an ABM {role} object")
+    return proxy
+
+
+def _or_none(value):
+    return None if value == 0 else value
+
+
+def results_folder(doc):
+    """Folder of the results of `doc`: ``<folder>/<stem>_abm`` beside its file, or a temporary one."""
+    if doc.FileName:
+        folder, name = os.path.split(doc.FileName)
+        return os.path.join(folder, os.path.splitext(name)[0] + "_abm")
+    if doc.Name not in _TEMP_FOLDERS:
+        _TEMP_FOLDERS[doc.Name] = tempfile.mkdtemp(prefix=f"abm-{doc.Name}-")
+    return _TEMP_FOLDERS[doc.Name]
+
+
+def results_path(obj):
+    """Results CSV of the engagement object `obj` (its summary: .summary.csv beside it)."""
+    return os.path.join(results_folder(obj.Document), obj.Name + ".csv")
+
+
+def _digest(path):
+    """SHA-256 (hex) of the file at `path`."""
+    with open(path, "rb") as file:
+        return hashlib.sha256(file.read()).hexdigest()
+
+
+def _relative(doc, path):
+    if doc.FileName:
+        return os.path.relpath(path, os.path.dirname(doc.FileName))
+    return path
+
+
+def _absolute(doc, path):
+    if os.path.isabs(path) or not doc.FileName:
+        return path
+    return os.path.join(os.path.dirname(doc.FileName), path)
+
+
+def engaged_surfaces(result):
+    """A compound of the engaged cutter surface (see :func:`engaged_surface_parts`)."""
+    return Part.Compound(engaged_surface_parts(result)[0])
+
+
+def engaged_surface_parts(result):
+    """The engaged cutter surface of every CL point, piece by piece, and what each piece is.
+
+    Per CL point and engagement segment: the ruled surface between the LEP and UEP polylines
+    over the segment (a line LEP–UEP for a one-angle segment; the two polylines where OCC
+    refuses the ruling; nothing for a segment of zero length). Returns (shapes, keys): keys[i]
+    = (cl, segment letter, UEP surface name) of shapes[i], e.g. for colouring by UEP surface.
+    """
+    shapes, keys = [], []
+    for cl in range(result.shape[0]):
+        for index, segment in enumerate(result.segments(cl)):
+            rows = np.flatnonzero(result.segment[cl] == index)
+            lep, uep = result.lep_xyz[cl, rows], result.uep_xyz[cl, rows]
+            key = (cl, segment["letter"], segment["surface"])
+            if len(rows) == 1:
+                if np.linalg.norm(uep[0] - lep[0]) > 1e-9:
+                    shapes.append(Part.LineSegment(FreeCAD.Vector(*lep[0]), FreeCAD.Vector(*uep[0])).toShape())
+                    keys.append(key)
+                continue
+            try:
+                pieces = [Part.makeRuledSurface(polyline(lep), polyline(uep))]
+            except Exception:  # noqa: BLE001 (OCC refuses degenerate rulings: show the two curves)
+                pieces = [polyline(lep), polyline(uep)]
+            shapes += pieces
+            keys += [key] * len(pieces)
+    return shapes, keys
+
+
+class _SaveObserver:
+    """Writes the results of every engagement object beside a document as it is saved; removes an
+    unsaved document's temporary results folder when it is closed."""
+
+    def slotStartSaveDocument(self, doc, filename):
+        for obj in doc.Objects:
+            if isinstance(getattr(obj, "Proxy", None), EngagementFeature):
+                try:
+                    obj.Proxy.save_results(obj)
+                except Exception as error:  # noqa: BLE001 (the save itself must go on)
+                    FreeCAD.Console.PrintError(f"{obj.Label}: cannot write results: {error}\n")
+
+    def slotActivateDocument(self, doc):
+        for obj in doc.Objects:
+            proxy = getattr(obj, "Proxy", None)
+            if isinstance(proxy, EngagementFeature) and proxy._stale:
+                proxy._stale = False
+                obj.touch()
+
+    def slotDeletedDocument(self, doc):
+        folder = _TEMP_FOLDERS.pop(doc.Name, None)
+        if folder:
+            shutil.rmtree(folder, ignore_errors=True)
+
+
+_OBSERVER = _SaveObserver()
+FreeCAD.addDocumentObserver(_OBSERVER)
+atexit.register(lambda: [shutil.rmtree(folder, ignore_errors=True) for folder in _TEMP_FOLDERS.values()])
+
+
+def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *, walls="stock", **settings):
+    """Add an engagement object of `stock` and `toolpath` (objects of create_stock / create_toolpath)
+    to `doc` (default the active document; RuntimeError if none).
+
+    settings: diameter, flutes, flute_length, feed_per_tooth (mm), spindle_rpm, inclination,
+    phi_start, phi_end, phi_step (deg), or phi_range=(start, end); those not given come from the
+    toolpath file where it gives them (read now), else stay unset (0) or at their defaults.
+    walls: "stock", "exact" or "quintic". Returns the object (not yet recomputed).
+    """
+    doc = document_or_active(doc)
+    if "phi_range" in settings:
+        settings["phi_start"], settings["phi_end"] = settings.pop("phi_range")
+    unknown = sorted(set(settings) - set(SETTINGS))
+    if unknown:
+        raise TypeError(f"create_engagement: unknown setting {unknown[0]!r} (known: {', '.join(SETTINGS)})")
+    if walls not in WALL_CHOICES:
+        raise ValueError(f"walls must be one of {WALL_CHOICES}, got {walls!r}")
+    obj = doc.addObject("Part::FeaturePython", name)
+    EngagementFeature(obj)
+    obj.Stock, obj.Toolpath, obj.WallModel = stock, toolpath, walls
+    if toolpath is not None and getattr(toolpath, "File", ""):
+        try:
+            _, hints = toolpath.Proxy.load(toolpath)
+        except InputError:
+            hints = None  # execute reports it
+        if hints is not None:
+            for key, value in (("diameter", hints.diameter), ("flute_length", hints.flute_length),
+                               ("spindle_rpm", hints.spindle_rpm)):
+                if value is not None and key not in settings:
+                    settings[key] = value
+    for key, value in settings.items():
+        if value is not None:
+            setattr(obj, SETTINGS[key][0], value)
+    return obj

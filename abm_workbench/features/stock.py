@@ -1,0 +1,135 @@
+"""The stock as a document object: a staircase solid recognised from a Part object or a file.
+
+``create_stock(doc, source=...)`` adds a ``Part::FeaturePython`` (proxy :class:`StockFeature`):
+
+- group "Source": ``SourceObject`` (link to a Part object of the document holding the solid)
+  or ``SourceFile`` (a staircase JSON, or a STEP / BREP / FCStd solid); the link wins when
+  both are set.
+- group "Walls": ``WallModel`` (exact: the solid's own wall curves; quintic: the paper's
+  quintic through six points), ``WallPoints`` (chebyshev or even: where the six points lie).
+  A JSON stock always has the paper's quintic walls.
+- group "Summary" (read-only, set by ``execute``): ``Sections``, ``StraightWalls``,
+  ``CurvedWalls``, ``YMin``, ``YMax`` (the y window recognised: the stock's whole y range).
+
+Its Shape is the stock solid (the source's own solid, or for JSON the staircase built as a
+solid). The recognised :class:`~abm_workbench.engine.Staircase` stays on the proxy, never in the
+file; :meth:`StockFeature.staircase` recognises it again when needed after a restore.
+Bad input raises the command line's InputError message; FreeCAD then marks the object invalid.
+"""
+
+import os
+
+from ..errors import InputError
+from ..jobs import WALL_MODELS, WALL_POINTS, Stock, load_stock
+from .base import FeatureProxy, add_properties, document_or_active
+
+_WALL_MODEL_TIP = ("exact: each wall is the solid's own curve (default); quintic: the paper's quintic through "
+                   "six points on the wall. A JSON stock always has the paper's quintic walls.")
+
+
+class StockFeature(FeatureProxy):
+    """Proxy of the stock object (see the module docstring)."""
+
+    KIND = "ABM::Stock"
+
+    def __init__(self, obj):
+        super().__init__(obj)
+        add_properties(obj, "Source", [
+            ("App::PropertyLink", "SourceObject", "Part object holding the stock solid (wins over SourceFile)"),
+            ("App::PropertyFile", "SourceFile", "staircase JSON, or a STEP / BREP / FCStd file holding the solid"),
+        ])
+        add_properties(obj, "Walls", [("App::PropertyEnumeration", "WallModel", _WALL_MODEL_TIP),
+                                      ("App::PropertyEnumeration", "WallPoints",
+                                       "where the six points of each wall lie over the y window")])
+        obj.WallModel, obj.WallPoints = list(WALL_MODELS), list(WALL_POINTS)
+        obj.WallModel, obj.WallPoints = WALL_MODELS[0], WALL_POINTS[0]
+        add_properties(obj, "Summary", [
+            ("App::PropertyInteger", "Sections", "number of sections of the staircase"),
+            ("App::PropertyInteger", "StraightWalls", "walls that are planes x = const"),
+            ("App::PropertyInteger", "CurvedWalls", "walls that are curved"),
+            ("App::PropertyDistance", "YMin", "y window recognised: lower limit (the stock's whole y range)"),
+            ("App::PropertyDistance", "YMax", "y window recognised: upper limit"),
+        ], read_only=True)
+
+    def _reset(self):
+        self._cache = {}  # {(key of the inputs, walls): jobs.Stock}
+
+    def execute(self, obj):
+        """Recognise the stock, set the Shape and the summary properties."""
+        stock = self.load(obj)
+        obj.Shape = stock.solid()
+        staircase = stock.staircase
+        straight = sum(bool(wall.is_straight) for wall in staircase.walls)
+        obj.Sections = staircase.n_sections
+        obj.StraightWalls, obj.CurvedWalls = straight, len(staircase.walls) - straight
+        obj.YMin, obj.YMax = stock.y_window
+
+    def source_name(self, obj):
+        """What the stock comes from, for messages: the linked object's label or the file."""
+        if obj.SourceObject is not None:
+            return obj.SourceObject.Label
+        return obj.SourceFile
+
+    def staircase(self, obj, walls=None):
+        """The Staircase of the stock (with wall model `walls`, default the WallModel property)."""
+        return self.load(obj, walls).staircase
+
+    def is_solid(self, obj):
+        """True when the stock comes from a solid (a Part object or a STEP / BREP / FCStd file)."""
+        return obj.SourceObject is not None or not obj.SourceFile.lower().endswith(".json")
+
+    def load(self, obj, walls=None):
+        """The stock as a :class:`abm_workbench.jobs.Stock`, cached while its inputs stay the same."""
+        walls = walls or obj.WallModel
+        key = (self._source_key(obj), walls, obj.WallPoints)
+        if key not in self._cache:
+            self._cache = {key: self._load(obj, walls)}
+        return self._cache[key]
+
+    def _source_key(self, obj):
+        if obj.SourceObject is not None:
+            shape = obj.SourceObject.Shape
+            return ("object", obj.SourceObject.Name, shape.hashCode(), round(shape.Volume, 9))
+        path = obj.SourceFile
+        try:
+            stamp = os.stat(path).st_mtime_ns
+        except OSError:
+            stamp = None
+        return ("file", path, stamp)
+
+    def _load(self, obj, walls):
+        source = obj.SourceObject
+        if source is not None:
+            from ..cad.recognise import recognise
+            shape = getattr(source, "Shape", None)
+            if shape is None or shape.isNull():
+                raise InputError(f"{source.Label}: the linked object has no shape")
+            recognition = recognise(shape, walls=walls, wall_points=obj.WallPoints, source=source.Label)
+            return Stock(recognition.staircase, source.Label, shape.copy(), walls)
+        if not obj.SourceFile:
+            raise InputError(f"{obj.Label}: no stock source: set SourceObject or SourceFile")
+        return load_stock(obj.SourceFile, walls=walls, wall_points=obj.WallPoints)
+
+
+def create_stock(doc=None, source=None, name="Stock", *, walls="exact", wall_points="chebyshev"):
+    """Add a stock object to `doc` (default the active document; RuntimeError if none).
+
+    source: a file path (JSON, STEP, BREP, FCStd) or a document object with a solid Shape.
+    walls: "exact" or "quintic"; wall_points: "chebyshev" or "even". Returns the object
+    (not yet recomputed).
+    """
+    doc = document_or_active(doc)
+    if walls not in WALL_MODELS:
+        raise ValueError(f"walls must be one of {WALL_MODELS}, got {walls!r}")
+    if wall_points not in WALL_POINTS:
+        raise ValueError(f"wall_points must be one of {WALL_POINTS}, got {wall_points!r}")
+    obj = doc.addObject("Part::FeaturePython", name)
+    StockFeature(obj)
+    if source is None:
+        pass
+    elif isinstance(source, (str, os.PathLike)):
+        obj.SourceFile = os.fspath(source)
+    else:
+        obj.SourceObject = source
+    obj.WallModel, obj.WallPoints = walls, wall_points
+    return obj

@@ -1,0 +1,286 @@
+"""The parametric document objects (abm_workbench.features), headless: create, recompute, save,
+reopen without recomputing, change a property, bad input."""
+
+import json
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from abm_workbench.cad.freecad_env import FreeCAD, Part
+from abm_workbench.engine import CutSettings, Tool, engage
+from abm_workbench.errors import InputError
+from abm_workbench.features import VERSION, create_engagement, create_stock, create_toolpath
+from abm_workbench.features import engagement as engagement_module
+from abm_workbench.features.engagement import EngagementFeature
+from abm_workbench.formats.toolpath_csv import load_toolpath
+from abm_workbench.jobs import load_stock
+from tests.conftest import ROOT
+
+MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
+STOCK_JSON, STOCK_STEP = os.path.join(MODEL, "stock.json"), os.path.join(MODEL, "stock.step")
+TOOLPATH = os.path.join(MODEL, "toolpath.csv")
+with open(os.path.join(MODEL, "job.json"), encoding="utf-8") as _file:
+    JOB = json.load(_file)
+SETTINGS = {key: JOB[key] for key in ("diameter", "flutes", "flute_length", "feed_per_tooth", "inclination",
+                                      "spindle_rpm", "phi_range", "phi_step")}
+ARRAYS = ("phi", "h", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall", "case",
+          "segment", "area", "lep_xyz", "uep_xyz", "depth_of_cut")
+APT = """\
+MULTAX/ON
+CUTTER/12,0,6,0,0,0,30
+SPINDL/RPM,4000,CLW
+FEDRAT/MMPM,800
+AUXFUN/3
+{moves}END-OF-PATH
+"""
+
+
+@pytest.fixture
+def doc():
+    """A new document, closed after the test (whatever its name is by then)."""
+    document = FreeCAD.newDocument("ABMFeatures")
+    name = document.Name
+    yield document
+    if name in FreeCAD.listDocuments():
+        FreeCAD.closeDocument(name)
+
+
+def reference(stock=STOCK_JSON, inclination=JOB["inclination"]):
+    """The engine's Engagement of model test 1 with the job's values."""
+    tool = Tool(JOB["diameter"], JOB["flutes"], JOB["flute_length"])
+    settings = CutSettings(JOB["feed_per_tooth"], inclination, *JOB["phi_range"], JOB["phi_step"], JOB["spindle_rpm"])
+    return engage(load_stock(stock).staircase, tool, load_toolpath(TOOLPATH), settings)
+
+
+def assert_same(result, expected, atol=0.0):
+    """Every array of two Engagements equal (NaN equal to NaN), floats within atol."""
+    for name in ARRAYS:
+        a, b = getattr(result, name), getattr(expected, name)
+        assert a.shape == b.shape, name
+        if np.issubdtype(b.dtype, np.floating):
+            np.testing.assert_allclose(a, b, rtol=0.0, atol=atol, err_msg=name)
+        else:
+            np.testing.assert_array_equal(a, b, err_msg=name)
+
+
+def model_test(doc, stock=STOCK_JSON, **options):
+    """Stock, toolpath and engagement of model test 1 in `doc` (not recomputed)."""
+    stock_obj = create_stock(doc, stock)
+    toolpath = create_toolpath(doc, TOOLPATH)
+    return stock_obj, toolpath, create_engagement(doc, stock_obj, toolpath, **SETTINGS, **options)
+
+
+def test_factories_raise_without_a_document(monkeypatch):
+    monkeypatch.setattr(FreeCAD, "ActiveDocument", None)
+    for factory, args in ((create_stock, (STOCK_JSON,)), (create_toolpath, (TOOLPATH,)),
+                          (create_engagement, (None, None))):
+        with pytest.raises(RuntimeError, match="no document"):
+            factory(None, *args)
+
+
+def test_engagement_equals_the_engine_and_is_restored_without_recompute(doc, tmp_path, monkeypatch):
+    stock, toolpath, engagement = model_test(doc)
+    assert doc.recompute() == 3
+    assert all(obj.isValid() for obj in doc.Objects)
+    expected = reference()
+    result = engagement.Proxy.result(engagement)
+    assert_same(result, expected)
+
+    assert (stock.Sections, stock.StraightWalls, stock.CurvedWalls) == (17, 1, 15)
+    assert (stock.YMin.Value, stock.YMax.Value) == (-15.0, 15.0)
+    assert stock.Shape.isValid() and stock.Shape.Solids
+    assert toolpath.CLPoints == 53 and len(toolpath.Shape.Vertexes) == 53 and toolpath.ToolDiameter.Value == 0.0
+    assert engagement.Instants == 53 * 181 and engagement.EngagedCLPoints == 53
+    assert engagement.EngagedInstants == int(expected.engaged.sum())
+    assert engagement.DepthOfCutMin.Value == pytest.approx(np.nanmin(expected.depth_of_cut), abs=1e-12)
+    assert engagement.DepthOfCutMax.Value == pytest.approx(np.nanmax(expected.depth_of_cut), abs=1e-12)
+    assert engagement.MaxLengthOfCut.Value == pytest.approx(expected.length.max(), abs=1e-12)
+    assert engagement.EngineTime > 0.0
+    assert "diameter 12 mm [Diameter]" in engagement.Parameters
+    # The Shape: one ruled surface (or line) per CL point and engagement segment.
+    segments = sum(len(expected.segments(cl)) for cl in range(53))
+    assert engagement.Shape.isValid() and len(engagement.Shape.childShapes()) == segments
+    shapes, keys = engagement_module.engaged_surface_parts(result)
+    assert len(shapes) == len(keys) == segments and keys[0][:2] == (0, "A")
+    assert {surface for _, _, surface in keys} == {"top", "straight_wall", "curved_wall"}
+    for name in ("DepthOfCutMax", "Instants", "ResultsFile"):
+        assert engagement.getEditorMode(name) == ["ReadOnly"]
+    assert engagement.getGroupOfProperty("Diameter") == "Tool" and engagement.getDocumentationOfProperty("Diameter")
+    assert engagement.Version == VERSION
+
+    # Unsaved: the results sit in a temporary folder; saved: beside the document.
+    assert os.path.isabs(engagement.ResultsFile) and os.path.isfile(engagement.ResultsFile)
+    path = tmp_path / "job.FCStd"
+    doc.saveAs(str(path))
+    assert engagement.ResultsFile == os.path.join("job_abm", "Engagement.csv")
+    assert (tmp_path / "job_abm" / "Engagement.csv").is_file()
+    assert (tmp_path / "job_abm" / "Engagement.summary.csv").is_file()
+    FreeCAD.closeDocument(doc.Name)
+
+    def no_engine(*args, **kwargs):
+        raise AssertionError("the engine ran on restore")
+
+    monkeypatch.setattr(engagement_module, "engage", no_engine)
+    reopened = FreeCAD.openDocument(str(path))
+    try:
+        engagement = reopened.getObject("Engagement")
+        assert isinstance(engagement.Proxy, EngagementFeature)
+        assert "Touched" not in engagement.State and engagement.isValid()
+        assert_same(engagement.Proxy.result(engagement), expected, atol=1e-9)
+        assert engagement.Instants == 53 * 181 and engagement.Shape.isValid()
+        assert reopened.getObject("Stock").Sections == 17
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_property_change_touches_and_recompute_updates(doc):
+    _, _, engagement = model_test(doc)
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert engagement.Shape.isNull()
+    before = engagement.Proxy.result(engagement)
+    engagement.Inclination = 5.0
+    assert "Touched" in engagement.State
+    doc.recompute()
+    assert "Touched" not in engagement.State
+    after = engagement.Proxy.result(engagement)
+    assert_same(after, reference(inclination=5.0))
+    assert not np.array_equal(after.h, before.h)
+    assert "inclination 5° [Inclination]" in engagement.Parameters
+
+
+def test_missing_file_is_an_error_state_and_the_document_stays_usable(doc, tmp_path):
+    missing = str(tmp_path / "nowhere.json")
+    stock, toolpath, engagement = model_test(doc, missing)
+    engagement.ShowSurfaces = False
+    assert doc.recompute() != 3
+    with pytest.raises(InputError) as error:
+        load_stock(missing)
+    assert not stock.isValid() and stock.getStatusString() == str(error.value)
+    # FreeCAD does not run the objects that depend on an invalid one: they stay touched.
+    assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
+    assert toolpath.isValid()
+    stock.SourceFile = STOCK_JSON
+    doc.recompute()
+    assert all(obj.isValid() for obj in doc.Objects)
+    assert engagement.Proxy.result(engagement) is not None
+
+
+def test_errors_carry_the_command_line_messages(doc, tmp_path):
+    far = tmp_path / "far.csv"
+    path = load_toolpath(TOOLPATH)
+    rows = "".join(f"{x},{y + 500},{z},{a},{b}\n" for (x, y, z), a, b in zip(path.cl, path.theta_a, path.theta_b))
+    far.write_text("x,y,z,theta_a,theta_b\n" + rows)
+    stock = create_stock(doc, STOCK_JSON)
+    toolpath = create_toolpath(doc, far)
+    engagement = create_engagement(doc, stock, toolpath, **{**SETTINGS, "flutes": None})
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert engagement.getStatusString() == "missing --flutes (or 'flutes' in a --job file)"
+    engagement.Flutes = 2
+    doc.recompute()
+    assert engagement.getStatusString() == (
+        f"{far}: the tool never touches the stock: no CL point of the pass engages it (are the toolpath and "
+        f"{STOCK_JSON} in the same frame?)")
+    engagement.WallModel = "exact"
+    doc.recompute()
+    assert engagement.getStatusString().startswith("WallModel exact applies to a solid stock")
+    toolpath.File = TOOLPATH
+    engagement.WallModel = "stock"
+    doc.recompute()
+    assert engagement.isValid()
+
+
+def test_apt_toolpath_gives_the_tool_spindle_and_feed(doc, tmp_path):
+    path = load_toolpath(TOOLPATH)
+    axes = np.stack([np.sin(np.radians(path.theta_b)),
+                     -np.sin(np.radians(path.theta_a)) * np.cos(np.radians(path.theta_b)),
+                     np.cos(np.radians(path.theta_a)) * np.cos(np.radians(path.theta_b))], axis=1)
+    moves = "".join("GOTO/" + ",".join(f"{v:.12f}" for v in (*p, *w)) + "\n" for p, w in zip(path.cl, axes))
+    apt = tmp_path / "path.apt"
+    apt.write_text(APT.format(moves=moves))
+    stock = create_stock(doc, STOCK_JSON)
+    toolpath = create_toolpath(doc, apt)
+    toolpath.recompute()
+    assert toolpath.CLPoints == 53 and toolpath.ToolDiameter.Value == 12.0 and toolpath.FluteLength.Value == 30.0
+    assert toolpath.SpindleSpeed == 4000.0 and (toolpath.Feed, toolpath.FeedUnit) == (800.0, "MMPM")
+    assert toolpath.Warnings == [f"{apt}:5: AUXFUN: record not understood, ignored"]
+    engagement = create_engagement(doc, stock, toolpath, flutes=2, inclination=10.0)
+    engagement.ShowSurfaces = False
+    assert (engagement.Diameter.Value, engagement.FluteLength.Value, engagement.SpindleSpeed) == (12.0, 30.0, 4000.0)
+    doc.recompute()
+    assert engagement.isValid(), engagement.getStatusString()
+    assert "feed 0.1 mm/tooth [path.apt FEDRAT]" in engagement.Parameters
+    assert "diameter 12 mm [path.apt CUTTER]" in engagement.Parameters
+    np.testing.assert_allclose(engagement.Proxy.result(engagement).length, reference().length, atol=1e-6)
+
+
+def test_stock_from_a_linked_solid_with_exact_walls(doc):
+    solid = doc.addObject("Part::Feature", "Solid")
+    solid.Shape = Part.read(STOCK_STEP)
+    stock = create_stock(doc, solid)
+    toolpath = create_toolpath(doc, TOOLPATH)
+    engagement = create_engagement(doc, stock, toolpath, **SETTINGS)
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert all(obj.isValid() for obj in doc.Objects)
+    assert (stock.Sections, stock.StraightWalls, stock.CurvedWalls) == (17, 1, 15)
+    assert abs(stock.Shape.Volume - solid.Shape.Volume) < 1e-9
+    assert_same(engagement.Proxy.result(engagement), reference(STOCK_STEP))
+
+
+def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
+    _, _, engagement = model_test(doc)
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    engagement.Version = 0  # as if saved by an older version
+    path = tmp_path / "old.FCStd"
+    doc.saveAs(str(path))
+    FreeCAD.closeDocument(doc.Name)
+    for name in os.listdir(tmp_path / "old_abm"):
+        os.remove(tmp_path / "old_abm" / name)
+    reopened = FreeCAD.openDocument(str(path))
+    try:
+        engagement = reopened.getObject("Engagement")
+        assert engagement.Version == VERSION
+        assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
+        reopened.recompute()
+        assert_same(engagement.Proxy.result(engagement), reference())
+        reopened.save()
+        engagement.Inclination = 5.0  # recomputed (the CSV rewritten) but not saved
+        reopened.recompute()
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+    reopened = FreeCAD.openDocument(str(path))
+    try:
+        engagement = reopened.getObject("Engagement")
+        assert engagement.Inclination.Value == 10.0
+        assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_the_documented_example_runs(tmp_path):
+    with open(os.path.join(ROOT, "docs", "FEATURES.md"), encoding="utf-8") as file:
+        text = file.read()
+    script = re.search(r"```python\n(.*?)```", text, re.S).group(1)
+    (tmp_path / "example.py").write_text(script)
+    done = subprocess.run([sys.executable, str(tmp_path / "example.py"), str(tmp_path / "out")], cwd=ROOT,
+                          capture_output=True, text=True, timeout=120, env={**os.environ, "PYTHONPATH": ROOT})
+    assert done.returncode == 0, done.stderr
+    assert "depth of cut 1.813-7.430 mm" in done.stdout
+    assert (tmp_path / "out" / "model_test_1_abm" / "Engagement.csv").is_file()
+
+
+def test_links_must_be_abm_objects(doc):
+    stock = create_stock(doc, STOCK_JSON)
+    toolpath = create_toolpath(doc, TOOLPATH)
+    engagement = create_engagement(doc, toolpath, stock, **SETTINGS)  # swapped
+    doc.recompute()
+    assert engagement.getStatusString() == "Engagement: Toolpath must link an ABM Toolpath object"
+    with pytest.raises(TypeError, match="unknown setting 'feed'"):
+        create_engagement(doc, stock, toolpath, feed=0.1)
