@@ -1,10 +1,10 @@
-"""Registers the ABM workbench with FreeCAD's GUI; its commands are imported on activation."""
+"""Registers the ABM workbench with FreeCAD's GUI; its commands are imported on activation.
 
-import os
+FreeCAD executes this file with separate globals and locals: the class and its methods cannot
+see names imported at the top, so each method imports what it uses.
+"""
 
 import FreeCADGui
-
-import abm_workbench
 
 
 class ABMWorkbench(FreeCADGui.Workbench):
@@ -12,13 +12,30 @@ class ABMWorkbench(FreeCADGui.Workbench):
 
     MenuText = "ABM"
     ToolTip = "Analytical cut geometry for five-axis milling of staircase stock"
-    Icon = os.path.join(os.path.dirname(os.path.dirname(abm_workbench.__file__)), "resources", "icons", "ABM_Workbench.svg")
+
+    def __init__(self):
+        import os
+
+        import abm_workbench
+
+        self.__class__.Icon = os.path.join(os.path.dirname(os.path.dirname(abm_workbench.__file__)), "resources",
+                                           "icons", "ABM_Workbench.svg")
 
     def Initialize(self):
-        """Called once, when the workbench is first activated."""
+        """Called once, when the workbench is first activated: register the commands, menu and toolbar."""
+        from abm_workbench.gui import commands
+
+        names = list(commands.register())
+        self.appendToolbar("ABM", names)
+        self.appendMenu("ABM", names)
 
     def GetClassName(self):
         return "Gui::PythonWorkbench"
 
 
 FreeCADGui.addWorkbench(ABMWorkbench())
+
+# View providers for ABM objects restored or made outside the commands (light: FreeCAD only).
+from abm_workbench.gui.view_providers import install_observer  # noqa: E402
+
+install_observer()

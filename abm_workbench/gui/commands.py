@@ -1,0 +1,268 @@
+"""The ABM commands: one class each, sharing :class:`Command`; registered by :func:`register`.
+
+``Name = "ABM_<Verb><Noun>"`` is also the icon's name (``resources/icons/<Name>.svg``). Every
+action runs inside a document transaction (``openTransaction`` / ``commitTransaction``), so
+one undo takes it back. A failure aborts the transaction (the document is left as it was) and
+prints the command line's message, ``abm: error: <message>``, to the report view
+(``FreeCAD.Console.PrintError``); objects that a recompute marks invalid count as failures,
+with their status string as the message.
+
+The work of each command is ``execute(*args)`` (errors reported) or ``run(*args)`` (errors
+raised), with the dialog's answer as an argument, so it can be driven without a dialog (the
+GUI tests do: ``ImportStock().execute(path)``).
+"""
+
+import os
+
+import FreeCAD
+import FreeCADGui
+
+from . import view_providers
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+MODEL_TEST_1 = os.path.join(ROOT, "resources", "models", "model_test_1")
+PROG = "abm"
+#: Cutting parameters used by ABM_ComputeEngagement when no job.json lies beside the toolpath
+#: or the stock file (model test 1's; the task panel will let the user set them).
+DEFAULT_JOB = {"diameter": 12.0, "flutes": 2, "flute_length": 30.0, "feed_per_tooth": 0.1, "inclination": 10.0,
+               "spindle_rpm": 4000.0, "phi_range": (0.0, 180.0), "phi_step": 1.0}
+STOCK_FILTER = "Stock (*.step *.stp *.brep *.brp *.FCStd *.json);;All files (*)"
+TOOLPATH_FILTER = "Toolpath (*.csv *.apt *.cls);;All files (*)"
+
+
+class CommandError(Exception):
+    """A command cannot do what was asked (the message says why)."""
+
+
+def message(error):
+    """The text of `error` (FreeCAD's own exceptions carry a dict whose "sErrMsg" is the text)."""
+    if error.args and isinstance(error.args[0], dict) and "sErrMsg" in error.args[0]:
+        return error.args[0]["sErrMsg"]
+    return str(error)
+
+
+def report_error(error):
+    """Print `error` to the report view as the command line would: ``abm: error: …``."""
+    FreeCAD.Console.PrintError(f"{PROG}: error: {message(error)}\n")
+
+
+def load_settings(path):
+    """Cutting parameters of a job.json as create_engagement's keywords (flutes an int)."""
+    from ..jobs import load_job
+
+    job = load_job(path)
+    job.pop("description", None)
+    if "flutes" in job:
+        job["flutes"] = int(round(job["flutes"]))
+    return job
+
+
+def recompute_checked(doc, objects):
+    """Recompute `doc`; CommandError with the status string of the first of `objects` left invalid."""
+    doc.recompute()
+    for obj in objects:
+        if "Invalid" in obj.State or "Error" in obj.State:
+            raise CommandError(obj.getStatusString())
+    for obj in objects:
+        view_providers.refresh(obj)
+
+
+def job_beside(*paths):
+    """Cutting parameters of a job.json beside one of `paths` (files), else DEFAULT_JOB."""
+    for path in paths:
+        if path:
+            candidate = os.path.join(os.path.dirname(os.path.abspath(path)), "job.json")
+            if os.path.isfile(candidate):
+                return {**DEFAULT_JOB, **load_settings(candidate)}
+    return dict(DEFAULT_JOB)
+
+
+def fit_view():
+    """Fit the active 3D view to everything, isometric (no view: nothing)."""
+    gui_doc = FreeCADGui.ActiveDocument
+    view = getattr(gui_doc, "ActiveView", None) if gui_doc else None
+    if view is not None and hasattr(view, "fitAll"):
+        view.viewIsometric()
+        view.fitAll()
+
+
+class Command:
+    """Base of the ABM commands: resources from Name, the transaction, errors to the report view.
+
+    Subclasses set Name, MenuText, ToolTip and implement ``activated(doc)``, which returns what
+    it made; ``document()`` gives the document to work in.
+    """
+
+    Name = "ABM"
+    MenuText = ""
+    ToolTip = ""
+    needs_document = True
+
+    def GetResources(self):
+        return {"Pixmap": view_providers.icon(self.Name + ".svg"), "MenuText": self.MenuText, "ToolTip": self.ToolTip}
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None or not self.needs_document
+
+    def document(self):
+        """The document to work in: the active one, or a new one when there is none."""
+        return FreeCAD.ActiveDocument or FreeCAD.newDocument()
+
+    def Activated(self):
+        self.execute()
+
+    def execute(self, *args):
+        """run(*args), errors to the report view; what was made, or None after an error."""
+        try:
+            return self.run(*args)
+        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
+            report_error(error)
+            return None
+
+    def run(self, *args):
+        """Do the action inside a transaction of the document; re-raise errors after aborting it."""
+        doc = self.document()
+        doc.openTransaction(self.MenuText)
+        try:
+            made = self.activated(doc, *args)
+        except BaseException:
+            doc.abortTransaction()
+            doc.recompute()
+            raise
+        doc.commitTransaction()
+        return made
+
+    def activated(self, doc, *args):
+        raise NotImplementedError
+
+
+class OpenModelTest(Command):
+    """Model test 1 in one click: STEP stock (exact walls), toolpath, engagement with job.json."""
+
+    Name = "ABM_OpenModelTest"
+    MenuText = "Open model test 1"
+    ToolTip = ("New document with model test 1 (after Hendriko 2020): the STEP stock with exact walls, the "
+               "toolpath and the engagement with job.json's tool and cut, computed")
+    needs_document = False
+
+    def document(self):
+        return FreeCAD.newDocument("ModelTest1")
+
+    def activated(self, doc, folder=MODEL_TEST_1):
+        from ..features import create_engagement, create_stock, create_toolpath
+
+        job = load_settings(os.path.join(folder, "job.json"))
+        stock = create_stock(doc, os.path.join(folder, "stock.step"), walls="exact")
+        toolpath = create_toolpath(doc, os.path.join(folder, "toolpath.csv"))
+        engagement = create_engagement(doc, stock, toolpath, **job)
+        for obj in (stock, toolpath, engagement):
+            view_providers.attach(obj)
+        recompute_checked(doc, (stock, toolpath, engagement))
+        fit_view()
+        return stock, toolpath, engagement
+
+
+class _ImportFile(Command):
+    """Base of the import commands: a file dialog, then ``activated(doc, path)``."""
+
+    FILTER = ""
+    TITLE = ""
+
+    needs_document = False
+
+    def Activated(self):
+        from PySide2 import QtWidgets
+
+        path, _ = QtWidgets.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), self.TITLE, "", self.FILTER)
+        if path:
+            self.execute(path)
+
+
+class ImportStock(_ImportFile):
+    """A stock from a STEP / BREP / FCStd solid or a staircase JSON."""
+
+    Name = "ABM_ImportStock"
+    MenuText = "Import stock…"
+    ToolTip = "Add a staircase stock from a STEP, BREP or FCStd solid (recognised, exact walls) or a staircase JSON"
+    TITLE = "Import stock"
+    FILTER = STOCK_FILTER
+
+    def activated(self, doc, path):
+        from ..features import create_stock
+
+        stock = create_stock(doc, path)
+        view_providers.attach(stock)
+        recompute_checked(doc, (stock,))
+        fit_view()
+        return stock
+
+
+class ImportToolpath(_ImportFile):
+    """A toolpath from a CSV or APT / CL file."""
+
+    Name = "ABM_ImportToolpath"
+    MenuText = "Import toolpath…"
+    ToolTip = "Add a toolpath from a CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k) or an APT / CL file"
+    TITLE = "Import toolpath"
+    FILTER = TOOLPATH_FILTER
+
+    def activated(self, doc, path):
+        from ..features import create_toolpath
+
+        toolpath = create_toolpath(doc, path)
+        view_providers.attach(toolpath)
+        recompute_checked(doc, (toolpath,))
+        fit_view()
+        return toolpath
+
+
+def pick(doc, kind, selection):
+    """The one ABM object of `kind` ("ABM::Stock", …): the selected one, else the document's only one."""
+    noun = kind.split("::")[1].lower()
+    chosen = [obj for obj in selection if view_providers.kind(obj) == kind]
+    if len(chosen) > 1:
+        raise CommandError(f"{len(chosen)} {noun}s selected: select one {noun}")
+    if chosen:
+        return chosen[0]
+    found = [obj for obj in doc.Objects if view_providers.kind(obj) == kind]
+    if not found:
+        raise CommandError(f"no {noun} in the document: import one first")
+    if len(found) > 1:
+        raise CommandError(f"{len(found)} {noun}s in the document: select the one to use")
+    return found[0]
+
+
+class ComputeEngagement(Command):
+    """The engagement of the selected stock and toolpath (or the document's only ones)."""
+
+    Name = "ABM_ComputeEngagement"
+    MenuText = "Compute engagement"
+    ToolTip = ("Compute where the cutter engages the stock along the toolpath: select a stock and a toolpath (or "
+               "have only one of each); tool and cut from the job.json beside the toolpath or stock file, else "
+               "model test 1's")
+
+    def activated(self, doc, selection=None):
+        from ..features import create_engagement
+
+        if selection is None:
+            selection = FreeCADGui.Selection.getSelection(doc.Name)
+        stock, toolpath = pick(doc, "ABM::Stock", selection), pick(doc, "ABM::Toolpath", selection)
+        job = job_beside(toolpath.File, stock.SourceFile)
+        engagement = create_engagement(doc, stock, toolpath, **job)
+        view_providers.attach(engagement)
+        recompute_checked(doc, (engagement,))
+        return engagement
+
+
+COMMANDS = (OpenModelTest, ImportStock, ImportToolpath, ComputeEngagement)
+#: Command names in menu and toolbar order.
+NAMES = tuple(command.Name for command in COMMANDS)
+
+
+def register():
+    """Add every ABM command to FreeCADGui (once); returns their names."""
+    known = FreeCADGui.listCommands()
+    for command in COMMANDS:
+        if command.Name not in known:
+            FreeCADGui.addCommand(command.Name, command())
+    return NAMES
