@@ -27,12 +27,12 @@ import time
 
 import numpy as np
 
-from .engine import CutSettings, Tool, engage, zmap_engage
+from .engine import engage, zmap_engage
 from .errors import InputError
 from .formats import replacing
 from .formats.results_csv import results_text, summary_path, summary_text, write_text
 from .jobs import (PARAMETERS, SOLID_SUFFIXES, WALL_MODELS, WALL_POINTS, load_job, load_path, load_stock,
-                   resolve_parameters, swept_y_window)
+                   resolve_parameters, swept_y_window, tool_and_settings)
 
 PROG = "abm"
 #: Methods of the engage command.
@@ -162,16 +162,7 @@ def _prepare(args):
     parameters = resolve_parameters(given, hints, job, args.job)
     for message in [*hints.messages(), *parameters.conflicts]:
         print(f"{PROG}: warning: {message}", file=sys.stderr)
-    values = parameters.values
-    try:
-        tool = Tool(values["diameter"], values["flutes"], values["flute_length"])
-    except ValueError as error:
-        raise InputError(f"tool: {error}") from None
-    try:
-        settings = CutSettings(values["feed_per_tooth"], values["inclination"], *values["phi_range"],
-                               values["phi_step"], values["spindle_rpm"])
-    except ValueError as error:
-        raise InputError(f"cut settings: {error}") from None
+    tool, settings = tool_and_settings(parameters.values)
     return job, toolpath, parameters, tool, settings
 
 

@@ -25,7 +25,7 @@ from typing import Optional
 
 import numpy as np
 
-from .engine import Staircase, Tool, Toolpath, rotation_matrix
+from .engine import CutSettings, Staircase, Tool, Toolpath, rotation_matrix
 from .errors import InputError
 from .formats import check_keys, json_number, load_json_object
 from .formats.apt import MM_PER_INCH, load_apt
@@ -257,6 +257,20 @@ def resolve_parameters(given, hints: PathHints, job, job_source=None):
         else:
             values[key], sources[key] = PARAMETERS[key], "default"
     return Parameters(values, sources, tuple(conflicts))
+
+
+def tool_and_settings(values):
+    """(Tool, CutSettings) of resolved parameter values (Parameters.values); InputError if invalid."""
+    try:
+        tool = Tool(values["diameter"], values["flutes"], values["flute_length"])
+    except ValueError as error:
+        raise InputError(f"tool: {error}") from None
+    try:
+        settings = CutSettings(values["feed_per_tooth"], values["inclination"], *values["phi_range"],
+                               values["phi_step"], values["spindle_rpm"])
+    except ValueError as error:
+        raise InputError(f"cut settings: {error}") from None
+    return tool, settings
 
 
 def _feed_per_tooth(hints, flutes, spindle_rpm):

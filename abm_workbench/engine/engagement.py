@@ -138,15 +138,7 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
     """
     phi = settings.phi
     m, p = len(toolpath), phi.size
-    out = {
-        name: np.full((m, p), fill, dtype=dtype)
-        for name, fill, dtype in (
-            ("lep_l", np.nan, float), ("uep_l", np.nan, float), ("length", 0.0, float),
-            ("pieces", 0, np.int32), ("uep_surface", _NONE, np.int8), ("uep_section", -1, np.int32),
-            ("uep_wall", -1, np.int32), ("case", 0, np.int8),
-        )
-    }
-    lep_xyz, uep_xyz = np.full((m, p, 3), np.nan), np.full((m, p, 3), np.nan)
+    out, lep_xyz, uep_xyz = empty_results(m, p)
     step = max(1, int(chunk_instants) // max(p, 1))
     for start in range(0, m, step):
         stop = min(m, start + step)
@@ -171,6 +163,21 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
         phi=phi, h=h, area=out["length"] * h, lep_xyz=lep_xyz, uep_xyz=uep_xyz, depth_of_cut=depth,
         segment=_segments(engaged, out["uep_surface"], out["uep_section"], out["uep_wall"]), **out,
     )
+
+
+def empty_results(m, p):
+    """Per-instant result arrays of an Engagement before any is solved, for m CL points × p
+    angles: ({lep_l, uep_l, length, pieces, uep_surface, uep_section, uep_wall, case: (m, p)},
+    lep_xyz (m, p, 3), uep_xyz (m, p, 3)), all "no engagement"."""
+    out = {
+        name: np.full((m, p), fill, dtype=dtype)
+        for name, fill, dtype in (
+            ("lep_l", np.nan, float), ("uep_l", np.nan, float), ("length", 0.0, float),
+            ("pieces", 0, np.int32), ("uep_surface", _NONE, np.int8), ("uep_section", -1, np.int32),
+            ("uep_wall", -1, np.int32), ("case", 0, np.int8),
+        )
+    }
+    return out, np.full((m, p, 3), np.nan), np.full((m, p, 3), np.nan)
 
 
 def _slice(toolpath, start, stop):

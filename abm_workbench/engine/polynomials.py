@@ -126,7 +126,6 @@ def real_roots_unit(coefficients):
     knots = np.sort(np.concatenate([np.zeros((m, 1)), critical, np.ones((m, 1))], axis=1), axis=1)
     knots = np.where(np.isnan(knots), 1.0, knots)
     lo, hi = knots[:, :-1], knots[:, 1:]
-    rows = np.broadcast_to(np.arange(m)[:, None], lo.shape)
     f_lo, f_hi = horner(c[:, None, :], lo), horner(c[:, None, :], hi)
     last = hi == 1.0
     found = (hi > lo) & (

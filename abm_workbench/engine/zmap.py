@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from .engagement import SURFACES, Engagement, _segments, cut_thickness, edge_lines
+from .engagement import SURFACES, Engagement, _segments, cut_thickness, edge_lines, empty_results
 from .model import CutSettings, Staircase, Tool, Toolpath
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = (SURFACES.index(name) for name in (
@@ -189,15 +189,7 @@ def zmap_engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutS
     walls = stock.walls
     straight = np.array([True] + [w.is_straight for w in walls] + [True])
     base_points, directions = edge_lines(toolpath, tool, phi)
-    out = {
-        name: np.full((m, p), fill, dtype=dtype)
-        for name, fill, dtype in (
-            ("lep_l", np.nan, float), ("uep_l", np.nan, float), ("length", 0.0, float),
-            ("pieces", 0, np.int32), ("uep_surface", _NONE, np.int8), ("uep_section", -1, np.int32),
-            ("uep_wall", -1, np.int32), ("case", 0, np.int8),
-        )
-    }
-    lep_xyz, uep_xyz = np.full((m, p, 3), np.nan), np.full((m, p, 3), np.nan)
+    out, lep_xyz, uep_xyz = empty_results(m, p)
     rows = np.arange(p)
     height, section = zmap.height.reshape(-1), zmap.section.reshape(-1)  # views: removal shows through
     for i in range(m):

@@ -46,10 +46,10 @@ import time
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
-from ..engine import CutSettings, Tool, engage
+from ..engine import engage
 from ..errors import InputError
 from ..formats.results_csv import write_results
-from ..jobs import PARAMETERS, WALL_MODELS, Parameters, resolve_parameters
+from ..jobs import PARAMETERS, WALL_MODELS, Parameters, resolve_parameters, tool_and_settings
 from .base import FeatureProxy, add_properties, document_or_active
 from .stored import read_engagement
 from .stock import StockFeature
@@ -150,16 +150,7 @@ class EngagementFeature(FeatureProxy):
         parameters = resolve_parameters(given, hints, {})
         sources = {key: _PROPERTY_SOURCE.get(source, source) for key, source in parameters.sources.items()}
         parameters = Parameters(parameters.values, sources, parameters.conflicts)
-        values = parameters.values
-        try:
-            tool = Tool(values["diameter"], values["flutes"], values["flute_length"])
-        except ValueError as error:
-            raise InputError(f"tool: {error}") from None
-        try:
-            settings = CutSettings(values["feed_per_tooth"], values["inclination"], *values["phi_range"],
-                                   values["phi_step"], values["spindle_rpm"])
-        except ValueError as error:
-            raise InputError(f"cut settings: {error}") from None
+        tool, settings = tool_and_settings(parameters.values)
         walls = None if obj.WallModel == "stock" else obj.WallModel
         if walls is not None and not stock_proxy.is_solid(stock_obj):
             raise InputError(f"WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "

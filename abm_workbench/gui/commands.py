@@ -132,9 +132,6 @@ class Command:
         doc.commitTransaction()
         return made
 
-    def activated(self, doc, *args):
-        raise NotImplementedError
-
 
 class OpenModelTest(Command):
     """Model test 1 in one click: STEP stock (exact walls), toolpath, engagement with job.json."""

@@ -5,7 +5,6 @@ from math import comb
 import numpy as np
 import pytest
 from scipy.interpolate import BSpline, make_interp_spline
-from scipy.optimize import brentq
 
 from abm_workbench.engine import CutSettings, Staircase, Tool, Toolpath, edge_lines, engage
 from abm_workbench.engine.walls import SplineWall, Wall
