@@ -153,6 +153,12 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
         uep_xyz[start:stop] = (base + chunk["uep_l"].reshape(n_cl, p, 1) * direction[:, None, :])
         if progress is not None:
             progress(stop, m)
+    return finished_engagement(phi, settings, out, lep_xyz, uep_xyz)
+
+
+def finished_engagement(phi, settings, out, lep_xyz, uep_xyz):
+    """The Engagement of filled per-instant arrays (as empty_results made them): cut thickness,
+    area, depth of cut per CL point and engagement segments derived from them."""
     h = cut_thickness(phi, settings.feed_per_tooth, settings.inclination)
     engaged = out["length"] > 0.0
     with np.errstate(invalid="ignore"):

@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from .engagement import SURFACES, Engagement, _segments, cut_thickness, edge_lines, empty_results
+from .engagement import SURFACES, edge_lines, empty_results, finished_engagement
 from .model import CutSettings, Staircase, Tool, Toolpath
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = (SURFACES.index(name) for name in (
@@ -232,16 +232,7 @@ def zmap_engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutS
             zmap.remove(toolpath.cl[i], w, tool.radius, length)
         if progress is not None:
             progress(i + 1, m)
-    h = cut_thickness(phi, settings.feed_per_tooth, settings.inclination)
-    engaged = out["length"] > 0.0
-    with np.errstate(invalid="ignore"):
-        top = np.where(engaged, uep_xyz[..., 2], -np.inf).max(axis=1)
-        bottom = np.where(engaged, lep_xyz[..., 2], np.inf).min(axis=1)
-    depth = np.where(engaged.any(axis=1), top - bottom, np.nan)
-    return Engagement(
-        phi=phi, h=h, area=out["length"] * h, lep_xyz=lep_xyz, uep_xyz=uep_xyz, depth_of_cut=depth,
-        segment=_segments(engaged, out["uep_surface"], out["uep_section"], out["uep_wall"]), **out,
-    )
+    return finished_engagement(phi, settings, out, lep_xyz, uep_xyz)
 
 
 def _positive(name, value):

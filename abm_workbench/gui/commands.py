@@ -160,7 +160,8 @@ class OpenModelTest(Command):
 
 
 class _ImportFile(Command):
-    """Base of the import commands: a file dialog, then ``activated(doc, path)``."""
+    """Base of the import commands: a file dialog, then the object made by ``create(doc, path)``
+    (a features factory), shown and recomputed."""
 
     FILTER = ""
     TITLE = ""
@@ -174,6 +175,13 @@ class _ImportFile(Command):
         if path:
             self.execute(path)
 
+    def activated(self, doc, path):
+        made = self.create(doc, path)
+        view_providers.attach(made)
+        recompute_checked(doc, (made,))
+        fit_view()
+        return made
+
 
 class ImportStock(_ImportFile):
     """A stock from a STEP / BREP / FCStd solid or a staircase JSON."""
@@ -184,14 +192,11 @@ class ImportStock(_ImportFile):
     TITLE = "Import stock"
     FILTER = STOCK_FILTER
 
-    def activated(self, doc, path):
+    @staticmethod
+    def create(doc, path):
         from ..features import create_stock
 
-        stock = create_stock(doc, path)
-        view_providers.attach(stock)
-        recompute_checked(doc, (stock,))
-        fit_view()
-        return stock
+        return create_stock(doc, path)
 
 
 class ImportToolpath(_ImportFile):
@@ -203,14 +208,11 @@ class ImportToolpath(_ImportFile):
     TITLE = "Import toolpath"
     FILTER = TOOLPATH_FILTER
 
-    def activated(self, doc, path):
+    @staticmethod
+    def create(doc, path):
         from ..features import create_toolpath
 
-        toolpath = create_toolpath(doc, path)
-        view_providers.attach(toolpath)
-        recompute_checked(doc, (toolpath,))
-        fit_view()
-        return toolpath
+        return create_toolpath(doc, path)
 
 
 def pick(doc, kind, selection):
