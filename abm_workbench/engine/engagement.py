@@ -18,7 +18,7 @@ import numpy as np
 
 from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
-from .polynomials import compose_linear, horner, monotone_root_unit, real_roots_unit
+from .polynomials import compose_linear, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
 from .walls import Wall
 
@@ -128,7 +128,7 @@ def edge_lines(toolpath, tool, phi_deg):
     return toolpath.cl[:, None, :] + tool.radius * radial, rot[:, :, 2]
 
 
-def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettings, *, chunk_instants=1 << 15,
+def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettings, *, chunk_instants=1 << 14,
            progress=None):
     """Cut geometry of every CL point × every rotation angle of `settings.phi`.
 
@@ -272,7 +272,7 @@ def _quintic_table(stock, walls):
     """Coefficients (P, 6), y_mid (P,) and y_half (P,) of the quintic walls with indices `walls` (P,)."""
     table = [(w.coefficients, w.y_mid, w.y_half) if isinstance(w, Wall) else (np.zeros(6), 0.0, 1.0)
              for w in stock.walls]
-    coefficients = np.array([t[0] for t in table])[walls]
+    coefficients = np.array([t[0] for t in table]).reshape(-1, 6)[walls]
     return coefficients, np.array([t[1] for t in table])[walls], np.array([t[2] for t in table])[walls]
 
 
@@ -281,9 +281,9 @@ def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
 
     The curve boundary of the notes §4 on the unit interval l = lo + u·(hi − lo): the wall's
     quintic composed with the line, g(u) = P(y(u)) − x(u) (a straight wall is a constant
-    polynomial and needs no special case). Where the wall's slope bound over the segment
-    (steepness (P,), max |dx/dy|) proves g monotone, one bracketed root; otherwise all real
-    roots by derivative isolation.
+    polynomial and needs no special case). Where g is proved monotone, by the wall's slope bound
+    over the segment (steepness (P,), max |dx/dy|) or else by the Bernstein coefficients of g′,
+    one bracketed root; otherwise all real roots by derivative isolation.
     Returns l (P, 5) NaN-padded, monotone (P,), and whether the line is at or beyond the wall
     (x ≥ W(y), i.e. g ≤ 0) at lo and at hi, each (P,).
     """
@@ -294,6 +294,8 @@ def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
     k[:, 0] -= x0 + dx * lo
     k[:, 1] -= dx * span
     monotone = np.abs(dy) * steepness < np.abs(dx)
+    unproved = np.flatnonzero(~monotone)
+    monotone[unproved] = proved_monotone_unit(k[unproved])
     u = np.full((rows.size, 5), np.nan)
     u[monotone, 0] = monotone_root_unit(k[monotone])
     if not monotone.all():
@@ -305,8 +307,9 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     """Engagement of N edge lines S(l) = (x0, y0, z0) + l·(dx, dy, dz), 0 ≤ l ≤ length.
 
     Returns a dict of (N,) arrays: lep_l, uep_l, length, pieces, uep_surface, uep_section,
-    uep_wall, case. Lines that can reach no wall stay in one section and are solved in closed
-    form; the others go through the breakpoints.
+    uep_wall, case. Lines that can reach no wall stay in one section, and lines that can reach
+    one quintic wall, crossed at most once, pass from one section to the next: both are solved
+    in closed form. The others go through the breakpoints.
     """
     n = x0.size
     lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
@@ -315,16 +318,22 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     seg_x = np.stack([x0 + dx * lo, x0 + dx * hi])
     pair_rows, pair_walls, left_of, steepness = _reachable_walls(
         stock, live, seg_x.min(axis=0), seg_x.max(axis=0), y0 + dy * lo, y0 + dy * hi)
-    walled = np.zeros(n, dtype=bool)
-    walled[pair_rows] = True
+    quintic = np.array([isinstance(w, Wall) for w in stock.walls], dtype=bool)[pair_walls]
+    crossings = _wall_crossings(stock, pair_rows[quintic], pair_walls[quintic], steepness[quintic],
+                                lo, hi, x0, y0, dx, dy)
+    reach = np.bincount(pair_rows, minlength=n)
+    one = (reach == 1) & (np.bincount(pair_rows[quintic][crossings[1]], minlength=n) == 1)
     lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
     result = {}
-    for subset, solve in ((~walled, _single_section), (walled, _broken_lines)):
+    for subset, solve in ((reach == 0, _single_section), (one, _one_crossing), ((reach > 0) & ~one, _broken_lines)):
         rows = np.flatnonzero(subset)
         if rows.size == 0:
             continue
         renumber = np.cumsum(subset) - 1
-        part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows], pair_walls, steepness)
+        pairs = subset[pair_rows]
+        on = pairs[quintic]
+        part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], pair_walls[pairs], quintic[pairs],
+                     tuple(c[on] for c in crossings))
         for name, values in part.items():
             result.setdefault(name, np.empty(n, dtype=values.dtype))[rows] = values
     return result
@@ -351,10 +360,52 @@ def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, 
     }
 
 
+def _one_crossing(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, pair_rows, pair_walls, _,
+                  crossings):
+    """Engagement of lines that can reach one quintic wall, crossed at most once (proved
+    monotone): piece A in the section before the crossing, piece B after it, each inside from
+    its start up to its section's top (same dict as _solve_lines). Without a crossing in
+    [lo, hi], piece A is the whole segment."""
+    found, _, left_at_lo, left_at_hi = crossings  # one pair per line, in line order
+    root, wall = found[:, 0], pair_walls + 1
+    crossed = ~np.isnan(root)
+    cut = np.where(crossed, root, hi)
+    section_a = left_of + np.where(crossed, left_at_lo, left_at_hi)
+    section_b = left_of + left_at_hi
+    with np.errstate(divide="ignore", invalid="ignore"):
+        top_a, top_b = ((stock.z_top[np.clip(s, 0, stock.n_sections - 1)] - z0) / dz for s in (section_a, section_b))
+    end_a = np.minimum(cut, top_a)
+    end_b = np.minimum(hi, top_b)
+    in_a = end_a - lo > LENGTH_EPS
+    in_b = crossed & (end_b - cut > LENGTH_EPS)
+    engaged = in_a | in_b
+    a_to_wall = top_a >= cut  # piece A runs up to the crossing (or to hi without one)
+    pieces = in_a.astype(np.intp) + in_b - (in_a & in_b & a_to_wall)
+    straight = np.array([True] + [w.is_straight for w in stock.walls] + [True])
+    wall_surface = np.where(straight[wall], _STRAIGHT, _CURVED)
+    b_surface, b_wall = np.where(top_b < hi, _TOP, hi_surface), np.where(top_b < hi, -1, hi_wall)
+    a_surface = np.where(a_to_wall, np.where(crossed, wall_surface, hi_surface), _TOP)
+    a_wall = np.where(a_to_wall, np.where(crossed, wall, hi_wall), -1)
+    surface = np.where(in_b, b_surface, np.where(in_a, a_surface, _NONE))
+    wall_index = np.where(in_b, b_wall, np.where(in_a, a_wall, -1))
+    uep_section = np.where(in_b, section_b, np.where(in_a, section_a, -1))
+    inside_section = np.stack([np.where(in_a, section_a, -1), np.where(in_b, section_b, -1)], axis=1)
+    first_real = (cut - lo > LENGTH_EPS) | ~crossed
+    bottom = np.where(lo == 0.0, np.where(first_real, section_a, section_b), -1)
+    return {
+        "lep_l": np.where(in_a, lo, np.where(in_b, cut, np.nan)),
+        "uep_l": np.where(in_b, end_b, np.where(in_a, end_a, np.nan)),
+        "length": np.where(in_a, end_a - lo, 0.0) + np.where(in_b, end_b - cut, 0.0),
+        "pieces": pieces, "uep_surface": surface, "uep_section": uep_section, "uep_wall": wall_index,
+        "case": _table1_case(stock, x0, y0, dx, bottom, inside_section, engaged, pieces, wall_index),
+    }
+
+
 def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, pair_rows, pair_walls,
-                  steepness):
-    """Engagement of lines that may cross walls (pairs pair_rows, pair_walls, with the walls'
-    slope bounds steepness), cut at every breakpoint (same dict as _solve_lines)."""
+                  is_quintic, crossings):
+    """Engagement of lines that may cross walls (pairs pair_rows, pair_walls; the crossings of
+    the quintic ones, is_quintic, as _wall_crossings found them), cut at every breakpoint (same
+    dict as _solve_lines)."""
     n = x0.size
     live = hi > lo
     # Breakpoints: the clipped ends, the section tops, the wall crossings. Only the tops of
@@ -366,16 +417,12 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
         tops = (stock.z_top[np.minimum(section, stock.n_sections - 1)] - z0[:, None]) / dz[:, None]
     tops = np.where((section <= (left_of + reach)[:, None]) & (tops > lo[:, None]) & (tops < hi[:, None]), tops, np.nan)
     columns = [lo[:, None], hi[:, None], tops]
-    quintic = np.array([isinstance(w, Wall) for w in stock.walls], dtype=bool)
-    is_quintic = quintic[pair_walls]
     rows, walls = pair_rows[is_quintic], pair_walls[is_quintic]
     rank = np.arange(rows.size) - np.searchsorted(rows, rows)
     # wall index (j ≥ 1) of each column block after the tops: (first column, columns per
     # wall, (N, walls in block) wall indices)
     blocks = []
-    if rows.size:
-        crossings = _wall_crossings(stock, rows, walls, steepness[is_quintic], lo, hi, x0, y0, dx, dy)
-        found = crossings[0][:, ~np.isnan(crossings[0]).all(axis=0)]
+    found = crossings[0][:, ~np.isnan(crossings[0]).all(axis=0)]
     if rows.size and found.size:
         crossing = np.full((n, int(rank.max()) + 1, found.shape[1]), np.nan)
         crossing[rows, rank] = found
@@ -383,7 +430,7 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
         ids[rows, rank] = walls + 1
         blocks.append((sum(c.shape[1] for c in columns), found.shape[1], ids))
         columns.append(crossing.reshape(n, -1))
-    exact = [(j, pair_rows[pair_walls == j]) for j in np.flatnonzero(~quintic)]
+    exact = [(j, pair_rows[pair_walls == j]) for j in np.unique(pair_walls[~is_quintic])]
     for j, on in exact:
         found = stock.walls[j].crossings(x0[on], y0[on], dx[on], dy[on], lo[on], hi[on])
         if found.size:

@@ -156,6 +156,30 @@ def _quadratic_roots_unit(c):
     return roots
 
 
+def proved_monotone_unit(coefficients):
+    """(m,) bool: each polynomial is strictly monotone on [0, 1], proved by its derivative's
+    Bernstein coefficients on [0, 1] all having one sign (they bound the derivative there).
+
+    coefficients: (m, d+1) ascending. A coefficient within the rounding margin of zero counts
+    as no proof, so a row near a tangency is left to the root isolation.
+    """
+    c = np.asarray(coefficients, dtype=float)
+    d = c.shape[1] - 1
+    if d < 1:
+        return np.zeros(c.shape[0], dtype=bool)
+    slope = derivative(c)
+    bernstein = slope @ _power_to_bernstein(d - 1).T
+    margin = 1e-12 * np.abs(slope).sum(axis=1)
+    return (bernstein.min(axis=1) > margin) | (bernstein.max(axis=1) < -margin)
+
+
+def _power_to_bernstein(degree):
+    """(degree+1, degree+1) matrix B with b = B·a: Bernstein coefficients on [0, 1] of the
+    power-basis coefficients a (b_j = Σ_{i ≤ j} C(j, i)/C(degree, i)·a_i)."""
+    return np.array([[comb(j, i) / comb(degree, i) if i <= j else 0.0 for i in range(degree + 1)]
+                     for j in range(degree + 1)])
+
+
 def monotone_root_unit(coefficients):
     """The root in [0, 1] of polynomials known to be monotone there; (m, d+1) -> (m,), NaN if none."""
     c = np.asarray(coefficients, dtype=float)
