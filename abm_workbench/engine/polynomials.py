@@ -12,7 +12,7 @@ from math import comb
 
 import numpy as np
 
-from .tolerances import ROOT_MAX_ITER, ROOT_TOL
+from .tolerances import FAST_NEWTON, ROOT_MAX_ITER, ROOT_TOL
 
 
 def horner(coefficients, t):
@@ -80,17 +80,43 @@ def value_and_slope(columns, t):
 def bracketed_root(coefficients, lo, hi, f_lo, f_hi):
     """The root of p in [lo, hi] where p(lo), p(hi) differ in sign (or one is zero).
 
-    coefficients: (m, d+1); lo, hi, f_lo, f_hi: (m,). Safeguarded Newton: a Newton step
-    that leaves the bracket is replaced by bisection, the bracket shrinks every step.
-    All rows step together (a finished row stays put), which at these sizes is cheaper than
-    gathering the unfinished ones. Returns (m,) roots, accurate to ROOT_TOL on the unit scale.
+    coefficients: (m, d+1); lo, hi, f_lo, f_hi: (m,). From the secant point, FAST_NEWTON plain
+    Newton steps; a row whose result lies in its bracket with a last Newton step below
+    ROOT_TOL is done (p has one root in the bracket, and Newton has converged to a point of
+    it). The other rows restart from the secant point with the safeguarded Newton: a step
+    that leaves the bracket is replaced by bisection, and the bracket shrinks every step.
+    Every row's result depends on that row alone. Returns (m,) roots, accurate to ROOT_TOL on
+    the unit scale.
     """
-    lo, hi, f_lo = lo.copy(), hi.copy(), f_lo.copy()
     with np.errstate(divide="ignore", invalid="ignore"):
-        x = np.where(f_hi != f_lo, lo - f_lo * (hi - lo) / (f_hi - f_lo), 0.5 * (lo + hi))
-    x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
-    x = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, x))
+        start = np.where(f_hi != f_lo, lo - f_lo * (hi - lo) / (f_hi - f_lo), 0.5 * (lo + hi))
+    start = np.where((start > lo) & (start < hi), start, 0.5 * (lo + hi))
+    start = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, start))
+    columns = np.ascontiguousarray(coefficients.T)
+    x = start
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for _ in range(FAST_NEWTON):
+            f, slope = value_and_slope(columns, x)
+            x = x - np.where(f == 0.0, 0.0, f / slope)
+        f, slope = value_and_slope(columns, x)
+        step = np.where(f == 0.0, 0.0, f / slope)
     done = (f_lo == 0.0) | (f_hi == 0.0)
+    x = np.where(done, start, np.clip(x - step, lo, hi))
+    ok = done | ((x >= lo) & (x <= hi) & (np.abs(step) <= ROOT_TOL))
+    again = np.flatnonzero(~ok)
+    if again.size:
+        x[again] = _safeguarded_newton(coefficients[again], lo[again], hi[again], f_lo[again], start[again])
+    return x
+
+
+def _safeguarded_newton(coefficients, lo, hi, f_lo, x):
+    """bracketed_root's fallback from start points x (m,) inside the brackets, p(lo) = f_lo ≠ 0.
+
+    All rows step together (a finished row stays put), which at these sizes is cheaper than
+    gathering the unfinished ones.
+    """
+    lo, hi = lo.copy(), hi.copy()
+    done = np.zeros(x.shape, dtype=bool)
     negative_lo = f_lo < 0.0
     columns = np.ascontiguousarray(coefficients.T)
     for _ in range(ROOT_MAX_ITER):

@@ -3,6 +3,9 @@
 #: The root finders stop when a Newton step or the bracket is below this, on the unit interval
 #: of a boundary search (Newton converges quadratically, so the root is then good to ~1e-24).
 ROOT_TOL = 1e-12
+#: Plain Newton steps tried from the secant point before the safeguarded iteration (most
+#: crossings are near-linear, so three steps reach ROOT_TOL).
+FAST_NEWTON = 3
 #: Iteration cap of the safeguarded Newton-bisection root finder.
 ROOT_MAX_ITER = 100
 #: Pieces of the cutting edge shorter than this (mm) are merged with their neighbours.
