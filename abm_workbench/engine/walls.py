@@ -12,7 +12,8 @@ from typing import Optional
 import numpy as np
 from scipy.interpolate import BSpline, PPoly
 
-from .polynomials import bracketed_root, compose_linear, horner, real_roots_unit
+from .polynomials import (bracketed_root, compose_linear, horner, monotone_root_unit, proved_monotone_unit,
+                          real_roots_unit)
 
 #: Six x values within this (mm) of each other make a straight wall.
 STRAIGHT_EPS = 1e-12
@@ -177,9 +178,10 @@ class SplineWall:
         y = np.clip(np.asarray(y, dtype=float), self.span_y[0], self.span_y[-1])
         span = np.clip(np.searchsorted(self.span_y, y, side="right") - 1, 0, self.span_y.size - 2)
         flat_span, flat_y = span.reshape(-1), y.reshape(-1)
-        c = self.spans_y[flat_span] - flat_y[:, None] * self.spans_w[flat_span]
-        f_lo, f_hi = c[:, 0], c.sum(axis=1)
-        u = bracketed_root(c, np.zeros(flat_y.size), np.ones(flat_y.size), f_lo, f_hi)
+        u = np.full(flat_y.size, np.nan)  # NaN y (a padded breakpoint) gives NaN u
+        known = np.flatnonzero(~np.isnan(flat_y))
+        c = self.spans_y[flat_span[known]] - flat_y[known, None] * self.spans_w[flat_span[known]]
+        u[known] = bracketed_root(c, np.zeros(known.size), np.ones(known.size), c[:, 0], c.sum(axis=1))
         return span, u.reshape(y.shape)
 
     def x_at(self, y):
@@ -214,8 +216,9 @@ class SplineWall:
         """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the curve.
 
         Per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u; its real
-        roots in [0, 1] (only spans whose control box meets the line segment's box) give the
-        points, and l their projection on the line. NaN-padded; a line with dx = dy = 0 never
+        roots in [0, 1] (only spans whose control box meets the line segment's box; one
+        bracketed root where the polynomial is proved monotone) give the points, and l their
+        projection on the line. NaN-padded; a line with dx = dy = 0 never
         crosses.
         """
         k = x0.size
@@ -230,7 +233,10 @@ class SplineWall:
             return out
         poly = ((self.spans_x[span] - x0[line, None] * self.spans_w[span]) * dy[line, None]
                 - (self.spans_y[span] - y0[line, None] * self.spans_w[span]) * dx[line, None])
-        u = real_roots_unit(poly)
+        u = np.full((line.size, poly.shape[1] - 1), np.nan)
+        single = proved_monotone_unit(poly)
+        u[single, 0] = monotone_root_unit(poly[single])
+        u[~single] = real_roots_unit(poly[~single])
         w = horner(self.spans_w[span][:, None, :], u)
         px = horner(self.spans_x[span][:, None, :], u) / w
         py = horner(self.spans_y[span][:, None, :], u) / w
