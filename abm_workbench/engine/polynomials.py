@@ -34,23 +34,23 @@ def compose_linear(coefficients, t0, q):
     """Coefficients in u of P(t0 + q·u), for many polynomials at once.
 
     coefficients: (..., d+1) ascending; t0, q: (...) broadcast with them. Returns (..., d+1)
-    ascending in u: K_k = q^k · Σ_{i=k..d} C(i, k) c_i t0^(i−k).
+    ascending in u: K_k = q^k · Σ_{i=k..d} C(i, k) c_i t0^(i−k), the Taylor coefficients of
+    P at t0 (by repeated synthetic division: d(d+1)/2 multiply-adds) scaled by q^k.
     """
     c = np.asarray(coefficients, dtype=float)
     t0, q = np.asarray(t0, dtype=float), np.asarray(q, dtype=float)
     d = c.shape[-1] - 1
     shape = np.broadcast_shapes(c.shape[:-1], t0.shape, q.shape)
-    powers = [np.ones(t0.shape)]
-    for _ in range(d):
-        powers.append(powers[-1] * t0)
+    taylor = [np.broadcast_to(c[..., k], shape).copy() for k in range(d + 1)]
+    for i in range(d):
+        for k in range(d - 1, i - 1, -1):
+            taylor[k] += t0 * taylor[k + 1]
     out = np.empty(shape + (d + 1,))
-    scale = np.ones(q.shape)
+    scale = np.ones(shape)
     for k in range(d + 1):
-        total = np.zeros(shape)
-        for i in range(k, d + 1):
-            total = total + comb(i, k) * c[..., i] * powers[i - k]
-        out[..., k] = total * scale
-        scale = scale * q
+        out[..., k] = taylor[k] * scale
+        if k < d:
+            scale = scale * q
     return out
 
 
