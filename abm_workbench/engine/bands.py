@@ -37,13 +37,17 @@ class WallBands:
         scale = BINS / (self.y_max - self.y_min)
         first = np.clip(np.floor((np.minimum(y_a, y_b) - self.y_min) * scale), 0, BINS - 1).astype(np.intp)
         last = np.clip(np.floor((np.maximum(y_a, y_b) - self.y_min) * scale), 0, BINS - 1).astype(np.intp)
-        level = np.floor(np.log2(last - first + 1)).astype(np.intp)
+        level = _FLOOR_LOG2[last - first + 1]
         row = (level * self.n_walls + walls) * BINS
         at_first, at_second = row + first, row + last - (1 << level) + 1
         low, high, slope = (table.reshape(-1) for table in (self.low, self.high, self.slope))
         return (np.minimum(low.take(at_first), low.take(at_second)),
                 np.maximum(high.take(at_first), high.take(at_second)),
                 np.maximum(slope.take(at_first), slope.take(at_second)))
+
+
+#: ⌊log2 k⌋ for k = 0..BINS (entry 0 unused): the sparse-table level covering k bins.
+_FLOOR_LOG2 = np.concatenate([[0], np.floor(np.log2(np.arange(1, BINS + 1)))]).astype(np.intp)
 
 
 def _sparse_table(per_bin, combine):

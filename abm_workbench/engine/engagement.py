@@ -531,29 +531,20 @@ def _table1_case(stock, x0, y0, dx, bottom, inside_section, engaged, pieces, uep
     between = np.maximum(a, b)  # index of the wall between A and B
     down, up = has_b & (z_a > z_b), has_b & (z_a < z_b)
     c = _CASE
-    return np.select(
-        [
-            ~engaged & up,
-            ~engaged,
-            other,
-            in_a & in_b & down,
-            in_a & in_b & up & (pieces == 1),
-            in_a & in_b & up,
-            in_a & ~in_b & down & (uep_wall == between),
-            ~in_a & in_b & up,
-        ],
-        [
-            c["B.5"],
-            c["none"],
-            c["multi"],
-            np.where(forward, c["A.2"], c["A.1"]),
-            np.where(forward, c["B.1"], c["B.2"]),
-            np.where(forward, c["B.3"], c["B.4"]),
-            np.where(forward, c["A.4"], c["A.3"]),
-            c["B.6"],
-        ],
-        default=c["none"],
-    ).astype(np.int8)
+    rules = (  # the first rule that holds names the case
+        (~engaged & up, c["B.5"]),
+        (~engaged, c["none"]),
+        (other, c["multi"]),
+        (in_a & in_b & down, np.where(forward, c["A.2"], c["A.1"])),
+        (in_a & in_b & up & (pieces == 1), np.where(forward, c["B.1"], c["B.2"])),
+        (in_a & in_b & up, np.where(forward, c["B.3"], c["B.4"])),
+        (in_a & ~in_b & down & (uep_wall == between), np.where(forward, c["A.4"], c["A.3"])),
+        (~in_a & in_b & up, c["B.6"]),
+    )
+    case = np.full(engaged.shape, c["none"], dtype=np.int8)
+    for holds, name in reversed(rules):
+        case = np.where(holds, name, case)
+    return case.astype(np.int8)
 
 
 def _segments(engaged, surface, section, wall):
