@@ -308,8 +308,8 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
 
     Returns a dict of (N,) arrays: lep_l, uep_l, length, pieces, uep_surface, uep_section,
     uep_wall, case. Lines that can reach no wall stay in one section, and lines that can reach
-    one quintic wall, crossed at most once, pass from one section to the next: both are solved
-    in closed form. The others go through the breakpoints.
+    one wall, crossed at most once, pass from one section to the next: both are solved in
+    closed form. The others go through the breakpoints.
     """
     n = x0.size
     lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
@@ -322,21 +322,60 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     crossings = _wall_crossings(stock, pair_rows[quintic], pair_walls[quintic], steepness[quintic],
                                 lo, hi, x0, y0, dx, dy)
     reach = np.bincount(pair_rows, minlength=n)
-    one = (reach == 1) & (np.bincount(pair_rows[quintic][crossings[1]], minlength=n) == 1)
+    # Lines with one candidate wall, crossed at most once: the root (NaN without one) and the
+    # line's side of the wall at lo and at hi, per line.
+    one = np.zeros(n, dtype=bool)
+    root, left_at_lo, left_at_hi = np.full(n, np.nan), np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
+    alone = reach[pair_rows] == 1
+    for pairs, (found, single, at_lo, at_hi) in (
+        (np.flatnonzero(quintic), crossings),
+        (np.flatnonzero(~quintic & alone), _exact_crossings(stock, pair_rows[~quintic & alone],
+                                                            pair_walls[~quintic & alone], lo, hi, x0, y0, dx, dy)),
+    ):
+        take = alone[pairs] & single
+        rows = pair_rows[pairs[take]]
+        one[rows] = True
+        root[rows], left_at_lo[rows], left_at_hi[rows] = found[take, 0], at_lo[take], at_hi[take]
     lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
     result = {}
     for subset, solve in ((reach == 0, _single_section), (one, _one_crossing), ((reach > 0) & ~one, _broken_lines)):
         rows = np.flatnonzero(subset)
         if rows.size == 0:
             continue
-        renumber = np.cumsum(subset) - 1
-        pairs = subset[pair_rows]
-        on = pairs[quintic]
-        part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], pair_walls[pairs], quintic[pairs],
-                     tuple(c[on] for c in crossings))
+        if solve is _one_crossing:
+            wall = np.zeros(n, dtype=np.intp)
+            wall[pair_rows] = pair_walls + 1
+            part = solve(stock, *(v[rows] for v in lines + (wall, root, left_at_lo, left_at_hi)))
+        else:
+            renumber = np.cumsum(subset) - 1
+            pairs = subset[pair_rows]
+            on = pairs[quintic]
+            part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], pair_walls[pairs],
+                         quintic[pairs], tuple(c[on] for c in crossings))
         for name, values in part.items():
             result.setdefault(name, np.empty(n, dtype=values.dtype))[rows] = values
     return result
+
+
+def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
+    """Crossings of line rows[i] with exact (B-spline) wall walls[i] inside [lo, hi] (P pairs),
+    as _wall_crossings gives them: l (P, r) NaN-padded, whether at most one was found (P,), and
+    whether the line is at or beyond the wall at lo and at hi, each (P,)."""
+    found = np.full((rows.size, 1), np.nan)
+    single = np.ones(rows.size, dtype=bool)
+    at_lo, at_hi = np.zeros(rows.size, dtype=bool), np.zeros(rows.size, dtype=bool)
+    for j in np.unique(walls):
+        on = np.flatnonzero(walls == j)
+        r = rows[on]
+        wall = stock.walls[j]
+        roots = wall.crossings(x0[r], y0[r], dx[r], dy[r], lo[r], hi[r])
+        if roots.size:
+            count = (~np.isnan(roots)).sum(axis=1)
+            single[on] = count <= 1
+            found[on[count >= 1], 0] = np.nanmin(roots[count >= 1], axis=1)
+        ends = np.stack([lo[r], hi[r]])
+        at_lo[on], at_hi[on] = x0[r] + dx[r] * ends >= wall.x_at(y0[r] + dy[r] * ends)
+    return found, single, at_lo, at_hi
 
 
 def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, *_):
@@ -360,14 +399,13 @@ def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, 
     }
 
 
-def _one_crossing(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, pair_rows, pair_walls, _,
-                  crossings):
-    """Engagement of lines that can reach one quintic wall, crossed at most once (proved
-    monotone): piece A in the section before the crossing, piece B after it, each inside from
-    its start up to its section's top (same dict as _solve_lines). Without a crossing in
-    [lo, hi], piece A is the whole segment."""
-    found, _, left_at_lo, left_at_hi = crossings  # one pair per line, in line order
-    root, wall = found[:, 0], pair_walls + 1
+def _one_crossing(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, wall, root, left_at_lo,
+                  left_at_hi):
+    """Engagement of lines that can reach one wall (index wall, 1-based), which they cross at
+    most once, at root (NaN: not in [lo, hi]); left_at_lo, left_at_hi: whether the line is at
+    or beyond the wall at lo and at hi. Piece A lies in the section before the crossing, piece
+    B after it, each inside from its start up to its section's top (same dict as
+    _solve_lines). Without a crossing, piece A is the whole segment."""
     crossed = ~np.isnan(root)
     cut = np.where(crossed, root, hi)
     section_a = left_of + np.where(crossed, left_at_lo, left_at_hi)

@@ -216,7 +216,7 @@ class SplineWall:
         """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the curve.
 
         Per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u; its real
-        roots in [0, 1] (only spans whose control box meets the line segment's box; one
+        roots in [0, 1] (only spans whose y range and control box x range meet the segment's; one
         bracketed root where the polynomial is proved monotone) give the points, and l their
         projection on the line. NaN-padded; a line with dx = dy = 0 never
         crosses.
@@ -224,10 +224,23 @@ class SplineWall:
         k = x0.size
         sx = np.stack([x0 + dx * lo, x0 + dx * hi])
         sy = np.stack([y0 + dy * lo, y0 + dy * hi])
-        b = self.span_boxes
-        meet = ((sx.max(0)[:, None] >= b[:, 0]) & (sx.min(0)[:, None] <= b[:, 1])
-                & (sy.max(0)[:, None] >= b[:, 2]) & (sy.min(0)[:, None] <= b[:, 3]))
-        line, span = np.nonzero(meet)
+        # The spans are in increasing y, so those whose y range meets the segment's are a run.
+        y_lo, y_hi, ends = sy.min(0), sy.max(0), self.span_y
+        first = np.clip(np.searchsorted(ends, y_lo, side="left") - 1, 0, None)
+        last = np.minimum(np.searchsorted(ends, y_hi, side="right") - 1, ends.size - 2)
+        count = np.where((y_hi >= ends[0]) & (y_lo <= ends[-1]), last - first + 1, 0).clip(0)
+        line = np.repeat(np.arange(k), count)
+        span = first[line] + np.arange(line.size) - np.repeat(np.cumsum(count) - count, count)
+        # Keep a span if the segment's x range over the span's y range meets its control box.
+        with np.errstate(divide="ignore", invalid="ignore"):
+            at = (ends[np.stack([span, span + 1])] - y0[line]) / dy[line]
+        level = np.abs(dy[line]) <= STRAIGHT_EPS  # a segment along x: its whole x range
+        l1 = np.where(level, lo[line], np.clip(at.min(axis=0), lo[line], hi[line]))
+        l2 = np.where(level, hi[line], np.clip(at.max(axis=0), lo[line], hi[line]))
+        xa, xb = x0[line] + dx[line] * l1, x0[line] + dx[line] * l2
+        b = self.span_boxes[span]
+        meet = (np.maximum(xa, xb) >= b[:, 0]) & (np.minimum(xa, xb) <= b[:, 1])
+        line, span = line[meet], span[meet]
         out = np.full((k, 0), np.nan)
         if line.size == 0:
             return out
