@@ -199,3 +199,51 @@ def test_shapes_are_checked():
         edge_forces(np.ones((2, 1, 3)), [0.0, 1.0, 2.0], np.eye(3), 5.0, 0.0, 0.1, K)
     with pytest.raises(ValueError, match="feed per tooth"):
         edge_forces(np.ones((2, 1, 3)), [0.0, 1.0, 2.0], np.eye(3)[None], 5.0, 0.0, -0.1, K)
+
+
+# The command line: engage --forces.
+
+from abm_workbench.engine import CutSettings as _Settings  # noqa: E402
+from abm_workbench.formats.results_csv import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, RESULT_COLUMNS,  # noqa: E402
+                                               read_results)
+from abm_workbench.formats.staircase_json import load_staircase  # noqa: E402
+from abm_workbench.formats.toolpath_csv import load_toolpath  # noqa: E402
+
+from .test_cli import BASE, M, case, run  # noqa: E402,F401  (case is a fixture)
+
+
+def test_engage_forces_columns(case, capsys):
+    status, out, err = run(BASE + ["--forces", "--material", "AL7075-T6", "--kae", "1.5", "--immersion", "30:150",
+                                   "--phi-range", "0:360"], capsys)
+    assert (status, err) == (0, "")
+    assert "; peak force " in out
+    results = read_results(case / "R.csv")
+    assert list(results) == [*RESULT_COLUMNS, *FORCE_COLUMNS]
+    summary = read_results(case / "R.summary.csv")
+    assert list(summary)[-3:] == list(FORCE_SUMMARY_COLUMNS)
+    # The same numbers as the Python API (the CSV keeps 10 decimals).
+    coefficients = Coefficients(**{**vars(material("al7075-t6")), "kae": 1.5})
+    forces = pass_forces(load_staircase("stock.json"), Tool(12, 2, 30), load_toolpath("toolpath.csv"),
+                         _Settings(0.1, 10, 0, 360, 5, 4000), coefficients, immersion=(30, 150))
+    np.testing.assert_allclose(results["fx"], forces.xyz[..., 0].reshape(-1), atol=1e-9)
+    np.testing.assert_allclose(results["torque"], forces.torque.reshape(-1), atol=1e-9)
+    np.testing.assert_allclose(results["power"], forces.power.reshape(-1), atol=1e-9)
+    first = np.searchsorted(summary["cl"], np.arange(M))
+    np.testing.assert_allclose(summary["peak_force"][first], forces.peak, atol=1e-9)
+    np.testing.assert_allclose(summary["mean_force"][first], forces.mean, atol=1e-9)
+
+
+@pytest.mark.parametrize("options, message", [
+    (["--ktc", "700"], "--ktc applies with --forces"),
+    (["--immersion", "0:90"], "--immersion applies with --forces"),
+    (["--forces", "--ktc", "700", "--krc", "200"], "missing --kac: the forces need --material NAME or --ktc"),
+    (["--forces", "--material", "steel"], "--material: unknown material 'steel'"),
+    (["--forces", "--material", "al7075-t6", "--ktc", "-5"], "--ktc: ktc must be positive"),
+    (["--forces", "--material", "al7075-t6", "--immersion", "0:200"], "--immersion: immersion 0:200 must satisfy"),
+    (["--forces", "--material", "al7075-t6", "--immersion", "30"], "--immersion: expected START:END"),
+    (["--forces", "--material", "al7075-t6", "--method", "zmap"], "--forces needs --method abm"),
+])
+def test_engage_force_option_errors(case, capsys, options, message):
+    status, _, err = run(BASE + options, capsys)
+    assert status == 2 and err.startswith(f"abm: error: {message}"), err
+    assert not (case / "R.csv").exists()

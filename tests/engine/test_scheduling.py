@@ -172,3 +172,64 @@ def test_apt_writer_refuses_a_zero_feed(model_pass, tmp_path):
     with pytest.raises(ValueError):
         write_feed_toolpath(target, path, np.nan, flutes=2, diameter=12.0, flute_length=30.0)
     assert target.read_text() == "old" and os.listdir(tmp_path) == ["p.apt"]
+
+
+# The command line: schedule.
+
+from .test_cli import M, case, run  # noqa: E402,F401  (case is a fixture)
+
+SCHEDULE = ["schedule", "--stock", "stock.json", "--toolpath", "toolpath.csv", "--job", "job.json",
+            "--material", "al7075-t6"]
+
+
+def test_schedule_command_writes_apt_and_report(case, capsys):
+    status, out, err = run(SCHEDULE + ["--max-force", "400", "--out", "out/P.apt", "--report", "rep"], capsys)
+    assert (status, err) == (0, "")
+    assert out.startswith(f"abm: {M} CL points: peak force ") and "(limit 400)" in out
+    program = load_apt(case / "out" / "P.apt")
+    path = load_toolpath("toolpath.csv")
+    np.testing.assert_array_equal(program.toolpath.cl, path.cl)
+    feed = program.feed / (2 * 4000.0)
+    assert (feed <= 0.1 + 1e-15).all() and (feed < 0.1).any()
+    again = pass_forces(load_staircase("stock.json"), TOOL, path, CutSettings(0.1, 10, 0, 180, 5, 4000),
+                        COEFFICIENTS, feed=feed)
+    assert (again.peak <= 400 + 1e-9).all() and np.isclose(again.peak.max(), 400, rtol=1e-9)
+    assert sorted(os.listdir(case / "rep")) == ["forces.png", "index.html", "schedule.csv", "schedule.png"]
+    assert "Feed schedule: test pass" in (case / "rep" / "index.html").read_text()
+
+
+def test_schedule_command_area_to_csv_and_reading_apt_feeds(case, capsys):
+    status, _, err = run(SCHEDULE + ["--max-area", "0.3", "--out", "P.csv"], capsys)
+    assert (status, err) == (0, "")
+    assert len(load_toolpath("P.csv")) == M
+    # An APT file's own feeds are the programmed feed, CL point by CL point.
+    path = load_toolpath("toolpath.csv")
+    write_feed_toolpath("in.apt", path, np.linspace(0.05, 0.1, M), flutes=2, diameter=12, flute_length=30,
+                        spindle_rpm=4000)
+    status, out, err = run(["schedule", "--stock", "stock.json", "--toolpath", "in.apt", "--job", "job.json",
+                            "--ktc", "700", "--krc", "200", "--kac", "100", "--max-force", "1e6", "--out", "P.apt"],
+                           capsys)
+    assert status == 0 and "feed lowered at 0 CL points" in out
+    np.testing.assert_allclose(load_apt("P.apt").feed, load_apt("in.apt").feed, rtol=1e-15)
+
+
+def test_schedule_warns_about_cl_points_that_cannot_meet_the_limit(case, capsys):
+    status, out, err = run(SCHEDULE + ["--max-force", "5", "--min-feed", "0.02", "--out", "P.apt"], capsys)
+    assert status == 0
+    assert err.startswith("abm: warning: ") and "cannot keep the force at or under 5 N" in err
+    assert "they get the minimum feed: CL " in err
+    np.testing.assert_allclose(load_apt("P.apt").feed[load_apt("P.apt").feed < 8000 * 0.1], 0.02 * 8000)
+
+
+@pytest.mark.parametrize("options, message", [
+    (["--max-force", "-1", "--out", "P.apt"], "abm: error: --max-force: must be a positive number"),
+    (["--max-area", "1", "--min-feed", "-0.1", "--out", "P.apt"], "abm: error: --min-feed: must be"),
+    (["--max-force", "100", "--out", "P.txt"], "abm: error: P.txt: --out must end in .apt, .cls or .csv"),
+    (["--max-force", "100", "--max-area", "1", "--out", "P.apt"], "abm: error: argument --max-area: not allowed"),
+    (["--out", "P.apt"], "abm: error: one of the arguments --max-force --max-area is required"),
+    (["--max-force", "100", "--out", "toolpath.csv"], "abm: error: toolpath.csv: is an input"),
+])
+def test_schedule_option_errors(case, capsys, options, message):
+    status, _, err = run(SCHEDULE + options, capsys)
+    assert status == 2 and message in err, err
+    assert sorted(os.listdir(case)) == ["job.json", "stock.json", "toolpath.csv"]
