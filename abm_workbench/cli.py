@@ -32,7 +32,7 @@ import time
 
 import numpy as np
 
-from .engine import engage, zmap_engage
+from .engine import engage, flute_engagement, zmap_engage
 from .errors import InputError
 from .formats import replacing
 from .formats.results_csv import results_text, summary_path, summary_text, write_text
@@ -145,7 +145,10 @@ def _build_parser():
 
 
 def _force_arguments(parser, *, always=False):
-    """The cutting-force options (engage: only with --forces; schedule: always used)."""
+    """The helix angle and the cutting-force options (engage: only with --forces; schedule: always used)."""
+    parser.add_argument("--helix", type=float, default=0.0, metavar="DEG",
+                        help="helix angle β of the flutes (deg), default 0: straight flutes; a helical tool's "
+                             "engagement comes from the helix solver (every flute's exact helix)")
     group = parser.add_argument_group(
         "cutting forces (linear edge-force model, docs/FORCES.md)" + ("" if always else ": with --forces"))
     if not always:
@@ -274,13 +277,31 @@ def _force_model(args, always=False):
     return coefficients, immersion
 
 
+def _helical(args, tool):
+    """`tool` with the --helix angle; InputError naming --helix if it is out of range."""
+    try:
+        return dataclasses.replace(tool, helix=args.helix)
+    except ValueError as error:
+        raise InputError(f"--helix: {error}") from None
+
+
+def _flute_1(stock, tool, toolpath, settings, progress=None):
+    """Engagement of flute 1: the straight engine, or flute 0 of the helix solver for a helical tool."""
+    if tool.helix == 0.0:
+        return engage(stock, tool, toolpath, settings, progress=progress)
+    return flute_engagement(stock, tool, toolpath, settings, progress=progress).as_engagement(0)
+
+
 def _run_engage(args):
     """The engage command; returns 0 or raises InputError."""
     compute, method_text = _engage_method(args)
     force_model = _force_model(args)
     if force_model is not None and args.method != "abm":
         raise InputError("--forces needs --method abm")
+    if args.helix != 0.0 and args.method != "abm":
+        raise InputError("--helix needs --method abm")
     job, toolpath, parameters, tool, settings = _prepare(args)
+    tool = _helical(args, tool)
     outputs = [args.out, summary_path(args.out)] + ([args.plot] if args.plot else [])
     _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
     stock, _ = _load_stock(args, toolpath, tool)
@@ -295,7 +316,7 @@ def _run_engage(args):
     forces = None
     if force_model is not None:
         forces = pass_forces(stock.staircase, tool, toolpath, settings, force_model[0], immersion=force_model[1],
-                             first=engagement.length)
+                             first=engagement.length if tool.helix == 0.0 else None)
     texts = (results_text(engagement, forces=forces), summary_text(engagement, toolpath=toolpath, forces=forces))
     title = job.get("description") or (
         f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}: D {tool.diameter:g} mm, "
@@ -319,8 +340,13 @@ def _run_engage(args):
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
           + ("" if forces is None else f"; peak force {forces.peak.max():.4g} N at CL {int(forces.peak.argmax())}")
           + f"; wrote {', '.join(outputs)}")
-    print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
+    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
     return 0
+
+
+def _helix_text(tool):
+    """', helix 30° [--helix]' for a helical tool, '' for straight flutes."""
+    return f", helix {tool.helix:g}° [--helix]" if tool.helix else ""
 
 
 def _engage_method(args):
@@ -330,7 +356,7 @@ def _engage_method(args):
                  if value is not None]
         if given:
             raise InputError(f"{given[0]} applies to --method zmap, not to --method abm")
-        return engage, ""
+        return _flute_1, ""
     grid = ZMAP_GRID if args.grid is None else args.grid
     step = grid if args.edge_step is None else args.edge_step
     for option, value in (("--grid", grid), ("--edge-step", step)):
@@ -410,6 +436,7 @@ def _run_schedule(args):
     if os.path.splitext(args.out)[1].lower() not in (".apt", ".cls", ".csv"):
         raise InputError(f"{args.out}: --out must end in .apt, .cls or .csv")
     job, toolpath, parameters, tool, settings = _prepare(args)
+    tool = _helical(args, tool)
     _, hints = load_path(args.toolpath)  # the feed of every move, which _prepare reduces to one value
     try:
         programmed = programmed_feed(len(toolpath), settings.feed_per_tooth, feed=hints.feed, unit=hints.feed_unit,
@@ -422,11 +449,11 @@ def _run_schedule(args):
                                                    report=args.report, fcstd=None))
     _check_outputs([args.out] + ([args.report] if args.report else []), inputs)
     stock, _ = _load_stock(args, toolpath, tool)
-    engagement = engage(stock.staircase, tool, toolpath, settings)
+    engagement = _flute_1(stock.staircase, tool, toolpath, settings)
     if not engagement.engaged.any():
         raise InputError(_no_engagement(args))
     forces = pass_forces(stock.staircase, tool, toolpath, settings, coefficients, immersion=immersion,
-                         feed=programmed, first=engagement.length)
+                         feed=programmed, first=engagement.length if tool.helix == 0.0 else None)
     plan = schedule(forces, limit, kind=kind, min_feed=args.min_feed)
     unit = "N" if kind == "force" else "mm²"
     if plan.infeasible.any():
@@ -452,7 +479,7 @@ def _run_schedule(args):
           f"(limit {limit:g}); feed lowered at {int(plan.reduced.sum())} CL points, to "
           f"{plan.feed.min():.4g} mm/tooth at least; {int(plan.infeasible.sum())} cannot meet the limit; "
           f"wrote {', '.join(written)}")
-    print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
+    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
     return 0
 
 

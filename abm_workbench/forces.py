@@ -20,6 +20,12 @@ summed over the flutes, then F_global = R·F_tool. Torque about the tool axis = 
 instant, F = f·A + B (A the chip-thickness part per mm of feed, B the edge part), which is
 what :class:`Forces` stores, so a new feed (scheduling) needs no new engagement.
 
+Helical flutes (helix angle β, κ = tan β / R_t): the point of flute k at height l has the
+angle ψ_k(l) = φ + 360·k/Z − κ·l, and the engine (helix.flute_engagement) gives the engaged
+intervals [a, b] of l, already cut to the immersion. Every force component is then a sum of
+∫ sin ψ, ∫ cos ψ, ∫ sin² ψ, ∫ sin ψ cos ψ and ∫ 1 over dl, taken in closed form
+(:func:`interval_integrals`), with db = dl the axial height of an element.
+
 Units: N, mm, N·mm, W; angles in degrees at the interface.
 """
 
@@ -29,7 +35,7 @@ from typing import Optional
 
 import numpy as np
 
-from .engine import engage
+from .engine import engage, flute_engagement
 from .engine.frames import rotation_matrix
 
 #: Default immersion (deg): a flute cuts over the leading half, full slotting.
@@ -286,14 +292,69 @@ def edge_forces(lengths, phi_deg, rotation, radius, inclination, feed, coefficie
     return forces.with_feed(forces.feed)
 
 
+def interval_integrals(start, end, psi0, kappa):
+    """∫ over l in [start, end] of sin ψ, cos ψ, sin² ψ and sin ψ cos ψ, with ψ = psi0 − kappa·l.
+
+    start, end: (...) mm, NaN for no interval (integrals 0); psi0 (rad) broadcast with them;
+    kappa: rad/mm. Closed forms about the midpoint ψ_m with Δ = end − start, free of
+    cancellation as kappa → 0: ∫ sin = Δ sin ψ_m S₁, ∫ cos = Δ cos ψ_m S₁,
+    ∫ sin² = Δ/2 − Δ cos 2ψ_m S₂/2, ∫ sin cos = Δ sin 2ψ_m S₂/2, S₁ = sinc(κΔ/2), S₂ = sinc(κΔ)
+    (sinc x = sin x / x). Returns (width Δ, ∫ sin, ∫ cos, ∫ sin², ∫ sin cos), each (...) mm.
+    """
+    start, end = np.broadcast_arrays(np.asarray(start, dtype=float), np.asarray(end, dtype=float))
+    width = np.where(np.isnan(start) | np.isnan(end), 0.0, end - start)
+    mid = np.asarray(psi0, dtype=float) - kappa * np.where(width > 0.0, 0.5 * (start + end), 0.0)
+    s1 = np.sinc(kappa * width / (2.0 * np.pi))   # numpy's sinc is sin(πx)/(πx)
+    s2 = np.sinc(kappa * width / np.pi)
+    return (width, width * np.sin(mid) * s1, width * np.cos(mid) * s1,
+            0.5 * width * (1.0 - np.cos(2.0 * mid) * s2), 0.5 * width * np.sin(2.0 * mid) * s2)
+
+
+def helical_forces(flutes, rotation, coefficients, *, feed=None, spindle_rpm=None):
+    """Forces of helical flutes from their engaged intervals.
+
+    flutes: a FluteEngagement (helix.flute_engagement) whose intervals were cut to the
+    immersion, so that sin ψ ≥ 0 on them. rotation: (m, 3, 3) R of each CL point. feed: feed
+    per tooth, scalar or (m,) mm (default the engagement's). Returns Forces.
+    """
+    rotation = np.asarray(rotation, dtype=float)
+    m = flutes.shape[0]
+    if rotation.shape != (m, 3, 3):
+        raise ValueError(f"rotation must have shape ({m}, 3, 3), got {rotation.shape}")
+    kappa = np.tan(np.radians(flutes.helix)) / flutes.radius
+    psi0 = np.radians(flute_angles(flutes.phi, flutes.flutes).T)[None, :, :, None]   # (1, p, Z, 1)
+    width, i_s, i_c, i_ss, i_sc = (v.sum(axis=-1) for v in interval_integrals(flutes.start, flutes.end, psi0, kappa))
+    k, scale = coefficients, np.cos(np.radians(flutes.inclination))
+
+    def summed(*components):
+        """(m, p, 3) tool-frame vector of per-flute (m, p, Z) components, summed over the flutes."""
+        return np.stack([c.sum(axis=-1) for c in components], axis=-1)
+
+    forces = Forces(
+        phi=np.asarray(flutes.phi, dtype=float), rotation=rotation, radius=float(flutes.radius),
+        feed=np.full(m, float(flutes.feed_per_tooth)), spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
+        cutting=scale * summed(-k.ktc * i_sc - k.krc * i_ss, k.ktc * i_ss - k.krc * i_sc, k.kac * i_s),
+        edge=summed(-k.kte * i_c - k.kre * i_s, k.kte * i_s - k.kre * i_c, k.kae * width),
+        cutting_tangential=scale * k.ktc * i_s.sum(axis=-1), edge_tangential=k.kte * width.sum(axis=-1),
+        area_per_feed=scale * i_s.sum(axis=-1),
+    )
+    return forces if feed is None else forces.with_feed(feed)
+
+
 def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL_SLOT, feed=None, first=None):
-    """Forces of a pass of straight flutes (see edge_forces): the engine solves every flute.
+    """Forces of a pass: straight flutes through the engine's engage per flute (edge_forces),
+    helical ones (tool.helix ≠ 0) through helix.flute_engagement (helical_forces).
 
     feed: feed per tooth, scalar or (m,) mm (default settings.feed_per_tooth). first: flute 1's
-    (m, p) lengths when already computed. Returns Forces.
+    (m, p) lengths when already computed (straight flutes only). Returns Forces.
     """
-    check_immersion(immersion)
+    immersion = check_immersion(immersion)
+    rotation = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
+    if tool.helix != 0.0:
+        engaged = flute_engagement(stock, tool, toolpath, settings, immersion=immersion)
+        return helical_forces(engaged, rotation, coefficients, feed=settings.feed_per_tooth if feed is None else feed,
+                              spindle_rpm=settings.spindle_rpm)
     lengths = flute_lengths(stock, tool, toolpath, settings, first=first)
-    return edge_forces(lengths, settings.phi, rotation_matrix(toolpath.theta_a, toolpath.theta_b), tool.radius,
+    return edge_forces(lengths, settings.phi, rotation, tool.radius,
                        settings.inclination, settings.feed_per_tooth if feed is None else feed, coefficients,
                        immersion=immersion, spindle_rpm=settings.spindle_rpm)

@@ -247,3 +247,124 @@ def test_engage_force_option_errors(case, capsys, options, message):
     status, _, err = run(BASE + options, capsys)
     assert status == 2 and err.startswith(f"abm: error: {message}"), err
     assert not (case / "R.csv").exists()
+
+
+# Helical flutes.
+
+from scipy.integrate import quad  # noqa: E402
+
+from abm_workbench.forces import interval_integrals  # noqa: E402
+
+
+@pytest.mark.parametrize("kappa", [0.0, 1e-9, 0.05, -0.3, 2.0])
+def test_interval_integrals_match_quadrature(kappa):
+    rng = np.random.default_rng(11)
+    start = rng.uniform(0.0, 10.0, 12)
+    end = start + rng.uniform(0.0, 8.0, 12)
+    psi0 = rng.uniform(-4.0, 8.0, 12)
+    got = interval_integrals(start, end, psi0, kappa)
+    for g, func in zip(got, (lambda p: 1.0, np.sin, np.cos, lambda p: np.sin(p) ** 2,
+                             lambda p: np.sin(p) * np.cos(p))):
+        want = [quad(lambda l: func(p0 - kappa * l), a, b, epsabs=1e-13, epsrel=1e-13, limit=200)[0]
+                for a, b, p0 in zip(start, end, psi0)]
+        np.testing.assert_allclose(g, want, rtol=1e-10, atol=1e-12)
+    nothing = interval_integrals([np.nan], [np.nan], 1.0, kappa)
+    assert all(v[0] == 0.0 for v in nothing)
+
+
+@pytest.mark.parametrize("flutes, helix, multiple", [(2, 30.0, 1), (3, 45.0, 2), (4, 20.0, 1)])
+def test_helical_full_slot_force_is_constant_at_a_multiple_of_pitch_over_z(flutes, helix, multiple):
+    radius = 5.0
+    pitch = 2.0 * np.pi * radius / np.tan(np.radians(helix))
+    depth = multiple * pitch / flutes
+    feed = 0.1
+    tool = Tool(2 * radius, flutes, depth + 10.0, helix)
+    path = Toolpath([[0.0, 0.0, 0.0]], [0.0], [0.0])
+    forces = pass_forces(_flat(depth, base=-3.0), tool, path, CutSettings(feed, 0.0, 0.0, 359.0, 1.0), K)
+    xyz = forces.xyz[0]
+    spread = np.ptp(xyz, axis=0) / np.linalg.norm(xyz.mean(axis=0))
+    assert spread.max() < 1e-6, spread
+    np.testing.assert_allclose(np.ptp(forces.torque[0]) / forces.torque[0].mean(), 0.0, atol=1e-6)
+    # … and equal to the straight-flute mean of the same slot (the closed form).
+    means, torque = _slot_means(flutes, depth, feed, radius)
+    np.testing.assert_allclose(xyz.mean(axis=0), means, rtol=1e-9)
+    np.testing.assert_allclose(forces.torque[0].mean(), torque, rtol=1e-9)
+
+
+def test_helical_force_varies_when_the_depth_is_not_a_multiple():
+    radius, helix, flutes = 5.0, 30.0, 2
+    depth = 0.5 * 2.0 * np.pi * radius / np.tan(np.radians(helix)) / flutes
+    tool = Tool(2 * radius, flutes, 40.0, helix)
+    forces = pass_forces(_flat(depth), tool, Toolpath([[0.0, 0.0, 0.0]], [0.0], [0.0]),
+                         CutSettings(0.1, 0.0, 0.0, 359.0, 1.0), K)
+    assert np.ptp(forces.resultant[0]) / forces.resultant[0].mean() > 0.05
+
+
+def _brute_force_helix(stock, radius, flute_length, flutes, helix, cl, theta_a, theta_b, phi, feed, inclination,
+                       immersion, elements=40000):
+    """(p, 3) global force (N): a sum over `elements` elements of every helical flute, each inside
+    the stock or not by the reference's point test, cutting where ψ mod 360 is in the immersion."""
+    model = _Stock(stock)
+    dl = flute_length / elements
+    l = (np.arange(elements) + 0.5) * dl
+    rot = rotation(theta_a, theta_b)
+    kappa = np.tan(np.radians(helix)) / radius
+    out = np.zeros((len(phi), 3))
+    for k in range(flutes):
+        psi = np.radians(np.asarray(phi, dtype=float)[:, None] + 360.0 * k / flutes) - kappa * l[None, :]
+        local = np.stack([radius * np.sin(psi), radius * np.cos(psi), np.broadcast_to(l, psi.shape)], axis=-1)
+        inside = model.inside(np.asarray(cl, dtype=float) + local @ rot.T)
+        rel = np.mod(np.degrees(psi) - immersion[0], 360.0)
+        cuts = inside & (rel <= immersion[1] - immersion[0])
+        h = feed * np.sin(psi) * np.cos(np.radians(inclination))
+        ft, fr, fa = ((K.ktc * h + K.kte) * dl, (K.krc * h + K.kre) * dl, (K.kac * h + K.kae) * dl)
+        s, c = np.sin(psi), np.cos(psi)
+        element = np.stack([-ft * c - fr * s, ft * s - fr * c, fa], axis=-1) * cuts[..., None]
+        out += element.sum(axis=1) @ rot.T
+    return out, dl
+
+
+@pytest.mark.parametrize("cl, theta_a, theta_b, immersion, flutes, helix", [
+    ((5.3, 1.1, -1.0), 0.0, 0.0, (0.0, 180.0), 2, 30.0),
+    ((7.1, -2.3, 0.4), 12.0, -8.0, (30.0, 150.0), 3, 40.0),
+    ((27.7, 0.9, -2.2), -6.0, 15.0, (0.0, 90.0), 4, -25.0),
+])
+def test_helical_forces_match_a_brute_force_element_sum(cl, theta_a, theta_b, immersion, flutes, helix):
+    diameter, flute_length, feed, inclination = 12.0, 14.0, 0.11, 7.0
+    stock = Staircase(STAIRS.x_min, STAIRS.x_max, STAIRS.y_min, STAIRS.y_max, STAIRS.base_z,
+                      STAIRS.z_top, STAIRS.walls)
+    settings = CutSettings(feed, inclination, 0.5, 359.5, 9.0)
+    forces = pass_forces(stock, Tool(diameter, flutes, flute_length, helix), Toolpath([cl], [theta_a], [theta_b]),
+                         settings, K, immersion=immersion)
+    want, dl = _brute_force_helix(STAIRS, 0.5 * diameter, flute_length, flutes, helix, cl, theta_a, theta_b,
+                                  settings.phi, feed, inclination, immersion)
+    assert np.abs(want).max() > 100.0
+    per_mm = np.linalg.norm(K.cutting) * feed + np.linalg.norm(K.edge)
+    np.testing.assert_allclose(forces.xyz[0], want, rtol=0.0, atol=flutes * 4 * dl * per_mm)
+
+
+def test_a_tiny_helix_gives_the_straight_forces():
+    stock = Staircase(STAIRS.x_min, STAIRS.x_max, STAIRS.y_min, STAIRS.y_max, STAIRS.base_z,
+                      STAIRS.z_top, STAIRS.walls)
+    path = Toolpath([(7.1, -2.3, 0.4), (27.7, 0.9, -2.2)], [12.0, -6.0], [-8.0, 15.0])
+    settings = CutSettings(0.1, 5.0, 0.5, 359.5, 3.0)
+    straight = pass_forces(stock, Tool(12.0, 3, 14.0), path, settings, K, immersion=(20.0, 160.0))
+    helical = pass_forces(stock, Tool(12.0, 3, 14.0, 1e-7), path, settings, K, immersion=(20.0, 160.0))
+    # Two engines (straight-line ABM, helix solver): 1.7e-4 N apart at most, about 1.4e-6 mm of length.
+    np.testing.assert_allclose(helical.xyz, straight.xyz, rtol=0.0, atol=1e-3)
+    np.testing.assert_allclose(helical.torque, straight.torque, rtol=0.0, atol=1e-2)
+
+
+def test_engage_helical_forces_from_the_command_line(case, capsys):
+    status, out, err = run(BASE + ["--forces", "--ktc", "700", "--krc", "210", "--kac", "120", "--helix", "30"],
+                           capsys)
+    assert (status, err) == (0, "")
+    assert out.splitlines()[1].endswith("step 5° [job.json], helix 30° [--helix]")
+    results = read_results(case / "R.csv")
+    forces = pass_forces(load_staircase("stock.json"), Tool(12, 2, 30, 30), load_toolpath("toolpath.csv"),
+                         _Settings(0.1, 10, 0, 180, 5, 4000), Coefficients(700, 210, 120))
+    np.testing.assert_allclose(results["fz"], forces.xyz[..., 2].reshape(-1), atol=1e-9)
+    status, _, err = run(BASE + ["--helix", "95"], capsys)
+    assert status == 2 and err.startswith("abm: error: --helix: helix must be within (-90, 90) degrees")
+    status, _, err = run(BASE + ["--helix", "20", "--method", "zmap"], capsys)
+    assert status == 2 and err.startswith("abm: error: --helix needs --method abm")
