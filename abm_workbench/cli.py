@@ -90,7 +90,8 @@ def _build_parser():
     _input_arguments(engage_parser)
     outputs = engage_parser.add_argument_group("outputs")
     outputs.add_argument("--out", required=True, metavar="R.csv", help="results CSV; the summary goes to R.summary.csv")
-    outputs.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass")
+    outputs.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass (with --forces, and "
+                         "R.forces.png: force along the pass and over φ at chosen CL points)")
     method = engage_parser.add_argument_group("method")
     method.add_argument("--method", choices=METHODS, default="abm",
                         help="abm: the analytical boundary method (default); zmap: the discrete Z-map baseline "
@@ -303,6 +304,8 @@ def _run_engage(args):
     job, toolpath, parameters, tool, settings = _prepare(args)
     tool = _helical(args, tool)
     outputs = [args.out, summary_path(args.out)] + ([args.plot] if args.plot else [])
+    if args.plot and force_model is not None:
+        outputs.append(os.path.splitext(args.plot)[0] + ".forces.png")
     _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
     stock, _ = _load_stock(args, toolpath, tool)
 
@@ -325,6 +328,10 @@ def _run_engage(args):
     if args.plot:
         from .report.plots import pass_figure  # here: matplotlib takes a while to import
         figure = pass_figure(engagement, title=title)
+    force_figure = None
+    if args.plot and forces is not None:
+        from .report.forces import chosen_cl, force_over_phi_figure
+        force_figure = force_over_phi_figure(forces, chosen_cl(forces), along=True)
     for path in outputs:  # only now, so that bad input leaves no folder behind either
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with replacing(*outputs) as temporaries:
@@ -332,6 +339,8 @@ def _run_engage(args):
             write_text(temporary, text)
         if figure is not None:
             figure.savefig(temporaries[2], format="png")
+        if force_figure is not None:
+            force_figure.savefig(temporaries[3], format="png")
 
     m, p = engagement.shape
     depth = engagement.depth_of_cut

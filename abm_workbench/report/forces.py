@@ -1,6 +1,7 @@
 """Figures and a small HTML report of cutting forces and of a feed schedule (matplotlib, Agg; no FreeCAD).
 
-- :func:`force_over_phi_figure`: force components and resultant over φ at chosen CL points.
+- :func:`force_over_phi_figure`: force components and resultant over φ at chosen CL points
+  (and the peak force along the pass; ``engage --forces --plot R.png`` writes it as R.forces.png).
 - :func:`schedule_figure`: peak force (or cut area) and feed along the pass, before and after.
 - :func:`write_schedule_report`: ``index.html`` (the figures embedded), the figures as PNG and
   ``schedule.csv`` (one row per CL point) into a folder.
@@ -35,15 +36,30 @@ def chosen_cl(forces, count=SHOWN_CL):
     return sorted(dict.fromkeys(picks))[:count]
 
 
-def force_over_phi_figure(forces, cls, *, after=None):
+def force_over_phi_figure(forces, cls, *, after=None, along=False):
     """Figure: one row per CL index of `cls`; F_x, F_y, F_z (global frame) and |F| over φ (N).
 
     after: Forces of the same pass at scheduled feeds, drawn dashed beside the solid `forces`.
+    along: add a first row with the peak and mean resultant per CL point along the pass.
     """
-    figure = Figure(figsize=(11, 3.2 * len(cls) + 0.6), dpi=100, layout="constrained")
+    rows = len(cls) + bool(along)
+    figure = Figure(figsize=(11, 3.2 * rows + 0.6), dpi=100, layout="constrained")
     FigureCanvasAgg(figure)
-    for row, cl in enumerate(cls):
-        axes = figure.add_subplot(len(cls), 1, row + 1)
+    if along:
+        axes = figure.add_subplot(rows, 1, 1)
+        index = np.arange(forces.shape[0])
+        axes.plot(index, forces.peak, ".-", color="black", label="peak |F| over φ")
+        axes.plot(index, forces.mean, ".-", color="0.55", label="mean |F| over φ")
+        for cl in cls:
+            axes.axvline(cl, color="tab:purple", linestyle=":", linewidth=1.0)
+        axes.set(xlabel="CL point index (dotted: shown below)", ylabel="force on the tool (N)",
+                 title="Peak and mean resultant force along the pass")
+        axes.set_xlim(-0.5, index.size - 0.5)
+        axes.set_ylim(0.0, 1.15 * max(forces.peak.max(), 1e-9))
+        axes.legend(loc="lower right", fontsize=9)
+        axes.grid(alpha=0.3)
+    for row, cl in enumerate(cls, start=int(bool(along))):
+        axes = figure.add_subplot(rows, 1, row + 1)
         for label, values, style in (("", forces, "-"), (" after", after, "--")):
             if values is None:
                 continue

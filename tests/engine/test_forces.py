@@ -368,3 +368,10 @@ def test_engage_helical_forces_from_the_command_line(case, capsys):
     assert status == 2 and err.startswith("abm: error: --helix: helix must be within (-90, 90) degrees")
     status, _, err = run(BASE + ["--helix", "20", "--method", "zmap"], capsys)
     assert status == 2 and err.startswith("abm: error: --helix needs --method abm")
+
+
+def test_engage_forces_plot(case, capsys):
+    status, out, err = run(BASE + ["--forces", "--material", "al6082-t6", "--plot", "R.png"], capsys)
+    assert (status, err) == (0, "")
+    assert out.splitlines()[0].endswith("wrote R.csv, R.summary.csv, R.png, R.forces.png")
+    assert (case / "R.forces.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

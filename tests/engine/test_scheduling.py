@@ -233,3 +233,13 @@ def test_schedule_option_errors(case, capsys, options, message):
     status, _, err = run(SCHEDULE + options, capsys)
     assert status == 2 and message in err, err
     assert sorted(os.listdir(case)) == ["job.json", "stock.json", "toolpath.csv"]
+
+
+def test_helical_schedule_keeps_the_limit(model_pass):
+    stock, path, _ = model_pass
+    tool = Tool(12.0, 2, 30.0, 30.0)
+    forces = pass_forces(stock, tool, path, SETTINGS, COEFFICIENTS)
+    limit = 0.7 * forces.peak.max()
+    plan = schedule(forces, limit)
+    again = pass_forces(stock, tool, path, SETTINGS, COEFFICIENTS, feed=plan.feed)
+    assert (again.peak <= limit + 1e-9).all() and np.isclose(again.peak, limit, rtol=1e-9).any()
