@@ -134,7 +134,8 @@ def _build_parser():
     _force_arguments(schedule_parser, always=True)
     limits = schedule_parser.add_argument_group("limit (one of)").add_mutually_exclusive_group(required=True)
     limits.add_argument("--max-force", type=float, metavar="N", help="peak resultant force on the tool (N)")
-    limits.add_argument("--max-area", type=float, metavar="MM2", help="peak total cut area of the cutting flutes (mm²)")
+    limits.add_argument("--max-area", type=float, metavar="MM2",
+                        help="peak total cut area of the cutting flutes (mm²)")
     schedule_parser.add_argument("--min-feed", type=float, metavar="MM",
                                  help="lowest feed per tooth allowed (mm), default a tenth of the programmed feed; "
                                       "CL points that cannot meet the limit at or above it get it, with a warning")
@@ -161,7 +162,7 @@ def _force_arguments(parser, *, always=False):
     for name in COEFFICIENT_NAMES:
         unit = "N/mm²" if name.endswith("c") else "N/mm"
         group.add_argument(f"--{name}", type=float, metavar=unit.replace("²", "2"),
-                           help=f"{name[:1].upper()}_{name[1:]} ({unit})" + ("" if name.endswith("c") else ", default 0"))
+                           help=f"K_{name[1:]} ({unit})" + ("" if name.endswith("c") else ", default 0"))
     group.add_argument("--immersion", metavar="START:END",
                        help="angles (deg) where a flute cuts, 0 <= START < END <= 180; default 0:180 (full slot); "
                             "--phi-range only chooses the angles reported")

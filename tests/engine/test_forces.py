@@ -8,14 +8,24 @@
 - Sign convention at φ = 90°, immersion bounds, input validation.
 """
 
+import subprocess
+import sys
+import textwrap
+
 import numpy as np
 import pytest
+from scipy.integrate import quad
 
 from abm_workbench.engine import CutSettings, Staircase, Tool, Toolpath
-from abm_workbench.forces import (MATERIALS, Coefficients, check_immersion, edge_forces, in_immersion, material,
-                                  pass_forces)
+from abm_workbench.formats.results_csv import FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, RESULT_COLUMNS, read_results
+from abm_workbench.formats.staircase_json import load_staircase
+from abm_workbench.formats.toolpath_csv import load_toolpath
+from abm_workbench.forces import (MATERIALS, Coefficients, check_immersion, edge_forces, in_immersion,
+                                  interval_integrals, material, pass_forces)
+from tests.conftest import ROOT
 
 from .reference import StairData, _Stock, edge_lines, rotation
+from .test_cli import BASE, M, case, run  # noqa: F401  (case is a fixture)
 
 K = Coefficients(ktc=700.0, krc=210.0, kac=120.0, kte=25.0, kre=30.0, kae=4.0)
 
@@ -201,16 +211,6 @@ def test_shapes_are_checked():
         edge_forces(np.ones((2, 1, 3)), [0.0, 1.0, 2.0], np.eye(3)[None], 5.0, 0.0, -0.1, K)
 
 
-# The command line: engage --forces.
-
-from abm_workbench.engine import CutSettings as _Settings  # noqa: E402
-from abm_workbench.formats.results_csv import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, RESULT_COLUMNS,  # noqa: E402
-                                               read_results)
-from abm_workbench.formats.staircase_json import load_staircase  # noqa: E402
-from abm_workbench.formats.toolpath_csv import load_toolpath  # noqa: E402
-
-from .test_cli import BASE, M, case, run  # noqa: E402,F401  (case is a fixture)
-
 
 def test_engage_forces_columns(case, capsys):
     status, out, err = run(BASE + ["--forces", "--material", "AL7075-T6", "--kae", "1.5", "--immersion", "30:150",
@@ -224,7 +224,7 @@ def test_engage_forces_columns(case, capsys):
     # The same numbers as the Python API (the CSV keeps 10 decimals).
     coefficients = Coefficients(**{**vars(material("al7075-t6")), "kae": 1.5})
     forces = pass_forces(load_staircase("stock.json"), Tool(12, 2, 30), load_toolpath("toolpath.csv"),
-                         _Settings(0.1, 10, 0, 360, 5, 4000), coefficients, immersion=(30, 150))
+                         CutSettings(0.1, 10, 0, 360, 5, 4000), coefficients, immersion=(30, 150))
     np.testing.assert_allclose(results["fx"], forces.xyz[..., 0].reshape(-1), atol=1e-9)
     np.testing.assert_allclose(results["torque"], forces.torque.reshape(-1), atol=1e-9)
     np.testing.assert_allclose(results["power"], forces.power.reshape(-1), atol=1e-9)
@@ -248,12 +248,6 @@ def test_engage_force_option_errors(case, capsys, options, message):
     assert status == 2 and err.startswith(f"abm: error: {message}"), err
     assert not (case / "R.csv").exists()
 
-
-# Helical flutes.
-
-from scipy.integrate import quad  # noqa: E402
-
-from abm_workbench.forces import interval_integrals  # noqa: E402
 
 
 @pytest.mark.parametrize("kappa", [0.0, 1e-9, 0.05, -0.3, 2.0])
@@ -362,7 +356,7 @@ def test_engage_helical_forces_from_the_command_line(case, capsys):
     assert out.splitlines()[1].endswith("step 5° [job.json], helix 30° [--helix]")
     results = read_results(case / "R.csv")
     forces = pass_forces(load_staircase("stock.json"), Tool(12, 2, 30, 30), load_toolpath("toolpath.csv"),
-                         _Settings(0.1, 10, 0, 180, 5, 4000), Coefficients(700, 210, 120))
+                         CutSettings(0.1, 10, 0, 180, 5, 4000), Coefficients(700, 210, 120))
     np.testing.assert_allclose(results["fz"], forces.xyz[..., 2].reshape(-1), atol=1e-9)
     status, _, err = run(BASE + ["--helix", "95"], capsys)
     assert status == 2 and err.startswith("abm: error: --helix: helix must be within (-90, 90) degrees")
@@ -375,3 +369,29 @@ def test_engage_forces_plot(case, capsys):
     assert (status, err) == (0, "")
     assert out.splitlines()[0].endswith("wrote R.csv, R.summary.csv, R.png, R.forces.png")
     assert (case / "R.forces.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_forces_and_scheduling_are_pure_numpy():
+    script = textwrap.dedent(
+        """
+        import sys
+        class Block:
+            def find_spec(self, name, path=None, target=None):
+                if name.split(".")[0] in ("FreeCAD", "FreeCADGui", "Part", "Mesh", "matplotlib"):
+                    raise ImportError("blocked: " + name)
+        sys.meta_path.insert(0, Block())
+        from abm_workbench.engine import CutSettings, Staircase, Tool, Toolpath
+        from abm_workbench.forces import material, pass_forces
+        from abm_workbench.scheduling import schedule
+        from abm_workbench.formats.apt_writer import apt_text
+        stock = Staircase(0, 50, -10, 10, -5, [2.0, 4.0], [[[25.0, y] for y in range(-10, 11, 4)]])
+        path = Toolpath([[20, 0, 0]], [0], [10])
+        forces = pass_forces(stock, Tool(10, 2, 20, 30), path, CutSettings(0.1), material("al7075-t6"))
+        plan = schedule(forces, 0.5 * forces.peak.max())
+        assert plan.feed[0] < 0.1 and apt_text(path, plan.feed, flutes=2, diameter=10, flute_length=20)
+        print("ok")
+        """
+    )
+    run = subprocess.run([sys.executable, "-c", script], cwd=ROOT, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "ok"

@@ -20,6 +20,8 @@ from abm_workbench.formats.toolpath_csv import load_toolpath
 from abm_workbench.forces import material, pass_forces
 from abm_workbench.scheduling import force_feed_bounds, programmed_feed, schedule
 
+from .test_cli import M, case, run  # noqa: F401  (case is a fixture)
+
 MODEL = os.path.join(os.path.dirname(__file__), "..", "..", "resources", "models", "model_test_1")
 TOOL = Tool(12.0, 2, 30.0)
 SETTINGS = CutSettings(0.1, 10.0, 0.0, 180.0, 1.0, spindle_rpm=4000.0)
@@ -173,10 +175,6 @@ def test_apt_writer_refuses_a_zero_feed(model_pass, tmp_path):
         write_feed_toolpath(target, path, np.nan, flutes=2, diameter=12.0, flute_length=30.0)
     assert target.read_text() == "old" and os.listdir(tmp_path) == ["p.apt"]
 
-
-# The command line: schedule.
-
-from .test_cli import M, case, run  # noqa: E402,F401  (case is a fixture)
 
 SCHEDULE = ["schedule", "--stock", "stock.json", "--toolpath", "toolpath.csv", "--job", "job.json",
             "--material", "al7075-t6"]
