@@ -441,8 +441,8 @@ def _run_schedule(args):
     option = f"--max-{kind}"
     if not (np.isfinite(limit) and limit > 0.0):
         raise InputError(f"{option}: must be a positive number, got {limit:g}")
-    if args.min_feed is not None and not (np.isfinite(args.min_feed) and args.min_feed >= 0.0):
-        raise InputError(f"--min-feed: must be a feed per tooth >= 0 mm, got {args.min_feed:g}")
+    if args.min_feed is not None and not (np.isfinite(args.min_feed) and args.min_feed > 0.0):
+        raise InputError(f"--min-feed: must be a positive feed per tooth (mm), got {args.min_feed:g}")
     if os.path.splitext(args.out)[1].lower() not in (".apt", ".cls", ".csv"):
         raise InputError(f"{args.out}: --out must end in .apt, .cls or .csv")
     job, toolpath, parameters, tool, settings = _prepare(args)
