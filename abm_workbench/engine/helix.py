@@ -368,7 +368,8 @@ def _clip_to_immersion(intervals, helices, window):
     n = first[..., None] + np.arange(max(count, 1))                        # (N, K, W)
     w_low = np.maximum(lo_w + 360.0 * n, low[..., None])
     w_high = np.minimum(hi_w + 360.0 * n, high[..., None])
-    l_a, l_b = (psi0[..., None] - w_low) / slope, (psi0[..., None] - w_high) / slope
+    with np.errstate(over="ignore", invalid="ignore"):
+        l_a, l_b = (psi0[..., None] - w_low) / slope, (psi0[..., None] - w_high) / slope
     new_start = np.maximum(np.minimum(l_a, l_b), start[..., None])
     new_end = np.minimum(np.maximum(l_a, l_b), end[..., None])
     with np.errstate(invalid="ignore"):

@@ -88,7 +88,7 @@ class SineLines:
             return np.concatenate(ends, axis=1)
         rho = np.hypot(self.a, self.b)
         theta0 = self.psi0 + np.arctan2(self.b, self.a)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             ratio = self.c / (self.kappa * rho)
         has = (rho > 0.0) & (np.abs(ratio) < 1.0)
         alpha = np.arccos(np.clip(np.where(has, ratio, 0.0), -1.0, 1.0))
@@ -99,7 +99,8 @@ class SineLines:
         for sign in (1.0, -1.0):
             first = np.ceil((low - sign * alpha) / (2.0 * np.pi))
             theta = sign * alpha[:, None] + 2.0 * np.pi * (first[:, None] + np.arange(turns))
-            l = (theta0[:, None] - theta) / self.kappa
+            with np.errstate(over="ignore", invalid="ignore"):
+                l = (theta0[:, None] - theta) / self.kappa
             ok = has[:, None] & (theta <= high[:, None]) & (l > 0.0) & (l < self.length[:, None])
             columns.append(np.where(ok, l, np.nan))
         knots = np.sort(np.concatenate(columns, axis=1), axis=1)
