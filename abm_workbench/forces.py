@@ -181,10 +181,7 @@ class Forces:
 
     def with_feed(self, feed):
         """The same pass at feed per tooth `feed` (scalar or (m,), mm)."""
-        feed = np.broadcast_to(np.asarray(feed, dtype=float), (self.shape[0],)).copy()
-        if not np.isfinite(feed).all() or (feed < 0.0).any():
-            raise ValueError("feed per tooth must be finite and not negative at every CL point")
-        return dataclasses.replace(self, feed=feed)
+        return dataclasses.replace(self, feed=_feeds(feed, self.shape[0]))
 
     @property
     def tool_frame(self):
@@ -248,6 +245,17 @@ class Forces:
         return self.xyz[:, self._revolution()].mean(axis=1)
 
 
+def _feeds(feed, m):
+    """Feed per tooth (m,) mm from a scalar or (m,) array; ValueError unless finite and ≥ 0."""
+    try:
+        feed = np.broadcast_to(np.asarray(feed, dtype=float), (m,)).copy()
+    except ValueError:
+        raise ValueError(f"feed per tooth must be a number or have shape ({m},), got {np.shape(feed)}") from None
+    if not np.isfinite(feed).all() or (feed < 0.0).any():
+        raise ValueError("feed per tooth must be finite and not negative at every CL point")
+    return feed
+
+
 def edge_forces(lengths, phi_deg, rotation, radius, inclination, feed, coefficients, *, immersion=FULL_SLOT,
                 spindle_rpm=None):
     """Forces of straight flutes from their engaged lengths.
@@ -280,16 +288,14 @@ def edge_forces(lengths, phi_deg, rotation, radius, inclination, feed, coefficie
 
     k = coefficients
     chip = length * thickness[:, None, :]                             # b·h/f (mm)
-    forces = Forces(
-        phi=phi, rotation=rotation, radius=float(radius),
-        feed=np.broadcast_to(np.asarray(feed, dtype=float), (lengths.shape[1],)).copy(),
+    return Forces(
+        phi=phi, rotation=rotation, radius=float(radius), feed=_feeds(feed, lengths.shape[1]),
         spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
         cutting=tool_frame(k.ktc * chip, k.krc * chip, k.kac * chip),
         edge=tool_frame(k.kte * length, k.kre * length, k.kae * length),
         cutting_tangential=k.ktc * chip.sum(axis=0), edge_tangential=k.kte * length.sum(axis=0),
         area_per_feed=chip.sum(axis=0),
     )
-    return forces.with_feed(forces.feed)
 
 
 def interval_integrals(start, end, psi0, kappa):
@@ -330,15 +336,15 @@ def helical_forces(flutes, rotation, coefficients, *, feed=None, spindle_rpm=Non
         """(m, p, 3) tool-frame vector of per-flute (m, p, Z) components, summed over the flutes."""
         return np.stack([c.sum(axis=-1) for c in components], axis=-1)
 
-    forces = Forces(
+    return Forces(
         phi=np.asarray(flutes.phi, dtype=float), rotation=rotation, radius=float(flutes.radius),
-        feed=np.full(m, float(flutes.feed_per_tooth)), spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
+        feed=_feeds(flutes.feed_per_tooth if feed is None else feed, m),
+        spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
         cutting=scale * summed(-k.ktc * i_sc - k.krc * i_ss, k.ktc * i_ss - k.krc * i_sc, k.kac * i_s),
         edge=summed(-k.kte * i_c - k.kre * i_s, k.kte * i_s - k.kre * i_c, k.kae * width),
         cutting_tangential=scale * k.ktc * i_s.sum(axis=-1), edge_tangential=k.kte * width.sum(axis=-1),
         area_per_feed=scale * i_s.sum(axis=-1),
     )
-    return forces if feed is None else forces.with_feed(feed)
 
 
 def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL_SLOT, feed=None, first=None):

@@ -82,7 +82,7 @@ def schedule_figure(forces, plan):
     before and after with the limit, and the feed per tooth programmed and scheduled."""
     figure = Figure(figsize=(11, 7.5), dpi=100, layout="constrained")
     FigureCanvasAgg(figure)
-    top, bottom = figure.add_subplot(2, 1, 1), None
+    top = figure.add_subplot(2, 1, 1)
     bottom = figure.add_subplot(2, 1, 2, sharex=top)
     index = np.arange(plan.feed.size)
     unit, what = ("N", "peak resultant force") if plan.kind == "force" else ("mm²", "peak total cut area")

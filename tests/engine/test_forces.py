@@ -209,6 +209,8 @@ def test_shapes_are_checked():
         edge_forces(np.ones((2, 1, 3)), [0.0, 1.0, 2.0], np.eye(3), 5.0, 0.0, 0.1, K)
     with pytest.raises(ValueError, match="feed per tooth"):
         edge_forces(np.ones((2, 1, 3)), [0.0, 1.0, 2.0], np.eye(3)[None], 5.0, 0.0, -0.1, K)
+    with pytest.raises(ValueError, match=r"feed per tooth must be a number or have shape \(1,\), got \(2,\)"):
+        edge_forces(np.ones((2, 1, 3)), [0.0, 1.0, 2.0], np.eye(3)[None], 5.0, 0.0, [0.1, 0.2], K)
 
 
 
