@@ -256,10 +256,11 @@ def _inside(stock, helices, l):
     with np.errstate(invalid="ignore"):
         xyz = helices.points(np.where(np.isnan(l), 0.0, l))
     x, y, z = xyz[..., 0], xyz[..., 1], xyz[..., 2]
-    section = stock.section_at(x, y)
     box = ((x >= stock.x_min) & (x <= stock.x_max) & (y >= stock.y_min) & (y <= stock.y_max)
-           & (z >= stock.base_z))
-    return box & (z <= stock.z_top[np.clip(section, 0, stock.n_sections - 1)]) & ~np.isnan(l), section
+           & (z >= stock.base_z) & (z <= stock.z_top.max()) & ~np.isnan(l))
+    section = np.full(l.shape, -1)
+    section[box] = stock.section_at(x[box], y[box])
+    return box & (z <= stock.z_top[np.clip(section, 0, stock.n_sections - 1)]), section
 
 
 def _solve(stock, models, helices):
@@ -377,12 +378,14 @@ def _clip_to_immersion(intervals, helices, window):
     # ψ falls along l when slope > 0: the end's ψ is the window's low side, else its high side.
     cut = np.where(slope > 0.0, w_low > low[..., None], w_high < high[..., None])
     shape = ok.shape
-    flat = ok.reshape(shape[0], -1)
     fields = {"start": new_start, "end": new_end,
               "end_surface": np.where(cut, _IMMERSION, intervals["end_surface"][..., None]),
               "end_wall": np.where(cut, -1, intervals["end_wall"][..., None]),
               "section": np.broadcast_to(intervals["section"][..., None], shape)}
-    out = _compact(flat, **{name: v.reshape(shape[0], -1) for name, v in fields.items()})
+    flat = ok.reshape(shape[0], -1)
+    order = np.argsort(np.where(flat, new_start.reshape(shape[0], -1), np.inf), axis=1, kind="stable")
+    fields = {name: np.take_along_axis(v.reshape(shape[0], -1), order, axis=1) for name, v in fields.items()}
+    out = _compact(np.take_along_axis(flat, order, axis=1), **fields)
     out["inside_section"] = intervals["inside_section"]
     return out
 
