@@ -153,7 +153,8 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     cuts only where its own angle ψ_k(l) lies in [start + 360n, end + 360n] for some integer
     n (ψ mod 360 in [start, end] for 0 ≤ start ≤ end < 360); a range of 360° or more
     restricts nothing. Work goes in chunks of about `chunk_instants` (CL point, angle,
-    flute) triples; `progress(done, total)` (CL points) after each chunk.
+    flute) triples (fewer when the helix makes more than four turns over the flute length);
+    `progress(done, total)` (CL points) after each chunk.
     Returns a FluteEngagement.
     """
     window = _immersion_window(immersion)
@@ -163,7 +164,9 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     rot = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
     psi0 = np.radians(phi[:, None] + 360.0 * np.arange(z) / z)                  # (p, Z)
     models = WallModels(stock)
-    step = max(1, int(chunk_instants) // max(p * z, 1))
+    # Per edge, the work and memory grow with the turns the helix makes over the flute.
+    turns = abs(kappa) * tool.flute_length / (2.0 * np.pi)
+    step = max(1, int(int(chunk_instants) / max(1.0, turns / 4.0)) // max(p * z, 1))
     chunks = []
     for first in range(0, m, step):
         last = min(m, first + step)
