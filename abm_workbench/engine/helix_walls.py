@@ -144,7 +144,6 @@ def wall_crossings(models, xs, ys, rows, walls, lo, hi):
     x1, x2 = xs.bounds()
     y1, y2 = ys.bounds()
     stock = models.stock
-    found = ([], [], [])
     brackets = ([], [], [], [])
     a, b = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
     rows, walls = np.asarray(rows), np.asarray(walls)
@@ -184,8 +183,8 @@ def wall_crossings(models, xs, ys, rows, walls, lo, hi):
     everyone = np.arange(rows.size)
     g_a, _ = g_and_slope(everyone, a)
     g_b, _ = g_and_slope(everyone, b)
-    last = np.ones(rows.size, dtype=bool)  # a root at b is kept; duplicates are harmless breakpoints
-    sign_change = (np.sign(g_a) * np.sign(g_b) < 0.0) | (g_a == 0.0) | ((g_b == 0.0) & last)
+    # A root on a piece's end may be found from both neighbours: a repeated breakpoint is harmless.
+    sign_change = (np.sign(g_a) * np.sign(g_b) < 0.0) | (g_a == 0.0) | (g_b == 0.0)
     keep = np.flatnonzero(sign_change)
     if keep.size == 0:
         return rows[:0], walls[:0], a[:0]
