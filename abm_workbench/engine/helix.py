@@ -153,7 +153,8 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     cuts only where its own angle ψ_k(l) lies in [start + 360n, end + 360n] for some integer
     n (ψ mod 360 in [start, end] for 0 ≤ start ≤ end < 360); a range of 360° or more
     restricts nothing. Work goes in chunks of about `chunk_instants` (CL point, angle,
-    flute) triples; `progress(done, total)` (CL points) after each chunk.
+    flute) triples (fewer when the helix makes more than four turns over the flute length);
+    `progress(done, total)` (CL points) after each chunk.
     Returns a FluteEngagement.
     """
     window = _immersion_window(immersion)
@@ -163,7 +164,9 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     rot = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
     psi0 = np.radians(phi[:, None] + 360.0 * np.arange(z) / z)                  # (p, Z)
     models = WallModels(stock)
-    step = max(1, int(chunk_instants) // max(p * z, 1))
+    # Per edge, the work and memory grow with the turns the helix makes over the flute.
+    turns = abs(kappa) * tool.flute_length / (2.0 * np.pi)
+    step = max(1, int(int(chunk_instants) / max(1.0, turns / 4.0)) // max(p * z, 1))
     chunks = []
     for first in range(0, m, step):
         last = min(m, first + step)
@@ -256,10 +259,11 @@ def _inside(stock, helices, l):
     with np.errstate(invalid="ignore"):
         xyz = helices.points(np.where(np.isnan(l), 0.0, l))
     x, y, z = xyz[..., 0], xyz[..., 1], xyz[..., 2]
-    section = stock.section_at(x, y)
     box = ((x >= stock.x_min) & (x <= stock.x_max) & (y >= stock.y_min) & (y <= stock.y_max)
-           & (z >= stock.base_z))
-    return box & (z <= stock.z_top[np.clip(section, 0, stock.n_sections - 1)]) & ~np.isnan(l), section
+           & (z >= stock.base_z) & (z <= stock.z_top.max()) & ~np.isnan(l))
+    section = np.full(l.shape, -1)
+    section[box] = stock.section_at(x[box], y[box])
+    return box & (z <= stock.z_top[np.clip(section, 0, stock.n_sections - 1)]), section
 
 
 def _solve(stock, models, helices):
@@ -377,12 +381,14 @@ def _clip_to_immersion(intervals, helices, window):
     # ψ falls along l when slope > 0: the end's ψ is the window's low side, else its high side.
     cut = np.where(slope > 0.0, w_low > low[..., None], w_high < high[..., None])
     shape = ok.shape
-    flat = ok.reshape(shape[0], -1)
     fields = {"start": new_start, "end": new_end,
               "end_surface": np.where(cut, _IMMERSION, intervals["end_surface"][..., None]),
               "end_wall": np.where(cut, -1, intervals["end_wall"][..., None]),
               "section": np.broadcast_to(intervals["section"][..., None], shape)}
-    out = _compact(flat, **{name: v.reshape(shape[0], -1) for name, v in fields.items()})
+    flat = ok.reshape(shape[0], -1)
+    order = np.argsort(np.where(flat, new_start.reshape(shape[0], -1), np.inf), axis=1, kind="stable")
+    fields = {name: np.take_along_axis(v.reshape(shape[0], -1), order, axis=1) for name, v in fields.items()}
+    out = _compact(np.take_along_axis(flat, order, axis=1), **fields)
     out["inside_section"] = intervals["inside_section"]
     return out
 

@@ -27,11 +27,15 @@ def safeguarded_root(evaluate, lo, hi, f_lo, f_hi):
     evaluate(rows, l) -> (f, slope), each like l: the function and its derivative for the
     rows `rows` (int array into lo) at l; a NaN slope means bisection. Safeguarded Newton: a
     step that leaves the bracket is replaced by bisection and the bracket shrinks every step;
-    only unfinished rows are evaluated. lo, hi, f_lo, f_hi: (N,). Returns (N,) roots, to
+    only unfinished rows are evaluated; the first guess is the secant's root. lo, hi, f_lo,
+    f_hi: (N,). Returns (N,) roots, to
     HELIX_ROOT_TOL mm.
     """
     lo, hi = np.array(lo, dtype=float), np.array(hi, dtype=float)
-    x = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, 0.5 * (lo + hi)))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = lo - f_lo * (hi - lo) / (f_hi - f_lo)  # the secant's root: exact for a straight edge on a plane
+    x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
+    x = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, x))
     negative_lo = f_lo < 0.0
     active = np.flatnonzero((f_lo != 0.0) & (f_hi != 0.0))
     for _ in range(ROOT_MAX_ITER):

@@ -20,7 +20,6 @@ MIN_WIDTH of each other and the piece between them is below LENGTH_EPS.
 """
 
 import numpy as np
-from numpy.polynomial import polynomial as npoly
 
 from .helix_roots import safeguarded_root
 from .polynomials import compose_linear, derivative, horner, real_roots_unit
@@ -33,31 +32,44 @@ EVAL_MARGIN = 1e-12
 
 
 def _max_abs_unit(coefficients):
-    """max |p| over [0, 1] of a polynomial (ascending coefficients), exact: ends and critical points."""
-    c = np.trim_zeros(np.asarray(coefficients, dtype=float), "b")
-    if c.size == 0:
-        return 0.0
-    u = np.array([0.0, 1.0])
-    if c.size > 2:
-        critical = real_roots_unit(derivative(c)[None, :])[0]
-        u = np.concatenate([u, critical[~np.isnan(critical)]])
-    return float(np.abs(horner(c, u)).max())
+    """max |p| over [0, 1] of each polynomial (S, d+1) ascending -> (S,), exact: ends and critical points."""
+    c = np.atleast_2d(np.asarray(coefficients, dtype=float))
+    u = np.column_stack([np.zeros(c.shape[0]), np.ones(c.shape[0])])
+    if c.shape[1] > 2:
+        u = np.concatenate([u, real_roots_unit(derivative(c))], axis=1)
+    return np.nanmax(np.abs(horner(c[:, None, :], u)), axis=1)
 
 
 def _min_abs_unit(coefficients):
-    """min |p| over [0, 1] of a polynomial (ascending coefficients): 0 if it has a root there."""
-    c = np.trim_zeros(np.asarray(coefficients, dtype=float), "b")
-    if c.size == 0:
-        return 0.0
-    u = np.array([0.0, 1.0])
-    if c.size > 1:
-        roots = real_roots_unit(c[None, :])[0]
-        if (~np.isnan(roots)).any():
-            return 0.0
-    if c.size > 2:
-        critical = real_roots_unit(derivative(c)[None, :])[0]
-        u = np.concatenate([u, critical[~np.isnan(critical)]])
-    return float(np.abs(horner(c, u)).min())
+    """min |p| over [0, 1] of each polynomial (S, d+1) ascending -> (S,): 0 where it has a root there."""
+    c = np.atleast_2d(np.asarray(coefficients, dtype=float))
+    low = np.abs(c.sum(axis=1))  # at u = 1; the rest below
+    if c.shape[1] > 1:
+        u = np.column_stack([np.zeros(c.shape[0]), np.ones(c.shape[0])])
+        if c.shape[1] > 2:
+            u = np.concatenate([u, real_roots_unit(derivative(c))], axis=1)
+        low = np.nanmin(np.abs(horner(c[:, None, :], u)), axis=1)
+        low = np.where((~np.isnan(real_roots_unit(c))).any(axis=1), 0.0, low)
+    return low
+
+
+def _times(p, q):
+    """Row-wise products of polynomials (S, a) and (S, b), ascending -> (S, a + b − 1)."""
+    out = np.zeros((p.shape[0], p.shape[1] + q.shape[1] - 1))
+    for i in range(p.shape[1]):
+        out[:, i:i + q.shape[1]] += p[:, i:i + 1] * q
+    return out
+
+
+def _minus(p, q):
+    """Row-wise differences of polynomials (S, a) and (S, b), ascending."""
+    width = max(p.shape[1], q.shape[1])
+    return np.pad(p, ((0, 0), (0, width - p.shape[1]))) - np.pad(q, ((0, 0), (0, width - q.shape[1])))
+
+
+def _slope_rows(c):
+    """Derivatives (S, max(d, 1)) of polynomials (S, d+1), ascending (a constant gives 0)."""
+    return derivative(c) if c.shape[1] > 1 else np.zeros((c.shape[0], 1))
 
 
 def quintic_bounds(wall, y_min, y_max):
@@ -68,7 +80,7 @@ def quintic_bounds(wall, y_min, y_max):
     scale = t_hi - t_lo
     # p(t) over [t_lo, t_hi] is p(t_lo + scale·u) over u in [0, 1].
     on_unit = [compose_linear(c, np.float64(t_lo), np.float64(scale)) for c in (first, second)]
-    return _max_abs_unit(on_unit[0]) / wall.y_half, _max_abs_unit(on_unit[1]) / wall.y_half ** 2
+    return float(_max_abs_unit(on_unit[0])[0]) / wall.y_half, float(_max_abs_unit(on_unit[1])[0]) / wall.y_half ** 2
 
 
 def spline_bounds(wall):
@@ -76,23 +88,18 @@ def spline_bounds(wall):
 
     Per span, with x = X/Ω, y = Y/Ω in the local u: dx/du = A/Ω², dy/du = B/Ω² where
     A = X′Ω − XΩ′, B = Y′Ω − YΩ′, so W′ = A/B and W″ = (A′B − AB′)Ω²/B³: bounded by the
-    exact max and min of |polynomials| over [0, 1]. ValueError if dy/du vanishes on a span
-    (the curve has a vertical tangent in y and W″ is unbounded).
+    exact max and min of |polynomials| over [0, 1], all spans at once. ValueError if dy/du
+    vanishes on a span (the curve has a vertical tangent in y and W″ is unbounded).
     """
-    s1 = s2 = 0.0
-    for j in range(wall.spans_x.shape[0]):
-        x, y, w = wall.spans_x[j], wall.spans_y[j], wall.spans_w[j]
-        dx, dy, dw = (derivative(c) for c in (x, y, w))
-        a = npoly.polysub(npoly.polymul(dx, w), npoly.polymul(x, dw))
-        b = npoly.polysub(npoly.polymul(dy, w), npoly.polymul(y, dw))
-        low = _min_abs_unit(b)
-        if low <= 0.0:
-            raise ValueError(f"B-spline wall: dy/du vanishes on span {j}; a helical edge needs a wall with bounded curvature")
-        curl = npoly.polymul(npoly.polysub(npoly.polymul(derivative(a), b), npoly.polymul(a, derivative(b))),
-                             npoly.polymul(w, w))
-        s1 = max(s1, _max_abs_unit(a) / low)
-        s2 = max(s2, _max_abs_unit(curl) / low ** 3)
-    return s1, s2
+    x, y, w = wall.spans_x, wall.spans_y, wall.spans_w
+    a = _minus(_times(_slope_rows(x), w), _times(x, _slope_rows(w)))
+    b = _minus(_times(_slope_rows(y), w), _times(y, _slope_rows(w)))
+    low = _min_abs_unit(b)
+    if (low <= 0.0).any():
+        j = int(np.flatnonzero(low <= 0.0)[0])
+        raise ValueError(f"B-spline wall: dy/du vanishes on span {j}; a helical edge needs a wall with bounded curvature")
+    curl = _times(_minus(_times(_slope_rows(a), b), _times(a, _slope_rows(b))), _times(w, w))
+    return float((_max_abs_unit(a) / low).max()), float((_max_abs_unit(curl) / low ** 3).max())
 
 
 def _spline_x_and_slope(wall, y):
@@ -137,7 +144,6 @@ def wall_crossings(models, xs, ys, rows, walls, lo, hi):
     x1, x2 = xs.bounds()
     y1, y2 = ys.bounds()
     stock = models.stock
-    found = ([], [], [])
     brackets = ([], [], [], [])
     a, b = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
     rows, walls = np.asarray(rows), np.asarray(walls)
@@ -177,8 +183,8 @@ def wall_crossings(models, xs, ys, rows, walls, lo, hi):
     everyone = np.arange(rows.size)
     g_a, _ = g_and_slope(everyone, a)
     g_b, _ = g_and_slope(everyone, b)
-    last = np.ones(rows.size, dtype=bool)  # a root at b is kept; duplicates are harmless breakpoints
-    sign_change = (np.sign(g_a) * np.sign(g_b) < 0.0) | (g_a == 0.0) | ((g_b == 0.0) & last)
+    # A root on a piece's end may be found from both neighbours: a repeated breakpoint is harmless.
+    sign_change = (np.sign(g_a) * np.sign(g_b) < 0.0) | (g_a == 0.0) | (g_b == 0.0)
     keep = np.flatnonzero(sign_change)
     if keep.size == 0:
         return rows[:0], walls[:0], a[:0]

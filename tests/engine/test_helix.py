@@ -13,7 +13,7 @@ import os
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from scipy.integrate import quad
 from scipy.optimize import brentq
@@ -22,7 +22,7 @@ from abm_workbench.engine import CASES, SURFACES, CutSettings, Staircase, Tool, 
 from abm_workbench.jobs import load_job, load_path, load_stock
 
 from .reference import StairData, helix_points, reference_helix_sweep
-from .strategies import engine_stock, jobs
+from .strategies import Job, engine_stock, jobs, staircases
 from .test_spline_walls import bezier_twin, quintic_stock, random_path
 
 STRAIGHT_TOL = 1e-9  # mm, β = 0 against the straight engine
@@ -126,9 +126,24 @@ def assert_agrees_with_reference(job, helix, flutes, immersion):
     return result
 
 
+#: A case once found: the immersion range splits a flute's interval so that the later window
+#: comes first in ψ order; the intervals must still come out sorted along l.
+_SPLIT_BY_IMMERSION = Job(StairData(0.0, 8.0, 0.0, 10.0, 0.0, (2.0, 2.0), (tuple((3.0 + 0.2 * y, y) for y in (0, 2, 4, 6, 8, 10)),)),
+                          4.0, 5.026457513110646, np.array([[4.01414214, 0.01732051, 0.02236068]]), np.zeros(1),
+                          np.zeros(1), 0.0, 180.0, 30.0)
+
+
 @settings(max_examples=40, deadline=None)
 @given(jobs(max_points=2), _helix_angles(), st.integers(1, 4), _immersions())
+@example(_SPLIT_BY_IMMERSION, 53.0, 1, (np.sqrt(2.0) / 10.0, 315.0 + np.sqrt(2.0) / 10.0))
 def test_random_helices_agree_with_the_sampled_helix(job, helix, flutes, immersion):
+    assert_agrees_with_reference(job, helix, flutes, immersion)
+
+
+@settings(max_examples=25, deadline=None)
+@given(jobs(stocks=staircases(min_sections=2, curved=True), max_points=2), _helix_angles(), st.integers(2, 4),
+       _immersions())
+def test_random_helices_on_curved_walls_agree_with_the_sampled_helix(job, helix, flutes, immersion):
     assert_agrees_with_reference(job, helix, flutes, immersion)
 
 
