@@ -4,6 +4,10 @@ Commands:
   engage    cut geometry of one pass: stock + toolpath -> results CSV (+ PNG); --method zmap
             computes it with the discrete Z-map baseline instead of ABM (docs/ZMAP.md).
   validate  the engine against OpenCASCADE booleans at every instant -> HTML report (+ FCStd).
+  schedule  the feed per CL point that keeps the peak force (or cut area) under a limit -> a
+            re-scheduled toolpath (APT with FEDRAT records, or CSV) (+ HTML report).
+
+engage --forces adds the cutting forces of the linear edge-force model (docs/FORCES.md).
 
 The stock is a staircase JSON or a solid (STEP, BREP, FCStd: FreeCAD is then needed), the
 toolpath a CSV or an APT / CL file. Cutting parameters come from the command line, else the
@@ -18,8 +22,9 @@ made once the results are ready to be written.
 """
 
 import argparse
-import functools
 import contextlib
+import dataclasses
+import functools
 import os
 import re
 import sys
@@ -27,10 +32,11 @@ import time
 
 import numpy as np
 
-from .engine import engage, zmap_engage
+from .engine import engage, flute_engagement, zmap_engage
 from .errors import InputError
 from .formats import replacing
 from .formats.results_csv import results_text, summary_path, summary_text, write_text
+from .forces import COEFFICIENT_NAMES, FULL_SLOT, MATERIALS, Coefficients, check_immersion, material, pass_forces
 from .jobs import (PARAMETERS, SOLID_SUFFIXES, WALL_MODELS, WALL_POINTS, load_job, load_path, load_stock,
                    resolve_parameters, swept_y_window, tool_and_settings)
 
@@ -84,7 +90,8 @@ def _build_parser():
     _input_arguments(engage_parser)
     outputs = engage_parser.add_argument_group("outputs")
     outputs.add_argument("--out", required=True, metavar="R.csv", help="results CSV; the summary goes to R.summary.csv")
-    outputs.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass")
+    outputs.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass (with --forces, and "
+                         "R.forces.png: force along the pass and over φ at chosen CL points)")
     method = engage_parser.add_argument_group("method")
     method.add_argument("--method", choices=METHODS, default="abm",
                         help="abm: the analytical boundary method (default); zmap: the discrete Z-map baseline "
@@ -94,6 +101,7 @@ def _build_parser():
     method.add_argument("--edge-step", type=float, metavar="MM",
                         help="Z-map sampling step along the cutting edge (mm), default the grid size; "
                              "--method zmap only")
+    _force_arguments(engage_parser)
     engage_parser.set_defaults(run=_run_engage)
 
     validate_parser = commands.add_parser(
@@ -113,7 +121,51 @@ def _build_parser():
                          help="CL points (0-based) shown in detail and annotated in the FCStd "
                               "(default: deepest, shallowest, middle and largest error; the FCStd all)")
     validate_parser.set_defaults(run=_run_validate)
+
+    schedule_parser = commands.add_parser(
+        "schedule", help="force- or area-limited feed per CL point", description=(
+            "The feed per tooth at every CL point that keeps every instant at or under a limit on the peak "
+            "resultant force (--max-force) or the total cut area (--max-area), never above the programmed "
+            "feed (the APT file's FEDRAT per move, else --feed-per-tooth). Writes the re-scheduled toolpath: "
+            "APT / CL (.apt, .cls) with FEDRAT records in mm/min (mm/rev without a spindle speed), or CSV "
+            "with feed columns; with --report, an HTML report of force and feed along the pass before and after."),
+    )
+    _input_arguments(schedule_parser)
+    _force_arguments(schedule_parser, always=True)
+    limits = schedule_parser.add_argument_group("limit (one of)").add_mutually_exclusive_group(required=True)
+    limits.add_argument("--max-force", type=float, metavar="N", help="peak resultant force on the tool (N)")
+    limits.add_argument("--max-area", type=float, metavar="MM2",
+                        help="peak total cut area of the cutting flutes (mm²)")
+    schedule_parser.add_argument("--min-feed", type=float, metavar="MM",
+                                 help="lowest feed per tooth allowed (mm), default a tenth of the programmed feed; "
+                                      "CL points that cannot meet the limit at or above it get it, with a warning")
+    outputs = schedule_parser.add_argument_group("outputs")
+    outputs.add_argument("--out", required=True, metavar="P.apt|P.cls|P.csv", help="re-scheduled toolpath")
+    outputs.add_argument("--report", metavar="DIR", help="also write an HTML report (index.html, schedule.csv)")
+    schedule_parser.set_defaults(run=_run_schedule)
     return parser
+
+
+def _force_arguments(parser, *, always=False):
+    """The helix angle and the cutting-force options (engage: only with --forces; schedule: always used)."""
+    parser.add_argument("--helix", type=float, default=0.0, metavar="DEG",
+                        help="helix angle β of the flutes (deg), default 0: straight flutes; a helical tool's "
+                             "engagement comes from the helix solver (every flute's exact helix)")
+    group = parser.add_argument_group(
+        "cutting forces (linear edge-force model, docs/FORCES.md)" + ("" if always else ": with --forces"))
+    if not always:
+        group.add_argument("--forces", action="store_true",
+                           help="add fx, fy, fz (N, global frame), torque (N·mm) and power (W, with a spindle "
+                                "speed) to the results, peak and mean force per CL point to the summary")
+    group.add_argument("--material", type=str.lower, metavar="NAME",
+                       help=f"coefficients of a material: {', '.join(MATERIALS)}; --ktc ... override single values")
+    for name in COEFFICIENT_NAMES:
+        unit = "N/mm²" if name.endswith("c") else "N/mm"
+        group.add_argument(f"--{name}", type=float, metavar=unit.replace("²", "2"),
+                           help=f"K_{name[1:]} ({unit})" + ("" if name.endswith("c") else ", default 0"))
+    group.add_argument("--immersion", metavar="START:END",
+                       help="angles (deg) where a flute cuts, 0 <= START < END <= 180; default 0:180 (full slot); "
+                            "--phi-range only chooses the angles reported")
 
 
 def _input_arguments(parser):
@@ -195,11 +247,66 @@ def _stock_line(stock):
     return f"; stock: {stock.walls} walls, y window {y0:.6g}..{y1:.6g} mm"
 
 
+def _force_model(args, always=False):
+    """(Coefficients, immersion (start, end) deg) of the force options, or None without --forces."""
+    if not (always or args.forces):
+        given = [f"--{name}" for name in ("material", *COEFFICIENT_NAMES, "immersion")
+                 if getattr(args, name) is not None]
+        if given:
+            raise InputError(f"{given[0]} applies with --forces")
+        return None
+    values = {}
+    if args.material is not None:
+        try:
+            values = dataclasses.asdict(material(args.material))
+        except ValueError as error:
+            raise InputError(f"--material: {error}") from None
+    values.update({name: getattr(args, name) for name in COEFFICIENT_NAMES if getattr(args, name) is not None})
+    missing = [name for name in ("ktc", "krc", "kac") if name not in values]
+    if missing:
+        raise InputError(f"missing --{missing[0]}: the forces need --material NAME or --ktc, --krc and --kac")
+    try:
+        coefficients = Coefficients(**values)
+    except ValueError as error:
+        raise InputError(f"--{str(error).split()[0]}: {error}") from None
+    immersion = FULL_SLOT
+    if args.immersion is not None:
+        pair = _pair(args.immersion, "--immersion", "START:END in degrees such as 0:180")
+        try:
+            immersion = check_immersion(pair)
+        except ValueError as error:
+            raise InputError(f"--immersion: {error}") from None
+    return coefficients, immersion
+
+
+def _helical(args, tool):
+    """`tool` with the --helix angle; InputError naming --helix if it is out of range."""
+    try:
+        return dataclasses.replace(tool, helix=args.helix)
+    except ValueError as error:
+        raise InputError(f"--helix: {error}") from None
+
+
+def _flute_1(stock, tool, toolpath, settings, progress=None):
+    """Engagement of flute 1: the straight engine, or flute 0 of the helix solver for a helical tool."""
+    if tool.helix == 0.0:
+        return engage(stock, tool, toolpath, settings, progress=progress)
+    return flute_engagement(stock, tool, toolpath, settings, progress=progress).as_engagement(0)
+
+
 def _run_engage(args):
     """The engage command; returns 0 or raises InputError."""
     compute, method_text = _engage_method(args)
+    force_model = _force_model(args)
+    if force_model is not None and args.method != "abm":
+        raise InputError("--forces needs --method abm")
+    if args.helix != 0.0 and args.method != "abm":
+        raise InputError("--helix needs --method abm")
     job, toolpath, parameters, tool, settings = _prepare(args)
+    tool = _helical(args, tool)
     outputs = [args.out, summary_path(args.out)] + ([args.plot] if args.plot else [])
+    if args.plot and force_model is not None:
+        outputs.append(os.path.splitext(args.plot)[0] + ".forces.png")
     _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
     stock, _ = _load_stock(args, toolpath, tool)
 
@@ -210,7 +317,11 @@ def _run_engage(args):
     if not engagement.engaged.any():
         raise InputError(_no_engagement(args))
 
-    texts = (results_text(engagement), summary_text(engagement, toolpath=toolpath))
+    forces = None
+    if force_model is not None:
+        forces = pass_forces(stock.staircase, tool, toolpath, settings, force_model[0], immersion=force_model[1],
+                             first=engagement.length if tool.helix == 0.0 else None)
+    texts = (results_text(engagement, forces=forces), summary_text(engagement, toolpath=toolpath, forces=forces))
     title = job.get("description") or (
         f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}: D {tool.diameter:g} mm, "
         f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
@@ -218,6 +329,10 @@ def _run_engage(args):
     if args.plot:
         from .report.plots import pass_figure  # here: matplotlib takes a while to import
         figure = pass_figure(engagement, title=title)
+    force_figure = None
+    if args.plot and forces is not None:
+        from .report.forces import chosen_cl, force_over_phi_figure
+        force_figure = force_over_phi_figure(forces, chosen_cl(forces), along=True)
     for path in outputs:  # only now, so that bad input leaves no folder behind either
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with replacing(*outputs) as temporaries:
@@ -225,15 +340,23 @@ def _run_engage(args):
             write_text(temporary, text)
         if figure is not None:
             figure.savefig(temporaries[2], format="png")
+        if force_figure is not None:
+            force_figure.savefig(temporaries[3], format="png")
 
     m, p = engagement.shape
     depth = engagement.depth_of_cut
     print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms{method_text}; "
           f"depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
-          f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage); "
-          f"wrote {', '.join(outputs)}")
-    print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
+          f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
+          + ("" if forces is None else f"; peak force {forces.peak.max():.4g} N at CL {int(forces.peak.argmax())}")
+          + f"; wrote {', '.join(outputs)}")
+    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
     return 0
+
+
+def _helix_text(tool):
+    """', helix 30° [--helix]' for a helical tool, '' for straight flutes."""
+    return f", helix {tool.helix:g}° [--helix]" if tool.helix else ""
 
 
 def _engage_method(args):
@@ -243,7 +366,7 @@ def _engage_method(args):
                  if value is not None]
         if given:
             raise InputError(f"{given[0]} applies to --method zmap, not to --method abm")
-        return engage, ""
+        return _flute_1, ""
     grid = ZMAP_GRID if args.grid is None else args.grid
     step = grid if args.edge_step is None else args.edge_step
     for option, value in (("--grid", grid), ("--edge-step", step)):
@@ -304,6 +427,69 @@ def _run_validate(args):
           f"ABM {validation.seconds['abm']:.3g} s, boolean {validation.seconds['boolean']:.3g} s "
           f"({validation.speed_ratio:.0f}x); wrote {', '.join(written)}")
     print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
+    return 0
+
+
+def _run_schedule(args):
+    """The schedule command; returns 0 or raises InputError."""
+    from .formats.apt_writer import write_feed_toolpath
+    from .report.staging import staged
+    from .scheduling import programmed_feed, schedule
+
+    coefficients, immersion = _force_model(args, always=True)
+    kind, limit = ("force", args.max_force) if args.max_force is not None else ("area", args.max_area)
+    option = f"--max-{kind}"
+    if not (np.isfinite(limit) and limit > 0.0):
+        raise InputError(f"{option}: must be a positive number, got {limit:g}")
+    if args.min_feed is not None and not (np.isfinite(args.min_feed) and args.min_feed > 0.0):
+        raise InputError(f"--min-feed: must be a positive feed per tooth (mm), got {args.min_feed:g}")
+    if os.path.splitext(args.out)[1].lower() not in (".apt", ".cls", ".csv"):
+        raise InputError(f"{args.out}: --out must end in .apt, .cls or .csv")
+    job, toolpath, parameters, tool, settings = _prepare(args)
+    tool = _helical(args, tool)
+    _, hints = load_path(args.toolpath)  # the feed of every move, which _prepare reduces to one value
+    try:
+        programmed = programmed_feed(len(toolpath), settings.feed_per_tooth, feed=hints.feed, unit=hints.feed_unit,
+                                     flutes=tool.flutes, spindle_rpm=settings.spindle_rpm)
+    except ValueError as error:
+        raise InputError(f"{args.toolpath}: {error}") from None
+    inputs = [args.stock, args.toolpath] + ([args.job] if args.job else [])
+    if args.report:
+        _check_validate_outputs(argparse.Namespace(stock=args.stock, toolpath=args.toolpath, job=args.job,
+                                                   report=args.report, fcstd=None))
+    _check_outputs([args.out] + ([args.report] if args.report else []), inputs)
+    stock, _ = _load_stock(args, toolpath, tool)
+    engagement = _flute_1(stock.staircase, tool, toolpath, settings)
+    if not engagement.engaged.any():
+        raise InputError(_no_engagement(args))
+    forces = pass_forces(stock.staircase, tool, toolpath, settings, coefficients, immersion=immersion,
+                         feed=programmed, first=engagement.length if tool.helix == 0.0 else None)
+    plan = schedule(forces, limit, kind=kind, min_feed=args.min_feed)
+    unit = "N" if kind == "force" else "mm²"
+    if plan.infeasible.any():
+        shown = ", ".join(f"CL {i} (peak {plan.after[i]:.4g} {unit})" for i in np.flatnonzero(plan.infeasible)[:10])
+        more = "" if plan.infeasible.sum() <= 10 else f" and {int(plan.infeasible.sum()) - 10} more"
+        print(f"{PROG}: warning: {int(plan.infeasible.sum())} CL points cannot keep the {kind} at or under "
+              f"{limit:g} {unit} at any feed from the minimum feed up; they get the minimum feed: {shown}{more}",
+              file=sys.stderr)
+    comment = (f"re-scheduled by abm schedule: peak {kind} <= {limit:g} {unit}, feed per tooth "
+               f"{plan.feed.min():.6g}..{plan.feed.max():.6g} mm (programmed {plan.programmed.max():.6g} mm)")
+    for path in [args.out] + ([args.report] if args.report else []):
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with (staged(args.report, folder=True) if args.report else contextlib.nullcontext()) as folder:
+        if folder:
+            from .report.forces import write_schedule_report
+            title = job.get("description") or f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}"
+            write_schedule_report(folder, forces, plan, title=f"Feed schedule: {title}",
+                                  parameters=parameters.describe())
+        write_feed_toolpath(args.out, toolpath, plan.feed, flutes=tool.flutes, diameter=tool.diameter,
+                            flute_length=tool.flute_length, spindle_rpm=settings.spindle_rpm, comment=comment)
+    written = [args.out] + ([os.path.join(args.report, "index.html")] if args.report else [])
+    print(f"{PROG}: {len(toolpath)} CL points: peak {kind} {plan.before.max():.4g} -> {plan.after.max():.4g} {unit} "
+          f"(limit {limit:g}); feed lowered at {int(plan.reduced.sum())} CL points, to "
+          f"{plan.feed.min():.4g} mm/tooth at least; {int(plan.infeasible.sum())} cannot meet the limit; "
+          f"wrote {', '.join(written)}")
+    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
     return 0
 
 

@@ -6,6 +6,7 @@ CL points × rotation angles. Lengths in mm, angles in degrees.
 """
 
 from .engagement import CASES, SURFACES, Engagement, cut_thickness, edge_lines, engage, segment_letter
+from .helix import FluteEngagement, flute_engagement
 from .frames import angles_to_axis, axis_to_angles, rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import k_coefficients
@@ -13,7 +14,7 @@ from .walls import Wall
 from .zmap import ZMap, tool_floor, zmap_engage
 
 __all__ = [
-    "CASES", "SURFACES", "CutSettings", "Engagement", "Staircase", "Tool", "Toolpath", "Wall",
-    "angles_to_axis", "axis_to_angles", "cut_thickness", "edge_lines", "engage", "k_coefficients",
+    "CASES", "SURFACES", "CutSettings", "Engagement", "FluteEngagement", "Staircase", "Tool", "Toolpath", "Wall",
+    "angles_to_axis", "axis_to_angles", "cut_thickness", "edge_lines", "engage", "flute_engagement", "k_coefficients",
     "rotation_matrix", "segment_letter", "ZMap", "tool_floor", "zmap_engage",
 ]

@@ -23,7 +23,8 @@ from .tolerances import LENGTH_EPS, PARALLEL_EPS
 from .walls import Wall
 
 #: Names of the surfaces that can hold the UEP; results store indices into this tuple.
-SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side")
+#: "immersion_end" only comes from helix.flute_engagement with an immersion range.
+SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side", "immersion_end")
 #: Names of the Table 1 cases; results store indices into this tuple.
 CASES = ("none", "A.1", "A.2", "A.3", "A.4", "B.1", "B.2", "B.3", "B.4", "B.5", "B.6", "multi")
 
@@ -134,8 +135,11 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
 
     Work is done in chunks of CL points holding about `chunk_instants` instants each, so
     memory stays bounded. `progress(done, total)` is called after each chunk, if given.
-    Returns an Engagement.
+    Returns an Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
     """
+    if tool.helix != 0.0:
+        raise ValueError(f"engage is for straight edges; the tool has a helix angle of {tool.helix} deg: "
+                         "use flute_engagement")
     phi = settings.phi
     m, p = len(toolpath), phi.size
     out, lep_xyz, uep_xyz = empty_results(m, p)

@@ -48,11 +48,13 @@ def _array(name, value, shape):
 
 @dataclass(frozen=True)
 class Tool:
-    """Flat-end mill: diameter and flute length in mm, number of flutes."""
+    """Flat-end mill: diameter and flute length in mm, number of flutes, helix angle β in deg
+    (0: straight edges; −90 < β < 90)."""
 
     diameter: float
     flutes: int
     flute_length: float
+    helix: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "diameter", _number("diameter", self.diameter, positive=True))
@@ -61,6 +63,10 @@ class Tool:
         if flutes != int(flutes):
             raise ValueError(f"flutes must be a whole number, got {self.flutes!r}")
         object.__setattr__(self, "flutes", int(flutes))
+        helix = _number("helix", self.helix)
+        if not -90.0 < helix < 90.0:
+            raise ValueError(f"helix must be within (-90, 90) degrees, got {helix}")
+        object.__setattr__(self, "helix", helix)
 
     @property
     def radius(self):

@@ -10,6 +10,11 @@ empty segment for a CL point without engagement): cl, depth_of_cut (mm), segment
 phi_start, phi_end (deg), uep_surface, uep_section, uep_wall, max_length, mean_length (mm);
 then, when the toolpath is given, cl_x, cl_y, cl_z (mm), theta_a, theta_b (deg).
 
+With cutting forces (abm_workbench.forces) the results gain FORCE_COLUMNS: fx, fy, fz (N,
+global frame, summed over the flutes cutting at that angle of flute 1), torque (N·mm) and,
+with a spindle speed, power (W); the summary gains FORCE_SUMMARY_COLUMNS per CL point:
+peak_force, mean_force (resultant, N), peak_torque (N·mm).
+
 Numbers are rounded to DECIMALS places and written in the shortest form that reads back as
 the rounded value; NaN is an empty field.
 """
@@ -32,6 +37,9 @@ SUMMARY_COLUMNS = (
     "cl", "depth_of_cut", "segment", "phi_start", "phi_end", "uep_surface", "uep_section", "uep_wall",
     "max_length", "mean_length",
 )
+#: Results columns added with forces (power only with a spindle speed), and summary columns.
+FORCE_COLUMNS = ("fx", "fy", "fz", "torque", "power")
+FORCE_SUMMARY_COLUMNS = ("peak_force", "mean_force", "peak_torque")
 #: Summary columns added when the toolpath is given.
 TOOLPATH_COLUMNS = ("cl_x", "cl_y", "cl_z", "theta_a", "theta_b")
 _TEXT_COLUMNS = {"uep_surface", "case", "segment"}
@@ -65,8 +73,9 @@ def write_text(path, text):
         file.write(text)
 
 
-def results_text(engagement):
-    """The results CSV of an Engagement (m CL points × p angles: m·p rows) as one string."""
+def results_text(engagement, *, forces=None):
+    """The results CSV of an Engagement (m CL points × p angles: m·p rows) as one string;
+    with `forces` (a Forces of the same pass) the force columns too."""
     m, p = engagement.shape
     flat = {name: getattr(engagement, name).reshape(-1) for name in (
         "lep_l", "uep_l", "length", "pieces", "uep_section", "uep_wall", "area")}
@@ -87,10 +96,18 @@ def results_text(engagement):
         xyz = getattr(engagement, f"{point}_xyz").reshape(-1, 3)
         for axis, name in enumerate("xyz"):
             columns[f"{point}_{name}"] = _numbers(xyz[:, axis])
-    return _csv(RESULT_COLUMNS, [columns[name] for name in RESULT_COLUMNS])
+    names = RESULT_COLUMNS
+    if forces is not None:
+        names += FORCE_COLUMNS[:4] if forces.power is None else FORCE_COLUMNS
+        xyz = forces.xyz.reshape(-1, 3)
+        columns.update(fx=_numbers(xyz[:, 0]), fy=_numbers(xyz[:, 1]), fz=_numbers(xyz[:, 2]),
+                       torque=_numbers(forces.torque.reshape(-1)))
+        if forces.power is not None:
+            columns["power"] = _numbers(forces.power.reshape(-1))
+    return _csv(names, [columns[name] for name in names])
 
 
-def summary_text(engagement, *, toolpath=None):
+def summary_text(engagement, *, toolpath=None, forces=None):
     """The summary CSV of an Engagement as one string (see the module docstring)."""
     records = []
     for cl in range(engagement.shape[0]):
@@ -117,6 +134,9 @@ def summary_text(engagement, *, toolpath=None):
         names += TOOLPATH_COLUMNS
         columns += [_numbers(toolpath.cl[cl, axis]) for axis in range(3)]
         columns += [_numbers(toolpath.theta_a[cl]), _numbers(toolpath.theta_b[cl])]
+    if forces is not None:
+        names += FORCE_SUMMARY_COLUMNS
+        columns += [_numbers(forces.peak[cl]), _numbers(forces.mean[cl]), _numbers(forces.torque.max(axis=1)[cl])]
     return _csv(names, columns)
 
 

@@ -5,7 +5,8 @@ The header names the columns, in any order, case-insensitive, whitespace trimmed
 - ``x, y, z`` (CL point: centre of the tool's bottom face, mm), and either
 - ``theta_a, theta_b`` (rotations about x and y, degrees, |θ| < 90) or
 - ``i, j, k`` (tool-axis vector, any length, k > 0);
-- optionally ``xc, yc, zc`` (cutter-contact point, mm), all three or none.
+- optionally ``xc, yc, zc`` (cutter-contact point, mm), all three or none;
+- optionally ``feed_per_tooth`` (mm), ``feed_mm_min``: the feeds a ``schedule`` wrote, skipped here.
 
 One row per CL point in pass order. Blank lines and lines starting with ``#`` are skipped.
 """
@@ -24,6 +25,7 @@ _POSITION = ("x", "y", "z")
 _ANGLES = ("theta_a", "theta_b")
 _AXIS = ("i", "j", "k")
 _CONTACT = ("xc", "yc", "zc")
+_FEEDS = ("feed_per_tooth", "feed_mm_min")
 _EXAMPLE = "x,y,z,theta_a,theta_b"
 
 
@@ -68,7 +70,7 @@ def _rows(text):
 
 def _columns(header, where):
     """Check the header's names (already lower-cased, trimmed); return them as a set."""
-    known = (*_POSITION, *_ANGLES, *_AXIS, *_CONTACT)
+    known = (*_POSITION, *_ANGLES, *_AXIS, *_CONTACT, *_FEEDS)
     duplicate = sorted({column for column in header if header.count(column) > 1})
     if duplicate:
         raise InputError(f"{where}: duplicate column {duplicate[0]!r}")

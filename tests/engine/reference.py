@@ -271,3 +271,89 @@ def table1_case(ref: RefEngagement, z_top, theta_b):
     if ref.sections == {b} and z_top[a] < z_top[b]:
         return "B.6"
     return "none"
+
+
+# ---------------------------------------------------------------------------------------------
+# Helical edges (issue #6). The same boundary functions, sampled along the exact helix
+#     S(l) = T + R·(R_t sin ψ(l), R_t cos ψ(l), l),  ψ(l) = ψ_0 − l·tan β / R_t,
+# plus, with an immersion range [a, b] (deg), the functions sin(π(ψ − a)/360) and
+# sin(π(ψ − b)/360), which change sign where ψ crosses a + 360n and b + 360n. Every sign
+# change on the grid is refined by bisection; pieces between crossings are classified at their
+# midpoints (in the stock, and (ψ − a) mod 360 ≤ b − a).
+
+
+class RefHelix(NamedTuple):
+    """Engagement of one helical edge: pieces ((l_start, l_end), ...) ascending (axial mm),
+    lep, uep (NaN without engagement), length (total axial inside length), lep_xyz, uep_xyz (3,)."""
+
+    pieces: Tuple[Tuple[float, float], ...]
+    lep: float
+    uep: float
+    length: float
+    lep_xyz: np.ndarray
+    uep_xyz: np.ndarray
+
+
+def helix_points(radius, cl, theta_a, theta_b, psi0, helix, l):
+    """Points (K, N, 3) of the helices with start angles psi0 (K,) deg at axial positions l (K, N) mm."""
+    rot = rotation(theta_a, theta_b)
+    l = np.asarray(l, dtype=float)
+    psi = np.radians(np.asarray(psi0, dtype=float))[:, None] - l * np.tan(np.radians(helix)) / radius
+    local = np.stack([radius * np.sin(psi), radius * np.cos(psi), np.broadcast_to(l, psi.shape)], axis=-1)
+    return np.asarray(cl, dtype=float) + local @ rot.T
+
+
+def _helix_values(stock, radius, cl, theta_a, theta_b, psi0, helix, l, immersion):
+    """Boundary values (K, N, F), z (K, N) and the immersion flag (K, N) at positions l (K, N)."""
+    points = helix_points(radius, cl, theta_a, theta_b, psi0, helix, l)
+    vals = stock.boundaries(points)
+    psi = np.asarray(psi0, dtype=float)[:, None] - np.degrees(l * np.tan(np.radians(helix)) / radius)
+    flag = np.ones(psi.shape, dtype=bool)
+    if immersion is not None:
+        a, b = immersion
+        angle = np.stack([np.sin(np.pi * (psi - a) / 360.0), np.sin(np.pi * (psi - b) / 360.0)], axis=-1)
+        vals = np.concatenate([vals, angle], axis=-1)
+        flag = np.mod(psi - a, 360.0) <= b - a
+    return vals, points[..., 2], flag
+
+
+def reference_helix_sweep(stock: StairData, radius, flute_length, cl, theta_a, theta_b, psi0: Sequence[float],
+                          helix, immersion=None, samples=SAMPLES):
+    """RefHelix for each helix start angle of psi0 (K,) deg at CL point cl (3,) mm; helix β deg;
+    immersion None or (start, end) deg with 0 ≤ end − start < 360."""
+    model = _Stock(stock)
+    psi0 = np.atleast_1d(np.asarray(psi0, dtype=float))
+    length = float(flute_length)
+    grid = np.linspace(0.0, length, samples)
+    n_k = len(psi0)
+    vals, z, flag = _helix_values(model, radius, cl, theta_a, theta_b, psi0, helix, np.tile(grid, (n_k, 1)), immersion)
+    grid_inside = model.inside_of(vals[..., :5 + len(model.tops) + len(model.walls)], z) & flag
+    k, i, f = np.nonzero(vals[:, :-1] * vals[:, 1:] < 0.0)
+    lo, hi = grid[i], grid[i + 1]
+    lo_sign = np.sign(vals[k, i, f])
+    while len(k) and np.max(hi - lo) > BISECT_TOL:
+        mid = 0.5 * (lo + hi)
+        fm = _helix_values(model, radius, cl, theta_a, theta_b, psi0[k], helix, mid[:, None], immersion)[0][:, 0, :]
+        fm = fm[np.arange(len(k)), f]
+        same = np.sign(fm) == lo_sign
+        lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
+    k0, i0, _ = np.nonzero(vals == 0.0)
+    roots_k = np.concatenate([k0, k])
+    roots = np.concatenate([grid[i0], 0.5 * (lo + hi)])
+    out = []
+    for kk in range(n_k):
+        bp = np.unique(np.concatenate([[0.0, length], roots[(roots_k == kk) & (roots > 0.0) & (roots < length)]]))
+        mids = 0.5 * (bp[:-1] + bp[1:])
+        mvals, mz, mflag = _helix_values(model, radius, cl, theta_a, theta_b, psi0[[kk]], helix, mids[None, :],
+                                         immersion)
+        inside = model.inside_of(mvals[0, :, :5 + len(model.tops) + len(model.walls)], mz[0]) & mflag[0]
+        _self_check(bp, inside, grid, grid_inside[kk])
+        pieces = _runs(inside, bp)
+        nan3 = np.full(3, np.nan)
+        if not pieces:
+            out.append(RefHelix((), np.nan, np.nan, 0.0, nan3, nan3))
+            continue
+        lep, uep = pieces[0][0], pieces[-1][1]
+        ends = helix_points(radius, cl, theta_a, theta_b, [psi0[kk]], helix, np.array([[lep, uep]]))[0]
+        out.append(RefHelix(tuple(pieces), lep, uep, sum(b - a for a, b in pieces), ends[0], ends[1]))
+    return out

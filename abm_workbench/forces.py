@@ -1,0 +1,366 @@
+"""Mechanistic cutting forces of a flat-end mill from its engagement (pure numpy, no FreeCAD).
+
+The linear edge-force model (Altintas, *Manufacturing Automation*, ch. 2): an edge element
+of axial length db cutting a chip of thickness h feels
+
+    dF_t = (K_tc h + K_te) db,  dF_r = (K_rc h + K_re) db,  dF_a = (K_ac h + K_ae) db
+
+(tangential, radial, axial; K_·c in N/mm², K_·e in N/mm). With straight flutes every point
+of flute k sits at the same angle φ_k = φ + 360·k/Z (φ the angle of flute 1, k = 0..Z−1), so
+its force is that times its engaged length b_k (the engine's length of cut at φ_k), with
+h_k = f sin φ_k cos α. A flute cuts only inside the immersion, start ≤ φ_k < end (mod 360,
+half-open so that a flute on the boundary counts once over a revolution).
+
+Tool frame (u, v, w = the columns of R = Rx(θ_A)·Ry(θ_B); φ from +v towards +u):
+
+    F_u = −F_t cos φ_k − F_r sin φ_k,  F_v = F_t sin φ_k − F_r cos φ_k,  F_w = F_a
+
+summed over the flutes, then F_global = R·F_tool. Torque about the tool axis = R_t·ΣF_t
+(N·mm); spindle power = torque·ω (W). Forces are affine in the feed per tooth at every
+instant, F = f·A + B (A the chip-thickness part per mm of feed, B the edge part), which is
+what :class:`Forces` stores, so a new feed (scheduling) needs no new engagement.
+
+Helical flutes (helix angle β, κ = tan β / R_t): the point of flute k at height l has the
+angle ψ_k(l) = φ + 360·k/Z − κ·l, and the engine (helix.flute_engagement) gives the engaged
+intervals [a, b] of l, already cut to the immersion. Every force component is then a sum of
+∫ sin ψ, ∫ cos ψ, ∫ sin² ψ, ∫ sin ψ cos ψ and ∫ 1 over dl, taken in closed form
+(:func:`interval_integrals`), with db = dl the axial height of an element.
+
+Units: N, mm, N·mm, W; angles in degrees at the interface.
+"""
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+
+from .engine import engage, flute_engagement
+from .engine.frames import rotation_matrix
+
+#: Default immersion (deg): a flute cuts over the leading half, full slotting.
+FULL_SLOT = (0.0, 180.0)
+#: Angles (deg) closer than this to an immersion limit count as on it.
+ANGLE_EPS = 1e-9
+#: The six coefficient names, cutting (N/mm²) then edge (N/mm).
+COEFFICIENT_NAMES = ("ktc", "krc", "kac", "kte", "kre", "kae")
+
+
+@dataclass(frozen=True)
+class Coefficients:
+    """Cutting-force coefficients: ktc, krc, kac (N/mm²), kte, kre, kae (N/mm).
+
+    Every value must be a finite number; ktc must be positive (it drives the torque).
+    """
+
+    ktc: float
+    krc: float
+    kac: float
+    kte: float = 0.0
+    kre: float = 0.0
+    kae: float = 0.0
+
+    def __post_init__(self):
+        for name in COEFFICIENT_NAMES:
+            value = getattr(self, name)
+            try:
+                number = float(value)
+            except (TypeError, ValueError):
+                raise ValueError(f"{name} must be a number, got {value!r}") from None
+            if isinstance(value, bool) or not np.isfinite(number):
+                raise ValueError(f"{name} must be a finite number, got {value!r}")
+            object.__setattr__(self, name, number)
+        if self.ktc <= 0.0:
+            raise ValueError(f"ktc must be positive, got {self.ktc:g}")
+
+    @property
+    def cutting(self):
+        """(3,) K_tc, K_rc, K_ac (N/mm²)."""
+        return np.array([self.ktc, self.krc, self.kac])
+
+    @property
+    def edge(self):
+        """(3,) K_te, K_re, K_ae (N/mm)."""
+        return np.array([self.kte, self.kre, self.kae])
+
+
+#: Materials with published coefficients, each with where its numbers come from (docs/FORCES.md).
+MATERIALS = {
+    "al7075-t6": (Coefficients(767.01, 168.8, 222.0, 27.7, 26.6, 0.7),
+                  "Al7075-T6, cemented carbide, dry: Table 5 (row of its ref. [190]) of 'Milling Force Model "
+                  "for Aviation Aluminum Alloy: Academic Insight and Perspective Analysis', Chin. J. Mech. Eng. "
+                  "(2021), doi:10.1186/s10033-021-00536-9"),
+    "al6082-t6": (Coefficients(631.0, 99.0, 273.0, 13.0, 10.0, 2.8),
+                  "Al6082-T6, cemented carbide, dry: Table 5 (row of its ref. [189]) of the same review, "
+                  "doi:10.1186/s10033-021-00536-9"),
+}
+
+
+def material(name):
+    """Coefficients of a material of MATERIALS (case-insensitive); ValueError listing the known ones."""
+    key = str(name).strip().lower()
+    if key not in MATERIALS:
+        raise ValueError(f"unknown material {name!r} (known: {', '.join(sorted(MATERIALS))})")
+    return MATERIALS[key][0]
+
+
+def check_immersion(immersion):
+    """(start, end) in degrees as floats, 0 ≤ start < end ≤ 180; ValueError otherwise.
+
+    Outside 0..180° the chip thickness f sin φ would be negative: that half does not cut.
+    """
+    try:
+        start, end = (float(v) for v in immersion)
+    except (TypeError, ValueError):
+        raise ValueError(f"immersion must be (start, end) in degrees, got {immersion!r}") from None
+    if not (np.isfinite(start) and np.isfinite(end) and 0.0 <= start < end <= 180.0):
+        raise ValueError(f"immersion {start:g}:{end:g} must satisfy 0 <= start < end <= 180 degrees")
+    return start, end
+
+
+def in_immersion(phi_deg, immersion=FULL_SLOT):
+    """Whether a flute at angles phi_deg (any shape, deg) cuts: start ≤ φ < end modulo 360."""
+    start, end = check_immersion(immersion)
+    relative = np.mod(np.asarray(phi_deg, dtype=float) - start + ANGLE_EPS, 360.0) - ANGLE_EPS
+    return relative < (end - start) - ANGLE_EPS
+
+
+def flute_angles(phi_deg, flutes):
+    """(Z, p) angle of each flute (deg) when flute 1 is at phi_deg (p,): φ + 360·k/Z."""
+    return np.asarray(phi_deg, dtype=float)[None, :] + 360.0 * np.arange(int(flutes))[:, None] / int(flutes)
+
+
+def flute_lengths(stock, tool, toolpath, settings, *, first=None):
+    """(Z, m, p) engaged length (mm) of each straight flute at every CL point and angle of settings.phi.
+
+    Flute k is the edge at φ + 360·k/Z, solved by the engine. first: the (m, p) lengths of
+    flute 1 when already computed (an Engagement's length), to save that solve.
+    """
+    phi = settings.phi
+    lengths = []
+    for k, shift in enumerate(360.0 * np.arange(tool.flutes) / tool.flutes):
+        if k == 0 and first is not None:
+            lengths.append(np.asarray(first, dtype=float))
+            continue
+        start = settings.phi_start + shift
+        shifted = dataclasses.replace(settings, phi_start=start, phi_end=start + settings.phi_step * (phi.size - 1))
+        if shifted.phi.size != phi.size:
+            raise ValueError(f"flute {k + 1}: {shifted.phi.size} angles instead of {phi.size}")
+        lengths.append(engage(stock, tool, toolpath, shifted).length)
+    return np.stack(lengths)
+
+
+@dataclass(frozen=True)
+class Forces:
+    """Cutting forces over a pass of m CL points × p angles φ (of flute 1), affine in the feed.
+
+    phi: (p,) deg. rotation: (m, 3, 3) R of each CL point. radius: R_t (mm).
+    feed: (m,) feed per tooth at each CL point (mm). spindle_rpm: rpm or None.
+    cutting: (m, p, 3) tool-frame force per mm of feed per tooth (N/mm), summed over the flutes.
+    edge: (m, p, 3) tool-frame edge force (N), independent of the feed.
+    cutting_tangential, edge_tangential: (m, p) ΣdF_t per mm of feed (N/mm) and edge part (N).
+    area_per_feed: (m, p) total cut area per mm of feed, Σ b_k sin φ_k cos α over the cutting
+    flutes (mm; × f gives mm²).
+    """
+
+    phi: np.ndarray
+    rotation: np.ndarray
+    radius: float
+    feed: np.ndarray
+    spindle_rpm: Optional[float]
+    cutting: np.ndarray
+    edge: np.ndarray
+    cutting_tangential: np.ndarray
+    edge_tangential: np.ndarray
+    area_per_feed: np.ndarray
+
+    @property
+    def shape(self):
+        """(m, p): CL points × rotation angles."""
+        return self.edge.shape[:2]
+
+    def with_feed(self, feed):
+        """The same pass at feed per tooth `feed` (scalar or (m,), mm)."""
+        return dataclasses.replace(self, feed=_feeds(feed, self.shape[0]))
+
+    @property
+    def tool_frame(self):
+        """(m, p, 3) force on the tool in its own frame (u, v, w) (N)."""
+        return self.feed[:, None, None] * self.cutting + self.edge
+
+    @property
+    def xyz(self):
+        """(m, p, 3) force on the tool in the global frame (N): R·F_tool."""
+        return np.einsum("mij,mpj->mpi", self.rotation, self.tool_frame)
+
+    @property
+    def cutting_xyz(self):
+        """(m, p, 3) global force per mm of feed per tooth (N/mm)."""
+        return np.einsum("mij,mpj->mpi", self.rotation, self.cutting)
+
+    @property
+    def edge_xyz(self):
+        """(m, p, 3) global edge force (N)."""
+        return np.einsum("mij,mpj->mpi", self.rotation, self.edge)
+
+    @property
+    def torque(self):
+        """(m, p) torque about the tool axis, R_t·ΣF_t (N·mm)."""
+        return self.radius * (self.feed[:, None] * self.cutting_tangential + self.edge_tangential)
+
+    @property
+    def power(self):
+        """(m, p) spindle power torque·ω (W), or None without a spindle speed."""
+        if self.spindle_rpm is None:
+            return None
+        return 1e-3 * self.torque * 2.0 * np.pi * self.spindle_rpm / 60.0
+
+    @property
+    def area(self):
+        """(m, p) total cut area of the cutting flutes (mm²)."""
+        return self.feed[:, None] * self.area_per_feed
+
+    @property
+    def resultant(self):
+        """(m, p) magnitude of the force (N)."""
+        return np.linalg.norm(self.tool_frame, axis=-1)
+
+    @property
+    def peak(self):
+        """(m,) largest resultant over the angles of each CL point (N)."""
+        return self.resultant.max(axis=1)
+
+    def _revolution(self):
+        """(p,) bool: the angles of the first revolution from phi[0] (a sample 360° on repeats one)."""
+        return self.phi < self.phi[0] + 360.0 - ANGLE_EPS
+
+    @property
+    def mean(self):
+        """(m,) mean resultant over the angles of each CL point, one revolution at most (N)."""
+        return self.resultant[:, self._revolution()].mean(axis=1)
+
+    @property
+    def mean_xyz(self):
+        """(m, 3) mean global force components over the angles, one revolution at most (N)."""
+        return self.xyz[:, self._revolution()].mean(axis=1)
+
+
+def _feeds(feed, m):
+    """Feed per tooth (m,) mm from a scalar or (m,) array; ValueError unless finite and ≥ 0."""
+    try:
+        feed = np.broadcast_to(np.asarray(feed, dtype=float), (m,)).copy()
+    except ValueError:
+        raise ValueError(f"feed per tooth must be a number or have shape ({m},), got {np.shape(feed)}") from None
+    if not np.isfinite(feed).all() or (feed < 0.0).any():
+        raise ValueError("feed per tooth must be finite and not negative at every CL point")
+    return feed
+
+
+def edge_forces(lengths, phi_deg, rotation, radius, inclination, feed, coefficients, *, immersion=FULL_SLOT,
+                spindle_rpm=None):
+    """Forces of straight flutes from their engaged lengths.
+
+    lengths: (Z, m, p) engaged length of flute k (mm) at CL point i when flute 1 is at
+    phi_deg[j] (p,) deg. rotation: (m, 3, 3) R of each CL point. radius: R_t (mm).
+    inclination: α (deg). feed: feed per tooth, scalar or (m,) (mm). coefficients: Coefficients.
+    immersion: (start, end) deg. Returns Forces.
+    """
+    lengths = np.asarray(lengths, dtype=float)
+    phi = np.asarray(phi_deg, dtype=float)
+    rotation = np.asarray(rotation, dtype=float)
+    if lengths.ndim != 3 or lengths.shape[2] != phi.size:
+        raise ValueError(f"lengths must have shape (Z, m, {phi.size}), got {lengths.shape}")
+    if rotation.shape != (lengths.shape[1], 3, 3):
+        raise ValueError(f"rotation must have shape ({lengths.shape[1]}, 3, 3), got {rotation.shape}")
+    if not np.isfinite(lengths).all() or (lengths < 0.0).any():
+        raise ValueError("lengths must be finite and not negative")
+    angles = flute_angles(phi, lengths.shape[0])                     # (Z, p)
+    cuts = in_immersion(angles, immersion)
+    s, c = np.sin(np.radians(angles)), np.cos(np.radians(angles))
+    thickness = np.where(cuts, s, 0.0) * np.cos(np.radians(inclination))  # h / f, (Z, p)
+    length = np.where(cuts[:, None, :], lengths, 0.0)                 # (Z, m, p)
+
+    def tool_frame(tangential, radial, axial):
+        """Σ over the flutes of the tool-frame vector of per-flute (Z, m, p) components -> (m, p, 3)."""
+        return np.stack([(-tangential * c[:, None] - radial * s[:, None]).sum(axis=0),
+                         (tangential * s[:, None] - radial * c[:, None]).sum(axis=0),
+                         axial.sum(axis=0)], axis=-1)
+
+    k = coefficients
+    chip = length * thickness[:, None, :]                             # b·h/f (mm)
+    return Forces(
+        phi=phi, rotation=rotation, radius=float(radius), feed=_feeds(feed, lengths.shape[1]),
+        spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
+        cutting=tool_frame(k.ktc * chip, k.krc * chip, k.kac * chip),
+        edge=tool_frame(k.kte * length, k.kre * length, k.kae * length),
+        cutting_tangential=k.ktc * chip.sum(axis=0), edge_tangential=k.kte * length.sum(axis=0),
+        area_per_feed=chip.sum(axis=0),
+    )
+
+
+def interval_integrals(start, end, psi0, kappa):
+    """∫ over l in [start, end] of sin ψ, cos ψ, sin² ψ and sin ψ cos ψ, with ψ = psi0 − kappa·l.
+
+    start, end: (...) mm, NaN for no interval (integrals 0); psi0 (rad) broadcast with them;
+    kappa: rad/mm. Closed forms about the midpoint ψ_m with Δ = end − start, free of
+    cancellation as kappa → 0: ∫ sin = Δ sin ψ_m S₁, ∫ cos = Δ cos ψ_m S₁,
+    ∫ sin² = Δ/2 − Δ cos 2ψ_m S₂/2, ∫ sin cos = Δ sin 2ψ_m S₂/2, S₁ = sinc(κΔ/2), S₂ = sinc(κΔ)
+    (sinc x = sin x / x). Returns (width Δ, ∫ sin, ∫ cos, ∫ sin², ∫ sin cos), each (...) mm.
+    """
+    start, end = np.broadcast_arrays(np.asarray(start, dtype=float), np.asarray(end, dtype=float))
+    width = np.where(np.isnan(start) | np.isnan(end), 0.0, end - start)
+    mid = np.asarray(psi0, dtype=float) - kappa * np.where(width > 0.0, 0.5 * (start + end), 0.0)
+    s1 = np.sinc(kappa * width / (2.0 * np.pi))   # numpy's sinc is sin(πx)/(πx)
+    s2 = np.sinc(kappa * width / np.pi)
+    return (width, width * np.sin(mid) * s1, width * np.cos(mid) * s1,
+            0.5 * width * (1.0 - np.cos(2.0 * mid) * s2), 0.5 * width * np.sin(2.0 * mid) * s2)
+
+
+def helical_forces(flutes, rotation, coefficients, *, feed=None, spindle_rpm=None):
+    """Forces of helical flutes from their engaged intervals.
+
+    flutes: a FluteEngagement (helix.flute_engagement) whose intervals were cut to the
+    immersion, so that sin ψ ≥ 0 on them. rotation: (m, 3, 3) R of each CL point. feed: feed
+    per tooth, scalar or (m,) mm (default the engagement's). Returns Forces.
+    """
+    rotation = np.asarray(rotation, dtype=float)
+    m = flutes.shape[0]
+    if rotation.shape != (m, 3, 3):
+        raise ValueError(f"rotation must have shape ({m}, 3, 3), got {rotation.shape}")
+    kappa = np.tan(np.radians(flutes.helix)) / flutes.radius
+    psi0 = np.radians(flute_angles(flutes.phi, flutes.flutes).T)[None, :, :, None]   # (1, p, Z, 1)
+    width, i_s, i_c, i_ss, i_sc = (v.sum(axis=-1) for v in interval_integrals(flutes.start, flutes.end, psi0, kappa))
+    k, scale = coefficients, np.cos(np.radians(flutes.inclination))
+
+    def summed(*components):
+        """(m, p, 3) tool-frame vector of per-flute (m, p, Z) components, summed over the flutes."""
+        return np.stack([c.sum(axis=-1) for c in components], axis=-1)
+
+    return Forces(
+        phi=np.asarray(flutes.phi, dtype=float), rotation=rotation, radius=float(flutes.radius),
+        feed=_feeds(flutes.feed_per_tooth if feed is None else feed, m),
+        spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
+        cutting=scale * summed(-k.ktc * i_sc - k.krc * i_ss, k.ktc * i_ss - k.krc * i_sc, k.kac * i_s),
+        edge=summed(-k.kte * i_c - k.kre * i_s, k.kte * i_s - k.kre * i_c, k.kae * width),
+        cutting_tangential=scale * k.ktc * i_s.sum(axis=-1), edge_tangential=k.kte * width.sum(axis=-1),
+        area_per_feed=scale * i_s.sum(axis=-1),
+    )
+
+
+def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL_SLOT, feed=None, first=None):
+    """Forces of a pass: straight flutes through the engine's engage per flute (edge_forces),
+    helical ones (tool.helix ≠ 0) through helix.flute_engagement (helical_forces).
+
+    feed: feed per tooth, scalar or (m,) mm (default settings.feed_per_tooth). first: flute 1's
+    (m, p) lengths when already computed (straight flutes only). Returns Forces.
+    """
+    immersion = check_immersion(immersion)
+    rotation = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
+    if tool.helix != 0.0:
+        engaged = flute_engagement(stock, tool, toolpath, settings, immersion=immersion)
+        return helical_forces(engaged, rotation, coefficients, feed=settings.feed_per_tooth if feed is None else feed,
+                              spindle_rpm=settings.spindle_rpm)
+    lengths = flute_lengths(stock, tool, toolpath, settings, first=first)
+    return edge_forces(lengths, settings.phi, rotation, tool.radius,
+                       settings.inclination, settings.feed_per_tooth if feed is None else feed, coefficients,
+                       immersion=immersion, spindle_rpm=settings.spindle_rpm)
