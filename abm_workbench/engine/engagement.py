@@ -363,23 +363,17 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
 
 def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
     """Crossings of line rows[i] with exact (B-spline) wall walls[i] inside [lo, hi] (P pairs),
-    as _wall_crossings gives them: l (P, r) NaN-padded, whether at most one was found (P,), and
-    whether the line is at or beyond the wall at lo and at hi, each (P,)."""
+    as _wall_crossings gives them: l (P, 1), the first one or NaN, whether at most one was
+    found (P,), and whether the line is at or beyond the wall at lo and at hi, each (P,)."""
+    lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
+    roots = stock.splines.crossings(walls, x0, y0, dx, dy, lo, hi)
+    count = (~np.isnan(roots)).sum(axis=1)
     found = np.full((rows.size, 1), np.nan)
-    single = np.ones(rows.size, dtype=bool)
-    at_lo, at_hi = np.zeros(rows.size, dtype=bool), np.zeros(rows.size, dtype=bool)
-    for j in np.unique(walls):
-        on = np.flatnonzero(walls == j)
-        r = rows[on]
-        wall = stock.walls[j]
-        roots = wall.crossings(x0[r], y0[r], dx[r], dy[r], lo[r], hi[r])
-        if roots.size:
-            count = (~np.isnan(roots)).sum(axis=1)
-            single[on] = count <= 1
-            found[on[count >= 1], 0] = np.nanmin(roots[count >= 1], axis=1)
-        ends = np.stack([lo[r], hi[r]])
-        at_lo[on], at_hi[on] = x0[r] + dx[r] * ends >= wall.x_at(y0[r] + dy[r] * ends)
-    return found, single, at_lo, at_hi
+    if roots.shape[1]:
+        found[count >= 1, 0] = np.nanmin(roots[count >= 1], axis=1)
+    ends = np.stack([lo, hi], axis=1)
+    at = x0[:, None] + dx[:, None] * ends >= stock.splines.x_at(walls[:, None], y0[:, None] + dy[:, None] * ends)
+    return found, count <= 1, at[:, 0], at[:, 1]
 
 
 def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, *_):
@@ -472,14 +466,18 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
         ids[rows, rank] = walls + 1
         blocks.append((sum(c.shape[1] for c in columns), found.shape[1], ids))
         columns.append(crossing.reshape(n, -1))
-    exact = [(j, pair_rows[pair_walls == j]) for j in np.unique(pair_walls[~is_quintic])]
-    for j, on in exact:
-        found = stock.walls[j].crossings(x0[on], y0[on], dx[on], dy[on], lo[on], hi[on])
+    exact_rows, exact_walls = pair_rows[~is_quintic], pair_walls[~is_quintic]
+    if exact_rows.size:
+        e = exact_rows
+        found = stock.splines.crossings(exact_walls, x0[e], y0[e], dx[e], dy[e], lo[e], hi[e])
         if found.size:
-            crossing = np.full((n, found.shape[1]), np.nan)
-            crossing[on] = found
-            blocks.append((sum(c.shape[1] for c in columns), found.shape[1], np.full((n, 1), j + 1)))
-            columns.append(crossing)
+            exact_rank = np.arange(e.size) - np.searchsorted(e, e)
+            crossing = np.full((n, int(exact_rank.max()) + 1, found.shape[1]), np.nan)
+            crossing[e, exact_rank] = found
+            ids = np.full(crossing.shape[:2], -1)
+            ids[e, exact_rank] = exact_walls + 1
+            blocks.append((sum(c.shape[1] for c in columns), found.shape[1], ids))
+            columns.append(crossing.reshape(n, -1))
     at = np.concatenate(columns, axis=1)
     at[~live] = np.nan
     order = np.argsort(at, axis=1)
@@ -493,9 +491,11 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
     section = np.repeat(left_of[:, None], mid.shape[1], axis=1)
     if rows.size:
         section = section + _walls_left_of(stock, rows, walls, rank, crossings, x0, y0, dx, dy, mid)
-    for j, on in exact:
+    if exact_rows.size:
+        e, l = exact_rows, mid[exact_rows]
         with np.errstate(invalid="ignore"):
-            section[on] += x0[on, None] + dx[on, None] * mid[on] >= stock.walls[j].x_at(y0[on, None] + dy[on, None] * mid[on])
+            beyond = x0[e, None] + dx[e, None] * l >= stock.splines.x_at(exact_walls[:, None], y0[e, None] + dy[e, None] * l)
+        np.add.at(section, e, beyond.astype(section.dtype))
     with np.errstate(invalid="ignore"):
         inside = real & (z0[:, None] + dz[:, None] * mid <= stock.z_top[np.clip(section, 0, stock.n_sections - 1)])
 

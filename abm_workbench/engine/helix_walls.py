@@ -23,7 +23,7 @@ import numpy as np
 
 from .helix_roots import safeguarded_root
 from .polynomials import compose_linear, derivative, horner, real_roots_unit
-from .walls import SplineWall
+from .walls import SplineTable, SplineWall
 
 #: Pieces narrower than this (mm) are no longer split (see the module docstring).
 MIN_WIDTH = 1e-10
@@ -104,9 +104,10 @@ def spline_bounds(wall):
 
 def _spline_x_and_slope(wall, y):
     """W(y) and W′(y) of a B-spline wall at y (any shape)."""
-    span, u = wall._span_parameter(y)
-    x, yy, w = (horner(c[span], u) for c in (wall.spans_x, wall.spans_y, wall.spans_w))
-    dx, dy, dw = (horner(derivative(c)[span], u) for c in (wall.spans_x, wall.spans_y, wall.spans_w))
+    table = SplineTable((wall,))
+    span, u = table.span_parameter(np.zeros(np.shape(y), dtype=np.intp), y)
+    x, yy, w = (horner(c[span], u) for c in (table.spans_x, table.spans_y, table.spans_w))
+    dx, dy, dw = (horner(derivative(c)[span], u) for c in (table.spans_x, table.spans_y, table.spans_w))
     return x / w, (dx * w - x * dw) / (dy * w - yy * dw)
 
 

@@ -13,7 +13,7 @@ from ..errors import CLPointError
 from .bands import WallBands
 from .frames import axis_to_angles
 from .tolerances import WALL_CHECK_SAMPLES
-from .walls import SplineWall, Wall
+from .walls import SplineTable, SplineWall, Wall
 
 
 def _number(name, value, *, positive=False):
@@ -85,8 +85,9 @@ class Staircase:
     record six points on each.
     Inside means x_min ≤ x ≤ x_max, y_min ≤ y ≤ y_max and base_z ≤ z ≤ z_top of the section
     holding (x, y); section j holds W_j(y) ≤ x < W_{j+1}(y).
-    Derived: walls (n−1 Wall or SplineWall) and bands (WallBands: where each wall can be,
-    and how steep it is, over any y interval of the window).
+    Derived: walls (n−1 Wall or SplineWall), bands (WallBands: where each wall can be,
+    and how steep it is, over any y interval of the window) and splines (SplineTable: the
+    SplineWall walls stacked, to solve many of them at once).
     """
 
     x_min: float
@@ -99,6 +100,7 @@ class Staircase:
     wall_curves: Optional[tuple] = field(default=None, repr=False, compare=False)
     walls: tuple = field(init=False, repr=False, compare=False)
     bands: WallBands = field(init=False, repr=False, compare=False)
+    splines: SplineTable = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         for name in ("x_min", "x_max", "y_min", "y_max", "base_z"):
@@ -134,6 +136,7 @@ class Staircase:
         object.__setattr__(self, "walls", tuple(walls))
         self._check_wall_order()
         object.__setattr__(self, "bands", WallBands(walls, self.y_min, self.y_max))
+        object.__setattr__(self, "splines", SplineTable(walls))
 
     def _check_wall_order(self):
         """Walls must lie strictly inside (x_min, x_max) and in order along +x over the y window."""

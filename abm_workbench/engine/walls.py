@@ -173,21 +173,10 @@ class SplineWall:
         """The same wall moved by (dx, dy) mm."""
         return SplineWall(self.degree, self.knots, self.poles + np.array([dx, dy]), self.weights)
 
-    def _span_parameter(self, y):
-        """Span index and local u (same shape as y) where the curve has height y (clamped to its ends)."""
-        y = np.clip(np.asarray(y, dtype=float), self.span_y[0], self.span_y[-1])
-        span = np.clip(np.searchsorted(self.span_y, y, side="right") - 1, 0, self.span_y.size - 2)
-        flat_span, flat_y = span.reshape(-1), y.reshape(-1)
-        u = np.full(flat_y.size, np.nan)  # NaN y (a padded breakpoint) gives NaN u
-        known = np.flatnonzero(~np.isnan(flat_y))
-        c = self.spans_y[flat_span[known]] - flat_y[known, None] * self.spans_w[flat_span[known]]
-        u[known] = bracketed_root(c, np.zeros(known.size), np.ones(known.size), c[:, 0], c.sum(axis=1))
-        return span, u.reshape(y.shape)
-
     def x_at(self, y):
         """x = W(y) for y of any shape (mm); beyond the curve's ends, the end's x."""
-        span, u = self._span_parameter(y)
-        return horner(self.spans_x[span], u) / horner(self.spans_w[span], u)
+        y = np.asarray(y, dtype=float)
+        return SplineTable((self,)).x_at(np.zeros(y.shape, dtype=np.intp), y)
 
     def x_range(self, y_lo, y_hi):
         """(min, max) bound of x over y in [y_lo, y_hi], from the control polygons (conservative)."""
@@ -213,27 +202,96 @@ class SplineWall:
         return low, high, np.full(low.size, np.inf)
 
     def crossings(self, x0, y0, dx, dy, lo, hi):
-        """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the curve.
+        """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the
+        curve, NaN-padded (see SplineTable.crossings)."""
+        return SplineTable((self,)).crossings(np.zeros(np.shape(x0), dtype=np.intp), x0, y0, dx, dy, lo, hi)
+
+
+class SplineTable:
+    """The SplineWall walls of a stock stacked span by span, so that crossings with lines and
+    x = W(y) are found for many (line, wall) pairs in one set of array operations.
+
+    walls: the stock's walls (index j); only the SplineWall ones are stacked, and only their
+    indices may be asked for. Spans of all walls share the highest degree (zero-padded).
+    """
+
+    def __init__(self, walls):
+        index = [j for j, w in enumerate(walls) if isinstance(w, SplineWall)]
+        splines = [walls[j] for j in index]
+        degree = max((w.degree for w in splines), default=0)
+
+        def stacked(name, columns):
+            parts = [np.pad(getattr(w, name), ((0, 0), (0, columns - getattr(w, name).shape[1]))) for w in splines]
+            return np.concatenate(parts) if parts else np.empty((0, columns))
+
+        self.spans_x, self.spans_y, self.spans_w = (stacked(name, degree + 1) for name in ("spans_x", "spans_y", "spans_w"))
+        self.span_boxes = stacked("span_boxes", 4)
+        # y at the start and the end of every span, (S,) each.
+        self.span_y0 = np.concatenate([w.span_y[:-1] for w in splines]) if splines else np.empty(0)
+        self.span_y1 = np.concatenate([w.span_y[1:] for w in splines]) if splines else np.empty(0)
+        spans = np.array([w.spans_x.shape[0] for w in splines], dtype=np.intp)
+        self.n_spans, self.first_span, self.first_end, self.slot = (np.zeros(len(walls), dtype=np.intp) for _ in range(4))
+        self.n_spans[index] = spans
+        self.first_span[index] = np.cumsum(spans) - spans
+        self.first_end[index] = np.cumsum(spans + 1) - (spans + 1)
+        self.slot[index] = np.arange(len(index))
+        self.y_first, self.y_last = np.zeros(len(walls)), np.zeros(len(walls))
+        self.y_first[index] = [w.span_y[0] for w in splines]
+        self.y_last[index] = [w.span_y[-1] for w in splines]
+        # Span ends of wall slot k, shifted by k·shift past every other wall's: one sorted array.
+        ends = [w.span_y for w in splines]
+        self.base = min((e[0] for e in ends), default=0.0)
+        self.shift = max((e[-1] for e in ends), default=0.0) - self.base + 1.0
+        self.keys = np.concatenate([e - self.base + k * self.shift for k, e in enumerate(ends)]) if ends else np.empty(0)
+
+    def _local_span(self, walls, y, side):
+        """Index within wall walls[i] of the span whose start is the last one below (side
+        "left") or at or below ("right") y[i], y clipped to the wall's ends; may be −1 or n."""
+        y = np.clip(y, self.y_first[walls], self.y_last[walls])
+        key = y - self.base + self.slot[walls] * self.shift
+        return np.searchsorted(self.keys, key, side=side) - 1 - self.first_end[walls]
+
+    def span_parameter(self, walls, y):
+        """Span (index into the stacked spans) and local u ∈ [0, 1] where wall walls[i] has
+        height y[i] (same shapes; y clipped to the curve's ends; u NaN where y is NaN)."""
+        walls, y = np.broadcast_arrays(np.asarray(walls, dtype=np.intp), np.asarray(y, dtype=float))
+        flat_w, flat_y = walls.reshape(-1), y.reshape(-1)
+        span = self.first_span[flat_w].copy()
+        u = np.full(flat_y.size, np.nan)
+        known = np.flatnonzero(~np.isnan(flat_y))
+        w, yk = flat_w[known], np.clip(flat_y[known], self.y_first[flat_w[known]], self.y_last[flat_w[known]])
+        span[known] += np.clip(self._local_span(w, yk, "right"), 0, self.n_spans[w] - 1)
+        c = self.spans_y[span[known]] - yk[:, None] * self.spans_w[span[known]]
+        u[known] = bracketed_root(c, np.zeros(known.size), np.ones(known.size), c[:, 0], c.sum(axis=1))
+        return span.reshape(y.shape), u.reshape(y.shape)
+
+    def x_at(self, walls, y):
+        """x = W_j(y) (mm) of wall walls[i] at y[i] (same shapes); beyond a curve's ends, the
+        end's x; NaN where y is NaN."""
+        span, u = self.span_parameter(walls, y)
+        return horner(self.spans_x[span], u) / horner(self.spans_w[span], u)
+
+    def crossings(self, walls, x0, y0, dx, dy, lo, hi):
+        """Edge parameters l (k, r) in [lo, hi] where line i, (x0 + l·dx, y0 + l·dy), meets wall
+        walls[i]; all (k,). NaN-padded; a line with dx = dy = 0 never crosses.
 
         Per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u; its real
-        roots in [0, 1] (only spans whose y range and control box x range meet the segment's; one
-        bracketed root where the polynomial is proved monotone) give the points, and l their
-        projection on the line. NaN-padded; a line with dx = dy = 0 never
-        crosses.
+        roots in [0, 1] give the points, and l their projection on the line. Only spans whose y
+        range meets the segment's (a run, as y is monotone along the curve) and whose control
+        box meets the segment's x range over that y range are solved; one bracketed root where
+        the polynomial is proved monotone.
         """
-        k = x0.size
-        sx = np.stack([x0 + dx * lo, x0 + dx * hi])
+        k = np.size(x0)
         sy = np.stack([y0 + dy * lo, y0 + dy * hi])
-        # The spans are in increasing y, so those whose y range meets the segment's are a run.
-        y_lo, y_hi, ends = sy.min(0), sy.max(0), self.span_y
-        first = np.clip(np.searchsorted(ends, y_lo, side="left") - 1, 0, None)
-        last = np.minimum(np.searchsorted(ends, y_hi, side="right") - 1, ends.size - 2)
-        count = np.where((y_hi >= ends[0]) & (y_lo <= ends[-1]), last - first + 1, 0).clip(0)
+        y_lo, y_hi = sy.min(0), sy.max(0)
+        first = np.maximum(self._local_span(walls, y_lo, "left"), 0)
+        last = np.minimum(self._local_span(walls, y_hi, "right"), self.n_spans[walls] - 1)
+        meets = (y_hi >= self.y_first[walls]) & (y_lo <= self.y_last[walls])
+        count = np.where(meets, last - first + 1, 0).clip(0)
         line = np.repeat(np.arange(k), count)
-        span = first[line] + np.arange(line.size) - np.repeat(np.cumsum(count) - count, count)
-        # Keep a span if the segment's x range over the span's y range meets its control box.
+        span = self.first_span[walls[line]] + first[line] + np.arange(line.size) - np.repeat(np.cumsum(count) - count, count)
         with np.errstate(divide="ignore", invalid="ignore"):
-            at = (ends[np.stack([span, span + 1])] - y0[line]) / dy[line]
+            at = (np.stack([self.span_y0[span], self.span_y1[span]]) - y0[line]) / dy[line]
         level = np.abs(dy[line]) <= STRAIGHT_EPS  # a segment along x: its whole x range
         l1 = np.where(level, lo[line], np.clip(at.min(axis=0), lo[line], hi[line]))
         l2 = np.where(level, hi[line], np.clip(at.max(axis=0), lo[line], hi[line]))
@@ -241,9 +299,8 @@ class SplineWall:
         b = self.span_boxes[span]
         meet = (np.maximum(xa, xb) >= b[:, 0]) & (np.minimum(xa, xb) <= b[:, 1])
         line, span = line[meet], span[meet]
-        out = np.full((k, 0), np.nan)
         if line.size == 0:
-            return out
+            return np.full((k, 0), np.nan)
         poly = ((self.spans_x[span] - x0[line, None] * self.spans_w[span]) * dy[line, None]
                 - (self.spans_y[span] - y0[line, None] * self.spans_w[span]) * dx[line, None])
         u = np.full((line.size, poly.shape[1] - 1), np.nan)
