@@ -2,12 +2,13 @@
 
 Inputs are validated dataclasses (:class:`Tool`, :class:`Staircase`, :class:`Toolpath`,
 :class:`CutSettings`); :func:`engage` returns an :class:`Engagement` of arrays over
-CL points × rotation angles. Lengths in mm, angles in degrees.
+CL points × rotation angles; :func:`flute_engagement` a :class:`FluteEngagement` of every
+flute's helical edge (docs/HELIX.md). Lengths in mm, angles in degrees.
 """
 
 from .engagement import CASES, SURFACES, Engagement, cut_thickness, edge_lines, engage, segment_letter
-from .helix import FluteEngagement, flute_engagement
 from .frames import angles_to_axis, axis_to_angles, rotation_matrix
+from .helix import FluteEngagement, flute_engagement
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import k_coefficients
 from .walls import Wall

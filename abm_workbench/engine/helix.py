@@ -227,9 +227,11 @@ class Helices:
         return int(self.psi0.size)
 
     def points(self, l):
-        """Points (N, K, 3) at axial positions l (N, K) mm."""
-        rows = np.arange(len(self))[:, None]
-        return np.stack([c.value(rows, l) for c in self.coordinates], axis=-1)
+        """Points (N, K, 3) at axial positions l (N, K) mm (sin ψ and cos ψ once for all three coordinates)."""
+        psi = self.psi0[:, None] - self.kappa * l
+        radial = (np.sin(psi)[..., None] * self.frames[:, None, :, 0]
+                  + np.cos(psi)[..., None] * self.frames[:, None, :, 1])
+        return self.cl[:, None, :] + self.radius * radial + l[..., None] * self.frames[:, None, :, 2]
 
 
 def _tagged_roots(lines, offsets, tags):

@@ -294,3 +294,37 @@ def test_bad_input_is_refused():
     with pytest.raises(ValueError, match="flute must be in 0..1"):
         result.as_engagement(2)
     assert Tool(10, 2, 20).helix == 0.0
+
+
+@pytest.mark.parametrize("bend", [0.0, 0.004])
+def test_a_wall_grazed_by_the_helix_leaves_a_gap_of_the_right_length(bend):
+    """A vertical tool whose helix (β = 45°) grazes wall x = x_w + bend·y², 10^-8 mm beyond it at
+    the closest approach: past the wall lies a section too low to cut, so the flute's cut
+    has a gap between the two crossings (about 10^-3 mm apart). The crossings come from
+    scipy's brentq on either side of the grazing point found by minimize_scalar."""
+    from scipy.optimize import minimize_scalar
+    radius, helix, psi0, cl = 5.0, 45.0, 150.0, np.array([0.0, 0.0, 0.0])
+    kappa = np.tan(np.radians(helix)) / radius
+
+    def point(l):
+        psi = np.radians(psi0) - kappa * l
+        return cl + np.array([radius * np.sin(psi), radius * np.cos(psi), l])
+
+    def beyond(l, x_w):  # x − W(y) along the helix
+        x, y, _ = point(l)
+        return x - (x_w + bend * y * y)
+
+    apex = minimize_scalar(lambda l: -beyond(l, 0.0), bounds=(0.0, 2.0 * np.pi / kappa), method="bounded",
+                           options={"xatol": 1e-12}).x
+    x_w = beyond(apex, 0.0) - 1e-8
+    first = brentq(lambda l: beyond(l, x_w), apex - 0.05, apex, xtol=1e-15)
+    second = brentq(lambda l: beyond(l, x_w), apex, apex + 0.05, xtol=1e-15)
+    assert 1e-4 < second - first < 1e-2
+    ys = np.linspace(-20.0, 20.0, 6)
+    stock = Staircase(-30.0, 30.0, -20.0, 20.0, -5.0, [25.0, -4.0], [[[x_w + bend * y * y, y] for y in ys]])
+    result = flute_engagement(stock, Tool(2 * radius, 1, 20, helix=helix), Toolpath([cl], [0.0], [0.0]),
+                              CutSettings(0.1, 0, psi0, psi0, 1))
+    pieces = [(a, b) for a, b in zip(result.start[0, 0, 0], result.end[0, 0, 0]) if not np.isnan(a)]
+    gaps = [(b0, a1) for (_, b0), (a1, _) in zip(pieces, pieces[1:])]
+    assert any(abs(g0 - first) <= 1e-9 and abs(g1 - second) <= 1e-9 for g0, g1 in gaps), (pieces, first, second)
+    assert abs(result.axial_length[0, 0, 0] - (20.0 - (second - first))) <= 1e-9
