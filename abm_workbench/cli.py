@@ -11,6 +11,10 @@ APT file (CUTTER/TLDATA diameter and flute length, SPINDL speed, a constant FEDR
 tooth), else a --job file, else their defaults; the second line of the output says which.
 What the APT file could not read, or had to assume, is printed once as ``abm: warning: ...``.
 
+engage --workers N runs the pass in chunks of CL points on N local processes (0: all cores),
+--scheduler tcp://host:port on a Dask cluster; the results are the same bytes (docs/SCALING.md).
+The results CSV is written chunk by chunk, so memory stays bounded however long the pass.
+
 Errors in the input print ``abm: error: <message>`` on stderr and exit with status 2,
 leaving no output behind (an existing one is replaced only on success); a failure to write
 exits with 1, an interrupt (Ctrl-C) with 130, under the same rule. Missing output folders are
@@ -18,8 +22,9 @@ made once the results are ready to be written.
 """
 
 import argparse
-import functools
 import contextlib
+import dataclasses
+import functools
 import os
 import re
 import sys
@@ -30,7 +35,8 @@ import numpy as np
 from .engine import engage, zmap_engage
 from .errors import InputError
 from .formats import replacing
-from .formats.results_csv import results_text, summary_path, summary_text, write_text
+from .formats.results_csv import chunk_texts, summary_path, write_chunks
+from .parallel import ChunkError, PassAssembly, map_chunks, toolpath_part, worker_count
 from .jobs import (PARAMETERS, SOLID_SUFFIXES, WALL_MODELS, WALL_POINTS, load_job, load_path, load_stock,
                    resolve_parameters, swept_y_window, tool_and_settings)
 
@@ -61,7 +67,7 @@ def main(argv=None):
     except InputError as error:
         print(f"{PROG}: error: {error}", file=sys.stderr)
         return 2
-    except OSError as error:
+    except (OSError, ChunkError) as error:
         print(f"{PROG}: error: {error}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
@@ -94,6 +100,13 @@ def _build_parser():
     method.add_argument("--edge-step", type=float, metavar="MM",
                         help="Z-map sampling step along the cutting edge (mm), default the grid size; "
                              "--method zmap only")
+    parallel = engage_parser.add_argument_group("parallel runs (--method abm; docs/SCALING.md)")
+    parallel.add_argument("--workers", type=int, default=1, metavar="N",
+                          help="local processes computing chunks of CL points: 1 (default) this process only, "
+                               "0 all cores; the results are the same bytes")
+    parallel.add_argument("--scheduler", metavar="tcp://HOST:PORT",
+                          help="run the chunks on the Dask cluster behind this scheduler (its workers must be able "
+                               "to import abm_workbench) instead of local processes")
     engage_parser.set_defaults(run=_run_engage)
 
     validate_parser = commands.add_parser(
@@ -203,31 +216,30 @@ def _run_engage(args):
     _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
     stock, _ = _load_stock(args, toolpath, tool)
 
+    progress = _engine_progress() if sys.stderr.isatty() else None
     started = time.perf_counter()
-    engagement = compute(stock.staircase, tool, toolpath, settings,
-                         progress=_engine_progress() if sys.stderr.isatty() else None)
+    whole = PassAssembly(len(toolpath)) if args.plot else None
+    depth = np.full(len(toolpath), np.nan)
+    with _output_folders(outputs), replacing(*outputs) as temporaries:
+        if compute is None:
+            chunks = map_chunks(_CsvChunk(keep=whole is not None), [(stock.staircase, tool, toolpath, settings)],
+                                workers=args.workers, scheduler=args.scheduler, progress=progress)
+        else:
+            engagement = compute(stock.staircase, tool, toolpath, settings, progress=progress)
+            chunks = [(0, 0, len(toolpath), (chunk_texts(engagement, 0, toolpath=toolpath), engagement.depth_of_cut,
+                                              engagement))]
+        write_chunks(_kept(chunks, depth, whole), temporaries[0], temporaries[1])
+        if np.isnan(depth).all():
+            raise InputError(_no_engagement(args))
+        if whole is not None:
+            from .report.plots import pass_figure  # here: matplotlib takes a while to import
+            title = job.get("description") or (
+                f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}: D {tool.diameter:g} mm, "
+                f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
+            pass_figure(whole.engagement(), title=title).savefig(temporaries[2], format="png")
     elapsed_ms = 1e3 * (time.perf_counter() - started)
-    if not engagement.engaged.any():
-        raise InputError(_no_engagement(args))
 
-    texts = (results_text(engagement), summary_text(engagement, toolpath=toolpath))
-    title = job.get("description") or (
-        f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}: D {tool.diameter:g} mm, "
-        f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
-    figure = None
-    if args.plot:
-        from .report.plots import pass_figure  # here: matplotlib takes a while to import
-        figure = pass_figure(engagement, title=title)
-    for path in outputs:  # only now, so that bad input leaves no folder behind either
-        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with replacing(*outputs) as temporaries:
-        for temporary, text in zip(temporaries, texts):
-            write_text(temporary, text)
-        if figure is not None:
-            figure.savefig(temporaries[2], format="png")
-
-    m, p = engagement.shape
-    depth = engagement.depth_of_cut
+    m, p = len(toolpath), settings.phi.size
     print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms{method_text}; "
           f"depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage); "
@@ -236,14 +248,75 @@ def _run_engage(args):
     return 0
 
 
+@dataclasses.dataclass(frozen=True)
+class _CsvChunk:
+    """Task of a parallel engage: a chunk of CL points engaged and formatted as CSV text.
+
+    Returns ((results, summary) text, depth of cut (n,), the chunk's Engagement if `keep` else None).
+    """
+
+    keep: bool
+
+    def __call__(self, job, start, stop):
+        stock, tool, toolpath, settings = job
+        part = toolpath_part(toolpath, start, stop)
+        engagement = engage(stock, tool, part, settings)
+        return chunk_texts(engagement, start, toolpath=part), engagement.depth_of_cut, engagement if self.keep else None
+
+
+def _kept(chunks, depth, whole):
+    """The CSV texts of (job, start, stop, _CsvChunk result) `chunks`, in order; each chunk's depth of
+    cut stored into `depth` (m,) and, when `whole` (a PassAssembly) is given, its Engagement added."""
+    for _, start, stop, (texts, chunk_depth, engagement) in chunks:
+        depth[start:stop] = chunk_depth
+        if whole is not None:
+            whole.add(engagement, start)
+        yield texts
+
+
+@contextlib.contextmanager
+def _output_folders(outputs):
+    """Make the missing folders of `outputs`; remove the ones made (if empty) when the block fails."""
+    made = []
+    for path in outputs:
+        folder, missing = os.path.dirname(os.path.abspath(path)), []
+        while not os.path.exists(folder):
+            folder, missing = os.path.dirname(folder), missing + [folder]
+        for folder in reversed(missing):
+            os.mkdir(folder)
+            made.append(folder)
+    try:
+        yield
+    except BaseException:
+        for folder in reversed(made):
+            with contextlib.suppress(OSError):
+                os.rmdir(folder)
+        raise
+
+
 def _engage_method(args):
-    """(function computing the Engagement, text for the output line) of --method, --grid, --edge-step."""
+    """(function computing the Engagement, text for the output line) of --method, --grid, --edge-step;
+    (None, text) for ABM, which runs in chunks (--workers, --scheduler)."""
     if args.method == "abm":
         given = [option for option, value in (("--grid", args.grid), ("--edge-step", args.edge_step))
                  if value is not None]
         if given:
             raise InputError(f"{given[0]} applies to --method zmap, not to --method abm")
-        return engage, ""
+        try:
+            workers = worker_count(args.workers)
+        except ValueError:
+            raise InputError(f"--workers: must be 0 (all cores) or a positive number of processes, got "
+                             f"{args.workers}") from None
+        if args.scheduler is not None and not re.fullmatch(r"[a-z][a-z0-9+.-]*://\S+", args.scheduler):
+            raise InputError(f"--scheduler: expected a Dask scheduler address such as tcp://127.0.0.1:8786, "
+                             f"got {args.scheduler!r}")
+        where = (f" on the Dask cluster at {args.scheduler}" if args.scheduler else
+                 f" on {workers} processes" if workers > 1 else "")
+        return None, where
+    parallel = [option for option, given in (("--workers", args.workers != 1), ("--scheduler", args.scheduler))
+                if given]
+    if parallel:
+        raise InputError(f"{parallel[0]} applies to --method abm: the Z-map updates its stock CL point by CL point")
     grid = ZMAP_GRID if args.grid is None else args.grid
     step = grid if args.edge_step is None else args.edge_step
     for option, value in (("--grid", grid), ("--edge-step", step)):

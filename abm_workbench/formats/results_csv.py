@@ -65,13 +65,16 @@ def write_text(path, text):
         file.write(text)
 
 
-def results_text(engagement):
-    """The results CSV of an Engagement (m CL points × p angles: m·p rows) as one string."""
+def results_text(engagement, *, first_cl=0):
+    """The results CSV of an Engagement (m CL points × p angles: m·p rows) as one string.
+
+    first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass).
+    """
     m, p = engagement.shape
     flat = {name: getattr(engagement, name).reshape(-1) for name in (
         "lep_l", "uep_l", "length", "pieces", "uep_section", "uep_wall", "area")}
     columns = {
-        "cl": np.repeat(np.arange(m), p).astype(str),
+        "cl": np.repeat(np.arange(first_cl, first_cl + m), p).astype(str),
         "phi_deg": _numbers(np.tile(engagement.phi, m)),
         **{name: _numbers(flat[name]) for name in ("lep_l", "uep_l", "length")},
         "pieces": flat["pieces"].astype(str),
@@ -90,8 +93,12 @@ def results_text(engagement):
     return _csv(RESULT_COLUMNS, [columns[name] for name in RESULT_COLUMNS])
 
 
-def summary_text(engagement, *, toolpath=None):
-    """The summary CSV of an Engagement as one string (see the module docstring)."""
+def summary_text(engagement, *, toolpath=None, first_cl=0):
+    """The summary CSV of an Engagement as one string (see the module docstring).
+
+    first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass;
+    toolpath is then the chunk's).
+    """
     records = []
     for cl in range(engagement.shape[0]):
         segments = engagement.segments(cl) or [
@@ -105,7 +112,7 @@ def summary_text(engagement, *, toolpath=None):
         return [segment[key] for _, segment in records]
 
     columns = [
-        cl.astype(str), _numbers(engagement.depth_of_cut[cl]), field("letter"),
+        (cl + first_cl).astype(str), _numbers(engagement.depth_of_cut[cl]), field("letter"),
         _numbers(field("phi_start")), _numbers(field("phi_end")), field("surface"),
         np.array(field("section")).astype(str), np.array(field("wall")).astype(str),
         _numbers(field("max_length")), _numbers(field("mean_length")),
@@ -118,6 +125,34 @@ def summary_text(engagement, *, toolpath=None):
         columns += [_numbers(toolpath.cl[cl, axis]) for axis in range(3)]
         columns += [_numbers(toolpath.theta_a[cl]), _numbers(toolpath.theta_b[cl])]
     return _csv(names, columns)
+
+
+def chunk_texts(engagement, first_cl, *, toolpath=None):
+    """(results, summary) CSV text of a chunk of a pass: the Engagement of CL points first_cl, ….
+
+    toolpath: the chunk's Toolpath, or None. Header lines only in the first chunk (first_cl = 0),
+    so the texts of a pass's chunks, concatenated in order, are write_results' two files byte
+    for byte (each CL point's rows depend on that CL point alone).
+    """
+    texts = (results_text(engagement, first_cl=first_cl),
+             summary_text(engagement, toolpath=toolpath, first_cl=first_cl))
+    return texts if first_cl == 0 else tuple(text.split("\n", 1)[1] for text in texts)
+
+
+def write_chunks(parts, path, summary):
+    """Write (results, summary) text pairs from the iterable `parts`, in order, to files `path` and
+    `summary` (UTF-8, \\n line ends), one pair in memory at a time. Returns the number of pairs.
+
+    Write to temporaries (formats.replacing) for all-or-nothing output.
+    """
+    count = 0
+    with open(path, "w", encoding="utf-8", newline="") as results, \
+            open(summary, "w", encoding="utf-8", newline="") as segments:
+        for results_part, summary_part in parts:
+            results.write(results_part)
+            segments.write(summary_part)
+            count += 1
+    return count
 
 
 def _numbers(values):
