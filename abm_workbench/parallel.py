@@ -57,11 +57,13 @@ def worker_count(workers):
     return int(workers) or len(os.sched_getaffinity(0))
 
 
-def cl_ranges(m, p, chunk_instants=CHUNK_INSTANTS):
+def cl_ranges(m, p, chunk_instants=None):
     """[(start, stop), …] CL ranges covering m CL points of p angles, about `chunk_instants` each.
 
     Each range holds a whole number of the engine's chunks of max(1, chunk_instants // p) CL points.
+    chunk_instants None: CHUNK_INSTANTS (as in every function here).
     """
+    chunk_instants = CHUNK_INSTANTS if chunk_instants is None else chunk_instants
     step = max(1, int(chunk_instants) // max(int(p), 1))
     return [(start, min(int(m), start + step)) for start in range(0, int(m), step)]
 
@@ -72,13 +74,14 @@ def toolpath_part(toolpath, start, stop):
     return Toolpath(toolpath.cl[start:stop], toolpath.theta_a[start:stop], toolpath.theta_b[start:stop], cc)
 
 
-def engage_chunk(job, start, stop, chunk_instants=CHUNK_INSTANTS):
+def engage_chunk(job, start, stop, chunk_instants=None):
     """Engagement of CL points start:stop of `job` (stock, tool, toolpath, settings), rows 0.. = CL start.."""
     stock, tool, toolpath, settings = job
+    chunk_instants = CHUNK_INSTANTS if chunk_instants is None else chunk_instants
     return engage(stock, tool, toolpath_part(toolpath, start, stop), settings, chunk_instants=chunk_instants)
 
 
-def engage_parallel(stock, tool, toolpath, settings, *, workers=1, scheduler=None, chunk_instants=CHUNK_INSTANTS,
+def engage_parallel(stock, tool, toolpath, settings, *, workers=1, scheduler=None, chunk_instants=None,
                     progress=None):
     """Engagement of one pass, computed chunk by chunk where `workers` / `scheduler` say.
 
@@ -89,14 +92,15 @@ def engage_parallel(stock, tool, toolpath, settings, *, workers=1, scheduler=Non
                        chunk_instants=chunk_instants, progress=progress)[0]
 
 
-def engage_jobs(jobs, *, workers=1, scheduler=None, chunk_instants=CHUNK_INSTANTS, progress=None):
+def engage_jobs(jobs, *, workers=1, scheduler=None, chunk_instants=None, progress=None):
     """Engagements of many jobs (stock, tool, toolpath, settings), one per job, computed together.
 
     Chunks of every job share the workers. progress(done, total): CL points done over all jobs.
     """
     jobs = list(jobs)
+    chunk_instants = CHUNK_INSTANTS if chunk_instants is None else int(chunk_instants)
     passes = [PassAssembly(len(job[2])) for job in jobs]
-    for j, start, stop, chunk in map_chunks(_EngageTask(int(chunk_instants)), jobs, workers=workers,
+    for j, start, stop, chunk in map_chunks(_EngageTask(chunk_instants), jobs, workers=workers,
                                             scheduler=scheduler, chunk_instants=chunk_instants, progress=progress):
         passes[j].add(chunk, start)
     return [assembly.engagement() for assembly in passes]
@@ -144,7 +148,7 @@ class PassAssembly:
         return Engagement(**self.fields)
 
 
-def map_chunks(task, jobs, *, workers=1, scheduler=None, chunk_instants=CHUNK_INSTANTS, progress=None):
+def map_chunks(task, jobs, *, workers=1, scheduler=None, chunk_instants=None, progress=None):
     """Run task(job, start, stop) on every chunk of CL points of every job; yield results in order.
 
     jobs: sequence of (stock, tool, toolpath, settings). `task` must be picklable (a module-level
