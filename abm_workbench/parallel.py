@@ -173,7 +173,7 @@ def map_chunks(task, jobs, *, workers=1, scheduler=None, chunk_instants=None, pr
 
 def _in_order(pool, task, chunks, total, n_jobs, progress):
     """Submit `chunks` to `pool` a few per worker at a time; yield their results in chunk order."""
-    window = max(1, pool.workers * IN_FLIGHT_PER_WORKER)
+    window = 1 if isinstance(pool, _InlinePool) else max(1, pool.workers * IN_FLIGHT_PER_WORKER)
     pending, finished, done = {}, {}, 0
     following = 0  # index of the next chunk to submit
     for index, (j, start, stop) in enumerate(chunks):

@@ -75,7 +75,7 @@ def results_text(engagement, *, first_cl=0):
         "lep_l", "uep_l", "length", "pieces", "uep_section", "uep_wall", "area")}
     columns = {
         "cl": np.repeat(np.arange(first_cl, first_cl + m), p).astype(str),
-        "phi_deg": _numbers(np.tile(engagement.phi, m)),
+        "phi_deg": np.tile(_numbers(engagement.phi), m),
         **{name: _numbers(flat[name]) for name in ("lep_l", "uep_l", "length")},
         "pieces": flat["pieces"].astype(str),
         "uep_surface": engagement.surface_names().reshape(-1),
@@ -83,7 +83,7 @@ def results_text(engagement, *, first_cl=0):
         "uep_wall": flat["uep_wall"].astype(str),
         "case": engagement.case_names().reshape(-1),
         "segment": _letters(engagement.segment.reshape(-1)),
-        "h": _numbers(np.tile(engagement.h, m)),
+        "h": np.tile(_numbers(engagement.h), m),
         "area": _numbers(flat["area"]),
     }
     for point in ("lep", "uep"):
@@ -156,10 +156,15 @@ def write_chunks(parts, path, summary):
 
 
 def _numbers(values):
-    """Text (same shape) of float `values`: rounded to DECIMALS places, '' for NaN."""
+    """Text (same shape) of float `values`: rounded to DECIMALS places, '' for NaN.
+
+    Python's repr, the shortest text that reads back as the value (as numpy's str of a float64).
+    """
     values = np.asarray(values, dtype=float)
-    text = (np.round(values, DECIMALS) + 0.0).astype(str)  # + 0.0 turns -0.0 into 0.0
-    return np.where(np.isnan(values), "", text)
+    rounded = (np.round(values, DECIMALS) + 0.0).reshape(-1).tolist()  # + 0.0 turns -0.0 into 0.0
+    text = np.array(list(map(repr, rounded)), dtype=object).reshape(values.shape)
+    text[np.isnan(values)] = ""
+    return text
 
 
 def _letters(segment):
@@ -169,10 +174,12 @@ def _letters(segment):
 
 
 def _csv(names, columns):
-    """CSV text: a header of `names`, then one line per row of the equal-length `columns`."""
-    table = np.stack([np.asarray(column, dtype=str) for column in columns], axis=1)
-    lines = [",".join(names)] + [",".join(row) for row in table.tolist()]
-    return "\n".join(lines) + "\n"
+    """CSV text: a header of `names`, then one line per row of the equal-length `columns` (of text)."""
+    lists = []
+    for column in columns:
+        column = np.asarray(column)
+        lists.append((column if column.dtype.kind in "UO" else column.astype(str)).tolist())
+    return "\n".join([",".join(names), *map(",".join, zip(*lists))]) + "\n"
 
 
 def read_results(path):
