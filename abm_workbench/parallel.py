@@ -173,7 +173,7 @@ def map_chunks(task, jobs, *, workers=1, scheduler=None, chunk_instants=None, pr
 
 def _in_order(pool, task, chunks, total, n_jobs, progress):
     """Submit `chunks` to `pool` a few per worker at a time; yield their results in chunk order."""
-    window = 1 if isinstance(pool, _InlinePool) else max(1, pool.workers * IN_FLIGHT_PER_WORKER)
+    window = pool.in_flight
     pending, finished, done = {}, {}, 0
     following = 0  # index of the next chunk to submit
     for index, (j, start, stop) in enumerate(chunks):
@@ -201,9 +201,9 @@ def _result(future, chunk, n_jobs):
 
 
 class _InlinePool:
-    """Runs each task at once, in this process (futures already done)."""
+    """Runs each task at once, in this process (futures already done), one chunk at a time."""
 
-    workers = 1
+    in_flight = 1
 
     def __init__(self, jobs):
         self.jobs = jobs
@@ -245,7 +245,7 @@ class _ProcessPool:
     """Local worker processes; the jobs are sent to each once, tasks name them by index."""
 
     def __init__(self, workers, jobs):
-        self.workers = workers
+        self.in_flight = workers * IN_FLIGHT_PER_WORKER
         self.executor = concurrent.futures.ProcessPoolExecutor(workers, initializer=_set_jobs, initargs=(jobs,))
 
     def __enter__(self):
@@ -277,7 +277,8 @@ class _DaskPool:
             raise SchedulerError(f"Dask scheduler {address}: no answer within {SCHEDULER_TIMEOUT:g} s "
                                  f"({type(error).__name__}: {error})") from None
         try:
-            self.workers = max(1, sum(w.get("nthreads", 1) for w in self.client.scheduler_info()["workers"].values()))
+            threads = sum(w.get("nthreads", 1) for w in self.client.scheduler_info()["workers"].values())
+            self.in_flight = max(1, threads) * IN_FLIGHT_PER_WORKER
             self.jobs = self.client.scatter(jobs, broadcast=True)
             self.completed = distributed.as_completed(loop=self.client.loop)
         except BaseException:

@@ -203,6 +203,11 @@ def plot(rows, path):
         style = "o-" if len(done) > 1 else "s"
         time_axes.loglog(n, [row["best_s"] for row in done], style, label=case)
         memory_axes.loglog(n, [row["peak_mib"] for row in done], style, label=case)
+    reference = [row for row in rows if row["case"] == "api" and row.get("best_s") and row["instants"] >= 10**6]
+    if reference:
+        n = np.array([1e3, 1e7])
+        time_axes.loglog(n, reference[0]["best_s"] * n / reference[0]["instants"], ":", color="grey",
+                         label="∝ instants")
     time_axes.set(xlabel="instants (CL points × φ)", ylabel="best time (s)", title="time")
     memory_axes.set(xlabel="instants (CL points × φ)", ylabel="peak RSS (MiB)", title="peak memory (measuring process)")
     for axes in (time_axes, memory_axes):
@@ -217,7 +222,9 @@ def main():
     parser.add_argument("--sizes", default=",".join(str(n) for n in SIZES), help="instants, comma-separated")
     parser.add_argument("--cli-max", type=float, default=1e6,
                         help="largest size run through the command line in one process (default 10^6: CSV "
-                             "formatting takes ~45 µs per instant, some 8 minutes at 10^7)")
+                             "formatting takes ~20 µs per instant, 3-4 minutes more at 10^7)")
+    parser.add_argument("--cases", default="api,cli,cli-2,workers-1,workers-2,dask",
+                        help="cases to run, comma-separated (default all)")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "benchmarks"), help="output folder")
     parser.add_argument("--child", help=argparse.SUPPRESS)
     parser.add_argument("--instants", type=int, help=argparse.SUPPRESS)
@@ -227,7 +234,10 @@ def main():
         print(json.dumps(child(args.child, args.instants, args.runs)))
         return
     rows = []
-    for case, instants in cases([int(float(n)) for n in args.sizes.split(",")], args.cli_max):
+    chosen = args.cases.split(",")
+    plan = [(case, n) for case, n in cases([int(float(n)) for n in args.sizes.split(",")], args.cli_max)
+            if case in chosen]
+    for case, instants in plan:
         row = measure(case, instants, runs_for(case, instants))
         if row.get("best_s"):
             row["instants_per_s"] = row["instants"] / row["best_s"]
