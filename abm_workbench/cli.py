@@ -18,7 +18,7 @@ The results CSV is written chunk by chunk, so memory stays bounded however long 
 Errors in the input print ``abm: error: <message>`` on stderr and exit with status 2,
 leaving no output behind (an existing one is replaced only on success); a failure to write
 exits with 1, an interrupt (Ctrl-C) with 130, under the same rule. Missing output folders are
-made once the results are ready to be written.
+made before the results are streamed into them, and removed again when the command fails.
 """
 
 import argparse

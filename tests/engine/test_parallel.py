@@ -196,3 +196,23 @@ def test_cli_unreachable_scheduler_leaves_nothing(tmp_path, capsys, monkeypatch)
     _, err = capsys.readouterr()
     assert err.count(f"abm: error: Dask scheduler {address}: no answer within 1 s") == 2
     assert os.listdir(tmp_path) == ["old.csv"] and (tmp_path / "old.csv").read_text() == "old"
+
+
+def test_cli_no_engagement_found_while_streaming_removes_new_folders(tmp_path, capsys):
+    path = tmp_path / "above.csv"
+    path.write_text("x,y,z,theta_a,theta_b\n10,0,60,0,0\n20,0,60,0,0\n")
+    argv = engage_argv(tmp_path / "new" / "deeper" / "R.csv")
+    argv[argv.index("--toolpath") + 1] = str(path)
+    assert cli.main(argv) == 2
+    assert "the tool never touches the stock" in capsys.readouterr().err
+    assert os.listdir(tmp_path) == ["above.csv"]
+
+
+def test_cli_engine_failure_names_the_cl_range_and_leaves_nothing(tmp_path, capsys, monkeypatch):
+    def broken(*args, **kwargs):
+        raise FloatingPointError("overflow")
+
+    monkeypatch.setattr(cli, "engage", broken)
+    assert cli.main(engage_argv(tmp_path / "new" / "R.csv")) == 1
+    assert capsys.readouterr().err == "abm: error: CL points 0..52: FloatingPointError: overflow\n"
+    assert os.listdir(tmp_path) == []
