@@ -1,10 +1,10 @@
 # One obvious way to run things. FreeCAD's Python is the system interpreter: never the
 # `python3` that happens to be first on PATH.
 PYTHON := /usr/bin/python3
-DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis xvfb xauth
+DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth
 OUT := build
 
-.PHONY: deps model-test-1 model-test-2 validate-model-test-1 validate-model-test-2 test benchmark models install
+.PHONY: deps model-test-1 model-test-2 validate-model-test-1 validate-model-test-2 test benchmark scaling models install
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -33,6 +33,11 @@ test: deps
 
 benchmark: deps
 	$(PYTHON) benchmarks/engine_throughput.py
+
+# Time and peak memory from 10^3 to 10^7 instants: engine, command line, local workers, Dask
+# (docs/SCALING.md); a few minutes, to build/benchmarks/scaling.{csv,png}.
+scaling: deps
+	$(PYTHON) benchmarks/scaling.py
 
 # Re-make the bundled model tests from their design surfaces (JSON and CSV, then STEP solids).
 models: deps

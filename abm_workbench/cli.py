@@ -15,10 +15,14 @@ APT file (CUTTER/TLDATA diameter and flute length, SPINDL speed, a constant FEDR
 tooth), else a --job file, else their defaults; the second line of the output says which.
 What the APT file could not read, or had to assume, is printed once as ``abm: warning: ...``.
 
+engage --workers N runs the pass in chunks of CL points on N local processes (0: all cores),
+--scheduler tcp://host:port on a Dask cluster; the results are the same bytes (docs/SCALING.md).
+The results CSV is written chunk by chunk, so memory stays bounded however long the pass.
+
 Errors in the input print ``abm: error: <message>`` on stderr and exit with status 2,
 leaving no output behind (an existing one is replaced only on success); a failure to write
 exits with 1, an interrupt (Ctrl-C) with 130, under the same rule. Missing output folders are
-made once the results are ready to be written.
+made before the results are streamed into them, and removed again when the command fails.
 """
 
 import argparse
@@ -35,8 +39,10 @@ import numpy as np
 from .engine import engage, flute_engagement, zmap_engage
 from .errors import InputError
 from .formats import replacing
-from .formats.results_csv import results_text, summary_path, summary_text, write_text
-from .forces import COEFFICIENT_NAMES, FULL_SLOT, MATERIALS, Coefficients, check_immersion, material, pass_forces
+from .formats.results_csv import chunk_texts, summary_path, write_chunks
+from .forces import (COEFFICIENT_NAMES, FULL_SLOT, MATERIALS, Coefficients, check_immersion, joined_forces, material,
+                     pass_forces)
+from .parallel import ChunkError, PassAssembly, map_chunks, toolpath_part, worker_count
 from .jobs import (PARAMETERS, SOLID_SUFFIXES, WALL_MODELS, WALL_POINTS, load_job, load_path, load_stock,
                    resolve_parameters, swept_y_window, tool_and_settings)
 
@@ -67,7 +73,7 @@ def main(argv=None):
     except InputError as error:
         print(f"{PROG}: error: {error}", file=sys.stderr)
         return 2
-    except OSError as error:
+    except (OSError, ChunkError) as error:
         print(f"{PROG}: error: {error}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
@@ -102,6 +108,13 @@ def _build_parser():
                         help="Z-map sampling step along the cutting edge (mm), default the grid size; "
                              "--method zmap only")
     _force_arguments(engage_parser)
+    parallel = engage_parser.add_argument_group("parallel runs (--method abm; docs/SCALING.md)")
+    parallel.add_argument("--workers", type=int, default=1, metavar="N",
+                          help="local processes computing chunks of CL points: 1 (default) this process only, "
+                               "0 all cores; the results are the same bytes")
+    parallel.add_argument("--scheduler", metavar="tcp://HOST:PORT",
+                          help="run the chunks on the Dask cluster behind this scheduler (its workers must be able "
+                               "to import abm_workbench) instead of local processes")
     engage_parser.set_defaults(run=_run_engage)
 
     validate_parser = commands.add_parser(
@@ -310,45 +323,40 @@ def _run_engage(args):
     _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
     stock, _ = _load_stock(args, toolpath, tool)
 
+    progress = _engine_progress() if sys.stderr.isatty() else None
     started = time.perf_counter()
-    engagement = compute(stock.staircase, tool, toolpath, settings,
-                         progress=_engine_progress() if sys.stderr.isatty() else None)
+    whole = PassAssembly(len(toolpath)) if args.plot else None
+    force_parts = [] if args.plot and force_model is not None else None
+    depth, peak = np.full(len(toolpath), np.nan), np.full(len(toolpath), np.nan)
+    with _output_folders(outputs), replacing(*outputs) as temporaries:
+        if compute is None:
+            chunks = map_chunks(_CsvChunk(keep=whole is not None, force_model=force_model),
+                                [(stock.staircase, tool, toolpath, settings)],
+                                workers=args.workers, scheduler=args.scheduler, progress=progress)
+        else:
+            engagement = compute(stock.staircase, tool, toolpath, settings, progress=progress)
+            chunks = [(0, 0, len(toolpath), ChunkResult(chunk_texts(engagement, 0, toolpath=toolpath),
+                                                        engagement.depth_of_cut, engagement))]
+        write_chunks(_kept(chunks, depth, peak, whole, force_parts), temporaries[0], temporaries[1])
+        if np.isnan(depth).all():
+            raise InputError(_no_engagement(args))
+        if whole is not None:
+            from .report.plots import pass_figure  # here: matplotlib takes a while to import
+            title = job.get("description") or (
+                f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}: D {tool.diameter:g} mm, "
+                f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
+            pass_figure(whole.engagement(), title=title).savefig(temporaries[2], format="png")
+        if force_parts is not None:
+            from .report.forces import chosen_cl, force_over_phi_figure
+            forces = joined_forces(force_parts)
+            force_over_phi_figure(forces, chosen_cl(forces), along=True).savefig(temporaries[3], format="png")
     elapsed_ms = 1e3 * (time.perf_counter() - started)
-    if not engagement.engaged.any():
-        raise InputError(_no_engagement(args))
 
-    forces = None
-    if force_model is not None:
-        forces = pass_forces(stock.staircase, tool, toolpath, settings, force_model[0], immersion=force_model[1],
-                             first=engagement.length if tool.helix == 0.0 else None)
-    texts = (results_text(engagement, forces=forces), summary_text(engagement, toolpath=toolpath, forces=forces))
-    title = job.get("description") or (
-        f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}: D {tool.diameter:g} mm, "
-        f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
-    figure = None
-    if args.plot:
-        from .report.plots import pass_figure  # here: matplotlib takes a while to import
-        figure = pass_figure(engagement, title=title)
-    force_figure = None
-    if args.plot and forces is not None:
-        from .report.forces import chosen_cl, force_over_phi_figure
-        force_figure = force_over_phi_figure(forces, chosen_cl(forces), along=True)
-    for path in outputs:  # only now, so that bad input leaves no folder behind either
-        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with replacing(*outputs) as temporaries:
-        for temporary, text in zip(temporaries, texts):
-            write_text(temporary, text)
-        if figure is not None:
-            figure.savefig(temporaries[2], format="png")
-        if force_figure is not None:
-            force_figure.savefig(temporaries[3], format="png")
-
-    m, p = engagement.shape
-    depth = engagement.depth_of_cut
+    m, p = len(toolpath), settings.phi.size
     print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms{method_text}; "
           f"depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
-          + ("" if forces is None else f"; peak force {forces.peak.max():.4g} N at CL {int(forces.peak.argmax())}")
+          + ("" if force_model is None else f"; peak force {np.nanmax(peak):.4g} N at CL {int(np.nanargmax(peak))}")
           + f"; wrote {', '.join(outputs)}")
     print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
     return 0
@@ -359,14 +367,100 @@ def _helix_text(tool):
     return f", helix {tool.helix:g}° [--helix]" if tool.helix else ""
 
 
+@dataclasses.dataclass(frozen=True)
+class ChunkResult:
+    """What a chunk task of engage gives back: (results, summary) CSV text and the depth of cut
+    (n,); the chunk's Engagement and Forces when kept for the plots; the peak resultant force
+    (n,) when forces are computed."""
+
+    texts: tuple
+    depth: np.ndarray
+    engagement: object = None
+    forces: object = None
+    peak: object = None
+
+
+@dataclasses.dataclass(frozen=True)
+class _CsvChunk:
+    """Task of a parallel engage: a chunk of CL points engaged (flute 1, straight or helical) and,
+    when force_model = (Coefficients, immersion) is given, its forces, as a ChunkResult; the
+    Engagement and Forces are kept for the plots when `keep`."""
+
+    keep: bool
+    force_model: object = None
+
+    def __call__(self, job, start, stop):
+        stock, tool, toolpath, settings = job
+        part = toolpath_part(toolpath, start, stop)
+        engagement = _flute_1(stock, tool, part, settings)
+        forces = None
+        if self.force_model is not None:
+            coefficients, immersion = self.force_model
+            forces = pass_forces(stock, tool, part, settings, coefficients, immersion=immersion,
+                                 first=engagement.length if tool.helix == 0.0 else None)
+        return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces), engagement.depth_of_cut,
+                           engagement if self.keep else None, forces if self.keep else None,
+                           None if forces is None else forces.peak)
+
+
+def _kept(chunks, depth, peak, whole, force_parts):
+    """The CSV texts of (job, start, stop, ChunkResult) `chunks`, in order; each chunk's depth of
+    cut and peak force stored into `depth` and `peak` (m,), its Engagement added to `whole` (a
+    PassAssembly) and its Forces appended to `force_parts`, when these are given."""
+    for _, start, stop, result in chunks:
+        depth[start:stop] = result.depth
+        if result.peak is not None:
+            peak[start:stop] = result.peak
+        if whole is not None:
+            whole.add(result.engagement, start)
+        if force_parts is not None:
+            force_parts.append(result.forces)
+        yield result.texts
+
+
+@contextlib.contextmanager
+def _output_folders(outputs):
+    """Make the missing folders of `outputs`; remove the ones made (if empty) when the block fails."""
+    made = []
+    for path in outputs:
+        folder, missing = os.path.dirname(os.path.abspath(path)), []
+        while not os.path.exists(folder):
+            folder, missing = os.path.dirname(folder), missing + [folder]
+        for folder in reversed(missing):
+            os.mkdir(folder)
+            made.append(folder)
+    try:
+        yield
+    except BaseException:
+        for folder in reversed(made):
+            with contextlib.suppress(OSError):
+                os.rmdir(folder)
+        raise
+
+
 def _engage_method(args):
-    """(function computing the Engagement, text for the output line) of --method, --grid, --edge-step."""
+    """(function computing the Engagement, text for the output line) of --method, --grid, --edge-step;
+    (None, text) for ABM, which runs in chunks (--workers, --scheduler)."""
     if args.method == "abm":
         given = [option for option, value in (("--grid", args.grid), ("--edge-step", args.edge_step))
                  if value is not None]
         if given:
             raise InputError(f"{given[0]} applies to --method zmap, not to --method abm")
-        return _flute_1, ""
+        try:
+            workers = worker_count(args.workers)
+        except ValueError:
+            raise InputError(f"--workers: must be 0 (all cores) or a positive number of processes, got "
+                             f"{args.workers}") from None
+        if args.scheduler is not None and not re.fullmatch(r"[a-z][a-z0-9+.-]*://\S+", args.scheduler):
+            raise InputError(f"--scheduler: expected a Dask scheduler address such as tcp://127.0.0.1:8786, "
+                             f"got {args.scheduler!r}")
+        where = (f" on the Dask cluster at {args.scheduler}" if args.scheduler else
+                 f" on {workers} processes" if workers > 1 else "")
+        return None, where
+    parallel = [option for option, given in (("--workers", args.workers != 1), ("--scheduler", args.scheduler))
+                if given]
+    if parallel:
+        raise InputError(f"{parallel[0]} applies to --method abm: the Z-map updates its stock CL point by CL point")
     grid = ZMAP_GRID if args.grid is None else args.grid
     step = grid if args.edge_step is None else args.edge_step
     for option, value in (("--grid", grid), ("--edge-step", step)):

@@ -347,6 +347,15 @@ def helical_forces(flutes, rotation, coefficients, *, feed=None, spindle_rpm=Non
     )
 
 
+def joined_forces(parts):
+    """The Forces of a pass from the Forces of its chunks of CL points, in pass order: the
+    per-CL-point arrays joined, φ, the radius and the spindle speed taken from the first."""
+    first = parts[0]
+    per_cl = {f.name: np.concatenate([getattr(part, f.name) for part in parts])
+              for f in dataclasses.fields(Forces) if f.name not in ("phi", "radius", "spindle_rpm")}
+    return dataclasses.replace(first, **per_cl)
+
+
 def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL_SLOT, feed=None, first=None):
     """Forces of a pass: straight flutes through the engine's engage per flute (edge_forces),
     helical ones (tool.helix ≠ 0) through helix.flute_engagement (helical_forces).

@@ -73,15 +73,18 @@ def write_text(path, text):
         file.write(text)
 
 
-def results_text(engagement, *, forces=None):
+def results_text(engagement, *, first_cl=0, forces=None):
     """The results CSV of an Engagement (m CL points × p angles: m·p rows) as one string;
-    with `forces` (a Forces of the same pass) the force columns too."""
+    with `forces` (a Forces of the same CL points) the force columns too.
+
+    first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass).
+    """
     m, p = engagement.shape
     flat = {name: getattr(engagement, name).reshape(-1) for name in (
         "lep_l", "uep_l", "length", "pieces", "uep_section", "uep_wall", "area")}
     columns = {
-        "cl": np.repeat(np.arange(m), p).astype(str),
-        "phi_deg": _numbers(np.tile(engagement.phi, m)),
+        "cl": np.repeat(np.arange(first_cl, first_cl + m), p).astype(str),
+        "phi_deg": np.tile(_numbers(engagement.phi), m),
         **{name: _numbers(flat[name]) for name in ("lep_l", "uep_l", "length")},
         "pieces": flat["pieces"].astype(str),
         "uep_surface": engagement.surface_names().reshape(-1),
@@ -89,7 +92,7 @@ def results_text(engagement, *, forces=None):
         "uep_wall": flat["uep_wall"].astype(str),
         "case": engagement.case_names().reshape(-1),
         "segment": _letters(engagement.segment.reshape(-1)),
-        "h": _numbers(np.tile(engagement.h, m)),
+        "h": np.tile(_numbers(engagement.h), m),
         "area": _numbers(flat["area"]),
     }
     for point in ("lep", "uep"):
@@ -107,8 +110,12 @@ def results_text(engagement, *, forces=None):
     return _csv(names, [columns[name] for name in names])
 
 
-def summary_text(engagement, *, toolpath=None, forces=None):
-    """The summary CSV of an Engagement as one string (see the module docstring)."""
+def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None):
+    """The summary CSV of an Engagement as one string (see the module docstring).
+
+    first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass;
+    toolpath and forces are then the chunk's).
+    """
     records = []
     for cl in range(engagement.shape[0]):
         segments = engagement.segments(cl) or [
@@ -122,7 +129,7 @@ def summary_text(engagement, *, toolpath=None, forces=None):
         return [segment[key] for _, segment in records]
 
     columns = [
-        cl.astype(str), _numbers(engagement.depth_of_cut[cl]), field("letter"),
+        (cl + first_cl).astype(str), _numbers(engagement.depth_of_cut[cl]), field("letter"),
         _numbers(field("phi_start")), _numbers(field("phi_end")), field("surface"),
         np.array(field("section")).astype(str), np.array(field("wall")).astype(str),
         _numbers(field("max_length")), _numbers(field("mean_length")),
@@ -140,11 +147,44 @@ def summary_text(engagement, *, toolpath=None, forces=None):
     return _csv(names, columns)
 
 
+def chunk_texts(engagement, first_cl, *, toolpath=None, forces=None):
+    """(results, summary) CSV text of a chunk of a pass: the Engagement of CL points first_cl, ….
+
+    toolpath, forces: the chunk's Toolpath and Forces, or None. Header lines only in the first chunk (first_cl = 0),
+    so the texts of a pass's chunks, concatenated in order, are write_results' two files byte
+    for byte (each CL point's rows depend on that CL point alone).
+    """
+    texts = (results_text(engagement, first_cl=first_cl, forces=forces),
+             summary_text(engagement, toolpath=toolpath, first_cl=first_cl, forces=forces))
+    return texts if first_cl == 0 else tuple(text.split("\n", 1)[1] for text in texts)
+
+
+def write_chunks(parts, path, summary):
+    """Write (results, summary) text pairs from the iterable `parts`, in order, to files `path` and
+    `summary` (UTF-8, \\n line ends), one pair in memory at a time. Returns the number of pairs.
+
+    Write to temporaries (formats.replacing) for all-or-nothing output.
+    """
+    count = 0
+    with open(path, "w", encoding="utf-8", newline="") as results, \
+            open(summary, "w", encoding="utf-8", newline="") as segments:
+        for results_part, summary_part in parts:
+            results.write(results_part)
+            segments.write(summary_part)
+            count += 1
+    return count
+
+
 def _numbers(values):
-    """Text (same shape) of float `values`: rounded to DECIMALS places, '' for NaN."""
+    """Text (same shape) of float `values`: rounded to DECIMALS places, '' for NaN.
+
+    Python's repr, the shortest text that reads back as the value (as numpy's str of a float64).
+    """
     values = np.asarray(values, dtype=float)
-    text = (np.round(values, DECIMALS) + 0.0).astype(str)  # + 0.0 turns -0.0 into 0.0
-    return np.where(np.isnan(values), "", text)
+    rounded = (np.round(values, DECIMALS) + 0.0).reshape(-1).tolist()  # + 0.0 turns -0.0 into 0.0
+    text = np.array(list(map(repr, rounded)), dtype=object).reshape(values.shape)
+    text[np.isnan(values)] = ""
+    return text
 
 
 def _letters(segment):
@@ -154,10 +194,12 @@ def _letters(segment):
 
 
 def _csv(names, columns):
-    """CSV text: a header of `names`, then one line per row of the equal-length `columns`."""
-    table = np.stack([np.asarray(column, dtype=str) for column in columns], axis=1)
-    lines = [",".join(names)] + [",".join(row) for row in table.tolist()]
-    return "\n".join(lines) + "\n"
+    """CSV text: a header of `names`, then one line per row of the equal-length `columns` (of text)."""
+    lists = []
+    for column in columns:
+        column = np.asarray(column)
+        lists.append((column if column.dtype.kind in "UO" else column.astype(str)).tolist())
+    return "\n".join([",".join(names), *map(",".join, zip(*lists))]) + "\n"
 
 
 def read_results(path):

@@ -204,17 +204,18 @@ def test_failure_leaves_older_results_untouched(case, capsys):
 def test_interrupt_while_writing_leaves_nothing(case, capsys, monkeypatch):
     written = []
 
-    def interrupt_second(path, text):
-        written.append(path)
-        if len(written) == 2:
-            raise KeyboardInterrupt
-        with open(path, "w") as file:
-            file.write(text)
+    def interrupt_after_first_chunk(parts, path, summary):
+        with open(path, "w") as results, open(summary, "w") as segments:
+            for results_text, summary_text in parts:
+                results.write(results_text)
+                segments.write(summary_text)
+                written.append(path)
+                raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli, "write_text", interrupt_second)
+    monkeypatch.setattr(cli, "write_chunks", interrupt_after_first_chunk)
     status, _, err = run(BASE, capsys)
     assert (status, err) == (130, "abm: interrupted\n")
-    assert len(written) == 2 and sorted(os.listdir(case)) == INPUTS
+    assert len(written) == 1 and sorted(os.listdir(case)) == INPUTS
 
 
 def test_interrupt_in_the_engine(case, capsys, monkeypatch):
