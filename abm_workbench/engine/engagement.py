@@ -7,7 +7,7 @@ straight walls (X-cylindrical) and the curved walls (curve boundary, real roots 
 composed quintic), and each piece between crossings is classified by the height field at its
 midpoint (notes §5). LEP is the start of the first inside piece, UEP the end of the last, and
 the length of cut the total inside length. All instants of a chunk of CL points are solved in
-one set of array operations; only exact (B-spline) walls are looped over, one at a time.
+one set of array operations, exact (B-spline) walls included (Staircase.splines stacks them).
 
 Lengths are in mm, φ in degrees at the interface.
 """

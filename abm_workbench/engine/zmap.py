@@ -169,8 +169,10 @@ def zmap_engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutS
     Z-map by each CL point's removal after its engagement (False: every CL point sees the
     initial stock, as `engage` does). Returns an :class:`Engagement` with the fields `engage`
     gives; `case` is always 'none' (no Table 1 from a grid), the UEP surface is classified from
-    the grid (docs/ZMAP.md).
+    the grid (docs/ZMAP.md). A helical tool is refused (ValueError).
     """
+    if tool.helix != 0.0:
+        raise ValueError(f"the Z-map samples a straight edge; the tool has a helix angle of {tool.helix:g} deg")
     zmap = ZMap(stock, grid)
     step = grid if edge_step is None else edge_step
     step = _positive("edge_step", step)

@@ -11,6 +11,7 @@ SURFACE_COLOURS = {
     "curved_wall": (0.84, 0.15, 0.16),
     "flute_end": (0.58, 0.4, 0.74),
     "stock_side": (0.55, 0.34, 0.29),
+    "immersion_end": (0.17, 0.63, 0.17),
 }
 
 #: Per engagement segment, by index (A, B, C, …), repeating after ten.

@@ -229,3 +229,11 @@ def test_grid_heights_are_the_staircase_at_the_cell_centres(grid):
     np.testing.assert_array_equal(zmap.height, stock.z_top[sections])
     single = ZMap(Staircase(0.0, 3.0, 0.0, 2.0, -1.0, np.array([1.0]), np.empty((0, 6, 2))), grid)
     np.testing.assert_array_equal(single.height, 1.0)
+
+
+def test_a_helical_tool_is_refused():
+    """The Z-map samples a straight edge: a helix angle is an error, not silently ignored."""
+    stock = Staircase(0, 40, 0, 30, 0, [10.0], np.empty((0, 6, 2)))
+    path = Toolpath(np.array([[20.0, 15.0, 0.0]]), np.zeros(1), np.zeros(1))
+    with pytest.raises(ValueError, match="helix angle of 30 deg"):
+        zmap_engage(stock, Tool(10, 2, 20, helix=30.0), path, CutSettings(0.1))
