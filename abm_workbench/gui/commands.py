@@ -321,6 +321,19 @@ class ValidateEngagement(Command):
             return
         self.execute(engagement, text, folder)
 
+    def execute(self, *args):
+        """run(*args), errors to the report view, a cancel said as such; the report's path, or None."""
+        from .validate import Cancelled
+
+        try:
+            return self.run(*args)
+        except Cancelled as cancelled:
+            FreeCAD.Console.PrintWarning(f"{PROG}: {cancelled}\n")
+            return None
+        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
+            report_error(error)
+            return None
+
     def activated(self, doc, engagement, cls_text="all", folder=None, open_report=True):
         """Validate `engagement` at the CL points of `cls_text` ("all" or "0,22,40") into `folder`
         (default beside the document); records ValidationReport and opens the report. Its path."""

@@ -9,8 +9,8 @@ FreeCAD's main window, showing one engagement object at a time (:func:`show`):
 - "Colour by" (the view property ``ColourBy``) and the legend: for segments, the UEP surface
   kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit;
 - matplotlib plots (``FigureCanvasQTAgg``) for the chosen CL point: length of cut, cut area
-  and cut thickness h over φ, each engagement segment in its colour
-  (``report.colours.segment_colour``), and the pass progression: depth of cut and maximum
+  and cut thickness h over φ, each engagement segment in the colour of its UEP surface (as on
+  the model, ``report.colours.SURFACE_COLOURS``), and the pass progression: depth of cut and maximum
   length of cut over the CL points, a marker at the chosen one.
 """
 
@@ -136,7 +136,7 @@ class EngagementDock(QtWidgets.QDockWidget):
     def plot(self, result, cl):
         """Length of cut, cut area, h (the same at every CL point) over φ at `cl`, and the pass progression
         with `cl` marked."""
-        from ..report.colours import segment_colour
+        from ..report.colours import SURFACE_COLOURS
 
         figure = self.figure
         figure.clear()
@@ -147,14 +147,14 @@ class EngagementDock(QtWidgets.QDockWidget):
             ax.plot(phi, np.where(result.engaged[cl], values, np.nan), color="0.6", linewidth=1.0)
             for index, segment in enumerate(result.segments(cl)):
                 rows = result.segment[cl] == index
-                ax.plot(phi[rows], values[rows], ".-", markersize=2, color=segment_colour(index),
-                        label=segment["letter"])
+                ax.plot(phi[rows], values[rows], ".-", markersize=2, color=SURFACE_COLOURS[segment["surface"]],
+                        label=f"{segment['letter']} {segment['surface'].replace('_', ' ')}")
             ax.set_ylabel(label, fontsize="small")
             ax.set_xlim(phi[0], phi[-1] if len(phi) > 1 else phi[0] + 1.0)
             ax.grid(True, alpha=0.3)
         axes[0].set_title(f"CL {cl} over the tool rotation angle φ", fontsize="small")
         if result.segments(cl):
-            axes[0].legend(fontsize="x-small", ncol=6, title="segment", title_fontsize="x-small")
+            axes[0].legend(fontsize="x-small", ncol=3, title="segment: UEP surface", title_fontsize="x-small")
         axes[2].set_xlabel("φ (deg)", fontsize="small")
         index = np.arange(result.shape[0])
         depth, longest = result.depth_of_cut, result.length.max(axis=1)

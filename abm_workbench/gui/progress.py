@@ -56,5 +56,7 @@ class ProgressDialog:
             raise Cancelled("validation cancelled: nothing written")
 
     def close(self):
+        """Hide the dialog and let it go (out of the main window at once: Qt deletes it later)."""
         self.dialog.reset()
+        self.dialog.setParent(None)
         self.dialog.deleteLater()

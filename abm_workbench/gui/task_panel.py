@@ -66,6 +66,7 @@ class EngagementPanel:
     def __init__(self, obj, *, new):
         self.obj, self.new = obj, new
         self.error = None  # the message shown, or None when the values are valid
+        self.buttons = None  # the task dialog's QDialogButtonBox, once FreeCAD has made it
         self.form = QtWidgets.QWidget()
         self.form.setObjectName("ABM_EngagementPanel")
         self.form.setWindowTitle("Engagement: tool and cut")
@@ -95,7 +96,6 @@ class EngagementPanel:
         self.message.setStyleSheet("color: #b00000;")
         layout.addRow(self.message)
         self.hints = self._hints()
-        QtCore.QTimer.singleShot(0, self.check)  # once the panel, and its OK button, are shown
         self.check()
 
     def _combo(self, name, choices):
@@ -195,28 +195,18 @@ class EngagementPanel:
         for name in self.names:
             self.field(name).setStyleSheet(INVALID_STYLE if name == field else "")
         self.message.setText(f"abm: error: {message}" if message else "")
-        button = self.ok_button()
-        if button is not None:
-            button.setEnabled(message is None)
+        if self.buttons is not None:
+            self.buttons.button(QtWidgets.QDialogButtonBox.Ok).setEnabled(message is None)
         return message is None
-
-    def ok_button(self):
-        """The task dialog's OK button, or None before the panel is shown. Python wrappers of Qt
-        objects that FreeCAD made and replaced can outlive them: those are skipped."""
-        from shiboken2 import isValid
-
-        widget = self.form.parentWidget()
-        while widget is not None:
-            for box in widget.findChildren(QtWidgets.QDialogButtonBox):
-                button = box.button(QtWidgets.QDialogButtonBox.Ok) if isValid(box) else None
-                if button is not None and isValid(button):
-                    return button
-            widget = widget.parentWidget()
-        return None
 
     # ---- task dialog --------------------------------------------------------------------------
     def getStandardButtons(self):
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+
+    def modifyStandardButtons(self, buttons):
+        """FreeCAD hands over the dialog's button box once it is made: OK follows the check."""
+        self.buttons = buttons
+        self.check()
 
     def accept(self):
         """Apply the values and recompute; close and commit when that works, else say why and stay."""
