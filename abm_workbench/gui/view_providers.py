@@ -150,8 +150,9 @@ class EngagementViewProvider(ViewProvider):
         return True
 
     def highlight(self, cl):
-        """Draw the engaged part of CL point `cl` on top of everything (None: nothing): a yellow line
-        from LEP to UEP at every engaged angle, the LEP and UEP curves, and the CL point."""
+        """Draw the engaged part of CL point `cl` on top of everything (None: nothing): in yellow, its LEP
+        and UEP curves and the cutting edge from LEP to UEP at every HIGHLIGHT_EDGES-th engaged angle
+        (the faces' own colours show between them), and the CL point in black."""
         from pivy import coin
 
         self.cl = cl
@@ -173,10 +174,11 @@ class EngagementViewProvider(ViewProvider):
         material = coin.SoBaseColor()
         material.rgb.setValue(*HIGHLIGHT_COLOUR)
         lines = coin.SoCoordinate3()
-        points = np.stack([lep, uep], axis=1).reshape(-1, 3)
+        step = max(1, len(lep) // HIGHLIGHT_EDGES)
+        points = np.stack([lep[::step], uep[::step]], axis=1).reshape(-1, 3)
         lines.point.setValues(0, len(points), points.tolist())
         fan = coin.SoLineSet()
-        fan.numVertices.setValues(0, len(lep), [2] * len(lep))
+        fan.numVertices.setValues(0, len(points) // 2, [2] * (len(points) // 2))
         for node in (light, style, material, lines, fan):
             self.overlay.addChild(node)
         for curve in (lep, uep):
@@ -198,6 +200,8 @@ class EngagementViewProvider(ViewProvider):
 HIGHLIGHT_COLOUR = (1.0, 0.85, 0.0)
 HIGHLIGHT_POINT_COLOUR = (0.0, 0.0, 0.0)
 HIGHLIGHT_LINE_WIDTH, HIGHLIGHT_POINT_SIZE = 3.0, 12.0
+#: About this many cutting edges (LEP to UEP) drawn across the highlighted CL point.
+HIGHLIGHT_EDGES = 12
 
 
 def add_colour_by(vobj):
