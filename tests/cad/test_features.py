@@ -323,6 +323,20 @@ def test_the_documented_example_runs(tmp_path):
     assert (tmp_path / "out" / "model_test_1_abm" / "Engagement.csv").is_file()
 
 
+def test_the_readme_headless_example_runs(tmp_path):
+    with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as file:
+        text = file.read()
+    section = text[text.index("## FreeCAD workbench (GUI)"):]
+    script = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    (tmp_path / "script.py").write_text(script)
+    done = subprocess.run([sys.executable, str(tmp_path / "script.py"), str(tmp_path / "out")], cwd=ROOT,
+                          capture_output=True, text=True, timeout=180, env={**os.environ, "PYTHONPATH": ROOT})
+    assert done.returncode == 0, done.stderr
+    assert "4823 instants, depth of cut 1.81-7.43 mm; diameter 12 mm [Diameter]" in done.stdout  # 53 × 91
+    assert "reopened: 53 CL points x 91 angles, max length of cut" in done.stdout
+    assert (tmp_path / "out" / "pass_abm" / "Engagement.csv").is_file()
+
+
 def test_links_must_be_abm_objects(doc):
     stock = create_stock(doc, STOCK_JSON)
     toolpath = create_toolpath(doc, TOOLPATH)
