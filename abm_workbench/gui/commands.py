@@ -166,8 +166,8 @@ class _ImportFile(Command):
         if path:
             self.execute(path)
 
-    def activated(self, doc, path):
-        made = self.create(doc, path)
+    def activated(self, doc, source):
+        made = self.create(doc, source)
         view_providers.attach(made)
         recompute_checked(doc, (made,))
         fit_view()
@@ -175,19 +175,36 @@ class _ImportFile(Command):
 
 
 class ImportStock(_ImportFile):
-    """A stock from a STEP / BREP / FCStd solid or a staircase JSON."""
+    """A stock from the selected solid of the document, else a STEP / BREP / FCStd solid or a
+    staircase JSON chosen in a file dialog."""
 
     Name = "ABM_ImportStock"
     MenuText = "Import stock…"
-    ToolTip = "Add a staircase stock from a STEP, BREP or FCStd solid (recognised, exact walls) or a staircase JSON"
+    ToolTip = ("Add a staircase stock from the selected solid, or from a STEP, BREP or FCStd solid (recognised, "
+               "exact walls) or a staircase JSON")
     TITLE = "Import stock"
     FILTER = STOCK_FILTER
 
+    def Activated(self):
+        doc = FreeCAD.ActiveDocument
+        solids = [obj for obj in FreeCADGui.Selection.getSelection(doc.Name) if is_solid_object(obj)] if doc else []
+        if len(solids) == 1:
+            self.execute(solids[0])
+        else:
+            super().Activated()
+
     @staticmethod
-    def create(doc, path):
+    def create(doc, source):
+        """The stock object of `source`: a file path or a document object with a solid."""
         from ..features import create_stock
 
-        return create_stock(doc, path)
+        return create_stock(doc, source)
+
+
+def is_solid_object(obj):
+    """True for a document object (not an ABM one) whose Shape holds a solid."""
+    shape = getattr(obj, "Shape", None)
+    return view_providers.kind(obj) is None and shape is not None and not shape.isNull() and bool(shape.Solids)
 
 
 class ImportToolpath(_ImportFile):

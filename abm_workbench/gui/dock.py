@@ -93,7 +93,10 @@ class EngagementDock(QtWidgets.QDockWidget):
         obj = self.obj
         result = _result(obj)
         if result is None:
-            self.title.setText(f"{obj.Label if obj is not None else ''}: no results (recompute it)")
+            self.title.setText(f"{obj.Label}: no results (recompute it)" if _alive(obj) else
+                               "No engagement: select one and use Inspect engagement")
+            self.about.setText("")
+            self.legend.clear()
             self.figure.clear()
             self.canvas.draw_idle()
             return
@@ -221,11 +224,16 @@ def _hex(rgb):
     return "#" + "".join(f"{int(round(255 * v)):02x}" for v in rgb[:3])
 
 
-def _result(obj):
+def _alive(obj):
+    """True while the document object `obj` exists (not deleted, its document not closed)."""
     try:
-        return obj.Proxy.result(obj) if obj is not None else None
-    except ReferenceError:  # the object was deleted
-        return None
+        return obj is not None and obj.Document.getObject(obj.Name) is not None
+    except Exception:  # noqa: BLE001 (FreeCAD refuses any access to a deleted object)
+        return False
+
+
+def _result(obj):
+    return obj.Proxy.result(obj) if _alive(obj) else None
 
 
 def _deepest(result):
@@ -234,10 +242,7 @@ def _deepest(result):
 
 
 def _highlight(obj, cl):
-    try:
-        provider = obj.ViewObject.Proxy
-    except ReferenceError:
-        return
+    provider = getattr(obj.ViewObject, "Proxy", None) if _alive(obj) else None
     if hasattr(provider, "highlight"):
         provider.highlight(cl)
 
@@ -266,4 +271,12 @@ def refresh(obj):
         return
     dock = find()
     if dock is not None and dock.obj is obj:
+        dock.refresh()
+
+
+def forget(doc):
+    """Empty the dock if it shows an object of `doc` (being closed)."""
+    dock = find() if FreeCAD.GuiUp else None
+    if dock is not None and _alive(dock.obj) and dock.obj.Document.Name == doc.Name:
+        dock.obj = None
         dock.refresh()

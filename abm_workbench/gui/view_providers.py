@@ -277,13 +277,19 @@ def attach_all(doc):
 
 
 class _Observer:
-    """Attaches view providers to ABM objects made outside the commands (see the module docstring)."""
+    """Attaches view providers to ABM objects made outside the commands (see the module docstring);
+    empties the engagement dock when the document it shows is closed."""
 
     def slotActivateDocument(self, doc):
         attach_all(doc)
 
     def slotRecomputedObject(self, obj):
         attach(obj)
+
+    def slotDeletedDocument(self, doc):
+        from . import dock
+
+        dock.forget(doc)
 
 
 _OBSERVER = None

@@ -234,6 +234,25 @@ for folder in {folders!r}:
     grab_screen(os.path.join(folder, "window.png"))
     shots.append(os.path.join(folder, "window.png"))
 verdict["shots"] = shots
+
+# ---- ABM_ImportStock with a solid of the document selected: no dialog, the solid linked ---------
+start = len(report.toPlainText())
+import Part
+solid = doc2.addObject("Part::Feature", "Solid")
+solid.Shape = Part.read(os.path.join({model!r}, "stock.step"))
+doc2.recompute()
+FreeCADGui.Selection.clearSelection()
+FreeCADGui.Selection.addSelection(solid)
+FreeCADGui.runCommand("ABM_ImportStock")
+linked = [o for o in doc2.Objects if o.Name.startswith("Stock") and o.SourceObject is not None]
+verdict["from_solid"] = [len(linked), linked[0].SourceObject.Name if linked else None,
+                         linked[0].Sections if linked else None, list(doc2.UndoNames)[:1]]
+# ---- closing the document the dock shows empties it -----------------------------------------------
+shown_in = panel_dock.obj.Document.Name
+FreeCAD.closeDocument(doc2.Name)
+FreeCADGui.updateGui()
+verdict["dock_closed"] = [shown_in, panel_dock.obj is None, panel_dock.about.text()]
+verdict["report_last"] = report_since(start)
 """
 
 
@@ -345,6 +364,10 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert "path.apt CUTTER" in fixed and "path.apt FEDRAT" in fixed
     for shot in verdict["shots"]:
         assert os.path.getsize(shot) > 20_000, shot  # a picture, not a blank view
+    # a stock from the selected solid; the dock emptied when its document closes
+    assert verdict["from_solid"] == [1, "Solid", 17, ["Import stock…"]]
+    assert verdict["dock_closed"] == ["Imported", True, ""]
+    assert "error" not in verdict["report_last"].lower(), verdict["report_last"]
 
 
 def test_make_screenshots_writes_the_readme_pictures_with_visible_segments(tmp_path):
