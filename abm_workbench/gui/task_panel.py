@@ -15,9 +15,8 @@ The whole edit is one document transaction: OK commits it (after a recompute tha
 Cancel aborts it, which for a new engagement removes the object.
 """
 
-from PySide2 import QtCore, QtWidgets
+from PySide2 import QtWidgets
 
-import FreeCAD
 import FreeCADGui
 
 from ..errors import InputError
@@ -47,7 +46,8 @@ KEY_FIELD = {"diameter": "Diameter", "flutes": "Flutes", "flute_length": "FluteL
 ERROR_WORDS = (("flute_length", "FluteLength"), ("flute-length", "FluteLength"), ("flutes", "Flutes"),
                ("diameter", "Diameter"), ("feed", "FeedPerTooth"), ("inclination", "Inclination"),
                ("phi step", "PhiStep"), ("phi-step", "PhiStep"), ("phi_step", "PhiStep"),
-               ("phi range", "PhiEnd"), ("phi-range", "PhiEnd"), ("angles", "PhiStep"),
+               ("phi range", "PhiEnd"), ("phi-range", "PhiEnd"), ("angles", "PhiStep"), ("phi_start", "PhiStart"),
+               ("phi_end", "PhiEnd"),
                ("spindle", "SpindleSpeed"), ("YWindow", "YWindowMin"), ("y window", "YWindowMin"))
 INVALID_STYLE = "background-color: #ffc8c8;"
 
@@ -65,7 +65,6 @@ class EngagementPanel:
 
     def __init__(self, obj, *, new):
         self.obj, self.new = obj, new
-        self.error = None  # the message shown, or None when the values are valid
         self.buttons = None  # the task dialog's QDialogButtonBox, once FreeCAD has made it
         self.form = QtWidgets.QWidget()
         self.form.setObjectName("ABM_EngagementPanel")
@@ -191,7 +190,6 @@ class EngagementPanel:
         for name in ("YWindowMin", "YWindowMax"):
             self.field(name).setEnabled(values["YWindow"] == "custom")
         message, field = self.problem(values)
-        self.error = message
         for name in self.names:
             self.field(name).setStyleSheet(INVALID_STYLE if name == field else "")
         self.message.setText(f"abm: error: {message}" if message else "")
