@@ -116,7 +116,7 @@ verdict["report_dock"] = report_since(start)
 # ---- the task panel by setEdit (double-click): a bad value, then a changed one, accepted ------
 start = len(report.toPlainText())
 instants = [engagement.Instants]
-FreeCADGui.ActiveDocument.setEdit(engagement, 0)
+engagement.ViewObject.Proxy.doubleClicked(engagement.ViewObject)  # as a double-click in the tree
 FreeCADGui.updateGui()
 panel = task_panel.shown()
 ok = lambda: panel.buttons.button(QtWidgets.QDialogButtonBox.Ok).isEnabled()
@@ -143,6 +143,15 @@ doc.undo()
 doc.recompute()
 FreeCADGui.updateGui()
 verdict["edit_undone"] = [engagement.Inclination.Value, engagement.Instants, engagement.State, instants[0]]
+# Cancel: nothing changes, no undo step
+undo_before = list(doc.UndoNames)
+FreeCADGui.ActiveDocument.setEdit(engagement, 0)
+FreeCADGui.updateGui()
+task_panel.shown().field("Inclination").setProperty("rawValue", 3.0)
+task_panel.shown().reject()
+FreeCADGui.updateGui()
+verdict["edit_cancelled"] = [engagement.Inclination.Value, engagement.State, list(doc.UndoNames) == undo_before,
+                             task_panel.shown() is None, FreeCADGui.ActiveDocument.getInEdit() is None]
 verdict["report_panel"] = report_since(start)
 
 # ---- ABM_ValidateEngagement on two CL points; then a cancelled one --------------------------
@@ -326,6 +335,7 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert state == ["Up-to-date"] and inclination == 5.0 and said and closed and not_editing
     assert instants == 53 * 91 and undo_names == ["Edit engagement", "Open model test 1"]  # φ step 2°
     assert verdict["edit_undone"] == [10.0, 53 * 181, ["Up-to-date"], 53 * 181]
+    assert verdict["edit_cancelled"] == [10.0, ["Up-to-date"], True, True, True]
     assert "error" not in verdict["report_panel"].lower(), verdict["report_panel"]
     # validation: the report written and recorded, one undo step; a cancelled one writes nothing
     page, recorded, undo_names = verdict["validated"]
