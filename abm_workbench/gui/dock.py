@@ -26,6 +26,8 @@ from .view_providers import HIGHLIGHT_COLOUR
 OBJECT_NAME = "ABM_EngagementDock"
 #: Width (px) of the legend's colour bar.
 BAR_WIDTH = 220
+#: Height of the length plot × its largest value, so the segment legend sits above the curve.
+LEGEND_HEADROOM = 1.7
 
 
 class EngagementDock(QtWidgets.QDockWidget):
@@ -156,13 +158,15 @@ class EngagementDock(QtWidgets.QDockWidget):
             ax.set_xlim(phi[0], phi[-1] if len(phi) > 1 else phi[0] + 1.0)
             ax.grid(True, alpha=0.3)
         axes[0].set_title(f"CL {cl} over the tool rotation angle φ", fontsize="small")
-        if result.segments(cl):
-            axes[0].legend(fontsize="x-small", ncol=3, title="segment: UEP surface", title_fontsize="x-small")
+        if result.segments(cl):  # room above the curves for the legend
+            axes[0].set_ylim(0.0, LEGEND_HEADROOM * max(float(np.nanmax(result.length[cl])), 1e-9))
+            axes[0].legend(fontsize="x-small", ncol=3, loc="upper center", title="segment: UEP surface",
+                           title_fontsize="x-small")
         axes[2].set_xlabel("φ (deg)", fontsize="small")
         index = np.arange(result.shape[0])
         depth, longest = result.depth_of_cut, result.length.max(axis=1)
         axes[3].plot(index, depth, ".-", color="black", label="depth of cut")
-        axes[3].plot(index, longest, ".-", color="tab:blue", label="max length of cut")
+        axes[3].plot(index, longest, ".-", color="tab:green", label="max length of cut")
         axes[3].axvline(cl, color=_hex(HIGHLIGHT_COLOUR), linewidth=2.0)
         for values in (depth, longest):
             if np.isfinite(values[cl]):
