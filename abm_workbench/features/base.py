@@ -16,7 +16,7 @@ workbench adds missing properties, renames old ones, etc. there, then sets ``Ver
 from ..cad.freecad_env import FreeCAD
 
 #: Version of the document objects' properties: bump it when they change, and migrate.
-VERSION = 1
+VERSION = 2
 #: Editor modes of FreeCAD properties.
 READ_ONLY, HIDDEN = 1, 2
 
@@ -85,7 +85,7 @@ class FeatureProxy:
     def migrate(self, obj, saved_version):
         """Bring an object saved with `saved_version` (0: before versions) to VERSION.
 
-        Version 1 is the first: only the Version property itself can be missing.
+        Here: the Version property itself; subclasses add what their later versions added.
         """
         add_properties(obj, "Base", [("App::PropertyInteger", "Version",
                                       "version of this object's properties (for migration on restore)")],

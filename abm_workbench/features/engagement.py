@@ -42,6 +42,7 @@ import os
 import shutil
 import tempfile
 import time
+from typing import NamedTuple
 
 import numpy as np
 
@@ -49,7 +50,7 @@ from ..cad.freecad_env import FreeCAD, Part
 from ..engine import engage
 from ..errors import InputError
 from ..formats.results_csv import write_results
-from ..jobs import PARAMETERS, WALL_MODELS, Parameters, resolve_parameters, tool_and_settings
+from ..jobs import PARAMETERS, WALL_MODELS, Parameters, resolve_parameters, swept_y_window, tool_and_settings
 from .base import FeatureProxy, add_properties, document_or_active
 from .stored import read_engagement
 from .stock import StockFeature
@@ -57,6 +58,8 @@ from .toolpath import ToolpathFeature, polyline
 
 #: WallModel choices: the stock object's, or one of the wall models.
 WALL_CHOICES = ("stock",) + WALL_MODELS
+#: YWindow choices: auto is the command line's default (swept for quintic walls, whole for exact ones).
+Y_WINDOWS = ("auto", "whole", "swept", "custom")
 #: create_engagement keyword -> (property, value when not set). Required ones are 0 when not set.
 SETTINGS = {
     "diameter": ("Diameter", 0.0), "flutes": ("Flutes", 0), "flute_length": ("FluteLength", 0.0),
@@ -76,6 +79,29 @@ _PROP_OUTPUT = 8
 _TEMP_FOLDERS = {}  # document Name -> temporary results folder of an unsaved document
 
 
+class EngagementInputs(NamedTuple):
+    """The engine's inputs of an engagement object: the Toolpath and PathHints of its file, the
+    resolved Parameters (sources named by property), the Tool and CutSettings, and the stock as a
+    :class:`abm_workbench.jobs.Stock` (its staircase, solid and wall model)."""
+
+    toolpath: object
+    hints: object
+    parameters: Parameters
+    tool: object
+    settings: object
+    stock: object
+
+
+def given_parameters(obj):
+    """The engagement object's cutting properties as resolve_parameters' `given` (unset: None)."""
+    return {
+        "diameter": _or_none(obj.Diameter.Value), "flutes": _or_none(obj.Flutes),
+        "flute_length": _or_none(obj.FluteLength.Value), "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
+        "inclination": obj.Inclination.Value, "spindle_rpm": _or_none(obj.SpindleSpeed),
+        "phi_range": (obj.PhiStart.Value, obj.PhiEnd.Value), "phi_step": obj.PhiStep.Value,
+    }
+
+
 class EngagementFeature(FeatureProxy):
     """Proxy of the engagement object (see the module docstring)."""
 
@@ -91,6 +117,7 @@ class EngagementFeature(FeatureProxy):
         ])
         obj.WallModel = list(WALL_CHOICES)
         obj.WallModel = "stock"
+        add_version_2_properties(obj, "auto")
         add_properties(obj, "Tool", [
             ("App::PropertyLength", "Diameter", "tool diameter (required; the toolpath file's CUTTER wins)", 0.0),
             ("App::PropertyInteger", "Flutes", "number of flutes (required)", 0),
@@ -135,19 +162,15 @@ class EngagementFeature(FeatureProxy):
         self._toolpath = None  # the Toolpath of the results (for the summary's CL point columns)
 
     # ---- computing -------------------------------------------------------------------------
-    def execute(self, obj):
-        """Run the engine; store the results (CSV, read-only properties, Shape)."""
-        self._result, self._written = None, None
+    def inputs(self, obj):
+        """What the engine runs on, as ``execute`` resolves it (an :class:`EngagementInputs`).
+
+        InputError with the command line's message for bad or missing input.
+        """
         toolpath, hints = _proxy(obj.Toolpath, ToolpathFeature, "Toolpath", obj).load(obj.Toolpath)
         stock_obj = obj.Stock
         stock_proxy = _proxy(stock_obj, StockFeature, "Stock", obj)
-        given = {
-            "diameter": _or_none(obj.Diameter.Value), "flutes": _or_none(obj.Flutes),
-            "flute_length": _or_none(obj.FluteLength.Value), "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
-            "inclination": obj.Inclination.Value, "spindle_rpm": _or_none(obj.SpindleSpeed),
-            "phi_range": (obj.PhiStart.Value, obj.PhiEnd.Value), "phi_step": obj.PhiStep.Value,
-        }
-        parameters = resolve_parameters(given, hints, {})
+        parameters = resolve_parameters(given_parameters(obj), hints, {})
         sources = {key: _PROPERTY_SOURCE.get(source, source) for key, source in parameters.sources.items()}
         parameters = Parameters(parameters.values, sources, parameters.conflicts)
         tool, settings = tool_and_settings(parameters.values)
@@ -155,14 +178,24 @@ class EngagementFeature(FeatureProxy):
         if walls is not None and not stock_proxy.is_solid(stock_obj):
             raise InputError(f"WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
                              f"{stock_proxy.source_name(stock_obj)}")
-        staircase = stock_proxy.staircase(stock_obj, walls)
+        window = y_window(obj, stock_obj, walls or stock_obj.WallModel, toolpath, tool)
+        stock = stock_proxy.load(stock_obj, walls, window)
+        return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)
+
+    def execute(self, obj):
+        """Run the engine; store the results (CSV, read-only properties, Shape)."""
+        self._result, self._written = None, None
+        toolpath, hints, parameters, tool, settings, stock = self.inputs(obj)
+        staircase = stock.staircase
+        if obj.YWindow != "custom":
+            obj.YWindowMin, obj.YWindowMax = staircase.y_min, staircase.y_max
 
         started = time.perf_counter()
         result = engage(staircase, tool, toolpath, settings)
         elapsed = time.perf_counter() - started
         if not result.engaged.any():
             raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "
-                             f"engages it (are the toolpath and {stock_proxy.source_name(stock_obj)} in the "
+                             f"engages it (are the toolpath and {obj.Stock.Proxy.source_name(obj.Stock)} in the "
                              "same frame?)")
         warnings = [*hints.messages(), *parameters.conflicts]
         for message in warnings:
@@ -174,6 +207,12 @@ class EngagementFeature(FeatureProxy):
         obj.Parameters = parameters.describe()
         obj.Warnings = warnings
         obj.Shape = engaged_surfaces(result) if obj.ShowSurfaces else Part.Shape()
+
+    def migrate(self, obj, saved_version):
+        """Version 2 added the y window and the validation report; objects saved before were computed
+        over the whole y range."""
+        add_version_2_properties(obj, "whole")
+        super().migrate(obj, saved_version)
 
     def _summary(self, obj, result):
         depth = result.depth_of_cut
@@ -242,6 +281,63 @@ def _proxy(linked, kind, role, obj):
     if not isinstance(proxy, kind):
         raise InputError(f"{obj.Label}: {role} must link an ABM {role} object")
     return proxy
+
+
+def add_version_2_properties(obj, mode):
+    """Add what version 2 added, if missing: the y window (group "Inputs", YWindow set to `mode`)
+    and ValidationReport (group "Validation", read-only, not touching the object)."""
+    if "ValidationReport" not in obj.PropertiesList:
+        obj.addProperty("App::PropertyString", "ValidationReport", "Validation",
+                        "HTML report of the last validation against OpenCASCADE booleans (ABM_ValidateEngagement)",
+                        _PROP_OUTPUT)
+        obj.setEditorMode("ValidationReport", 1)
+    if "YWindow" in obj.PropertiesList:
+        return
+    add_properties(obj, "Inputs", [
+        ("App::PropertyEnumeration", "YWindow", "y range of a solid stock that is recognised: auto (swept for "
+                                                "quintic walls, whole for exact ones, as the command line), whole "
+                                                "(the stock's y range), swept (the y range the cutting edges "
+                                                "sweep below the stock's top, plus 1 mm), custom (YWindowMin.."
+                                                "YWindowMax)"),
+        ("App::PropertyDistance", "YWindowMin", "lower end of the y window: the input when YWindow is custom, "
+                                                "else the one used"),
+        ("App::PropertyDistance", "YWindowMax", "upper end of the y window: the input when YWindow is custom, "
+                                                "else the one used"),
+    ])
+    obj.YWindow = list(Y_WINDOWS)
+    obj.YWindow = mode
+
+
+def y_window(obj, stock_obj, walls, toolpath, tool):
+    """(y0, y1) mm the stock is recognised over for the engagement `obj`, or None for the whole range.
+
+    walls: the wall model used ("exact" or "quintic"). A JSON stock has no y window: YWindow
+    swept or custom is then an InputError, as ``--y-window`` is on the command line. The window
+    is cut to the stock's y range; InputError when nothing is left.
+    """
+    mode = obj.YWindow
+    if mode == "auto":
+        mode = "swept" if walls == "quintic" else "whole"
+    solid = stock_obj.Proxy.is_solid(stock_obj)
+    if not solid:
+        if obj.YWindow in ("swept", "custom"):
+            raise InputError(f"YWindow {obj.YWindow} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), "
+                             f"not to {stock_obj.Proxy.source_name(stock_obj)}")
+        return None
+    if mode == "whole":
+        return None
+    box = stock_obj.Shape.BoundBox
+    if mode == "swept":
+        low, high = swept_y_window(toolpath, tool, box.ZMax)
+    else:
+        low, high = obj.YWindowMin.Value, obj.YWindowMax.Value
+        if not low < high:
+            raise InputError(f"{obj.Label}: YWindowMin ({low:g} mm) must be below YWindowMax ({high:g} mm)")
+    clipped = (max(low, box.YMin), min(high, box.YMax))
+    if not clipped[0] < clipped[1]:
+        raise InputError(f"{stock_obj.Proxy.source_name(stock_obj)}: y window {low:g}..{high:g} mm misses the "
+                         f"stock's y range {box.YMin:g}..{box.YMax:g} mm")
+    return clipped
 
 
 def _or_none(value):
@@ -344,14 +440,16 @@ FreeCAD.addDocumentObserver(_OBSERVER)
 atexit.register(lambda: [shutil.rmtree(folder, ignore_errors=True) for folder in _TEMP_FOLDERS.values()])
 
 
-def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *, walls="stock", **settings):
+def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *, walls="stock", y_window="auto",
+                      **settings):
     """Add an engagement object of `stock` and `toolpath` (objects of create_stock / create_toolpath)
     to `doc` (default the active document; RuntimeError if none).
 
     settings: diameter, flutes, flute_length, feed_per_tooth (mm), spindle_rpm, inclination,
     phi_start, phi_end, phi_step (deg), or phi_range=(start, end); those not given come from the
     toolpath file where it gives them (read now), else stay unset (0) or at their defaults.
-    walls: "stock", "exact" or "quintic". Returns the object (not yet recomputed).
+    walls: "stock", "exact" or "quintic". y_window: "auto", "whole", "swept", or (y0, y1) mm
+    (custom). Returns the object (not yet recomputed).
     """
     doc = document_or_active(doc)
     if "phi_range" in settings:
@@ -361,9 +459,16 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
         raise TypeError(f"create_engagement: unknown setting {unknown[0]!r} (known: {', '.join(SETTINGS)})")
     if walls not in WALL_CHOICES:
         raise ValueError(f"walls must be one of {WALL_CHOICES}, got {walls!r}")
+    if isinstance(y_window, str) and y_window not in Y_WINDOWS[:3]:
+        raise ValueError(f"y_window must be auto, whole, swept or (y0, y1), got {y_window!r}")
     obj = doc.addObject("Part::FeaturePython", name)
     EngagementFeature(obj)
     obj.Stock, obj.Toolpath, obj.WallModel = stock, toolpath, walls
+    if isinstance(y_window, str):
+        obj.YWindow = y_window
+    else:
+        obj.YWindow = "custom"
+        obj.YWindowMin, obj.YWindowMax = (float(value) for value in y_window)
     if toolpath is not None and getattr(toolpath, "File", ""):
         try:
             _, hints = toolpath.Proxy.load(toolpath)

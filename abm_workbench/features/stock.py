@@ -23,6 +23,8 @@ from ..errors import InputError
 from ..jobs import WALL_MODELS, WALL_POINTS, Stock, load_stock
 from .base import FeatureProxy, add_properties, document_or_active
 
+#: Recognised stocks kept per stock object (wall models × y windows asked for).
+_CACHED = 4
 _WALL_MODEL_TIP = ("exact: each wall is the solid's own curve (default); quintic: the paper's quintic through "
                    "six points on the wall. A JSON stock always has the paper's quintic walls.")
 
@@ -52,7 +54,7 @@ class StockFeature(FeatureProxy):
         ], read_only=True)
 
     def _reset(self):
-        self._cache = {}  # {(key of the inputs, walls): jobs.Stock}
+        self._cache = {}  # {(key of the source, walls, wall points, y window): jobs.Stock}
 
     def execute(self, obj):
         """Recognise the stock, set the Shape and the summary properties."""
@@ -70,20 +72,26 @@ class StockFeature(FeatureProxy):
             return obj.SourceObject.Label
         return obj.SourceFile
 
-    def staircase(self, obj, walls=None):
-        """The Staircase of the stock (with wall model `walls`, default the WallModel property)."""
-        return self.load(obj, walls).staircase
+    def staircase(self, obj, walls=None, y_window=None):
+        """The Staircase of the stock (with wall model `walls`, default the WallModel property),
+        recognised over y_window ((y0, y1) mm within the stock's y range; None: all of it)."""
+        return self.load(obj, walls, y_window).staircase
 
     def is_solid(self, obj):
         """True when the stock comes from a solid (a Part object or a STEP / BREP / FCStd file)."""
         return obj.SourceObject is not None or not obj.SourceFile.lower().endswith(".json")
 
-    def load(self, obj, walls=None):
-        """The stock as a :class:`abm_workbench.jobs.Stock`, cached while its inputs stay the same."""
+    def load(self, obj, walls=None, y_window=None):
+        """The stock as a :class:`abm_workbench.jobs.Stock`, cached while its inputs stay the same
+        (the last few wall models and y windows asked for; y_window as in :meth:`staircase`)."""
         walls = walls or obj.WallModel
-        key = (self._source_key(obj), walls, obj.WallPoints)
+        window = None if y_window is None else tuple(float(y) for y in y_window)
+        source = self._source_key(obj)
+        key = (source, walls, obj.WallPoints, window)
         if key not in self._cache:
-            self._cache = {key: self._load(obj, walls)}
+            kept = {old: stock for old, stock in self._cache.items() if old[0] == source}
+            kept = dict(list(kept.items())[-(_CACHED - 1):])
+            self._cache = {**kept, key: self._load(obj, walls, window)}
         return self._cache[key]
 
     def _source_key(self, obj):
@@ -97,18 +105,19 @@ class StockFeature(FeatureProxy):
             stamp = None
         return ("file", path, stamp)
 
-    def _load(self, obj, walls):
+    def _load(self, obj, walls, y_window):
         source = obj.SourceObject
         if source is not None:
             from ..cad.recognise import recognise
             shape = getattr(source, "Shape", None)
             if shape is None or shape.isNull():
                 raise InputError(f"{source.Label}: the linked object has no shape")
-            recognition = recognise(shape, walls=walls, wall_points=obj.WallPoints, source=source.Label)
+            recognition = recognise(shape, walls=walls, wall_points=obj.WallPoints, y_window=y_window,
+                                    source=source.Label)
             return Stock(recognition.staircase, source.Label, shape.copy(), walls)
         if not obj.SourceFile:
             raise InputError(f"{obj.Label}: no stock source: set SourceObject or SourceFile")
-        return load_stock(obj.SourceFile, walls=walls, wall_points=obj.WallPoints)
+        return load_stock(obj.SourceFile, walls=walls, wall_points=obj.WallPoints, y_window=y_window)
 
 
 def create_stock(doc=None, source=None, name="Stock", *, walls="exact", wall_points="chebyshev"):

@@ -1,10 +1,14 @@
-"""The ABM workbench's GUI: view providers and commands (imported only when FreeCAD.GuiUp).
+"""The ABM workbench's GUI (imported only when FreeCAD.GuiUp).
 
-- :mod:`.view_providers`: icons per object type, the engaged surface coloured per face by the
-  UEP surface of its engagement segment, the stock semi-transparent, the toolpath a thick line;
-  :func:`.view_providers.attach` and a document observer that attaches them to restored objects.
 - :mod:`.commands`: ``ABM_OpenModelTest``, ``ABM_ImportStock``, ``ABM_ImportToolpath``,
-  ``ABM_ComputeEngagement``, each inside a document transaction (undo works).
+  ``ABM_ComputeEngagement``, ``ABM_InspectEngagement``, ``ABM_ValidateEngagement``, each inside
+  a document transaction (undo works), errors to the report view as the command line says them.
+- :mod:`.task_panel`: the engagement's tool and cut, with units, checked as typed.
+- :mod:`.dock`: the engagement dock: CL point slider, colour by and legend, plots.
+- :mod:`.view_providers`: icons, styles, face colours (:mod:`.colouring`), the highlighted CL
+  point; :func:`.view_providers.attach` and a document observer for restored objects.
+- :mod:`.progress`, :mod:`.validate`: progress and cancel; validation and its HTML report.
+- :mod:`.screenshots`: the README's pictures under Xvfb (``make screenshots``).
 
 docs/GUI.md describes what the user sees.
 """

@@ -18,14 +18,11 @@ import FreeCAD
 import FreeCADGui
 
 from . import view_providers
+from .progress import ProgressDialog, busy
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODEL_TEST_1 = os.path.join(ROOT, "resources", "models", "model_test_1")
 PROG = "abm"
-#: Cutting parameters used by ABM_ComputeEngagement when no job.json lies beside the toolpath
-#: or the stock file (model test 1's; the task panel will let the user set them).
-DEFAULT_JOB = {"diameter": 12.0, "flutes": 2, "flute_length": 30.0, "feed_per_tooth": 0.1, "inclination": 10.0,
-               "spindle_rpm": 4000.0, "phi_range": (0.0, 180.0), "phi_step": 1.0}
 STOCK_FILTER = "Stock (*.step *.stp *.brep *.brp *.FCStd *.json);;All files (*)"
 TOOLPATH_FILTER = "Toolpath (*.csv *.apt *.cls);;All files (*)"
 
@@ -65,16 +62,6 @@ def recompute_checked(doc, objects):
             raise CommandError(obj.getStatusString())
     for obj in objects:
         view_providers.refresh(obj)
-
-
-def job_beside(*paths):
-    """Cutting parameters of a job.json beside one of `paths` (files), else DEFAULT_JOB."""
-    for path in paths:
-        if path:
-            candidate = os.path.join(os.path.dirname(os.path.abspath(path)), "job.json")
-            if os.path.isfile(candidate):
-                return {**DEFAULT_JOB, **load_settings(candidate)}
-    return dict(DEFAULT_JOB)
 
 
 def fit_view():
@@ -154,8 +141,12 @@ class OpenModelTest(Command):
         engagement = create_engagement(doc, stock, toolpath, **job)
         for obj in (stock, toolpath, engagement):
             view_providers.attach(obj)
-        recompute_checked(doc, (stock, toolpath, engagement))
+        with busy("Computing model test 1…"):
+            recompute_checked(doc, (stock, toolpath, engagement))
         fit_view()
+        from . import dock
+
+        dock.show(engagement)
         return stock, toolpath, engagement
 
 
@@ -175,8 +166,8 @@ class _ImportFile(Command):
         if path:
             self.execute(path)
 
-    def activated(self, doc, path):
-        made = self.create(doc, path)
+    def activated(self, doc, source):
+        made = self.create(doc, source)
         view_providers.attach(made)
         recompute_checked(doc, (made,))
         fit_view()
@@ -184,19 +175,36 @@ class _ImportFile(Command):
 
 
 class ImportStock(_ImportFile):
-    """A stock from a STEP / BREP / FCStd solid or a staircase JSON."""
+    """A stock from the selected solid of the document, else a STEP / BREP / FCStd solid or a
+    staircase JSON chosen in a file dialog."""
 
     Name = "ABM_ImportStock"
     MenuText = "Import stock…"
-    ToolTip = "Add a staircase stock from a STEP, BREP or FCStd solid (recognised, exact walls) or a staircase JSON"
+    ToolTip = ("Add a staircase stock from the selected solid, or from a STEP, BREP or FCStd solid (recognised, "
+               "exact walls) or a staircase JSON")
     TITLE = "Import stock"
     FILTER = STOCK_FILTER
 
+    def Activated(self):
+        doc = FreeCAD.ActiveDocument
+        solids = [obj for obj in FreeCADGui.Selection.getSelection(doc.Name) if is_solid_object(obj)] if doc else []
+        if len(solids) == 1:
+            self.execute(solids[0])
+        else:
+            super().Activated()
+
     @staticmethod
-    def create(doc, path):
+    def create(doc, source):
+        """The stock object of `source`: a file path or a document object with a solid."""
         from ..features import create_stock
 
-        return create_stock(doc, path)
+        return create_stock(doc, source)
+
+
+def is_solid_object(obj):
+    """True for a document object (not an ABM one) whose Shape holds a solid."""
+    shape = getattr(obj, "Shape", None)
+    return view_providers.kind(obj) is None and shape is not None and not shape.isNull() and bool(shape.Solids)
 
 
 class ImportToolpath(_ImportFile):
@@ -232,28 +240,141 @@ def pick(doc, kind, selection):
 
 
 class ComputeEngagement(Command):
-    """The engagement of the selected stock and toolpath (or the document's only ones)."""
+    """The engagement of the selected stock and toolpath (or the document's only ones): task panel."""
 
     Name = "ABM_ComputeEngagement"
     MenuText = "Compute engagement"
     ToolTip = ("Compute where the cutter engages the stock along the toolpath: select a stock and a toolpath (or "
-               "have only one of each); tool and cut from the job.json beside the toolpath or stock file, else "
-               "model test 1's")
+               "have only one of each), then set the tool and cut in the task panel")
 
-    def activated(self, doc, selection=None):
+    def Activated(self):
+        """Interactive: the task panel (:mod:`.task_panel`) for a new engagement; it owns the transaction."""
+        from . import task_panel
+
+        try:
+            doc = FreeCAD.ActiveDocument
+            selection = FreeCADGui.Selection.getSelection(doc.Name)
+            stock, toolpath = pick(doc, "ABM::Stock", selection), pick(doc, "ABM::Toolpath", selection)
+            task_panel.compute(doc, stock, toolpath)
+        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
+            report_error(error)
+
+    def activated(self, doc, settings, selection=None):
+        """Scripts and tests: add and compute the engagement with `settings` (create_engagement's
+        keywords, e.g. a job.json's through load_settings) without the panel."""
         from ..features import create_engagement
+        from . import dock
 
         if selection is None:
             selection = FreeCADGui.Selection.getSelection(doc.Name)
         stock, toolpath = pick(doc, "ABM::Stock", selection), pick(doc, "ABM::Toolpath", selection)
-        job = job_beside(toolpath.File, stock.SourceFile)
-        engagement = create_engagement(doc, stock, toolpath, **job)
+        engagement = create_engagement(doc, stock, toolpath, **settings)
         view_providers.attach(engagement)
         recompute_checked(doc, (engagement,))
+        dock.show(engagement)
         return engagement
 
 
-COMMANDS = (OpenModelTest, ImportStock, ImportToolpath, ComputeEngagement)
+def selected_engagement(doc):
+    """The selected engagement object, else the document's only one (CommandError otherwise)."""
+    return pick(doc, "ABM::Engagement", FreeCADGui.Selection.getSelection(doc.Name))
+
+
+class InspectEngagement(Command):
+    """The dock of the selected engagement: CL point slider, colours and legend, plots."""
+
+    Name = "ABM_InspectEngagement"
+    MenuText = "Inspect engagement"
+    ToolTip = ("Open the engagement dock for the selected engagement: choose a CL point (highlighted on the model), "
+               "colour by segment, length of cut or cut area, and see the plots")
+
+    def Activated(self):
+        try:
+            self.show(selected_engagement(FreeCAD.ActiveDocument))
+        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
+            report_error(error)
+
+    @staticmethod
+    def show(engagement, cl=None):
+        """Open the dock on `engagement` at CL point `cl`; the dock."""
+        from . import dock
+
+        return dock.show(engagement, cl)
+
+
+class ValidateEngagement(Command):
+    """The selected engagement against OpenCASCADE booleans: the HTML report, opened."""
+
+    Name = "ABM_ValidateEngagement"
+    MenuText = "Validate engagement…"
+    ToolTip = ("Check the selected engagement's length of cut against OpenCASCADE booleans at all or chosen CL "
+               "points (about 1 s per CL point; cancellable) and open the HTML report")
+
+    def Activated(self):
+        from PySide2 import QtWidgets
+
+        from . import dock
+        from .validate import report_folder
+
+        try:
+            doc = FreeCAD.ActiveDocument
+            engagement = selected_engagement(doc)
+            shown = dock.find()
+            current = shown.spin.value() if shown is not None and shown.obj is engagement else None
+            window = FreeCADGui.getMainWindow()
+            text, ok = QtWidgets.QInputDialog.getText(
+                window, "Validate engagement", "CL points to check (all, or e.g. 0,22,40; about 1 s each):",
+                text="all" if current is None else str(current))
+            if not ok:
+                return
+            folder = report_folder(engagement)
+            if not doc.FileName:
+                chosen = QtWidgets.QFileDialog.getExistingDirectory(window, "Folder for the validation report")
+                if not chosen:
+                    return
+                folder = os.path.join(chosen, f"{engagement.Name}_validation")
+        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
+            report_error(error)
+            return
+        self.execute(engagement, text, folder)
+
+    def execute(self, *args):
+        """run(*args), errors to the report view, a cancel said as such; the report's path, or None."""
+        from .validate import Cancelled
+
+        try:
+            return self.run(*args)
+        except Cancelled as cancelled:
+            FreeCAD.Console.PrintWarning(f"{PROG}: {cancelled}\n")
+            return None
+        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
+            report_error(error)
+            return None
+
+    def activated(self, doc, engagement, cls_text="all", folder=None, open_report=True):
+        """Validate `engagement` at the CL points of `cls_text` ("all" or "0,22,40") into `folder`
+        (default beside the document); records ValidationReport and opens the report. Its path."""
+        from .validate import cl_indices, report_folder, validate_engagement
+
+        if engagement.Proxy.result(engagement) is None:
+            raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+        count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
+        cls = cl_indices(cls_text, count)
+        progress = ProgressDialog(f"Validating {engagement.Label} at {len(cls)} CL points against booleans…")
+        try:
+            page = validate_engagement(engagement, cls, folder or report_folder(engagement), progress)
+        finally:
+            progress.close()
+        engagement.ValidationReport = page
+        FreeCAD.Console.PrintMessage(f"{PROG}: {engagement.Label}: validation report {page}\n")
+        if open_report:
+            from PySide2 import QtCore, QtGui
+
+            QtGui.QDesktopServices.openUrl(QtCore.QUrl.fromLocalFile(page))
+        return page
+
+
+COMMANDS = (OpenModelTest, ImportStock, ImportToolpath, ComputeEngagement, InspectEngagement, ValidateEngagement)
 #: Command names in menu and toolbar order.
 NAMES = tuple(command.Name for command in COMMANDS)
 

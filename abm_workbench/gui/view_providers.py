@@ -14,9 +14,10 @@ What each shows (colours RGB 0..1, from :mod:`abm_workbench.report.colours`):
 
 - Stock: light grey, 75 % transparent, so the toolpath and the engaged surface show through.
 - Toolpath: a 4 px line through the CL points, its vertices (the CL points) as 6 px points.
-- Engagement: the engaged cutter surface, each face coloured by the UEP surface of its
-  engagement segment (``DiffuseColor`` per face, :data:`SURFACE_COLOURS`), lit on both sides,
-  shaded without edges.
+- Engagement: the engaged cutter surface, lit on both sides, shaded without edges, each face
+  coloured (``DiffuseColor``) by the view property ``ColourBy`` (:mod:`.colouring`): the UEP
+  surface of its engagement segment, the length of cut or the cut area; the CL point chosen in
+  the dock (:mod:`.dock`) drawn on top in yellow. Double-click: the task panel.
 
 Nothing of the view provider is saved but its class (``__getstate__`` returns None).
 """
@@ -99,13 +100,21 @@ class ToolpathViewProvider(ViewProvider):
 
 
 class EngagementViewProvider(ViewProvider):
-    """The engaged cutter surface, coloured per face by the UEP surface of its segment."""
+    """The engaged cutter surface, coloured per face (ColourBy), the chosen CL point highlighted;
+    double-click opens the task panel (:mod:`.task_panel`)."""
+
+    def attach(self, vobj):
+        super().attach(vobj)
+        self.overlay = None  # coin node of the highlighted CL point, made on demand
+        self.legend = None  # colouring.Legend of the colours shown
+        self.cl = None  # the highlighted CL point
 
     def style(self, vobj):
         if "Lighting" in vobj.PropertiesList:
             vobj.Lighting = "Two side"
         vobj.DisplayMode = "Shaded"  # no edges: 9000 faces' boundaries would hide the colours
-        colour_by_surface(vobj)
+        add_colour_by(vobj)
+        colour(vobj)
 
     def updateData(self, obj, prop):
         # FreeCAD calls this before its own view provider has the new Shape's faces, and
@@ -116,60 +125,124 @@ class EngagementViewProvider(ViewProvider):
             vobj = obj.ViewObject
             QtCore.QTimer.singleShot(0, lambda: _colour_later(vobj))
 
+    def onChanged(self, vobj, prop):
+        if prop == "ColourBy":
+            colour(vobj)
+
+    def doubleClicked(self, vobj):
+        vobj.Document.setEdit(vobj.Object, 0)
+        return True
+
+    def setEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None
+        from . import task_panel
+
+        task_panel.edit(vobj.Object)
+        return True
+
+    def unsetEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None
+        import FreeCADGui
+
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def highlight(self, cl):
+        """Draw the engaged part of CL point `cl` on top of everything (None: nothing): in yellow, its LEP
+        and UEP curves and the cutting edge from LEP to UEP at every HIGHLIGHT_EDGES-th engaged angle
+        (the faces' own colours show between them), and the CL point in black."""
+        from pivy import coin
+
+        self.cl = cl
+        if self.overlay is None:
+            self.overlay = coin.SoAnnotation()
+            self.ViewObject.RootNode.addChild(self.overlay)
+        self.overlay.removeAllChildren()
+        result = self.Object.Proxy.result(self.Object)
+        if cl is None or result is None or not 0 <= cl < result.shape[0]:
+            return
+        import numpy as np
+
+        engaged = result.engaged[cl]
+        lep, uep = result.lep_xyz[cl, engaged], result.uep_xyz[cl, engaged]
+        light = coin.SoLightModel()
+        light.model = coin.SoLightModel.BASE_COLOR
+        style = coin.SoDrawStyle()
+        style.lineWidth, style.pointSize = HIGHLIGHT_LINE_WIDTH, HIGHLIGHT_POINT_SIZE
+        material = coin.SoBaseColor()
+        material.rgb.setValue(*HIGHLIGHT_COLOUR)
+        lines = coin.SoCoordinate3()
+        step = max(1, len(lep) // HIGHLIGHT_EDGES)
+        points = np.stack([lep[::step], uep[::step]], axis=1).reshape(-1, 3)
+        lines.point.setValues(0, len(points), points.tolist())
+        fan = coin.SoLineSet()
+        fan.numVertices.setValues(0, len(points) // 2, [2] * (len(points) // 2))
+        for node in (light, style, material, lines, fan):
+            self.overlay.addChild(node)
+        for curve in (lep, uep):
+            coordinates, line = coin.SoCoordinate3(), coin.SoLineSet()
+            coordinates.point.setValues(0, len(curve), curve.tolist())
+            line.numVertices.setValue(len(curve))
+            self.overlay.addChild(coordinates)
+            self.overlay.addChild(line)
+        marker, where, dot = coin.SoBaseColor(), coin.SoCoordinate3(), coin.SoPointSet()
+        marker.rgb.setValue(*HIGHLIGHT_POINT_COLOUR)
+        toolpath = self.Object.Toolpath
+        centre = toolpath.Proxy.load(toolpath)[0].cl[cl] if toolpath is not None else lep.mean(axis=0)
+        where.point.setValue(*map(float, centre))
+        for node in (marker, where, dot):
+            self.overlay.addChild(node)
+
+
+#: Highlight of the chosen CL point: colour, line width and point size (px).
+HIGHLIGHT_COLOUR = (1.0, 0.85, 0.0)
+HIGHLIGHT_POINT_COLOUR = (0.0, 0.0, 0.0)
+HIGHLIGHT_LINE_WIDTH, HIGHLIGHT_POINT_SIZE = 3.0, 12.0
+#: About this many cutting edges (LEP to UEP) drawn across the highlighted CL point.
+HIGHLIGHT_EDGES = 12
+
+
+def add_colour_by(vobj):
+    """Add the view property ColourBy (group "Display") to the engagement's view object if missing."""
+    from .colouring import COLOUR_BY
+
+    if "ColourBy" not in vobj.PropertiesList:
+        vobj.addProperty("App::PropertyEnumeration", "ColourBy", "Display",
+                         "face colours: segment (the UEP surface of each engagement segment), length (length of "
+                         "cut, mm) or area (cut area, mm²)")
+        vobj.ColourBy = list(COLOUR_BY)
+        vobj.ColourBy = "segment"
+
 
 def _colour_later(vobj):
     try:
-        colour_by_surface(vobj)
+        colour(vobj)
+        from . import dock
+
+        dock.refresh(vobj.Object)
     except Exception as error:  # noqa: BLE001 (the object may be gone: deleted, undone, closed)
         FreeCAD.Console.PrintLog(f"ABM: engagement not coloured: {error}\n")
 
 
-def face_surfaces(obj):
-    """The UEP surface name of each face of the engagement object's Shape, or None when unknown.
+def colour(vobj):
+    """Set DiffuseColor of the engagement's view object per face by its ColourBy; the Legend, or None
+    when there is nothing to colour (no results, or a Shape that does not match them)."""
+    from .colouring import face_colours, face_map
 
-    The Shape is ``Part.Compound(engaged_surface_parts(result)[0])``: its children are in the
-    order of the keys (cl, letter, surface). The keys are rebuilt from the result's segments
-    without building any geometry (a segment of one angle is a line, of several a ruled
-    surface); when that does not match the compound (OCC refused a ruling and the two curves
-    stand in for it) :func:`engaged_surface_parts` itself is asked.
-    """
-    import numpy as np
-
+    obj = vobj.Object
     result = obj.Proxy.result(obj)
-    shape = obj.Shape
-    if result is None or shape.isNull():
+    faces = face_map(result, obj.Shape) if result is not None else None
+    provider = vobj.Proxy
+    if faces is None or not len(faces.cl):
+        provider.legend = None
         return None
-    children = shape.childShapes()
-    keys = []
-    for cl in range(result.shape[0]):
-        for index, segment in enumerate(result.segments(cl)):
-            rows = np.flatnonzero(result.segment[cl] == index)
-            if len(rows) == 1:
-                if np.linalg.norm(result.uep_xyz[cl, rows[0]] - result.lep_xyz[cl, rows[0]]) > 1e-9:
-                    keys.append(segment["surface"])
-            else:
-                keys.append(segment["surface"])
-    if len(keys) != len(children):
-        from ..features.engagement import engaged_surface_parts
-        keys = [key[2] for key in engaged_surface_parts(result)[1]]
-        if len(keys) != len(children):
-            return None
-    surfaces = []
-    for key, child in zip(keys, children):
-        surfaces += [key] * len(child.Faces)
-    if len(surfaces) != len(shape.Faces):
-        return None
-    return surfaces
-
-
-def colour_by_surface(vobj):
-    """Set DiffuseColor of the engagement's view object per face from SURFACE_COLOURS."""
-    from ..report.colours import SURFACE_COLOURS
-
-    surfaces = face_surfaces(vobj.Object)
-    if not surfaces:
-        return
-    vobj.DiffuseColor = [(*SURFACE_COLOURS.get(name, SURFACE_COLOURS["none"]), 0.0) for name in surfaces]
+    add_colour_by(vobj)
+    colours, legend = face_colours(result, faces, vobj.ColourBy)
+    vobj.DiffuseColor = [(*map(float, rgb), 0.0) for rgb in colours]
+    provider.legend = legend
+    return legend
 
 
 _CLASSES = {"ABM::Stock": StockViewProvider, "ABM::Toolpath": ToolpathViewProvider,
@@ -178,8 +251,8 @@ _CLASSES = {"ABM::Stock": StockViewProvider, "ABM::Toolpath": ToolpathViewProvid
 
 def refresh(obj):
     """Restyle what depends on the results after a recompute (the engagement's face colours)."""
-    if FreeCAD.GuiUp and kind(obj) == "ABM::Engagement":
-        colour_by_surface(obj.ViewObject)
+    if FreeCAD.GuiUp and kind(obj) == "ABM::Engagement" and isinstance(obj.ViewObject.Proxy, ViewProvider):
+        colour(obj.ViewObject)
 
 
 def attach(obj):
@@ -204,13 +277,19 @@ def attach_all(doc):
 
 
 class _Observer:
-    """Attaches view providers to ABM objects made outside the commands (see the module docstring)."""
+    """Attaches view providers to ABM objects made outside the commands (see the module docstring);
+    empties the engagement dock when the document it shows is closed."""
 
     def slotActivateDocument(self, doc):
         attach_all(doc)
 
     def slotRecomputedObject(self, obj):
         attach(obj)
+
+    def slotDeletedDocument(self, doc):
+        from . import dock
+
+        dock.forget(doc)
 
 
 _OBSERVER = None

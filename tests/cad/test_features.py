@@ -1,6 +1,7 @@
 """The parametric document objects (abm_workbench.features), headless: create, recompute, save,
 reopen without recomputing, change a property, bad input."""
 
+import functools
 import json
 import os
 import re
@@ -17,7 +18,7 @@ from abm_workbench.features import VERSION, create_engagement, create_stock, cre
 from abm_workbench.features import engagement as engagement_module
 from abm_workbench.features.engagement import EngagementFeature
 from abm_workbench.formats.toolpath_csv import load_toolpath
-from abm_workbench.jobs import load_stock
+from abm_workbench.jobs import load_stock, swept_y_window
 from tests.conftest import ROOT
 
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
@@ -195,6 +196,49 @@ def test_errors_carry_the_command_line_messages(doc, tmp_path):
     assert engagement.isValid()
 
 
+def test_y_window_of_a_solid_stock_as_the_command_line_chooses_it(doc):
+    tool = Tool(JOB["diameter"], JOB["flutes"], JOB["flute_length"])
+    path = load_toolpath(TOOLPATH)
+    swept = functools.partial(swept_y_window, path, tool)
+    _, _, engagement = model_test(doc, STOCK_STEP, walls="quintic", y_window="auto")
+    engagement.PhiStep = 10
+    engagement.ShowSurfaces = False
+    stock_obj = engagement.Stock
+    doc.recompute()
+    # auto with quintic walls: swept, as `abm engage --walls quintic` without --y-window
+    expected = load_stock(STOCK_STEP, walls="quintic", y_window=swept).staircase
+    assert (engagement.YWindowMin.Value, engagement.YWindowMax.Value) == pytest.approx(
+        (expected.y_min, expected.y_max), abs=1e-12)
+    assert expected.y_max - expected.y_min < stock_obj.YMax.Value - stock_obj.YMin.Value
+    settings = CutSettings(JOB["feed_per_tooth"], JOB["inclination"], 0, 180, 10, JOB["spindle_rpm"])
+    assert_same(engagement.Proxy.result(engagement), engage(expected, tool, path, settings), atol=1e-12)
+    # custom: the window given, the results of `--y-window=-6:6`
+    engagement.YWindow, engagement.YWindowMin, engagement.YWindowMax = "custom", -6.0, 6.0
+    doc.recompute()
+    expected = load_stock(STOCK_STEP, walls="quintic", y_window=(-6.0, 6.0)).staircase
+    assert (expected.y_min, expected.y_max) == (-6.0, 6.0)
+    assert_same(engagement.Proxy.result(engagement), engage(expected, tool, path, settings), atol=1e-12)
+    # whole: the stock's y range
+    engagement.YWindow = "whole"
+    doc.recompute()
+    assert (engagement.YWindowMin.Value, engagement.YWindowMax.Value) == (stock_obj.YMin.Value, stock_obj.YMax.Value)
+    # errors: an empty custom window, a window off the stock, a window on a JSON stock
+    engagement.YWindow, engagement.YWindowMin, engagement.YWindowMax = "custom", 3.0, 3.0
+    doc.recompute()
+    assert engagement.getStatusString() == "Engagement: YWindowMin (3 mm) must be below YWindowMax (3 mm)"
+    engagement.YWindowMin, engagement.YWindowMax = 40.0, 50.0
+    doc.recompute()
+    assert engagement.getStatusString() == (f"{STOCK_STEP}: y window 40..50 mm misses the stock's y range "
+                                            f"{stock_obj.YMin.Value:g}..{stock_obj.YMax.Value:g} mm")
+    engagement.WallModel = "stock"
+    stock_obj.SourceFile = STOCK_JSON
+    doc.recompute()
+    assert engagement.getStatusString() == (f"YWindow custom applies to a solid stock (.step, .stp, .brep, .brp, "
+                                            f".FCStd), not to {STOCK_JSON}")
+    with pytest.raises(ValueError, match="y_window must be auto, whole, swept or"):
+        create_engagement(doc, stock_obj, engagement.Toolpath, y_window="narrow")
+
+
 def test_apt_toolpath_gives_the_tool_spindle_and_feed(doc, tmp_path):
     path = load_toolpath(TOOLPATH)
     axes = np.stack([np.sin(np.radians(path.theta_b)),
@@ -237,7 +281,9 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     _, _, engagement = model_test(doc)
     engagement.ShowSurfaces = False
     doc.recompute()
-    engagement.Version = 0  # as if saved by an older version
+    for name in ("YWindow", "YWindowMin", "YWindowMax", "ValidationReport"):  # as saved by version 1
+        engagement.removeProperty(name)
+    engagement.Version = 1
     path = tmp_path / "old.FCStd"
     doc.saveAs(str(path))
     FreeCAD.closeDocument(doc.Name)
@@ -246,7 +292,8 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
-        assert engagement.Version == VERSION
+        assert engagement.Version == VERSION == 2
+        assert engagement.YWindow == "whole" and engagement.ValidationReport == ""  # what version 1 computed
         assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
         reopened.recompute()
         assert_same(engagement.Proxy.result(engagement), reference())
@@ -274,6 +321,20 @@ def test_the_documented_example_runs(tmp_path):
     assert done.returncode == 0, done.stderr
     assert "depth of cut 1.813-7.430 mm" in done.stdout
     assert (tmp_path / "out" / "model_test_1_abm" / "Engagement.csv").is_file()
+
+
+def test_the_readme_headless_example_runs(tmp_path):
+    with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as file:
+        text = file.read()
+    section = text[text.index("## FreeCAD workbench (GUI)"):]
+    script = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    (tmp_path / "script.py").write_text(script)
+    done = subprocess.run([sys.executable, str(tmp_path / "script.py"), str(tmp_path / "out")], cwd=ROOT,
+                          capture_output=True, text=True, timeout=180, env={**os.environ, "PYTHONPATH": ROOT})
+    assert done.returncode == 0, done.stderr
+    assert "4823 instants, depth of cut 1.81-7.43 mm; diameter 12 mm [Diameter]" in done.stdout  # 53 × 91
+    assert "reopened: 53 CL points x 91 angles, max length of cut" in done.stdout
+    assert (tmp_path / "out" / "pass_abm" / "Engagement.csv").is_file()
 
 
 def test_links_must_be_abm_objects(doc):

@@ -2,12 +2,14 @@
 
 FREECAD_NOTES: run as `xvfb-run -a freecad macro.py` with HOME isolated and the Qt WebEngine
 sandbox off; a macro that raises would leave the GUI open, so the macro always ends with
-os._exit and the run has a timeout.
+os._exit and the run has a timeout, after which the whole process group (xvfb-run, Xvfb,
+FreeCAD) is killed.
 """
 
 import json
 import os
 import shutil
+import signal
 import subprocess
 import textwrap
 
@@ -52,8 +54,14 @@ def run_gui(tmp_path):
         home = tmp_path / "home"
         home.mkdir(exist_ok=True)
         env = dict(os.environ, HOME=str(home), QTWEBENGINE_DISABLE_SANDBOX="1")
-        subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", str(macro)],
-                       env=env, cwd=tmp_path, timeout=GUI_TIMEOUT, capture_output=True)
+        process = subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", str(macro)],
+                                   env=env, cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                   start_new_session=True)
+        try:
+            process.wait(timeout=GUI_TIMEOUT)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)  # xvfb-run, Xvfb and FreeCAD: nothing left running
+            pytest.fail(f"the FreeCAD GUI did not finish in {GUI_TIMEOUT} s")
         assert out.exists(), "the FreeCAD GUI ended without running the macro"
         verdict = json.loads(out.read_text())
         assert verdict["ok"], verdict.get("error")

@@ -1,0 +1,286 @@
+"""The engagement dock: pick a CL point, see it highlighted on the model and its plots.
+
+One ``QDockWidget`` ("ABM engagement", object name ``ABM_EngagementDock``) on the right of
+FreeCAD's main window, showing one engagement object at a time (:func:`show`):
+
+- a slider and a spin box over the CL points (0-based, as in the results CSV); the chosen CL
+  point is drawn on top of the model (``EngagementViewProvider.highlight``) and a line says
+  its depth of cut and engagement segments;
+- "Colour by" (the view property ``ColourBy``) and the legend: for segments, the UEP surface
+  kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit;
+- matplotlib plots (``FigureCanvasQTAgg``) for the chosen CL point: length of cut, cut area
+  and cut thickness h over φ, each engagement segment in the colour of its UEP surface (as on
+  the model, ``report.colours.SURFACE_COLOURS``), and the pass progression: depth of cut and maximum
+  length of cut over the CL points, a marker at the chosen one.
+"""
+
+import numpy as np
+from PySide2 import QtCore, QtGui, QtWidgets
+
+import FreeCAD
+import FreeCADGui
+
+from .colouring import COLOUR_BY, COLOUR_MAP, QUANTITIES
+from .view_providers import HIGHLIGHT_COLOUR
+
+OBJECT_NAME = "ABM_EngagementDock"
+#: Width (px) of the legend's colour bar.
+BAR_WIDTH = 220
+#: Height of the length plot × its largest value, so the segment legend sits above the curve.
+LEGEND_HEADROOM = 1.7
+
+
+class EngagementDock(QtWidgets.QDockWidget):
+    """The dock (see the module docstring); ``show_object(obj, cl)`` fills it."""
+
+    def __init__(self, parent):
+        super().__init__("ABM engagement", parent)
+        self.setObjectName(OBJECT_NAME)
+        self.obj = None
+        body = QtWidgets.QWidget()
+        layout = QtWidgets.QVBoxLayout(body)
+        self.title = QtWidgets.QLabel()
+        self.title.setWordWrap(True)
+        layout.addWidget(self.title)
+
+        row = QtWidgets.QHBoxLayout()
+        row.addWidget(QtWidgets.QLabel("CL point"))
+        self.slider = QtWidgets.QSlider(QtCore.Qt.Horizontal)
+        self.slider.setObjectName("ABM_CLSlider")
+        self.spin = QtWidgets.QSpinBox()
+        self.spin.setObjectName("ABM_CLSpin")
+        row.addWidget(self.slider, 1)
+        row.addWidget(self.spin)
+        layout.addLayout(row)
+        self.slider.valueChanged.connect(self.spin.setValue)
+        self.spin.valueChanged.connect(self.slider.setValue)
+        self.spin.valueChanged.connect(self.choose)
+        self.about = QtWidgets.QLabel()
+        self.about.setWordWrap(True)
+        layout.addWidget(self.about)
+
+        row = QtWidgets.QHBoxLayout()
+        row.addWidget(QtWidgets.QLabel("Colour by"))
+        self.colour_by = QtWidgets.QComboBox()
+        self.colour_by.setObjectName("ABM_ColourBy")
+        for value in COLOUR_BY:
+            self.colour_by.addItem(QUANTITIES[value][1] if value in QUANTITIES else "engagement segment (UEP surface)",
+                                   value)
+        self.colour_by.currentIndexChanged.connect(self._colour_by_changed)
+        row.addWidget(self.colour_by, 1)
+        layout.addLayout(row)
+        self.legend = QtWidgets.QLabel()
+        self.legend.setObjectName("ABM_Legend")
+        layout.addWidget(self.legend)
+
+        from matplotlib.backends.backend_qt5agg import FigureCanvasQTAgg
+        from matplotlib.figure import Figure
+
+        self.figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
+        self.canvas = FigureCanvasQTAgg(self.figure)
+        self.canvas.setMinimumHeight(420)
+        layout.addWidget(self.canvas, 1)
+        self.setWidget(body)
+
+    # ---- filling --------------------------------------------------------------------------
+    def show_object(self, obj, cl=None):
+        """Show the engagement object `obj`, at CL point `cl` (default: the deepest engaged one)."""
+        if self.obj is not None and self.obj is not obj:
+            _highlight(self.obj, None)
+        self.obj = obj
+        self.refresh(cl)
+
+    def refresh(self, cl=None):
+        """Redraw for the object's current results (after a recompute), at `cl` or the current CL."""
+        obj = self.obj
+        result = _result(obj)
+        if result is None:
+            self.title.setText(f"{obj.Label}: no results (recompute it)" if _alive(obj) else
+                               "No engagement: select one and use Inspect engagement")
+            self.about.setText("")
+            self.legend.clear()
+            self.figure.clear()
+            self.canvas.draw_idle()
+            return
+        m = result.shape[0]
+        if cl is None:
+            cl = self.spin.value() if self.spin.maximum() == m - 1 and self.spin.value() < m else _deepest(result)
+        self.title.setText(f"<b>{obj.Label}</b>: {m} CL points × {result.shape[1]} angles φ; depth of cut "
+                           f"{obj.DepthOfCutMin.Value:.2f}–{obj.DepthOfCutMax.Value:.2f} mm")
+        for widget in (self.slider, self.spin):
+            widget.blockSignals(True)
+            widget.setRange(0, m - 1)
+            widget.setValue(int(cl))
+            widget.blockSignals(False)
+        vobj = obj.ViewObject
+        if "ColourBy" in vobj.PropertiesList:
+            self.colour_by.blockSignals(True)
+            self.colour_by.setCurrentIndex(COLOUR_BY.index(vobj.ColourBy))
+            self.colour_by.blockSignals(False)
+        self.show_legend()
+        self.choose(int(cl))
+
+    def choose(self, cl):
+        """Make CL point `cl` the chosen one: highlight, text, plots."""
+        obj = self.obj
+        result = _result(obj)
+        if result is None or not 0 <= cl < result.shape[0]:
+            return
+        _highlight(obj, cl)
+        segments = result.segments(cl)
+        depth = result.depth_of_cut[cl]
+        if segments:
+            parts = ", ".join(f"{s['letter']} {s['phi_start']:g}–{s['phi_end']:g}° {s['surface'].replace('_', ' ')}"
+                              for s in segments)
+            self.about.setText(f"CL {cl}: depth of cut {depth:.3f} mm, max length of cut "
+                               f"{result.length[cl].max():.3f} mm; segments {parts}")
+        else:
+            self.about.setText(f"CL {cl}: the tool does not engage the stock here")
+        self.plot(result, cl)
+
+    def plot(self, result, cl):
+        """Length of cut, cut area, h (the same at every CL point) over φ at `cl`, and the pass progression
+        with `cl` marked."""
+        from ..report.colours import SURFACE_COLOURS
+
+        figure = self.figure
+        figure.clear()
+        axes = figure.subplots(4, 1)
+        phi = result.phi
+        for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h),
+                                     ("length of cut (mm)", "cut area (mm²)", "h (mm)")):
+            ax.plot(phi, np.where(result.engaged[cl], values, np.nan), color="0.6", linewidth=1.0)
+            for index, segment in enumerate(result.segments(cl)):
+                rows = result.segment[cl] == index
+                ax.plot(phi[rows], values[rows], ".-", markersize=2, color=SURFACE_COLOURS[segment["surface"]],
+                        label=f"{segment['letter']} {segment['surface'].replace('_', ' ')}")
+            ax.set_ylabel(label, fontsize="small")
+            ax.set_xlim(phi[0], phi[-1] if len(phi) > 1 else phi[0] + 1.0)
+            ax.grid(True, alpha=0.3)
+        axes[0].set_title(f"CL {cl} over the tool rotation angle φ", fontsize="small")
+        if result.segments(cl):  # room above the curves for the legend
+            axes[0].set_ylim(0.0, LEGEND_HEADROOM * max(float(np.nanmax(result.length[cl])), 1e-9))
+            axes[0].legend(fontsize="x-small", ncol=3, loc="upper center", title="segment: UEP surface",
+                           title_fontsize="x-small")
+        axes[2].set_xlabel("φ (deg)", fontsize="small")
+        index = np.arange(result.shape[0])
+        depth, longest = result.depth_of_cut, result.length.max(axis=1)
+        axes[3].plot(index, depth, ".-", color="black", label="depth of cut")
+        axes[3].plot(index, longest, ".-", color="tab:green", label="max length of cut")
+        axes[3].axvline(cl, color=_hex(HIGHLIGHT_COLOUR), linewidth=2.0)
+        for values in (depth, longest):
+            if np.isfinite(values[cl]):
+                axes[3].plot([cl], [values[cl]], "o", color="red")
+        axes[3].set(xlabel="CL point")
+        axes[3].set_ylabel("mm", fontsize="small")
+        axes[3].set_title("Pass progression", fontsize="small")
+        axes[3].legend(fontsize="x-small")
+        axes[3].grid(True, alpha=0.3)
+        for ax in axes:
+            ax.tick_params(labelsize="x-small")
+        self.canvas.draw_idle()
+
+    def show_legend(self):
+        """The legend of the colours shown (the view provider's)."""
+        legend = getattr(self.obj.ViewObject.Proxy, "legend", None)
+        if legend is None:
+            self.legend.setText("")
+            self.legend.setPixmap(QtGui.QPixmap())
+            return
+        if legend.kind == "segment":
+            rows = "".join(f"<tr><td style='background:{_hex(rgb)}'>&nbsp;&nbsp;&nbsp;&nbsp;</td>"
+                           f"<td>&nbsp;{name.replace('_', ' ')}</td></tr>" for name, rgb in legend.entries)
+            self.legend.setText(f"UEP surface of the engagement segment:<table>{rows}</table>")
+            return
+        self.legend.setPixmap(colour_bar(legend))
+
+    def _colour_by_changed(self, index):
+        obj = self.obj
+        if obj is None:
+            return
+        obj.ViewObject.ColourBy = COLOUR_BY[index]  # onChanged recolours
+        self.show_legend()
+
+
+def colour_bar(legend):
+    """A QPixmap of the colour bar of a quantity Legend, with its minimum, maximum and unit."""
+    from matplotlib import colormaps
+
+    height, text = 16, 18
+    pixmap = QtGui.QPixmap(BAR_WIDTH + 2, height + text + 4)
+    pixmap.fill(QtGui.QColor("white"))
+    painter = QtGui.QPainter(pixmap)
+    colours = colormaps[COLOUR_MAP](np.linspace(0.0, 1.0, BAR_WIDTH))
+    for x, rgba in enumerate(colours):
+        painter.setPen(QtGui.QColor.fromRgbF(*rgba[:3]))
+        painter.drawLine(x + 1, 1, x + 1, height)
+    painter.setPen(QtGui.QColor("black"))
+    painter.drawRect(0, 0, BAR_WIDTH + 1, height + 1)
+    painter.drawText(QtCore.QRect(0, height + 3, BAR_WIDTH, text), QtCore.Qt.AlignLeft, f"{legend.low:.3g}")
+    painter.drawText(QtCore.QRect(0, height + 3, BAR_WIDTH, text), QtCore.Qt.AlignCenter,
+                     f"{legend.label} ({legend.unit})")
+    painter.drawText(QtCore.QRect(0, height + 3, BAR_WIDTH, text), QtCore.Qt.AlignRight, f"{legend.high:.3g}")
+    painter.end()
+    return pixmap
+
+
+def _hex(rgb):
+    return "#" + "".join(f"{int(round(255 * v)):02x}" for v in rgb[:3])
+
+
+def _alive(obj):
+    """True while the document object `obj` exists (not deleted, its document not closed)."""
+    try:
+        return obj is not None and obj.Document.getObject(obj.Name) is not None
+    except Exception:  # noqa: BLE001 (FreeCAD refuses any access to a deleted object)
+        return False
+
+
+def _result(obj):
+    return obj.Proxy.result(obj) if _alive(obj) else None
+
+
+def _deepest(result):
+    depth = result.depth_of_cut
+    return int(np.nanargmax(depth)) if np.isfinite(depth).any() else 0
+
+
+def _highlight(obj, cl):
+    provider = getattr(obj.ViewObject, "Proxy", None) if _alive(obj) else None
+    if hasattr(provider, "highlight"):
+        provider.highlight(cl)
+
+
+def find():
+    """The dock, or None when it was never opened."""
+    return FreeCADGui.getMainWindow().findChild(QtWidgets.QDockWidget, OBJECT_NAME)
+
+
+def show(obj, cl=None):
+    """Open (or reuse) the dock on the right of the main window, showing engagement `obj`; the dock."""
+    window = FreeCADGui.getMainWindow()
+    dock = find()
+    if dock is None:
+        dock = EngagementDock(window)
+        window.addDockWidget(QtCore.Qt.RightDockWidgetArea, dock)
+    dock.show_object(obj, cl)
+    dock.show()
+    dock.raise_()
+    return dock
+
+
+def refresh(obj):
+    """Redraw the dock if it shows `obj` (after its recompute)."""
+    if not FreeCAD.GuiUp:
+        return
+    dock = find()
+    if dock is not None and dock.obj is obj:
+        dock.refresh()
+
+
+def forget(doc):
+    """Empty the dock if it shows an object of `doc` (being closed)."""
+    dock = find() if FreeCAD.GuiUp else None
+    if dock is not None and _alive(dock.obj) and dock.obj.Document.Name == doc.Name:
+        dock.obj = None
+        dock.refresh()

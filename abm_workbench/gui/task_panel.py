@@ -1,0 +1,325 @@
+"""The task panel of an engagement object: tool, cut, wall model and y window, checked as typed.
+
+Opened by ABM_ComputeEngagement for a new engagement (:func:`compute`) and by double-click /
+``setEdit`` for an existing one (:func:`edit`). Lengths and angles are FreeCAD quantity spin
+boxes (``Gui::QuantitySpinBox``: units typed or shown, "12 mm", "0.5 in", "10 °").
+
+As the user types, the values are checked by the command line's own code:
+``jobs.resolve_parameters`` (what an APT / CL toolpath file gives wins; a missing required value)
+and ``jobs.tool_and_settings`` (the engine's ``Tool`` and ``CutSettings`` checks), and the y
+window as ``features.engagement.y_window`` checks it. The first problem is shown under the
+fields as ``abm: error: <message>`` (the command line's words), its field is marked, and OK is
+disabled. Fields the toolpath file fixes show its value, are read-only and say so.
+
+The whole edit is one document transaction: OK commits it (after a recompute that succeeds),
+Cancel aborts it, which for a new engagement removes the object.
+"""
+
+from PySide2 import QtWidgets
+
+import FreeCADGui
+
+from ..errors import InputError
+from ..features.engagement import Y_WINDOWS, WALL_CHOICES
+from ..jobs import resolve_parameters, tool_and_settings
+from .progress import busy
+
+#: Fields: (property, label, unit or None for a plain number, minimum, maximum, step).
+FIELDS = (
+    ("Diameter", "Diameter", "mm", -1e6, 1e6, 1.0),
+    ("Flutes", "Flutes", None, 0, 100, 1),
+    ("FluteLength", "Flute length", "mm", -1e6, 1e6, 1.0),
+    ("FeedPerTooth", "Feed per tooth", "mm", -1e6, 1e6, 0.01),
+    ("SpindleSpeed", "Spindle speed (rpm)", None, 0.0, 1e6, 100.0),
+    ("Inclination", "Inclination α", "deg", -1e6, 1e6, 1.0),
+    ("PhiStart", "φ start", "deg", -1e6, 1e6, 1.0),
+    ("PhiEnd", "φ end", "deg", -1e6, 1e6, 1.0),
+    ("PhiStep", "φ step", "deg", -1e6, 1e6, 0.5),
+    ("YWindowMin", "y window from", "mm", -1e6, 1e6, 1.0),
+    ("YWindowMax", "y window to", "mm", -1e6, 1e6, 1.0),
+)
+#: resolve_parameters key -> the field it fills.
+KEY_FIELD = {"diameter": "Diameter", "flutes": "Flutes", "flute_length": "FluteLength",
+             "feed_per_tooth": "FeedPerTooth", "spindle_rpm": "SpindleSpeed", "inclination": "Inclination",
+             "phi_range": "PhiStart", "phi_step": "PhiStep"}
+#: Words of an error message -> the field to mark (first match wins).
+ERROR_WORDS = (("flute_length", "FluteLength"), ("flute-length", "FluteLength"), ("flutes", "Flutes"),
+               ("diameter", "Diameter"), ("feed", "FeedPerTooth"), ("inclination", "Inclination"),
+               ("phi step", "PhiStep"), ("phi-step", "PhiStep"), ("phi_step", "PhiStep"),
+               ("phi range", "PhiEnd"), ("phi-range", "PhiEnd"), ("angles", "PhiStep"), ("phi_start", "PhiStart"),
+               ("phi_end", "PhiEnd"),
+               ("spindle", "SpindleSpeed"), ("YWindow", "YWindowMin"), ("y window", "YWindowMin"))
+INVALID_STYLE = "background-color: #ffc8c8;"
+
+
+_SHOWN = []  # the panel shown, if any (for scripts and tests: shown())
+
+
+def shown():
+    """The engagement task panel shown now, or None."""
+    return _SHOWN[-1] if _SHOWN else None
+
+
+class EngagementPanel:
+    """Task panel editing the engagement object `obj` (see the module docstring)."""
+
+    def __init__(self, obj, *, new):
+        self.obj, self.new = obj, new
+        self.buttons = None  # the task dialog's QDialogButtonBox, once FreeCAD has made it
+        self.form = QtWidgets.QWidget()
+        self.form.setObjectName("ABM_EngagementPanel")
+        self.form.setWindowTitle("Engagement: tool and cut")
+        layout = QtWidgets.QFormLayout(self.form)
+        self.source = QtWidgets.QLabel(f"Stock: {_label(obj.Stock)}<br>Toolpath: {_label(obj.Toolpath)}")
+        layout.addRow(self.source)
+        self.names = []  # of the fields, in order: self.field(name) finds each
+        for name, label, unit, low, high, step in FIELDS:
+            widget = _spin_box(unit, low, high, step, integer=name == "Flutes")
+            widget.setObjectName(f"ABM_{name}")
+            widget.setToolTip(obj.getDocumentationOfProperty(name))
+            self.names.append(name)
+            if name == "YWindowMin":
+                layout.addRow("Wall model", self._combo("WallModel", WALL_CHOICES))
+                layout.addRow("y window", self._combo("YWindow", Y_WINDOWS))
+            layout.addRow(label, widget)
+            _set_value(widget, _property_value(obj, name))
+            widget.valueChanged.connect(self.check)
+        self.field("SpindleSpeed").setSpecialValueText("none")
+        self.fixed = QtWidgets.QLabel()
+        self.fixed.setObjectName("ABM_Fixed")
+        self.fixed.setWordWrap(True)
+        layout.addRow(self.fixed)
+        self.message = QtWidgets.QLabel()
+        self.message.setObjectName("ABM_Message")
+        self.message.setWordWrap(True)
+        self.message.setStyleSheet("color: #b00000;")
+        layout.addRow(self.message)
+        self.hints = self._hints()
+        self.check()
+
+    def _combo(self, name, choices):
+        combo = QtWidgets.QComboBox()
+        combo.setObjectName(f"ABM_{name}")
+        combo.addItems(list(choices))
+        combo.setCurrentIndex(list(choices).index(getattr(self.obj, name)))
+        combo.setToolTip(self.obj.getDocumentationOfProperty(name))
+        combo.currentIndexChanged.connect(self.check)
+        self.names.append(name)
+        return combo
+
+    def field(self, name):
+        """The widget of field `name` (a property name). Found by object name each time: the Python
+        wrappers of FreeCAD's own widgets (Gui::QuantitySpinBox) do not stay valid."""
+        return self.form.findChild(QtWidgets.QWidget, f"ABM_{name}")
+
+    def _hints(self):
+        """PathHints of the toolpath file, or the InputError reading it."""
+        toolpath = self.obj.Toolpath
+        try:
+            return toolpath.Proxy.load(toolpath)[1]
+        except (InputError, AttributeError) as error:
+            return error
+
+    # ---- values -----------------------------------------------------------------------------
+    def values(self):
+        """{property: value} of the fields (numbers in mm, deg, rpm; choices as text)."""
+        values = {}
+        for name in self.names:
+            widget = self.field(name)
+            values[name] = widget.currentText() if isinstance(widget, QtWidgets.QComboBox) else _get_value(widget)
+        values["Flutes"] = int(values["Flutes"])
+        return values
+
+    def given(self, values):
+        """resolve_parameters' `given` of the field values (required ones 0: not given)."""
+        def unset_zero(value):
+            return None if value == 0 else value
+
+        return {
+            "diameter": unset_zero(values["Diameter"]), "flutes": unset_zero(values["Flutes"]),
+            "flute_length": unset_zero(values["FluteLength"]), "feed_per_tooth": unset_zero(values["FeedPerTooth"]),
+            "inclination": values["Inclination"], "spindle_rpm": unset_zero(values["SpindleSpeed"]),
+            "phi_range": (values["PhiStart"], values["PhiEnd"]), "phi_step": values["PhiStep"],
+        }
+
+    def problem(self, values):
+        """(message, field) of the first problem of `values`, or (None, None); marks what the file fixes."""
+        if isinstance(self.hints, Exception):
+            return str(self.hints), None
+        try:
+            parameters = resolve_parameters(self.given(values), self.hints, {})
+        except InputError as error:
+            return str(error), _field_of(str(error))
+        self.show_fixed(parameters)
+        try:
+            tool_and_settings(parameters.values)
+        except InputError as error:
+            return str(error), _field_of(str(error))
+        stock = self.obj.Stock
+        solid = stock is not None and stock.Proxy.is_solid(stock)
+        if values["WallModel"] != "stock" and not solid:
+            return (f"WallModel {values['WallModel']} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), "
+                    f"not to {stock.Proxy.source_name(stock)}", "WallModel")
+        if values["YWindow"] in ("swept", "custom") and not solid:
+            return (f"YWindow {values['YWindow']} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), "
+                    f"not to {stock.Proxy.source_name(stock)}", "YWindow")
+        if values["YWindow"] == "custom" and not values["YWindowMin"] < values["YWindowMax"]:
+            return (f"{self.obj.Label}: YWindowMin ({values['YWindowMin']:g} mm) must be below YWindowMax "
+                    f"({values['YWindowMax']:g} mm)", "YWindowMin")
+        return None, None
+
+    def show_fixed(self, parameters):
+        """Fields whose value the toolpath file gives: its value, read-only, explained."""
+        notes = []
+        for key, name in KEY_FIELD.items():
+            source = parameters.sources[key]
+            widget = self.field(name)
+            fixed = not source.startswith("--") and source != "default"
+            if fixed:
+                widget.blockSignals(True)
+                _set_value(widget, parameters.values[key])
+                widget.blockSignals(False)
+                notes.append(f"{name} {parameters.values[key]:g} ({source})")
+            widget.setEnabled(not fixed)
+        self.fixed.setText("Fixed by the toolpath file, the values it was made for: " + ", ".join(notes)
+                           if notes else "")
+
+    def check(self, *_):
+        """Check the fields: mark the bad one, say why, enable OK only when all is well; True if valid."""
+        values = self.values()
+        for name in ("YWindowMin", "YWindowMax"):
+            self.field(name).setEnabled(values["YWindow"] == "custom")
+        message, field = self.problem(values)
+        for name in self.names:
+            self.field(name).setStyleSheet(INVALID_STYLE if name == field else "")
+        self.message.setText(f"abm: error: {message}" if message else "")
+        if self.buttons is not None:
+            self.buttons.button(QtWidgets.QDialogButtonBox.Ok).setEnabled(message is None)
+        return message is None
+
+    # ---- task dialog --------------------------------------------------------------------------
+    def getStandardButtons(self):
+        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+
+    def modifyStandardButtons(self, buttons):
+        """FreeCAD hands over the dialog's button box once it is made: OK follows the check."""
+        self.buttons = buttons
+        self.check()
+
+    def accept(self):
+        """Apply the values and recompute; close and commit when that works, else say why and stay."""
+        from .commands import CommandError, recompute_checked, report_error
+
+        if not self.check():
+            return False
+        obj, doc = self.obj, self.obj.Document
+        for name, value in self.values().items():
+            if self.field(name).isEnabled() or name in ("WallModel", "YWindow"):
+                setattr(obj, name, value)
+        try:
+            with busy("Computing the engagement…"):
+                recompute_checked(doc, (obj,))
+        except (CommandError, InputError) as error:
+            report_error(error)
+            self.message.setText(f"abm: error: {error}")
+            return False
+        self.close()
+        doc.commitTransaction()
+        from . import dock
+
+        dock.show(obj)
+        return True
+
+    def reject(self):
+        """Take everything back (a new engagement is removed) and close."""
+        doc = self.obj.Document
+        self.close()
+        doc.abortTransaction()
+        doc.recompute()
+        return True
+
+    def close(self):
+        """Close the panel (leaving edit mode when it was opened by setEdit)."""
+        if self in _SHOWN:
+            _SHOWN.remove(self)
+        gui_doc = FreeCADGui.getDocument(self.obj.Document.Name)
+        if not self.new and gui_doc.getInEdit() is not None:
+            gui_doc.resetEdit()  # the view provider's unsetEdit closes the dialog
+        else:
+            FreeCADGui.Control.closeDialog()
+
+
+def compute(doc, stock, toolpath):
+    """Open a transaction, add an engagement of `stock` and `toolpath` (what the toolpath file gives
+    filled in) and open its task panel; the panel."""
+    from ..features import create_engagement
+    from . import view_providers
+
+    doc.openTransaction("Compute engagement")
+    try:
+        obj = create_engagement(doc, stock, toolpath)
+        view_providers.attach(obj)
+    except BaseException:
+        doc.abortTransaction()
+        raise
+    return _show(EngagementPanel(obj, new=True))
+
+
+def edit(obj):
+    """Open the task panel of the existing engagement `obj` in a transaction; the panel."""
+    doc = obj.Document
+    if not doc.HasPendingTransaction:
+        doc.openTransaction("Edit engagement")
+    return _show(EngagementPanel(obj, new=False))
+
+
+def _show(panel):
+    FreeCADGui.Control.showDialog(panel)
+    _SHOWN[:] = [panel]
+    return panel
+
+
+def _label(obj):
+    return obj.Label if obj is not None else "(none)"
+
+
+def _field_of(message):
+    for word, field in ERROR_WORDS:
+        if word in message:
+            return field
+    return None
+
+
+def _property_value(obj, name):
+    value = getattr(obj, name)
+    return float(getattr(value, "Value", value))
+
+
+def _spin_box(unit, low, high, step, *, integer=False):
+    """A Gui::QuantitySpinBox in `unit`, or a plain (integer) spin box when unit is None."""
+    if unit is None:
+        widget = QtWidgets.QSpinBox() if integer else QtWidgets.QDoubleSpinBox()
+        if not integer:
+            widget.setDecimals(1)
+        widget.setRange(low, high)
+        widget.setSingleStep(step)
+        return widget
+    widget = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox")
+    widget.setProperty("unit", unit)
+    widget.setProperty("minimum", float(low))
+    widget.setProperty("maximum", float(high))
+    widget.setProperty("singleStep", float(step))
+    return widget
+
+
+def _set_value(widget, value):
+    if isinstance(widget, (QtWidgets.QSpinBox, QtWidgets.QDoubleSpinBox)):
+        widget.setValue(type(widget.value())(value))
+    else:
+        widget.setProperty("rawValue", float(value))
+
+
+def _get_value(widget):
+    if isinstance(widget, (QtWidgets.QSpinBox, QtWidgets.QDoubleSpinBox)):
+        return widget.value()
+    return float(widget.property("rawValue"))

@@ -1,0 +1,89 @@
+"""Validate an engagement object against OpenCASCADE booleans and write the HTML report.
+
+:func:`validate_engagement` runs the command line's validation (``validation.validate``: the
+engine and the boolean reference on the same pass) on the engagement object's own inputs
+(``EngagementFeature.inputs``: its stock with its wall model and y window, the tool and cut it
+was computed with), for all its CL points or a chosen subset, and writes the report of
+``report.html`` into a folder that appears whole or not at all (``report.staging.staged``).
+
+With a subset, the pass validated is made of the chosen CL points only, in their order; the
+report numbers them 0, 1, … and each detailed CL point says which CL point of the pass it is.
+The boolean costs about 0.5–1 s per CL point, so the progress callback is called after each.
+"""
+
+import os
+import time
+
+import numpy as np
+
+from ..engine import Toolpath
+from ..errors import InputError
+
+
+class Cancelled(Exception):
+    """The user cancelled the validation; nothing was written."""
+
+
+def cl_indices(text, count):
+    """CL indices (0-based, sorted, distinct) of "all" / "" (every CL point) or "0,22,40", checked by
+    the command line's ``--cl`` code (its messages) against a pass of `count` CL points."""
+    from ..cli import _cl_indices
+
+    text = text.strip().replace(" ", "")
+    if text.lower() in ("", "all"):
+        return list(range(count))
+    return _cl_indices(text, count)
+
+
+def report_folder(obj):
+    """Default report folder of the engagement `obj`: ``<results folder>/<Name>_validation``
+    (beside the saved document, see features.engagement.results_folder)."""
+    from ..features.engagement import results_folder
+
+    return os.path.join(results_folder(obj.Document), f"{obj.Name}_validation")
+
+
+def validate_engagement(obj, cls, folder, progress=None):
+    """Validate the engagement object `obj` at CL points `cls` (indices, None: all) and write the
+    report into `folder`; the path of its index.html.
+
+    progress(done, total) is called after each CL point of the boolean reference; an exception
+    it raises (e.g. :class:`Cancelled`) stops the validation and leaves `folder` as it was.
+    InputError with the command line's message for bad input.
+    """
+    from ..report.html import ReportJob, write_report
+    from ..report.staging import staged
+    from ..validation import NoEngagementError, validate
+
+    started = time.perf_counter()
+    toolpath, _, parameters, tool, settings, stock = obj.Proxy.inputs(obj)
+    solid = stock.solid()
+    stock_seconds = time.perf_counter() - started  # the stock object's cache makes this small
+    chosen = list(range(len(toolpath))) if cls is None else [int(cl) for cl in cls]
+    if not chosen:
+        raise InputError("CL points: choose at least one")
+    index = np.array(chosen)
+    pass_ = Toolpath(toolpath.cl[index], toolpath.theta_a[index], toolpath.theta_b[index],
+                     None if toolpath.cc is None else toolpath.cc[index])
+    try:
+        validation = validate(solid, stock.staircase, tool, pass_, settings, progress=progress)
+    except NoEngagementError:
+        raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock at CL points "
+                         f"{_cl_list(chosen)}") from None
+    subset = len(chosen) < len(toolpath)
+    title = f"ABM against booleans: {obj.Label} ({os.path.basename(stock.source)} / " \
+            f"{os.path.basename(obj.Toolpath.File)})"
+    description = (f"CL points {_cl_list(chosen)} of the pass, numbered 0..{len(chosen) - 1} here."
+                   if subset else "")
+    walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
+    job = ReportJob(title, description, stock.source, obj.Toolpath.File, pass_, tool, settings,
+                    parameters.describe(), walls, stock.y_window, stock_seconds)
+    shown = [(i, f"pass CL {cl}") for i, cl in enumerate(chosen)][:6]
+    os.makedirs(os.path.dirname(os.path.abspath(folder)), exist_ok=True)
+    with staged(folder, folder=True) as temporary:
+        page = write_report(temporary, validation, job, shown)
+    return os.path.join(os.path.abspath(folder), os.path.basename(page))
+
+
+def _cl_list(cls):
+    return ", ".join(str(cl) for cl in cls[:12]) + (", …" if len(cls) > 12 else "")
