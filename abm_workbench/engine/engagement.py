@@ -458,26 +458,12 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
     # wall index (j ≥ 1) of each column block after the tops: (first column, columns per
     # wall, (N, walls in block) wall indices)
     blocks = []
-    found = crossings[0][:, ~np.isnan(crossings[0]).all(axis=0)]
-    if rows.size and found.size:
-        crossing = np.full((n, int(rank.max()) + 1, found.shape[1]), np.nan)
-        crossing[rows, rank] = found
-        ids = np.full(crossing.shape[:2], -1)
-        ids[rows, rank] = walls + 1
-        blocks.append((sum(c.shape[1] for c in columns), found.shape[1], ids))
-        columns.append(crossing.reshape(n, -1))
+    _add_crossings(n, rows, walls, crossings[0], columns, blocks)
     exact_rows, exact_walls = pair_rows[~is_quintic], pair_walls[~is_quintic]
     if exact_rows.size:
         e = exact_rows
-        found = stock.splines.crossings(exact_walls, x0[e], y0[e], dx[e], dy[e], lo[e], hi[e])
-        if found.size:
-            exact_rank = np.arange(e.size) - np.searchsorted(e, e)
-            crossing = np.full((n, int(exact_rank.max()) + 1, found.shape[1]), np.nan)
-            crossing[e, exact_rank] = found
-            ids = np.full(crossing.shape[:2], -1)
-            ids[e, exact_rank] = exact_walls + 1
-            blocks.append((sum(c.shape[1] for c in columns), found.shape[1], ids))
-            columns.append(crossing.reshape(n, -1))
+        _add_crossings(n, e, exact_walls, stock.splines.crossings(exact_walls, x0[e], y0[e], dx[e], dy[e], lo[e], hi[e]),
+                       columns, blocks)
     at = np.concatenate(columns, axis=1)
     at[~live] = np.nan
     order = np.argsort(at, axis=1)
@@ -522,6 +508,22 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
         "lep_l": lep, "uep_l": uep, "length": np.where(inside, end - start, 0.0).sum(axis=1),
         "pieces": pieces, "uep_surface": surface, "uep_section": uep_section, "uep_wall": wall_index, "case": case,
     }
+
+
+def _add_crossings(n, rows, walls, found, columns, blocks):
+    """Append the crossings `found` (P, r), NaN-padded, of the pairs (rows, walls) (P,), grouped
+    by row, to the breakpoint `columns` of n lines as one block of (rank in row) × r columns,
+    and its (first column, r, (n, ranks) wall ids j + 1) to `blocks`."""
+    found = found[:, ~np.isnan(found).all(axis=0)]
+    if rows.size == 0 or found.size == 0:
+        return
+    rank = np.arange(rows.size) - np.searchsorted(rows, rows)
+    crossing = np.full((n, int(rank.max()) + 1, found.shape[1]), np.nan)
+    crossing[rows, rank] = found
+    ids = np.full(crossing.shape[:2], -1)
+    ids[rows, rank] = walls + 1
+    blocks.append((sum(c.shape[1] for c in columns), found.shape[1], ids))
+    columns.append(crossing.reshape(n, -1))
 
 
 def _walls_left_of(stock, rows, walls, rank, crossings, x0, y0, dx, dy, along):
