@@ -489,13 +489,13 @@ def _run_validate(args):
 
     job, toolpath, parameters, tool, settings = _prepare(args)
     cls = _cl_indices(args.cl, len(toolpath)) if args.cl else None
+    helical = _helical_validation(args, tool)
     _check_validate_outputs(args)
     stock, stock_seconds = _load_stock(args, toolpath, tool)
     started = time.perf_counter()
     solid = stock.solid()
     stock_seconds += time.perf_counter() - started
 
-    helical = _helical_validation(args, tool)
     try:
         if helical is None:
             validation = validate(solid, stock.staircase, tool, toolpath, settings,
