@@ -5,18 +5,19 @@ columns u, v, w) and rotation angle φ is the helix of engine/helix.py,
 
     S_k(l) = T + R·(R_t sin ψ, R_t cos ψ, l),   ψ = φ + 360k/Z − deg(l tan β / R_t),   0 ≤ l ≤ L.
 
-In the tool frame its polar angle is θ = 90° − ψ, which grows with l for β > 0: a
-right-handed helix. OpenCASCADE builds it with ``Part.makeHelix(pitch, L, R_t)`` (about z,
-from (R_t, 0, 0), pitch 2π R_t / |tan β|; left-handed, ``LocalCoord=True``, for β < 0),
-turned about z by 90° − ψ(0) and placed by R and T. For β = 0 the edge is the straight
-segment of cad/boolean.py. The helices of every φ and flute at one CL point go into ONE
-``shape.common([edges])``; each result edge is mapped back to the helix its middle lies on,
-and the heights l = (P − T)·w of its two ends give its axial span.
+In the tool frame its polar angle is θ = 90° − ψ = 90° − ψ(0) + κl (κ = tan β / R_t), so
+it is the straight line from (θ, z) = (90° − ψ(0), 0) to (90° − ψ(0) + κL, L) on the
+cylinder of radius R_t about z, placed by R and T; either hand follows from the sign of κ.
+For β = 0 the edge is the straight segment of cad/boolean.py. The helices of every φ and
+flute at one CL point go into ``shape.common([edges])``, HELICES_PER_BOOLEAN at a time; each
+result edge is mapped back to the helix its middle lies on, and the heights l = (P − T)·w of
+its two ends give its axial span.
 
-makeHelix's edge is a line on a cylinder whose 3D curve OpenCASCADE approximates by a
-B-spline (BRepLib::BuildCurves3d, tolerance 1e-5 mm: the edge's Tolerance); the boolean
-works on that B-spline. Measured on R_t = 6 mm, L = 30 mm: the B-spline is within 4e-6 mm of
-the true helix, which bounds how well the boolean can locate a crossing (docs/HELIX.md).
+OpenCASCADE keeps the edge as its line on the cylinder plus a B-spline 3D curve within the
+edge's Tolerance, 1e-7 mm (measured 2e-8 to 7e-8 mm), and the boolean works on the B-spline;
+a crossing met at an angle γ moves by about that deviation / sin γ along the axis.
+``Part.makeHelix`` builds the same helix but approximates its 3D curve only to 1e-5 mm, too
+coarse for a 1e-6 mm check (docs/HELIX.md, "Checked against OpenCASCADE").
 Lengths in mm, angles in degrees.
 """
 
@@ -27,8 +28,8 @@ from .boolean import PIECE_EPS, _distinct_angles, _merged
 from .freecad_env import FreeCAD, Part
 
 #: A result edge's middle must lie within this distance (mm) of the helix it is mapped to: ten
-#: times the 1e-5 mm to which OpenCASCADE approximates the helix by a B-spline.
-ON_HELIX_TOL = 1e-4
+#: times the 1e-7 mm to which OpenCASCADE approximates the helix by a B-spline.
+ON_HELIX_TOL = 1e-6
 #: Helices per boolean. A common's cost per helix falls with batching up to about 50 helices and
 #: then grows (the arguments are checked against each other): measured 37 ms alone, 12-13 ms in
 #: batches of 6 to 48, 18 ms at 90, 30 ms at 180 (model test 1, β = 30°).

@@ -15,7 +15,9 @@ import numpy as np
 import pytest
 
 from abm_workbench import cli
+from abm_workbench.cad import helix_boolean
 from abm_workbench.cad.boolean import edge_lengths_by_boolean
+from abm_workbench.cad.freecad_env import FreeCAD
 from abm_workbench.cad.helix_boolean import flute_lengths_by_boolean, helix_edge
 from abm_workbench.cad.recognise import load_solid, recognise
 from abm_workbench.engine import SURFACES, CutSettings, Tool, Toolpath, flute_engagement, rotation_matrix
@@ -142,6 +144,20 @@ def test_errors(model):
     away = Toolpath(path.cl + [0.0, 0.0, 100.0], path.theta_a, path.theta_b)
     with pytest.raises(NoEngagementError):
         validate_helix(solid, stock, tool, away, settings_of(job))
+
+
+def test_a_result_edge_off_every_helix_is_an_error(model, monkeypatch):
+    """Edges 1e-3 mm beside their helices: the result cannot be mapped back, and says so."""
+    solid, _, job, path = model
+    tool = Tool(job["diameter"], 2, job["flute_length"], helix=30.0)
+
+    def shifted(*args):
+        edge = helix_edge(*args)
+        edge.translate(FreeCAD.Vector(0.0, 0.0, 1e-3))
+        return edge
+    monkeypatch.setattr(helix_boolean, "helix_edge", shifted)
+    with pytest.raises(RuntimeError, match="lies on no flute helix"):
+        flute_lengths_by_boolean(solid, tool, path, settings_of(job).phi)
 
 
 @pytest.fixture
