@@ -133,6 +133,12 @@ def _build_parser():
     outputs.add_argument("--cl", metavar="I,J,...",
                          help="CL points (0-based) shown in detail and annotated in the FCStd "
                               "(default: deepest, shallowest, middle and largest error; the FCStd all)")
+    helical = validate_parser.add_argument_group("helical edges (docs/HELIX.md)")
+    helical.add_argument("--helix", type=float, default=0.0, metavar="DEG",
+                         help="helix angle β (deg), default 0: straight edges; otherwise every checked flute's "
+                              "helix against booleans of the exact helices; the report shows the first checked "
+                              "flute, flutes.csv all of them per instant")
+    helical.add_argument("--flute", type=int, metavar="K", help="check only flute K (1..Z), default all; with --helix")
     validate_parser.set_defaults(run=_run_validate)
 
     schedule_parser = commands.add_parser(
@@ -479,10 +485,11 @@ def _run_validate(args):
     """The validate command; returns 0 or raises InputError."""
     from .report.html import ReportJob, report_cls, write_report
     from .report.staging import staged
-    from .validation import NoEngagementError, overall, validate
+    from .validation import NoEngagementError, overall, validate, validate_helix, write_flutes_csv
 
     job, toolpath, parameters, tool, settings = _prepare(args)
     cls = _cl_indices(args.cl, len(toolpath)) if args.cl else None
+    helical = _helical_validation(args, tool)
     _check_validate_outputs(args)
     stock, stock_seconds = _load_stock(args, toolpath, tool)
     started = time.perf_counter()
@@ -490,15 +497,26 @@ def _run_validate(args):
     stock_seconds += time.perf_counter() - started
 
     try:
-        validation = validate(solid, stock.staircase, tool, toolpath, settings,
-                              progress=_Progress("boolean reference", sys.stderr))
+        if helical is None:
+            validation = validate(solid, stock.staircase, tool, toolpath, settings,
+                                  progress=_Progress("boolean reference", sys.stderr))
+        else:
+            tool, flutes = helical
+            helix_validation = validate_helix(solid, stock.staircase, tool, toolpath, settings, flutes=flutes,
+                                              progress=_Progress("helix boolean reference", sys.stderr))
+            validation = helix_validation.flute(helix_validation.flutes[0])
     except NoEngagementError:
         raise InputError(_no_engagement(args)) from None
     engagement = validation.engagement
     shown = report_cls(validation, cls)
     walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
-    title = f"ABM against booleans: {os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}"
-    report_job = ReportJob(title, job.get("description", ""), args.stock, args.toolpath, toolpath, tool, settings,
+    run = "ABM against booleans" if helical is None else (
+        f"Helical edges (β = {tool.helix:g}°), flute {helix_validation.flutes[0] + 1} of {tool.flutes}, "
+        "ABM against booleans")
+    title = f"{run}: {os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}"
+    description = job.get("description", "") if helical is None else " ".join(filter(None, [
+        job.get("description", ""), _flutes_text(helix_validation)]))
+    report_job = ReportJob(title, description, args.stock, args.toolpath, toolpath, tool, settings,
                            parameters.describe(), walls, stock.y_window, stock_seconds)
 
     outputs = [args.report] + ([args.fcstd] if args.fcstd else [])
@@ -507,6 +525,8 @@ def _run_validate(args):
     with staged(args.report, folder=True) as folder, \
             (staged(args.fcstd) if args.fcstd else contextlib.nullcontext()) as fcstd:
         page = write_report(folder, validation, report_job, shown)
+        if helical is not None:
+            write_flutes_csv(os.path.join(folder, "flutes.csv"), helix_validation)
         if fcstd:
             from .cad.annotate import write_annotated
             name = re.sub(r"[^A-Za-z0-9_]", "_", os.path.splitext(os.path.basename(args.fcstd))[0])
@@ -520,8 +540,32 @@ def _run_validate(args):
           f"{total['relative_instants']} instants), max |difference| {total['max_abs_difference']:.3g} mm; "
           f"ABM {validation.seconds['abm']:.3g} s, boolean {validation.seconds['boolean']:.3g} s "
           f"({validation.speed_ratio:.0f}x); wrote {', '.join(written)}")
+    if helical is not None:
+        print(f"{PROG}: {_flutes_text(helix_validation)}")
     print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
     return 0
+
+
+def _helical_validation(args, tool):
+    """None for a straight run, else (tool with --helix, 0-based flutes to check); InputError for a bad
+    --helix or --flute."""
+    if args.helix == 0.0 and args.flute is None:
+        return None
+    tool = _helical(args, tool)
+    if args.flute is None:
+        return tool, None
+    if not 1 <= args.flute <= tool.flutes:
+        raise InputError(f"--flute: must be 1..{tool.flutes} (the tool has {tool.flutes} flutes), got {args.flute}")
+    return tool, [args.flute - 1]
+
+
+def _flutes_text(helix_validation):
+    """One line per checked flute's largest |ABM − boolean| of axial length, LEP and UEP (mm)."""
+    parts = [f"flute {row['flute'] + 1}: max |Δ axial length| {row['max_axial_difference']:.3g} mm, "
+             f"|Δ LEP| {row['max_lep_difference']:.3g} mm, |Δ UEP| {row['max_uep_difference']:.3g} mm, "
+             f"{row['mismatched']} mismatched of {row['instants']} instants"
+             for row in helix_validation.flute_summary()]
+    return "Helical edges against the helix boolean: " + "; ".join(parts) + " (per instant in flutes.csv)."
 
 
 def _run_schedule(args):

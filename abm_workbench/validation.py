@@ -7,7 +7,10 @@ l_ABM − l_ref (mm) is reported instead; the two kinds are kept apart in every 
 
 Arrays are over m CL points × p rotation angles φ. Lengths in mm, angles in degrees,
 relative errors as fractions (0.01 = 1 %). Everything here is numpy, except :func:`validate`,
-which runs the boolean reference through :mod:`abm_workbench.cad.boolean` (FreeCAD).
+which runs the boolean reference through :mod:`abm_workbench.cad.boolean` (FreeCAD), and
+:func:`validate_helix`, its counterpart for helical edges (:mod:`abm_workbench.cad.helix_boolean`):
+per instant and flute the axial length of cut, LEP and UEP (axial positions l) of
+flute_engagement against the helix boolean.
 """
 
 import time
@@ -15,7 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .engine import SURFACES, Engagement, Tool, Toolpath, edge_lines, engage, segment_letter
+from .engine import (SURFACES, Engagement, FluteEngagement, Tool, Toolpath, edge_lines, engage, flute_engagement,
+                     rotation_matrix, segment_letter)
 
 #: Below this reference length (mm) the error is absolute, not relative.
 TINY_LENGTH = 1e-3
@@ -87,6 +91,15 @@ def compare(engagement: Engagement, reference, toolpath: Toolpath, tool: Tool):
     CL points of `toolpath` and the same angles engagement.phi. The reference depth of cut is
     computed from its LEP and UEP on the edge lines of `tool`.
     """
+    arrays = _reference_arrays(engagement, reference)
+    base, direction = edge_lines(toolpath, tool, engagement.phi)
+    z_lep = base[..., 2] + arrays["lep_l"] * direction[:, None, 2]
+    z_uep = base[..., 2] + arrays["uep_l"] * direction[:, None, 2]
+    return _comparison(engagement, arrays, z_lep, z_uep)
+
+
+def _reference_arrays(engagement, reference):
+    """{length, lep_l, uep_l}: the reference's (m, p) float arrays, shape-checked against `engagement`."""
     m, p = engagement.shape
     arrays = {}
     for name in ("length", "lep_l", "uep_l"):
@@ -94,13 +107,16 @@ def compare(engagement: Engagement, reference, toolpath: Toolpath, tool: Tool):
         if array.shape != (m, p):
             raise ValueError(f"reference[{name!r}] must have shape {(m, p)}, got {array.shape}")
         arrays[name] = array
+    return arrays
+
+
+def _comparison(engagement, arrays, z_lep, z_uep):
+    """The Comparison of `engagement` with the reference `arrays`, whose LEP and UEP lie at heights
+    z_lep, z_uep (m, p) mm."""
     l_abm, l_ref = engagement.length, arrays["length"]
     difference = l_abm - l_ref
     relative = l_ref >= TINY_LENGTH
     error = np.where(relative, difference / np.where(relative, l_ref, 1.0), difference)
-    base, direction = edge_lines(toolpath, tool, engagement.phi)
-    z_lep = base[..., 2] + arrays["lep_l"] * direction[:, None, 2]
-    z_uep = base[..., 2] + arrays["uep_l"] * direction[:, None, 2]
     return Comparison(
         l_abm, l_ref, difference, relative, error,
         engagement.lep_l, arrays["lep_l"], engagement.uep_l, arrays["uep_l"],
@@ -205,3 +221,123 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     boolean_seconds = time.perf_counter() - started
     comparison = compare(engagement, reference, toolpath, tool)
     return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds})
+
+
+@dataclass(frozen=True)
+class HelixValidation:
+    """A pass with helical edges: flute_engagement against the helix boolean, every flute apart.
+
+    engagement: the FluteEngagement (m, p, Z). reference: dict of (m, p, Z) arrays
+    axial_length, edge_length, lep_l, uep_l, pieces (cad.helix_boolean; flutes not checked stay
+    unengaged). flutes: the checked flutes (0-based). seconds: {"abm", "boolean"} (s) of the
+    whole run.
+    """
+
+    engagement: FluteEngagement
+    reference: dict
+    flutes: tuple
+    toolpath: Toolpath
+    tool: Tool
+    seconds: dict
+
+    def differences(self):
+        """{axial_length, lep_l, uep_l}: (m, p, c) |ABM − boolean| (mm) over the checked flutes
+        (c of them, in `flutes` order); NaN where a LEP or UEP exists on one side only or on none."""
+        chosen = list(self.flutes)
+        return {name: np.abs(getattr(self.engagement, name)[..., chosen] - self.reference[name][..., chosen])
+                for name in ("axial_length", "lep_l", "uep_l")}
+
+    def flute_summary(self):
+        """Per checked flute a dict: flute (0-based), instants, engaged_abm, engaged_ref, mismatched
+        (instants where one side engages), max_axial_difference, max_lep_difference,
+        max_uep_difference (mm, NaN if none)."""
+        differences = self.differences()
+        rows = []
+        for column, flute in enumerate(self.flutes):
+            abm = self.engagement.axial_length[..., flute] > 0.0
+            ref = self.reference["axial_length"][..., flute] > 0.0
+            worst = {f"max_{key}_difference": _largest(differences[name][..., column])
+                     for key, name in (("axial", "axial_length"), ("lep", "lep_l"), ("uep", "uep_l"))}
+            rows.append({"flute": int(flute), "instants": int(abm.size), "engaged_abm": int(abm.sum()),
+                         "engaged_ref": int(ref.sum()), "mismatched": int((abm != ref).sum()), **worst})
+        return rows
+
+    def flute(self, flute):
+        """The Validation of flute `flute` (0-based, one of `flutes`) alone, for the report: the
+        engine's Engagement of that flute (FluteEngagement.as_engagement: length = axial length of
+        cut, LEP and UEP as axial positions l), the reference's (m, p) arrays, their Comparison
+        (depth of cut from the helix points at the reference's LEP and UEP) and the run's seconds."""
+        if flute not in self.flutes:
+            raise ValueError(f"flute {flute} was not checked; checked: {list(self.flutes)}")
+        engagement = self.engagement.as_engagement(flute)
+        reference = {"length": self.reference["axial_length"][..., flute],
+                     **{name: self.reference[name][..., flute] for name in ("lep_l", "uep_l", "pieces")}}
+        arrays = _reference_arrays(engagement, reference)
+        z_lep, z_uep = (self._helix_height(arrays[name], flute) for name in ("lep_l", "uep_l"))
+        return Validation(engagement, reference, _comparison(engagement, arrays, z_lep, z_uep), self.seconds)
+
+    def _helix_height(self, l, flute):
+        """z (m, p) mm of flute `flute`'s helix at axial positions l (m, p) mm (NaN kept)."""
+        frames = rotation_matrix(self.toolpath.theta_a, self.toolpath.theta_b)
+        psi = np.radians(self.engagement.angle_at(l, flute))
+        radial = np.sin(psi) * frames[:, None, 2, 0] + np.cos(psi) * frames[:, None, 2, 1]
+        return self.toolpath.cl[:, None, 2] + self.tool.radius * radial + l * frames[:, None, 2, 2]
+
+
+def _largest(values):
+    """max of the finite values (float), NaN if none."""
+    finite = values[np.isfinite(values)]
+    return float(finite.max()) if finite.size else np.nan
+
+
+def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, flutes=None, progress=None):
+    """Run the helix solver and the helix boolean reference on one pass; a HelixValidation.
+
+    solid: the stock as a Part.Shape; staircase: the engine's. tool.helix may be any allowed β
+    (0 too: the boolean then uses straight segments). flutes: 0-based flutes to check (default
+    all). progress(done, total) after each CL point of the reference. Raises
+    NoEngagementError, before the reference runs, when no checked flute engages anywhere.
+    Needs FreeCAD.
+    """
+    from .cad.helix_boolean import flute_lengths_by_boolean
+
+    chosen = tuple(range(tool.flutes)) if flutes is None else tuple(sorted({int(k) for k in flutes}))
+    if not chosen or min(chosen) < 0 or max(chosen) >= tool.flutes:
+        raise ValueError(f"flutes must be indices in 0..{tool.flutes - 1}, got {flutes!r}")
+    started = time.perf_counter()
+    engagement = flute_engagement(staircase, tool, toolpath, settings)
+    abm_seconds = time.perf_counter() - started
+    if not (engagement.axial_length[..., list(chosen)] > 0.0).any():
+        raise NoEngagementError("no CL point of the pass engages the stock with the checked flutes")
+    started = time.perf_counter()
+    reference = flute_lengths_by_boolean(solid, tool, toolpath, engagement.phi, chosen, progress)
+    boolean_seconds = time.perf_counter() - started
+    return HelixValidation(engagement, reference, chosen, toolpath, tool,
+                           {"abm": abm_seconds, "boolean": boolean_seconds})
+
+
+#: Columns of flutes.csv (write_flutes_csv).
+FLUTE_COLUMNS = ("cl", "phi_deg", "flute", "axial_abm", "axial_ref", "axial_difference", "edge_length_abm",
+                 "edge_length_ref", "lep_abm", "lep_ref", "lep_difference", "uep_abm", "uep_ref", "uep_difference",
+                 "pieces_abm", "pieces_ref")
+
+
+def write_flutes_csv(path, helix_validation: HelixValidation):
+    """Write flutes.csv: one row per CL point × φ × checked flute (flute numbered 1..Z), FLUTE_COLUMNS:
+    axial length of cut, length along the helix, LEP and UEP (axial positions l), all mm, by ABM
+    and by the boolean, the differences ABM − boolean, and the pieces of each."""
+    from .report.tables import csv_text
+
+    engagement, reference = helix_validation.engagement, helix_validation.reference
+    chosen = list(helix_validation.flutes)
+    m, p, _ = engagement.shape
+    grid = np.meshgrid(np.arange(m), engagement.phi, np.array(chosen) + 1, indexing="ij")
+    columns = {"cl": grid[0], "phi_deg": grid[1], "flute": grid[2]}
+    for key, name in (("axial", "axial_length"), ("edge_length", "edge_length"), ("lep", "lep_l"), ("uep", "uep_l"),
+                      ("pieces", "pieces")):
+        abm, ref = getattr(engagement, name)[..., chosen], reference[name][..., chosen]
+        columns[f"{key}_abm"], columns[f"{key}_ref"] = abm, ref
+        if key in ("axial", "lep", "uep"):
+            columns[f"{key}_difference"] = abm - ref
+    with open(path, "w", encoding="utf-8", newline="") as file:
+        file.write(csv_text(FLUTE_COLUMNS, [np.ravel(columns[name]) for name in FLUTE_COLUMNS]))
