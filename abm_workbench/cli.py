@@ -133,6 +133,7 @@ def _build_parser():
     outputs.add_argument("--cl", metavar="I,J,...",
                          help="CL points (0-based) shown in detail and annotated in the FCStd "
                               "(default: deepest, shallowest, middle and largest error; the FCStd all)")
+    _force_arguments(validate_parser, helix=False)
     validate_parser.set_defaults(run=_run_validate)
 
     schedule_parser = commands.add_parser(
@@ -159,17 +160,20 @@ def _build_parser():
     return parser
 
 
-def _force_arguments(parser, *, always=False):
-    """The helix angle and the cutting-force options (engage: only with --forces; schedule: always used)."""
-    parser.add_argument("--helix", type=float, default=0.0, metavar="DEG",
-                        help="helix angle β of the flutes (deg), default 0: straight flutes; a helical tool's "
-                             "engagement comes from the helix solver (every flute's exact helix)")
+def _force_arguments(parser, *, always=False, helix=True):
+    """The helix angle (unless helix is False) and the cutting-force options (engage, validate: only with
+    --forces; schedule: always used)."""
+    if helix:
+        parser.add_argument("--helix", type=float, default=0.0, metavar="DEG",
+                            help="helix angle β of the flutes (deg), default 0: straight flutes; a helical tool's "
+                                 "engagement comes from the helix solver (every flute's exact helix)")
     group = parser.add_argument_group(
         "cutting forces (linear edge-force model, docs/FORCES.md)" + ("" if always else ": with --forces"))
     if not always:
         group.add_argument("--forces", action="store_true",
-                           help="add fx, fy, fz (N, global frame), torque (N·mm) and power (W, with a spindle "
-                                "speed) to the results, peak and mean force per CL point to the summary")
+                           help="engage: add fx, fy, fz (N, global frame), torque (N·mm) and power (W, with a "
+                                "spindle speed) to the results, peak and mean force per CL point to the summary; "
+                                "validate: a cutting-forces section in the report (and forces.png)")
     group.add_argument("--material", type=str.lower, metavar="NAME",
                        help=f"coefficients of a material: {', '.join(MATERIALS)}; --ktc ... override single values")
     for name in COEFFICIENT_NAMES:
@@ -481,8 +485,9 @@ def _run_validate(args):
     from .report.staging import staged
     from .validation import NoEngagementError, overall, validate
 
+    force_model = _force_model(args)
     job, toolpath, parameters, tool, settings = _prepare(args)
-    cls = _cl_indices(args.cl, len(toolpath)) if args.cl else None
+    cls = cl_indices(args.cl, len(toolpath)) if args.cl else None
     _check_validate_outputs(args)
     stock, stock_seconds = _load_stock(args, toolpath, tool)
     started = time.perf_counter()
@@ -495,6 +500,11 @@ def _run_validate(args):
     except NoEngagementError:
         raise InputError(_no_engagement(args)) from None
     engagement = validation.engagement
+    forces = None
+    if force_model is not None:
+        coefficients, immersion = force_model
+        forces = pass_forces(stock.staircase, tool, toolpath, settings, coefficients, immersion=immersion,
+                             first=engagement.length if tool.helix == 0.0 else None)
     shown = report_cls(validation, cls)
     walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
     title = f"ABM against booleans: {os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}"
@@ -506,7 +516,7 @@ def _run_validate(args):
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with staged(args.report, folder=True) as folder, \
             (staged(args.fcstd) if args.fcstd else contextlib.nullcontext()) as fcstd:
-        page = write_report(folder, validation, report_job, shown)
+        page = write_report(folder, validation, report_job, shown, forces)
         if fcstd:
             from .cad.annotate import write_annotated
             name = re.sub(r"[^A-Za-z0-9_]", "_", os.path.splitext(os.path.basename(args.fcstd))[0])
@@ -519,7 +529,9 @@ def _run_validate(args):
           f"{100 * total['max_rel_error']:.3g} % (mean {100 * total['mean_rel_error']:.3g} %, "
           f"{total['relative_instants']} instants), max |difference| {total['max_abs_difference']:.3g} mm; "
           f"ABM {validation.seconds['abm']:.3g} s, boolean {validation.seconds['boolean']:.3g} s "
-          f"({validation.speed_ratio:.0f}x); wrote {', '.join(written)}")
+          f"({validation.speed_ratio:.0f}x)"
+          + ("" if forces is None else f"; peak force {forces.peak.max():.4g} N at CL {int(np.argmax(forces.peak))}")
+          + f"; wrote {', '.join(written)}")
     print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
     return 0
 
@@ -609,7 +621,7 @@ def _pair(text, option, expected):
         raise InputError(f"{option}: expected {expected}, got {text!r}") from None
 
 
-def _cl_indices(text, m):
+def cl_indices(text, m):
     """Sorted distinct CL indices from '0,22,40'; InputError unless each is an integer in 0..m−1."""
     indices = set()
     for part in text.split(","):
