@@ -197,10 +197,7 @@ class EngagementFeature(FeatureProxy):
         sources = {key: _PROPERTY_SOURCE.get(source, source) for key, source in parameters.sources.items()}
         parameters = Parameters(parameters.values, sources, parameters.conflicts)
         tool, settings = tool_and_settings(parameters.values)
-        try:
-            tool = dataclasses.replace(tool, helix=obj.HelixAngle.Value)
-        except ValueError as error:
-            raise InputError(f"{obj.Label}: HelixAngle: {error}") from None
+        tool = helical_tool(obj.Label, tool, obj.HelixAngle.Value)
         walls = None if obj.WallModel == "stock" else obj.WallModel
         if walls is not None and not stock_proxy.is_solid(stock_obj):
             raise InputError(f"WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
@@ -408,6 +405,14 @@ def show_material(obj):
         obj.setEditorMode(prop, 0 if custom else READ_ONLY)
 
 
+def helical_tool(label, tool, helix):
+    """`tool` with helix angle `helix` (deg); InputError "<label>: HelixAngle: <the Tool's message>"."""
+    try:
+        return dataclasses.replace(tool, helix=helix)
+    except ValueError as error:
+        raise InputError(f"{label}: HelixAngle: {error}") from None
+
+
 def force_model(obj):
     """(Coefficients, immersion (start, end) deg) of the engagement `obj`, or None with Forces off.
 
@@ -415,18 +420,28 @@ def force_model(obj):
     """
     if not obj.Forces:
         return None
-    if obj.Material == "custom":
-        values = {name: getattr(obj, prop) for name, prop in COEFFICIENT_PROPERTIES.items()}
+    values = {prop: getattr(obj, prop) for prop in COEFFICIENT_PROPERTIES.values()}
+    return force_settings(obj.Label, obj.Material, values, (obj.ImmersionStart.Value, obj.ImmersionEnd.Value))
+
+
+def force_settings(label, material_name, values, immersion):
+    """(Coefficients, immersion (start, end) deg) of a material name of MATERIAL_CHOICES (custom: the
+    coefficient `values`, {property: number}) and an immersion (start, end) deg.
+
+    InputError "<label>: <property>: <the command line's message>" when they are bad.
+    """
+    if material_name == "custom":
+        values = {name: values[prop] for name, prop in COEFFICIENT_PROPERTIES.items()}
     else:
-        values = dataclasses.asdict(MATERIALS[obj.Material][0])
+        values = dataclasses.asdict(MATERIALS[material_name][0])
     try:
         coefficients = Coefficients(**values)
     except ValueError as error:
-        raise InputError(f"{obj.Label}: {COEFFICIENT_PROPERTIES[str(error).split()[0]]}: {error}") from None
+        raise InputError(f"{label}: {COEFFICIENT_PROPERTIES[str(error).split()[0]]}: {error}") from None
     try:
-        immersion = check_immersion((obj.ImmersionStart.Value, obj.ImmersionEnd.Value))
+        immersion = check_immersion(immersion)
     except ValueError as error:
-        raise InputError(f"{obj.Label}: ImmersionStart, ImmersionEnd: {error}") from None
+        raise InputError(f"{label}: ImmersionStart, ImmersionEnd: {error}") from None
     return coefficients, immersion
 
 
