@@ -10,9 +10,10 @@ and ``jobs.tool_and_settings`` (the engine's ``Tool`` and ``CutSettings`` checks
 window as ``features.engagement.y_window`` checks it; the helix angle by the engine's ``Tool``, the
 cutting-force settings (on / off, material or custom coefficients, immersion) by
 ``forces.Coefficients`` and ``forces.check_immersion`` (``features.engagement.force_settings``).
-The coefficient fields show the material's values, read-only, unless the material is custom. The first problem is shown under the
-fields as ``abm: error: <message>`` (the command line's words), its field is marked, and OK is
-disabled. Fields the toolpath file fixes show its value, are read-only and say so.
+The coefficient fields show the material's values, read-only, unless the material is custom.
+The first problem is shown at the top of the panel as ``abm: error: <message>`` (the command
+line's words), its field is marked, and OK is disabled. Fields the toolpath file fixes show its
+value, are read-only and say so.
 
 The whole edit is one document transaction: OK commits it (after a recompute that succeeds),
 Cancel aborts it, which for a new engagement removes the object.
@@ -44,10 +45,9 @@ FIELDS = (
     ("YWindowMax", "y window to", "mm", -1e6, 1e6, 1.0),
 )
 #: Force fields after the Forces check box and the Material combo: (property, label, unit, minimum, maximum, step).
-FORCE_FIELDS = tuple(
-    (prop, f"K{name[1:]} ({'N/mm²' if name.endswith('c') else 'N/mm'})", None, -1e6, 1e6, 10.0)
-    for name, prop in COEFFICIENT_PROPERTIES.items()
-) + (("ImmersionStart", "Immersion from", "deg", -1e6, 1e6, 5.0), ("ImmersionEnd", "Immersion to", "deg", -1e6, 1e6, 5.0))
+FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm'})", None, -1e6, 1e6, 10.0)
+                     for prop in COEFFICIENT_PROPERTIES.values()) + (
+    ("ImmersionStart", "Immersion from", "deg", -1e6, 1e6, 5.0), ("ImmersionEnd", "Immersion to", "deg", -1e6, 1e6, 5.0))
 #: resolve_parameters key -> the field it fills.
 KEY_FIELD = {"diameter": "Diameter", "flutes": "Flutes", "flute_length": "FluteLength",
              "feed_per_tooth": "FeedPerTooth", "spindle_rpm": "SpindleSpeed", "inclination": "Inclination",
@@ -83,6 +83,15 @@ class EngagementPanel:
         layout = QtWidgets.QFormLayout(self.form)
         self.source = QtWidgets.QLabel(f"Stock: {_label(obj.Stock)}<br>Toolpath: {_label(obj.Toolpath)}")
         layout.addRow(self.source)
+        self.message = QtWidgets.QLabel()  # at the top: seen whatever the panel is scrolled to
+        self.message.setObjectName("ABM_Message")
+        self.message.setWordWrap(True)
+        self.message.setStyleSheet("color: #b00000;")
+        layout.addRow(self.message)
+        self.fixed = QtWidgets.QLabel()
+        self.fixed.setObjectName("ABM_Fixed")
+        self.fixed.setWordWrap(True)
+        layout.addRow(self.fixed)
         self.names = []  # of the fields, in order: self.field(name) finds each
         for name, label, unit, low, high, step in FIELDS:
             widget = _spin_box(unit, low, high, step, integer=name == "Flutes")
@@ -96,14 +105,20 @@ class EngagementPanel:
             _set_value(widget, _property_value(obj, name))
             widget.valueChanged.connect(self.check)
         self.field("SpindleSpeed").setSpecialValueText("none")
-        forces = QtWidgets.QCheckBox("Cutting forces (linear edge-force model)")
+        self._force_fields(layout)
+        self.hints = self._hints()
+        self.check()
+
+    def _force_fields(self, layout):
+        """The Forces check box beside the Material combo, then the coefficients and the immersion."""
+        obj = self.obj
+        forces = QtWidgets.QCheckBox("Cutting forces")
         forces.setObjectName("ABM_Forces")
         forces.setChecked(bool(obj.Forces))
         forces.setToolTip(obj.getDocumentationOfProperty("Forces"))
         forces.toggled.connect(self.check)
         self.names.append("Forces")
-        layout.addRow(forces)
-        layout.addRow("Material", self._combo("Material", MATERIAL_CHOICES))
+        layout.addRow(forces, self._combo("Material", MATERIAL_CHOICES))
         for name, label, unit, low, high, step in FORCE_FIELDS:
             widget = _spin_box(unit, low, high, step)
             if unit is None:
@@ -114,17 +129,6 @@ class EngagementPanel:
             layout.addRow(label, widget)
             _set_value(widget, _property_value(obj, name))
             widget.valueChanged.connect(self.check)
-        self.fixed = QtWidgets.QLabel()
-        self.fixed.setObjectName("ABM_Fixed")
-        self.fixed.setWordWrap(True)
-        layout.addRow(self.fixed)
-        self.message = QtWidgets.QLabel()
-        self.message.setObjectName("ABM_Message")
-        self.message.setWordWrap(True)
-        self.message.setStyleSheet("color: #b00000;")
-        layout.addRow(self.message)
-        self.hints = self._hints()
-        self.check()
 
     def _combo(self, name, choices):
         combo = QtWidgets.QComboBox()
