@@ -7,7 +7,8 @@ FreeCAD's main window, showing one engagement object at a time (:func:`show`):
   point is drawn on top of the model (``EngagementViewProvider.highlight``) and a line says
   its depth of cut and engagement segments;
 - "Colour by" (the view property ``ColourBy``) and the legend: for segments, the UEP surface
-  kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit;
+  kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit
+  (force only for an engagement with forces: otherwise the segments are shown);
 - tab "Engagement": matplotlib plots (``FigureCanvasQTAgg``) for the chosen CL point: length of cut, cut area
   and cut thickness h over φ, each engagement segment in the colour of its UEP surface (as on
   the model, ``report.colours.SURFACE_COLOURS``), and the pass progression: depth of cut and maximum
@@ -125,6 +126,7 @@ class EngagementDock(QtWidgets.QDockWidget):
         self.title.setText(f"<b>{obj.Label}</b>: {m} CL points × {result.shape[1]} angles φ; depth of cut "
                            f"{obj.DepthOfCutMin.Value:.2f}–{obj.DepthOfCutMax.Value:.2f} mm{peak}")
         self.tabs.setTabEnabled(FORCES_TAB, forces is not None)
+        self.colour_by.model().item(COLOUR_BY.index("force")).setEnabled(forces is not None)
         self.tabs.setTabToolTip(FORCES_TAB, "" if forces is not None else
                                 "no forces: turn Forces on in the engagement's task panel and recompute")
         for widget in (self.slider, self.spin):
