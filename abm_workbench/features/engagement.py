@@ -86,7 +86,8 @@ SETTINGS = {
     "phi_start": ("PhiStart", PARAMETERS["phi_range"][0]), "phi_end": ("PhiEnd", PARAMETERS["phi_range"][1]),
     "phi_step": ("PhiStep", PARAMETERS["phi_step"]), "helix": ("HelixAngle", 0.0),
     "forces": ("Forces", False), "material": ("Material", MATERIAL_CHOICES[0]),
-    **{name: (COEFFICIENT_PROPERTIES[name], None) for name in COEFFICIENT_NAMES},
+    **{name: (COEFFICIENT_PROPERTIES[name], getattr(MATERIALS[MATERIAL_CHOICES[0]][0], name))
+       for name in COEFFICIENT_NAMES},
     "immersion_start": ("ImmersionStart", FULL_SLOT[0]), "immersion_end": ("ImmersionEnd", FULL_SLOT[1]),
 }
 #: Where resolve_parameters says "--option", the engagement object took the value from this property.

@@ -24,8 +24,9 @@ from PySide2 import QtWidgets
 import FreeCADGui
 
 from ..errors import InputError
-from ..features.engagement import (COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, MATERIALS, Y_WINDOWS, WALL_CHOICES,
-                                   force_settings, helical_tool)
+from ..features.engagement import (COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings,
+                                   helical_tool)
+from ..forces import MATERIALS
 from ..jobs import resolve_parameters, tool_and_settings
 from .progress import busy
 

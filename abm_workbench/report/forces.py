@@ -17,6 +17,7 @@ import os
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from ..scheduling import peak
 
@@ -68,6 +69,7 @@ def draw_force_along(axes, forces, cls):
     axes.set(xlabel="CL point index", ylabel="force on the tool (N)",
              title="Peak and mean resultant force along the pass")
     axes.set_xlim(-0.5, index.size - 0.5)
+    axes.xaxis.set_major_locator(MaxNLocator(integer=True))
     axes.set_ylim(0.0, 1.15 * max(forces.peak.max(), 1e-9))
     axes.grid(alpha=0.3)
 
