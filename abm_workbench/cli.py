@@ -139,6 +139,7 @@ def _build_parser():
                               "helix against booleans of the exact helices; the report shows the first checked "
                               "flute, flutes.csv all of them per instant")
     helical.add_argument("--flute", type=int, metavar="K", help="check only flute K (1..Z), default all; with --helix")
+    _force_arguments(validate_parser, helix=False)
     validate_parser.set_defaults(run=_run_validate)
 
     schedule_parser = commands.add_parser(
@@ -165,17 +166,20 @@ def _build_parser():
     return parser
 
 
-def _force_arguments(parser, *, always=False):
-    """The helix angle and the cutting-force options (engage: only with --forces; schedule: always used)."""
-    parser.add_argument("--helix", type=float, default=0.0, metavar="DEG",
-                        help="helix angle β of the flutes (deg), default 0: straight flutes; a helical tool's "
-                             "engagement comes from the helix solver (every flute's exact helix)")
+def _force_arguments(parser, *, always=False, helix=True):
+    """The helix angle (unless helix is False) and the cutting-force options (engage, validate: only with
+    --forces; schedule: always used)."""
+    if helix:
+        parser.add_argument("--helix", type=float, default=0.0, metavar="DEG",
+                            help="helix angle β of the flutes (deg), default 0: straight flutes; a helical tool's "
+                                 "engagement comes from the helix solver (every flute's exact helix)")
     group = parser.add_argument_group(
         "cutting forces (linear edge-force model, docs/FORCES.md)" + ("" if always else ": with --forces"))
     if not always:
         group.add_argument("--forces", action="store_true",
-                           help="add fx, fy, fz (N, global frame), torque (N·mm) and power (W, with a spindle "
-                                "speed) to the results, peak and mean force per CL point to the summary")
+                           help="engage: add fx, fy, fz (N, global frame), torque (N·mm) and power (W, with a "
+                                "spindle speed) to the results, peak and mean force per CL point to the summary; "
+                                "validate: a cutting-forces section in the report (and forces.png)")
     group.add_argument("--material", type=str.lower, metavar="NAME",
                        help=f"coefficients of a material: {', '.join(MATERIALS)}; --ktc ... override single values")
     for name in COEFFICIENT_NAMES:
@@ -487,8 +491,9 @@ def _run_validate(args):
     from .report.staging import staged
     from .validation import NoEngagementError, overall, validate, validate_helix, write_flutes_csv
 
+    force_model = _force_model(args)
     job, toolpath, parameters, tool, settings = _prepare(args)
-    cls = _cl_indices(args.cl, len(toolpath)) if args.cl else None
+    cls = cl_indices(args.cl, len(toolpath)) if args.cl else None
     helical = _helical_validation(args, tool)
     _check_validate_outputs(args)
     stock, stock_seconds = _load_stock(args, toolpath, tool)
@@ -508,6 +513,11 @@ def _run_validate(args):
     except NoEngagementError:
         raise InputError(_no_engagement(args)) from None
     engagement = validation.engagement
+    forces = None
+    if force_model is not None:
+        coefficients, immersion = force_model
+        forces = pass_forces(stock.staircase, tool, toolpath, settings, coefficients, immersion=immersion,
+                             first=engagement.length if tool.helix == 0.0 else None)
     shown = report_cls(validation, cls)
     walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
     run = "ABM against booleans" if helical is None else (
@@ -524,7 +534,7 @@ def _run_validate(args):
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with staged(args.report, folder=True) as folder, \
             (staged(args.fcstd) if args.fcstd else contextlib.nullcontext()) as fcstd:
-        page = write_report(folder, validation, report_job, shown)
+        page = write_report(folder, validation, report_job, shown, forces)
         if helical is not None:
             write_flutes_csv(os.path.join(folder, "flutes.csv"), helix_validation)
         if fcstd:
@@ -539,7 +549,9 @@ def _run_validate(args):
           f"{100 * total['max_rel_error']:.3g} % (mean {100 * total['mean_rel_error']:.3g} %, "
           f"{total['relative_instants']} instants), max |difference| {total['max_abs_difference']:.3g} mm; "
           f"ABM {validation.seconds['abm']:.3g} s, boolean {validation.seconds['boolean']:.3g} s "
-          f"({validation.speed_ratio:.0f}x); wrote {', '.join(written)}")
+          f"({validation.speed_ratio:.0f}x)"
+          + ("" if forces is None else f"; peak force {forces.peak.max():.4g} N at CL {int(np.argmax(forces.peak))}")
+          + f"; wrote {', '.join(written)}")
     if helical is not None:
         print(f"{PROG}: {_flutes_text(helix_validation)}")
     print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
@@ -653,7 +665,7 @@ def _pair(text, option, expected):
         raise InputError(f"{option}: expected {expected}, got {text!r}") from None
 
 
-def _cl_indices(text, m):
+def cl_indices(text, m):
     """Sorted distinct CL indices from '0,22,40'; InputError unless each is an integer in 0..m−1."""
     indices = set()
     for part in text.split(","):

@@ -16,7 +16,7 @@ workbench adds missing properties, renames old ones, etc. there, then sets ``Ver
 from ..cad.freecad_env import FreeCAD
 
 #: Version of the document objects' properties: bump it when they change, and migrate.
-VERSION = 2
+VERSION = 3
 #: Editor modes of FreeCAD properties.
 READ_ONLY, HIDDEN = 1, 2
 

@@ -6,14 +6,26 @@
 - group "Inputs": ``Stock`` and ``Toolpath`` (links to the objects of :mod:`.stock` and
   :mod:`.toolpath`), ``WallModel`` (stock: the stock object's; exact or quintic: that model,
   for a solid stock only);
-- group "Tool": ``Diameter`` (mm), ``Flutes``, ``FluteLength`` (mm);
+- group "Tool": ``Diameter`` (mm), ``Flutes``, ``FluteLength`` (mm), ``HelixAngle`` (deg, 0:
+  straight flutes; a helical tool is solved by ``engine.helix.flute_engagement``, flute 1 shown);
 - group "Cut": ``FeedPerTooth`` (mm), ``SpindleSpeed`` (rpm, 0: none), ``Inclination`` (deg),
   ``PhiStart``, ``PhiEnd``, ``PhiStep`` (deg);
+- group "Forces" (the command line's ``engage --forces``, docs/FORCES.md): ``Forces`` (on / off),
+  ``Material`` (a name of ``forces.MATERIALS``, or custom), ``Ktc``, ``Krc``, ``Kac`` (N/mm²),
+  ``Kte``, ``Kre``, ``Kae`` (N/mm; read-only and taken from the table unless Material is custom),
+  ``ImmersionStart``, ``ImmersionEnd`` (deg: where a flute cuts);
 - group "Display": ``ShowSurfaces``: the Shape is the engaged cutter surface (below), or empty;
 - group "Results" (read-only, set by ``execute``): ``DepthOfCutMin``, ``DepthOfCutMax``,
   ``MaxLengthOfCut`` (mm), ``Instants`` (CL points × angles), ``EngagedInstants``,
   ``EngagedCLPoints``, ``EngineTime`` (s), ``Parameters`` (each value and where it came from),
-  ``Warnings``, ``ResultsFile`` (where the results CSV is), ``ResultsDigest``.
+  ``Warnings``, ``ResultsFile`` (where the results CSV is), ``ResultsDigest``; with forces on,
+  ``PeakForce`` (N, largest resultant over the pass) and ``ForceFeedPerTooth`` (mm, the feed the
+  forces are for).
+
+With forces on, ``execute`` also runs ``forces.pass_forces`` and the results CSV gains fx, fy,
+fz (N), torque (N·mm) and, with a spindle speed, power (W) per instant; they are read back with
+the results (:meth:`EngagementFeature.forces`, a :class:`.stored.PassForces`). Version 3 added
+the helix and the forces; older objects are migrated with straight flutes and forces off.
 
 Parameters follow the command line's precedence (:func:`abm_workbench.jobs.resolve_parameters`):
 what an APT / CL toolpath file gives (tool diameter, flute length, spindle speed, a constant
@@ -37,6 +49,7 @@ compound; see docs/FEATURES.md for its cost.
 """
 
 import atexit
+import dataclasses
 import hashlib
 import os
 import shutil
@@ -47,12 +60,13 @@ from typing import NamedTuple
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
-from ..engine import engage
+from ..engine import engage, flute_engagement
 from ..errors import InputError
+from ..forces import COEFFICIENT_NAMES, FULL_SLOT, MATERIALS, Coefficients, check_immersion, pass_forces
 from ..formats.results_csv import write_results
 from ..jobs import PARAMETERS, WALL_MODELS, Parameters, resolve_parameters, swept_y_window, tool_and_settings
-from .base import FeatureProxy, add_properties, document_or_active
-from .stored import read_engagement
+from .base import READ_ONLY, FeatureProxy, add_properties, document_or_active
+from .stored import PassForces, read_engagement, read_forces
 from .stock import StockFeature
 from .toolpath import ToolpathFeature, polyline
 
@@ -60,13 +74,21 @@ from .toolpath import ToolpathFeature, polyline
 WALL_CHOICES = ("stock",) + WALL_MODELS
 #: YWindow choices: auto is the command line's default (swept for quintic walls, whole for exact ones).
 Y_WINDOWS = ("auto", "whole", "swept", "custom")
+#: Material choices: the force table's materials, or custom (the coefficient properties as typed).
+MATERIAL_CHOICES = tuple(MATERIALS) + ("custom",)
+#: Coefficient name (forces.COEFFICIENT_NAMES) -> property.
+COEFFICIENT_PROPERTIES = {name: name.capitalize() for name in COEFFICIENT_NAMES}
 #: create_engagement keyword -> (property, value when not set). Required ones are 0 when not set.
 SETTINGS = {
     "diameter": ("Diameter", 0.0), "flutes": ("Flutes", 0), "flute_length": ("FluteLength", 0.0),
     "feed_per_tooth": ("FeedPerTooth", 0.0), "spindle_rpm": ("SpindleSpeed", 0.0),
     "inclination": ("Inclination", PARAMETERS["inclination"]),
     "phi_start": ("PhiStart", PARAMETERS["phi_range"][0]), "phi_end": ("PhiEnd", PARAMETERS["phi_range"][1]),
-    "phi_step": ("PhiStep", PARAMETERS["phi_step"]),
+    "phi_step": ("PhiStep", PARAMETERS["phi_step"]), "helix": ("HelixAngle", 0.0),
+    "forces": ("Forces", False), "material": ("Material", MATERIAL_CHOICES[0]),
+    **{name: (COEFFICIENT_PROPERTIES[name], getattr(MATERIALS[MATERIAL_CHOICES[0]][0], name))
+       for name in COEFFICIENT_NAMES},
+    "immersion_start": ("ImmersionStart", FULL_SLOT[0]), "immersion_end": ("ImmersionEnd", FULL_SLOT[1]),
 }
 #: Where resolve_parameters says "--option", the engagement object took the value from this property.
 _PROPERTY_SOURCE = {
@@ -123,6 +145,7 @@ class EngagementFeature(FeatureProxy):
             ("App::PropertyInteger", "Flutes", "number of flutes (required)", 0),
             ("App::PropertyLength", "FluteLength", "flute length (required; the toolpath file's CUTTER wins)", 0.0),
         ])
+        add_version_3_properties(obj)
         add_properties(obj, "Cut", [
             ("App::PropertyLength", "FeedPerTooth", "feed per tooth f (required; a constant FEDRAT in the "
                                                     "toolpath file wins)", 0.0),
@@ -160,6 +183,7 @@ class EngagementFeature(FeatureProxy):
         self._written = None  # path the results were last written to
         self._stale = False  # restored without results: touched once the document is restored
         self._toolpath = None  # the Toolpath of the results (for the summary's CL point columns)
+        self._forces = None  # the PassForces of the results, with forces on
 
     # ---- computing -------------------------------------------------------------------------
     def inputs(self, obj):
@@ -174,6 +198,7 @@ class EngagementFeature(FeatureProxy):
         sources = {key: _PROPERTY_SOURCE.get(source, source) for key, source in parameters.sources.items()}
         parameters = Parameters(parameters.values, sources, parameters.conflicts)
         tool, settings = tool_and_settings(parameters.values)
+        tool = helical_tool(obj.Label, tool, obj.HelixAngle.Value)
         walls = None if obj.WallModel == "stock" else obj.WallModel
         if walls is not None and not stock_proxy.is_solid(stock_obj):
             raise InputError(f"WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
@@ -184,14 +209,18 @@ class EngagementFeature(FeatureProxy):
 
     def execute(self, obj):
         """Run the engine; store the results (CSV, read-only properties, Shape)."""
-        self._result, self._written = None, None
+        self._result, self._written, self._forces = None, None, None
+        model = force_model(obj)
         toolpath, hints, parameters, tool, settings, stock = self.inputs(obj)
         staircase = stock.staircase
         if obj.YWindow != "custom":
             obj.YWindowMin, obj.YWindowMax = staircase.y_min, staircase.y_max
 
         started = time.perf_counter()
-        result = engage(staircase, tool, toolpath, settings)
+        if tool.helix == 0.0:
+            result = engage(staircase, tool, toolpath, settings)
+        else:
+            result = flute_engagement(staircase, tool, toolpath, settings).as_engagement(0)
         elapsed = time.perf_counter() - started
         if not result.engaged.any():
             raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "
@@ -200,6 +229,15 @@ class EngagementFeature(FeatureProxy):
         warnings = [*hints.messages(), *parameters.conflicts]
         for message in warnings:
             FreeCAD.Console.PrintWarning(f"{obj.Label}: {message}\n")
+        if model is not None:
+            coefficients, immersion = model
+            forces = pass_forces(staircase, tool, toolpath, settings, coefficients, immersion=immersion,
+                                 first=result.length if tool.helix == 0.0 else None)
+            self._forces = PassForces.of(forces)
+            obj.PeakForce = float(forces.peak.max())
+            obj.ForceFeedPerTooth = settings.feed_per_tooth
+        else:
+            obj.PeakForce, obj.ForceFeedPerTooth = 0.0, 0.0
         self._result, self._toolpath = result, toolpath
         self._write(obj, results_path(obj))
         self._summary(obj, result)
@@ -210,9 +248,15 @@ class EngagementFeature(FeatureProxy):
 
     def migrate(self, obj, saved_version):
         """Version 2 added the y window and the validation report; objects saved before were computed
-        over the whole y range."""
+        over the whole y range. Version 3 added the helix and the forces (straight flutes, forces off)."""
         add_version_2_properties(obj, "whole")
+        add_version_3_properties(obj)
         super().migrate(obj, saved_version)
+
+    def onChanged(self, obj, prop):
+        """A Material of the table fills the coefficients and makes them read-only; custom frees them."""
+        if prop == "Material" and "Ktc" in obj.PropertiesList:
+            show_material(obj)
 
     def _summary(self, obj, result):
         depth = result.depth_of_cut
@@ -235,7 +279,7 @@ class EngagementFeature(FeatureProxy):
                 toolpath = None
         if toolpath is not None and len(toolpath) != self._result.shape[0]:
             toolpath = None
-        write_results(self._result, path, toolpath=toolpath)
+        write_results(self._result, path, toolpath=toolpath, forces=self._forces)
         self._written = path
         obj.ResultsFile = _relative(obj.Document, path)
         obj.ResultsDigest = _digest(path)
@@ -244,6 +288,11 @@ class EngagementFeature(FeatureProxy):
     def result(self, obj):
         """The Engagement (arrays over CL points × φ), or None before a successful recompute."""
         return self._result
+
+    def forces(self, obj):
+        """The PassForces of the results (fx, fy, fz, torque, power per instant), or None: forces off,
+        or before a successful recompute."""
+        return self._forces
 
     def save_results(self, obj):
         """Write the results in memory beside the document, unless they are there already."""
@@ -266,13 +315,16 @@ class EngagementFeature(FeatureProxy):
             result = read_engagement(path)
             if result.length.size != obj.Instants:
                 raise InputError(f"{path}: {result.length.size} instants, the object says {obj.Instants}")
+            forces = read_forces(path, obj.ForceFeedPerTooth.Value) if obj.Forces else None
+            if obj.Forces and forces is None:
+                raise InputError(f"{path}: no force columns, but Forces is on")
         except (InputError, OSError) as error:
             FreeCAD.Console.PrintWarning(f"{obj.Label}: results not restored ({error}); recompute to compute them\n")
             # FreeCAD 0.20 clears touched flags at the end of a restore and tells Python observers
             # nothing after that but the document's activation: the observer touches it then.
             self._stale = True
             return
-        self._result, self._written = result, path
+        self._result, self._written, self._forces = result, path, forces
 
 
 def _proxy(linked, kind, role, obj):
@@ -306,6 +358,92 @@ def add_version_2_properties(obj, mode):
     ])
     obj.YWindow = list(Y_WINDOWS)
     obj.YWindow = mode
+
+
+def add_version_3_properties(obj):
+    """Add what version 3 added, if missing: HelixAngle (group "Tool", 0: straight flutes), the
+    force model (group "Forces", off, the first material of the table) and the force results
+    (group "Results", read-only)."""
+    add_properties(obj, "Tool", [
+        ("App::PropertyAngle", "HelixAngle", "helix angle β of the flutes, 0 for straight flutes (the command "
+                                             "line's --helix)", 0.0),
+    ])
+    if "Forces" in obj.PropertiesList:
+        return
+    cut, edge = "cutting-force coefficient (N/mm²) of the linear edge-force model", \
+        "edge-force coefficient (N/mm) of the linear edge-force model"
+    add_properties(obj, "Forces", [
+        ("App::PropertyBool", "Forces", "compute the cutting forces: fx, fy, fz (N), torque (N·mm) and power (W, "
+                                        "with a spindle speed) per instant in the results CSV", False),
+        ("App::PropertyEnumeration", "Material", "coefficients from the table of docs/FORCES.md, or custom: the "
+                                                 "six coefficients as typed"),
+        *[("App::PropertyFloat", COEFFICIENT_PROPERTIES[name],
+           f"{name[:1].upper()}_{name[1:]}: {'tangential' if name[1] == 't' else 'radial' if name[1] == 'r' else 'axial'} "
+           f"{cut if name.endswith('c') else edge}") for name in COEFFICIENT_NAMES],
+        ("App::PropertyAngle", "ImmersionStart", "angle from which a flute cuts (0 <= start < end <= 180)",
+         FULL_SLOT[0]),
+        ("App::PropertyAngle", "ImmersionEnd", "angle up to which a flute cuts", FULL_SLOT[1]),
+    ])
+    add_properties(obj, "Results", [
+        ("App::PropertyFloat", "PeakForce", "largest resultant cutting force over the pass (N); 0 with forces off"),
+        ("App::PropertyLength", "ForceFeedPerTooth", "feed per tooth the forces were computed at"),
+    ], read_only=True)
+    obj.Material = list(MATERIAL_CHOICES)
+    obj.Material = MATERIAL_CHOICES[0]
+    show_material(obj)
+
+
+def show_material(obj):
+    """Coefficient properties of the engagement `obj` for its Material: the table's values, read-only,
+    or (custom) as they are, editable."""
+    custom = obj.Material == "custom"
+    if not custom:
+        table = MATERIALS[obj.Material][0]
+        for name, prop in COEFFICIENT_PROPERTIES.items():
+            if getattr(obj, prop) != getattr(table, name):
+                setattr(obj, prop, getattr(table, name))
+    for prop in COEFFICIENT_PROPERTIES.values():
+        obj.setEditorMode(prop, 0 if custom else READ_ONLY)
+
+
+def helical_tool(label, tool, helix):
+    """`tool` with helix angle `helix` (deg); InputError "<label>: HelixAngle: <the Tool's message>"."""
+    try:
+        return dataclasses.replace(tool, helix=helix)
+    except ValueError as error:
+        raise InputError(f"{label}: HelixAngle: {error}") from None
+
+
+def force_model(obj):
+    """(Coefficients, immersion (start, end) deg) of the engagement `obj`, or None with Forces off.
+
+    InputError naming the object with the command line's message for bad coefficients or immersion.
+    """
+    if not obj.Forces:
+        return None
+    values = {prop: getattr(obj, prop) for prop in COEFFICIENT_PROPERTIES.values()}
+    return force_settings(obj.Label, obj.Material, values, (obj.ImmersionStart.Value, obj.ImmersionEnd.Value))
+
+
+def force_settings(label, material_name, values, immersion):
+    """(Coefficients, immersion (start, end) deg) of a material name of MATERIAL_CHOICES (custom: the
+    coefficient `values`, {property: number}) and an immersion (start, end) deg.
+
+    InputError "<label>: <property>: <the command line's message>" when they are bad.
+    """
+    if material_name == "custom":
+        values = {name: values[prop] for name, prop in COEFFICIENT_PROPERTIES.items()}
+    else:
+        values = dataclasses.asdict(MATERIALS[material_name][0])
+    try:
+        coefficients = Coefficients(**values)
+    except ValueError as error:
+        raise InputError(f"{label}: {COEFFICIENT_PROPERTIES[str(error).split()[0]]}: {error}") from None
+    try:
+        immersion = check_immersion(immersion)
+    except ValueError as error:
+        raise InputError(f"{label}: ImmersionStart, ImmersionEnd: {error}") from None
+    return coefficients, immersion
 
 
 def y_window(obj, stock_obj, walls, toolpath, tool):
@@ -446,14 +584,18 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
     to `doc` (default the active document; RuntimeError if none).
 
     settings: diameter, flutes, flute_length, feed_per_tooth (mm), spindle_rpm, inclination,
-    phi_start, phi_end, phi_step (deg), or phi_range=(start, end); those not given come from the
-    toolpath file where it gives them (read now), else stay unset (0) or at their defaults.
+    phi_start, phi_end, phi_step (deg), or phi_range=(start, end); helix (deg); forces (bool),
+    material (a forces.MATERIALS name or "custom"), ktc, krc, kac (N/mm²), kte, kre, kae (N/mm),
+    immersion_start, immersion_end (deg), or immersion=(start, end). Those not given come from
+    the toolpath file where it gives them (read now), else stay unset (0) or at their defaults.
     walls: "stock", "exact" or "quintic". y_window: "auto", "whole", "swept", or (y0, y1) mm
     (custom). Returns the object (not yet recomputed).
     """
     doc = document_or_active(doc)
     if "phi_range" in settings:
         settings["phi_start"], settings["phi_end"] = settings.pop("phi_range")
+    if "immersion" in settings:
+        settings["immersion_start"], settings["immersion_end"] = settings.pop("immersion")
     unknown = sorted(set(settings) - set(SETTINGS))
     if unknown:
         raise TypeError(f"create_engagement: unknown setting {unknown[0]!r} (known: {', '.join(SETTINGS)})")
@@ -479,7 +621,7 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
                                ("spindle_rpm", hints.spindle_rpm)):
                 if value is not None and key not in settings:
                     settings[key] = value
-    for key, value in settings.items():
+    for key, value in sorted(settings.items(), key=lambda item: item[0] != "material"):  # the table first
         if value is not None:
             setattr(obj, SETTINGS[key][0], value)
     return obj

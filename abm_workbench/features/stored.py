@@ -3,16 +3,20 @@
 The engagement object stores its results in that CSV, not in the document; this module turns
 the file into the same :class:`~abm_workbench.engine.Engagement` the engine returned, with
 every number within 5e-11 of the computed one (the CSV keeps 10 decimals). The depth of cut
-per CL point is recomputed from the LEP / UEP z, as the engine computes it.
+per CL point is recomputed from the LEP / UEP z, as the engine computes it. With cutting
+forces, :func:`read_forces` gives them back as a :class:`PassForces` (forces within 5e-11 N).
 """
 
 import os
+from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 
 from ..engine import CASES, SURFACES, Engagement
 from ..errors import InputError
-from ..formats.results_csv import RESULT_COLUMNS, read_results
+from ..formats.results_csv import FORCE_COLUMNS, RESULT_COLUMNS, read_results
+from ..forces import ANGLE_EPS
 
 
 def letter_index(letters):
@@ -67,3 +71,69 @@ def read_engagement(path):
         case=lookup("case", CASES), segment=letter_index(columns["segment"].tolist()).reshape(m, p),
         area=grid("area"), lep_xyz=lep_xyz, uep_xyz=uep_xyz, depth_of_cut=depth,
     )
+
+
+@dataclass(frozen=True)
+class PassForces:
+    """The cutting forces an engagement object keeps: per instant of m CL points × p angles φ.
+
+    phi: (p,) deg. xyz: (m, p, 3) force on the tool, global frame (N). torque: (m, p) N·mm.
+    power: (m, p) W, or None without a spindle speed. feed: (m,) feed per tooth (mm). The
+    attributes the results CSV writer and report.forces' figures read of a
+    :class:`abm_workbench.forces.Forces`, which is what :meth:`of` keeps.
+    """
+
+    phi: np.ndarray
+    xyz: np.ndarray
+    torque: np.ndarray
+    power: Optional[np.ndarray]
+    feed: np.ndarray
+
+    @classmethod
+    def of(cls, forces):
+        """The PassForces of a Forces."""
+        return cls(forces.phi, forces.xyz, forces.torque, forces.power, forces.feed)
+
+    @property
+    def shape(self):
+        """(m, p): CL points × rotation angles."""
+        return self.torque.shape
+
+    @property
+    def resultant(self):
+        """(m, p) magnitude of the force (N)."""
+        return np.linalg.norm(self.xyz, axis=-1)
+
+    @property
+    def peak(self):
+        """(m,) largest resultant over the angles of each CL point (N)."""
+        return self.resultant.max(axis=1)
+
+    @property
+    def mean(self):
+        """(m,) mean resultant over the angles of each CL point, one revolution at most (N), as Forces.mean."""
+        return self.resultant[:, self.phi < self.phi[0] + 360.0 - ANGLE_EPS].mean(axis=1)
+
+
+def read_forces(path, feed):
+    """The PassForces in results CSV `path` (its fx, fy, fz, torque and, if there, power columns),
+    at feed per tooth `feed` (mm, scalar or (m,)); None when it has no force columns. InputError
+    naming the file when the columns are incomplete."""
+    name = os.fspath(path)
+    columns = read_results(path)
+    if "fx" not in columns:
+        return None
+    missing = [column for column in FORCE_COLUMNS[:4] if column not in columns]
+    if missing:
+        raise InputError(f"{name}: force columns without {missing[0]!r}")
+    cl = columns["cl"]
+    m = int(cl.max()) + 1 if cl.size else 0
+    if m == 0 or cl.size % m:
+        raise InputError(f"{name}: {cl.size} rows are not the same number of angles for each of {m} CL points")
+    p = cl.size // m
+    xyz = np.stack([columns[axis].reshape(m, p) for axis in ("fx", "fy", "fz")], axis=-1)
+    if not np.isfinite(xyz).all():
+        raise InputError(f"{name}: a force column has an empty or non-finite field")
+    power = columns["power"].reshape(m, p) if "power" in columns else None
+    return PassForces(columns["phi_deg"][:p].astype(float), xyz, columns["torque"].reshape(m, p), power,
+                      np.broadcast_to(np.asarray(feed, dtype=float), (m,)).copy())

@@ -53,14 +53,14 @@ def summary_path(path):
     return stem + ".summary.csv"
 
 
-def write_results(engagement, path, *, toolpath=None):
+def write_results(engagement, path, *, toolpath=None, forces=None):
     """Write the results and the summary CSV of `engagement`, both or neither.
 
     toolpath: the Toolpath of the pass, to add each CL point's position and angles to the
-    summary. Returns (path, summary path) as str.
+    summary. forces: the pass's Forces, to add the force columns. Returns (path, summary path) as str.
     """
     path, summary = os.fspath(path), summary_path(path)
-    texts = (results_text(engagement), summary_text(engagement, toolpath=toolpath))
+    texts = (results_text(engagement, forces=forces), summary_text(engagement, toolpath=toolpath, forces=forces))
     with replacing(path, summary) as temporaries:
         for temporary, text in zip(temporaries, texts):
             write_text(temporary, text)

@@ -10,16 +10,20 @@ ColourBy choices (:data:`COLOUR_BY`):
 
 - ``segment``: the colour of the segment's UEP surface (``report.colours.SURFACE_COLOURS``);
 - ``length``: length of cut (mm), mean of the face's two angles, on a colour map;
-- ``area``: cut area (mm²), likewise.
+- ``area``: cut area (mm²), likewise;
+- ``force``: resultant cutting force |F| (N) per instant, likewise; only for an engagement
+  with forces (``EngagementFeature.forces``).
 """
 
 from dataclasses import dataclass
 
 import numpy as np
 
-#: ColourBy choices, and for the quantities: (Engagement attribute, label, unit).
-COLOUR_BY = ("segment", "length", "area")
-QUANTITIES = {"length": ("length", "length of cut", "mm"), "area": ("area", "cut area", "mm²")}
+#: ColourBy choices, and for the quantities: (attribute of the Engagement, or of the forces for
+#: force, label, unit).
+COLOUR_BY = ("segment", "length", "area", "force")
+QUANTITIES = {"length": ("length", "length of cut", "mm"), "area": ("area", "cut area", "mm²"),
+              "force": ("resultant", "resultant cutting force", "N")}
 #: matplotlib colour map of the quantities.
 COLOUR_MAP = "viridis"
 
@@ -75,8 +79,11 @@ def face_map(result, shape):
     return FaceMap(np.array(cls, dtype=int), rows.astype(int), np.array(surfaces, dtype=object))
 
 
-def face_colours(result, faces: FaceMap, colour_by):
-    """(colours (n, 3) RGB 0..1, Legend) of the faces for `colour_by` (a COLOUR_BY value)."""
+def face_colours(result, faces: FaceMap, colour_by, forces=None):
+    """(colours (n, 3) RGB 0..1, Legend) of the faces for `colour_by` (a COLOUR_BY value).
+
+    forces: the engagement's forces (PassForces or Forces), needed for ``force``; ValueError without.
+    """
     from ..report.colours import SURFACE_COLOURS
 
     if colour_by not in COLOUR_BY:
@@ -87,7 +94,9 @@ def face_colours(result, faces: FaceMap, colour_by):
         shown = [name for name in SURFACE_COLOURS if name in set(faces.surface)]
         return colours, Legend("segment", tuple((name, SURFACE_COLOURS[name]) for name in shown))
     attribute, label, unit = QUANTITIES[colour_by]
-    values = face_values(getattr(result, attribute), faces)
+    if colour_by == "force" and forces is None:
+        raise ValueError("colour by force needs the engagement's forces: turn Forces on and recompute")
+    values = face_values(getattr(forces if colour_by == "force" else result, attribute), faces)
     low, high = (float(values.min()), float(values.max())) if values.size else (0.0, 0.0)
     return quantity_colours(values, low, high), Legend(colour_by, (), label, unit, low, high)
 

@@ -7,11 +7,16 @@ FreeCAD's main window, showing one engagement object at a time (:func:`show`):
   point is drawn on top of the model (``EngagementViewProvider.highlight``) and a line says
   its depth of cut and engagement segments;
 - "Colour by" (the view property ``ColourBy``) and the legend: for segments, the UEP surface
-  kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit;
-- matplotlib plots (``FigureCanvasQTAgg``) for the chosen CL point: length of cut, cut area
+  kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit
+  (force only for an engagement with forces: otherwise the segments are shown);
+- tab "Engagement": matplotlib plots (``FigureCanvasQTAgg``) for the chosen CL point: length of cut, cut area
   and cut thickness h over φ, each engagement segment in the colour of its UEP surface (as on
   the model, ``report.colours.SURFACE_COLOURS``), and the pass progression: depth of cut and maximum
-  length of cut over the CL points, a marker at the chosen one.
+  length of cut over the CL points, a marker at the chosen one;
+- tab "Forces" (enabled when the engagement has forces, ``Forces`` on): F_x, F_y, F_z and |F|
+  over φ at the chosen CL point, and the peak and mean resultant force along the pass with a
+  marker at the chosen CL point (drawn by ``report.forces.draw_force_over_phi`` and
+  ``draw_force_along``, as in the reports).
 """
 
 import numpy as np
@@ -28,6 +33,8 @@ OBJECT_NAME = "ABM_EngagementDock"
 BAR_WIDTH = 220
 #: Height of the length plot × its largest value, so the segment legend sits above the curve.
 LEGEND_HEADROOM = 1.7
+#: Index of the "Forces" tab.
+FORCES_TAB = 1
 
 
 class EngagementDock(QtWidgets.QDockWidget):
@@ -79,7 +86,14 @@ class EngagementDock(QtWidgets.QDockWidget):
         self.figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
         self.canvas = FigureCanvasQTAgg(self.figure)
         self.canvas.setMinimumHeight(420)
-        layout.addWidget(self.canvas, 1)
+        self.force_figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
+        self.force_canvas = FigureCanvasQTAgg(self.force_figure)
+        self.force_canvas.setMinimumHeight(420)
+        self.tabs = QtWidgets.QTabWidget()
+        self.tabs.setObjectName("ABM_PlotTabs")
+        self.tabs.addTab(self.canvas, "Engagement")
+        self.tabs.addTab(self.force_canvas, "Forces")
+        layout.addWidget(self.tabs, 1)
         self.setWidget(body)
 
     # ---- filling --------------------------------------------------------------------------
@@ -99,14 +113,22 @@ class EngagementDock(QtWidgets.QDockWidget):
                                "No engagement: select one and use Inspect engagement")
             self.about.setText("")
             self.legend.clear()
-            self.figure.clear()
-            self.canvas.draw_idle()
+            for figure, canvas in ((self.figure, self.canvas), (self.force_figure, self.force_canvas)):
+                figure.clear()
+                canvas.draw_idle()
+            self.tabs.setTabEnabled(FORCES_TAB, False)
             return
         m = result.shape[0]
         if cl is None:
             cl = self.spin.value() if self.spin.maximum() == m - 1 and self.spin.value() < m else _deepest(result)
+        forces = _forces(obj)
+        peak = "" if forces is None else f"; peak force {obj.PeakForce:.4g} N"
         self.title.setText(f"<b>{obj.Label}</b>: {m} CL points × {result.shape[1]} angles φ; depth of cut "
-                           f"{obj.DepthOfCutMin.Value:.2f}–{obj.DepthOfCutMax.Value:.2f} mm")
+                           f"{obj.DepthOfCutMin.Value:.2f}–{obj.DepthOfCutMax.Value:.2f} mm{peak}")
+        self.tabs.setTabEnabled(FORCES_TAB, forces is not None)
+        self.colour_by.model().item(COLOUR_BY.index("force")).setEnabled(forces is not None)
+        self.tabs.setTabToolTip(FORCES_TAB, "" if forces is not None else
+                                "no forces: turn Forces on in the engagement's task panel and recompute")
         for widget in (self.slider, self.spin):
             widget.blockSignals(True)
             widget.setRange(0, m - 1)
@@ -137,6 +159,9 @@ class EngagementDock(QtWidgets.QDockWidget):
         else:
             self.about.setText(f"CL {cl}: the tool does not engage the stock here")
         self.plot(result, cl)
+        forces = _forces(obj)
+        if forces is not None:
+            self.plot_forces(forces, cl)
 
     def plot(self, result, cl):
         """Length of cut, cut area, h (the same at every CL point) over φ at `cl`, and the pass progression
@@ -179,6 +204,32 @@ class EngagementDock(QtWidgets.QDockWidget):
         for ax in axes:
             ax.tick_params(labelsize="x-small")
         self.canvas.draw_idle()
+
+    def plot_forces(self, forces, cl):
+        """F_x, F_y, F_z, |F| over φ at `cl` (N), and the peak and mean resultant along the pass with `cl` marked."""
+        from ..report.forces import draw_force_along, draw_force_over_phi
+
+        figure = self.force_figure
+        figure.clear()
+        over_phi, along = figure.subplots(2, 1, height_ratios=(3, 2))
+        draw_force_over_phi(over_phi, forces, cl)
+        over_phi.set_xlabel("φ (deg)", fontsize="small")
+        over_phi.set_ylabel("force (N)", fontsize="small")
+        over_phi.set_title(f"CL {cl}: peak |F| {forces.peak[cl]:.4g} N, mean {forces.mean[cl]:.4g} N",
+                           fontsize="small")
+        top = max(float(np.abs(forces.xyz[cl]).max()), float(forces.resultant[cl].max()), 1e-9)
+        over_phi.set_ylim(-1.1 * top if (forces.xyz[cl] < 0).any() else 0.0, 1.6 * top)  # room for the legend
+        over_phi.legend(fontsize="x-small", ncol=4, loc="upper center")
+        draw_force_along(along, forces, [])
+        along.axvline(cl, color=_hex(HIGHLIGHT_COLOUR), linewidth=2.0)
+        along.plot([cl, cl], [forces.peak[cl], forces.mean[cl]], "o", color="red")
+        along.set_xlabel("CL point", fontsize="small")
+        along.set_ylabel("force (N)", fontsize="small")
+        along.set_title("Resultant force along the pass", fontsize="small")
+        along.legend(fontsize="x-small", loc="lower right")
+        for ax in (over_phi, along):
+            ax.tick_params(labelsize="x-small")
+        self.force_canvas.draw_idle()
 
     def show_legend(self):
         """The legend of the colours shown (the view provider's)."""
@@ -238,6 +289,11 @@ def _alive(obj):
 
 def _result(obj):
     return obj.Proxy.result(obj) if _alive(obj) else None
+
+
+def _forces(obj):
+    """The engagement's PassForces, or None (forces off, no results, or gone)."""
+    return obj.Proxy.forces(obj) if _alive(obj) else None
 
 
 def _deepest(result):

@@ -10,7 +10,9 @@ workbench, runs this file there as a macro, and waits for it. Inside the GUI,
 - ``gui_cl_segments.png`` / ``gui_cl_length.png``: the 3D view zoomed on that CL point, coloured
   by UEP surface of the segments / by length of cut, the CL point highlighted;
 - ``gui_task_panel.png``: the whole window with the engagement's task panel, a negative
-  diameter typed: the field marked, OK disabled, the command line's message.
+  diameter typed: the field marked, OK disabled, the command line's message;
+- ``gui_dock_forces.png``: the whole window, forces on (Al7075-T6, full slot), the dock's Forces
+  tab at the CL point with the highest peak force.
 
 The GUI tests call :func:`take_screenshots` too, so the pictures and the tests see the same.
 """
@@ -63,7 +65,9 @@ def take_screenshots(folder):
     import FreeCAD
     import FreeCADGui
 
-    from . import commands, task_panel
+    import numpy as np
+
+    from . import commands, dock, task_panel
 
     os.makedirs(folder, exist_ok=True)
     window = FreeCADGui.getMainWindow()
@@ -78,7 +82,8 @@ def take_screenshots(folder):
     view.fitAll()
     FreeCADGui.updateGui()
     paths = [os.path.join(folder, name) for name in
-             ("gui_window.png", "gui_cl_segments.png", "gui_cl_length.png", "gui_task_panel.png")]
+             ("gui_window.png", "gui_cl_segments.png", "gui_cl_length.png", "gui_task_panel.png",
+              "gui_dock_forces.png")]
     grab_screen(paths[0])
     zoom_on(view, result, cl)
     for path, colour_by in zip(paths[1:3], ("segment", "length")):
@@ -94,6 +99,13 @@ def take_screenshots(folder):
     FreeCADGui.updateGui()
     grab_screen(paths[3])
     panel.reject()
+    engagement.Forces, engagement.Material = True, "al7075-t6"
+    engagement.Document.recompute()
+    forces = engagement.Proxy.forces(engagement)
+    shown = dock.show(engagement, int(np.argmax(forces.peak)))
+    shown.tabs.setCurrentIndex(dock.FORCES_TAB)
+    FreeCADGui.updateGui()
+    grab_screen(paths[4])
     FreeCAD.closeDocument(engagement.Document.Name)
     return paths
 

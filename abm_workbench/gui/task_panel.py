@@ -1,4 +1,4 @@
-"""The task panel of an engagement object: tool, cut, wall model and y window, checked as typed.
+"""The task panel of an engagement object: tool, cut, wall model, y window and forces, checked as typed.
 
 Opened by ABM_ComputeEngagement for a new engagement (:func:`compute`) and by double-click /
 ``setEdit`` for an existing one (:func:`edit`). Lengths and angles are FreeCAD quantity spin
@@ -7,9 +7,13 @@ boxes (``Gui::QuantitySpinBox``: units typed or shown, "12 mm", "0.5 in", "10 °
 As the user types, the values are checked by the command line's own code:
 ``jobs.resolve_parameters`` (what an APT / CL toolpath file gives wins; a missing required value)
 and ``jobs.tool_and_settings`` (the engine's ``Tool`` and ``CutSettings`` checks), and the y
-window as ``features.engagement.y_window`` checks it. The first problem is shown under the
-fields as ``abm: error: <message>`` (the command line's words), its field is marked, and OK is
-disabled. Fields the toolpath file fixes show its value, are read-only and say so.
+window as ``features.engagement.y_window`` checks it; the helix angle by the engine's ``Tool``, the
+cutting-force settings (on / off, material or custom coefficients, immersion) by
+``forces.Coefficients`` and ``forces.check_immersion`` (``features.engagement.force_settings``).
+The coefficient fields show the material's values, read-only, unless the material is custom.
+The first problem is shown at the top of the panel as ``abm: error: <message>`` (the command
+line's words), its field is marked, and OK is disabled. Fields the toolpath file fixes show its
+value, are read-only and say so.
 
 The whole edit is one document transaction: OK commits it (after a recompute that succeeds),
 Cancel aborts it, which for a new engagement removes the object.
@@ -20,7 +24,9 @@ from PySide2 import QtWidgets
 import FreeCADGui
 
 from ..errors import InputError
-from ..features.engagement import Y_WINDOWS, WALL_CHOICES
+from ..features.engagement import (COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings,
+                                   helical_tool)
+from ..forces import MATERIALS
 from ..jobs import resolve_parameters, tool_and_settings
 from .progress import busy
 
@@ -29,6 +35,7 @@ FIELDS = (
     ("Diameter", "Diameter", "mm", -1e6, 1e6, 1.0),
     ("Flutes", "Flutes", None, 0, 100, 1),
     ("FluteLength", "Flute length", "mm", -1e6, 1e6, 1.0),
+    ("HelixAngle", "Helix angle β", "deg", -1e6, 1e6, 5.0),
     ("FeedPerTooth", "Feed per tooth", "mm", -1e6, 1e6, 0.01),
     ("SpindleSpeed", "Spindle speed (rpm)", None, 0.0, 1e6, 100.0),
     ("Inclination", "Inclination α", "deg", -1e6, 1e6, 1.0),
@@ -38,12 +45,17 @@ FIELDS = (
     ("YWindowMin", "y window from", "mm", -1e6, 1e6, 1.0),
     ("YWindowMax", "y window to", "mm", -1e6, 1e6, 1.0),
 )
+#: Force fields after the Forces check box and the Material combo: (property, label, unit, minimum, maximum, step).
+FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm'})", None, -1e6, 1e6, 10.0)
+                     for prop in COEFFICIENT_PROPERTIES.values()) + (
+    ("ImmersionStart", "Immersion from", "deg", -1e6, 1e6, 5.0), ("ImmersionEnd", "Immersion to", "deg", -1e6, 1e6, 5.0))
 #: resolve_parameters key -> the field it fills.
 KEY_FIELD = {"diameter": "Diameter", "flutes": "Flutes", "flute_length": "FluteLength",
              "feed_per_tooth": "FeedPerTooth", "spindle_rpm": "SpindleSpeed", "inclination": "Inclination",
              "phi_range": "PhiStart", "phi_step": "PhiStep"}
 #: Words of an error message -> the field to mark (first match wins).
-ERROR_WORDS = (("flute_length", "FluteLength"), ("flute-length", "FluteLength"), ("flutes", "Flutes"),
+ERROR_WORDS = (("HelixAngle", "HelixAngle"), *((prop + ":", prop) for prop in COEFFICIENT_PROPERTIES.values()),
+               ("ImmersionStart", "ImmersionStart"), ("flute_length", "FluteLength"), ("flute-length", "FluteLength"), ("flutes", "Flutes"),
                ("diameter", "Diameter"), ("feed", "FeedPerTooth"), ("inclination", "Inclination"),
                ("phi step", "PhiStep"), ("phi-step", "PhiStep"), ("phi_step", "PhiStep"),
                ("phi range", "PhiEnd"), ("phi-range", "PhiEnd"), ("angles", "PhiStep"), ("phi_start", "PhiStart"),
@@ -72,6 +84,15 @@ class EngagementPanel:
         layout = QtWidgets.QFormLayout(self.form)
         self.source = QtWidgets.QLabel(f"Stock: {_label(obj.Stock)}<br>Toolpath: {_label(obj.Toolpath)}")
         layout.addRow(self.source)
+        self.message = QtWidgets.QLabel()  # at the top: seen whatever the panel is scrolled to
+        self.message.setObjectName("ABM_Message")
+        self.message.setWordWrap(True)
+        self.message.setStyleSheet("color: #b00000;")
+        layout.addRow(self.message)
+        self.fixed = QtWidgets.QLabel()
+        self.fixed.setObjectName("ABM_Fixed")
+        self.fixed.setWordWrap(True)
+        layout.addRow(self.fixed)
         self.names = []  # of the fields, in order: self.field(name) finds each
         for name, label, unit, low, high, step in FIELDS:
             widget = _spin_box(unit, low, high, step, integer=name == "Flutes")
@@ -85,17 +106,30 @@ class EngagementPanel:
             _set_value(widget, _property_value(obj, name))
             widget.valueChanged.connect(self.check)
         self.field("SpindleSpeed").setSpecialValueText("none")
-        self.fixed = QtWidgets.QLabel()
-        self.fixed.setObjectName("ABM_Fixed")
-        self.fixed.setWordWrap(True)
-        layout.addRow(self.fixed)
-        self.message = QtWidgets.QLabel()
-        self.message.setObjectName("ABM_Message")
-        self.message.setWordWrap(True)
-        self.message.setStyleSheet("color: #b00000;")
-        layout.addRow(self.message)
+        self._force_fields(layout)
         self.hints = self._hints()
         self.check()
+
+    def _force_fields(self, layout):
+        """The Forces check box beside the Material combo, then the coefficients and the immersion."""
+        obj = self.obj
+        forces = QtWidgets.QCheckBox("Cutting forces")
+        forces.setObjectName("ABM_Forces")
+        forces.setChecked(bool(obj.Forces))
+        forces.setToolTip(obj.getDocumentationOfProperty("Forces"))
+        forces.toggled.connect(self.check)
+        self.names.append("Forces")
+        layout.addRow(forces, self._combo("Material", MATERIAL_CHOICES))
+        for name, label, unit, low, high, step in FORCE_FIELDS:
+            widget = _spin_box(unit, low, high, step)
+            if unit is None:
+                widget.setDecimals(3)
+            widget.setObjectName(f"ABM_{name}")
+            widget.setToolTip(obj.getDocumentationOfProperty(name))
+            self.names.append(name)
+            layout.addRow(label, widget)
+            _set_value(widget, _property_value(obj, name))
+            widget.valueChanged.connect(self.check)
 
     def _combo(self, name, choices):
         combo = QtWidgets.QComboBox()
@@ -126,7 +160,12 @@ class EngagementPanel:
         values = {}
         for name in self.names:
             widget = self.field(name)
-            values[name] = widget.currentText() if isinstance(widget, QtWidgets.QComboBox) else _get_value(widget)
+            if isinstance(widget, QtWidgets.QComboBox):
+                values[name] = widget.currentText()
+            elif isinstance(widget, QtWidgets.QCheckBox):
+                values[name] = widget.isChecked()
+            else:
+                values[name] = _get_value(widget)
         values["Flutes"] = int(values["Flutes"])
         return values
 
@@ -151,8 +190,13 @@ class EngagementPanel:
         except InputError as error:
             return str(error), _field_of(str(error))
         self.show_fixed(parameters)
+        label = self.obj.Label
         try:
-            tool_and_settings(parameters.values)
+            tool, _ = tool_and_settings(parameters.values)
+            helical_tool(label, tool, values["HelixAngle"])
+            if values["Forces"]:
+                force_settings(label, values["Material"], values,
+                               (values["ImmersionStart"], values["ImmersionEnd"]))
         except InputError as error:
             return str(error), _field_of(str(error))
         stock = self.obj.Stock
@@ -184,11 +228,28 @@ class EngagementPanel:
         self.fixed.setText("Fixed by the toolpath file, the values it was made for: " + ", ".join(notes)
                            if notes else "")
 
+    def show_material(self, values):
+        """Force fields: enabled with Forces on; the coefficients show a material's values, read-only,
+        unless it is custom."""
+        self.field("Material").setEnabled(values["Forces"])
+        custom = values["Material"] == "custom"
+        for name, prop in COEFFICIENT_PROPERTIES.items():
+            widget = self.field(prop)
+            if not custom:
+                widget.blockSignals(True)
+                _set_value(widget, getattr(MATERIALS[values["Material"]][0], name))
+                widget.blockSignals(False)
+                values[prop] = _get_value(widget)
+            widget.setEnabled(values["Forces"] and custom)
+        for name in ("ImmersionStart", "ImmersionEnd"):
+            self.field(name).setEnabled(values["Forces"])
+
     def check(self, *_):
         """Check the fields: mark the bad one, say why, enable OK only when all is well; True if valid."""
         values = self.values()
         for name in ("YWindowMin", "YWindowMax"):
             self.field(name).setEnabled(values["YWindow"] == "custom")
+        self.show_material(values)
         message, field = self.problem(values)
         for name in self.names:
             self.field(name).setStyleSheet(INVALID_STYLE if name == field else "")
@@ -214,7 +275,7 @@ class EngagementPanel:
             return False
         obj, doc = self.obj, self.obj.Document
         for name, value in self.values().items():
-            if self.field(name).isEnabled() or name in ("WallModel", "YWindow"):
+            if self.field(name).isEnabled() or name in ("WallModel", "YWindow", "Forces", "Material"):
                 setattr(obj, name, value)
         try:
             with busy("Computing the engagement…"):

@@ -9,6 +9,8 @@ was computed with), for all its CL points or a chosen subset, and writes the rep
 With a subset, the pass validated is made of the chosen CL points only, in their order; the
 report numbers them 0, 1, … and each detailed CL point says which CL point of the pass it is.
 The boolean costs about 0.5–1 s per CL point, so the progress callback is called after each.
+With the object's Forces on, the report gets its "Cutting forces" section: the object's force
+model (``features.engagement.force_model``) on the pass validated.
 """
 
 import os
@@ -27,12 +29,12 @@ class Cancelled(Exception):
 def cl_indices(text, count):
     """CL indices (0-based, sorted, distinct) of "all" / "" (every CL point) or "0,22,40", checked by
     the command line's ``--cl`` code (its messages) against a pass of `count` CL points."""
-    from ..cli import _cl_indices
+    from ..cli import cl_indices as command_line_cl_indices
 
     text = text.strip().replace(" ", "")
     if text.lower() in ("", "all"):
         return list(range(count))
-    return _cl_indices(text, count)
+    return command_line_cl_indices(text, count)
 
 
 def report_folder(obj):
@@ -51,11 +53,14 @@ def validate_engagement(obj, cls, folder, progress=None):
     it raises (e.g. :class:`Cancelled`) stops the validation and leaves `folder` as it was.
     InputError with the command line's message for bad input.
     """
+    from ..features.engagement import force_model
+    from ..forces import pass_forces
     from ..report.html import ReportJob, write_report
     from ..report.staging import staged
     from ..validation import NoEngagementError, validate
 
     started = time.perf_counter()
+    model = force_model(obj)
     toolpath, _, parameters, tool, settings, stock = obj.Proxy.inputs(obj)
     solid = stock.solid()
     stock_seconds = time.perf_counter() - started  # the stock object's cache makes this small
@@ -70,6 +75,11 @@ def validate_engagement(obj, cls, folder, progress=None):
     except NoEngagementError:
         raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock at CL points "
                          f"{_cl_list(chosen)}") from None
+    forces = None
+    if model is not None:
+        coefficients, immersion = model
+        forces = pass_forces(stock.staircase, tool, pass_, settings, coefficients, immersion=immersion,
+                             first=validation.engagement.length if tool.helix == 0.0 else None)
     subset = len(chosen) < len(toolpath)
     title = f"ABM against booleans: {obj.Label} ({os.path.basename(stock.source)} / " \
             f"{os.path.basename(obj.Toolpath.File)})"
@@ -81,7 +91,7 @@ def validate_engagement(obj, cls, folder, progress=None):
     shown = [(i, f"pass CL {cl}") for i, cl in enumerate(chosen)][:6]
     os.makedirs(os.path.dirname(os.path.abspath(folder)), exist_ok=True)
     with staged(folder, folder=True) as temporary:
-        page = write_report(temporary, validation, job, shown)
+        page = write_report(temporary, validation, job, shown, forces)
     return os.path.join(os.path.abspath(folder), os.path.basename(page))
 
 

@@ -205,15 +205,20 @@ HIGHLIGHT_EDGES = 12
 
 
 def add_colour_by(vobj):
-    """Add the view property ColourBy (group "Display") to the engagement's view object if missing."""
+    """Add the view property ColourBy (group "Display") to the engagement's view object if missing; give an
+    older one (without force) the choices of COLOUR_BY, keeping its value."""
     from .colouring import COLOUR_BY
 
     if "ColourBy" not in vobj.PropertiesList:
         vobj.addProperty("App::PropertyEnumeration", "ColourBy", "Display",
                          "face colours: segment (the UEP surface of each engagement segment), length (length of "
-                         "cut, mm) or area (cut area, mm²)")
+                         "cut, mm), area (cut area, mm²) or force (resultant cutting force, N; with Forces on)")
         vobj.ColourBy = list(COLOUR_BY)
         vobj.ColourBy = "segment"
+    elif tuple(vobj.getEnumerationsOfProperty("ColourBy")) != COLOUR_BY:
+        value = vobj.ColourBy
+        vobj.ColourBy = list(COLOUR_BY)
+        vobj.ColourBy = value
 
 
 def _colour_later(vobj):
@@ -239,7 +244,9 @@ def colour(vobj):
         provider.legend = None
         return None
     add_colour_by(vobj)
-    colours, legend = face_colours(result, faces, vobj.ColourBy)
+    forces = obj.Proxy.forces(obj)
+    colour_by = "segment" if vobj.ColourBy == "force" and forces is None else vobj.ColourBy
+    colours, legend = face_colours(result, faces, colour_by, forces)
     vobj.DiffuseColor = [(*map(float, rgb), 0.0) for rgb in colours]
     provider.legend = legend
     return legend

@@ -17,6 +17,7 @@ import os
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from ..scheduling import peak
 
@@ -47,34 +48,48 @@ def force_over_phi_figure(forces, cls, *, after=None, along=False):
     FigureCanvasAgg(figure)
     if along:
         axes = figure.add_subplot(rows, 1, 1)
-        index = np.arange(forces.shape[0])
-        axes.plot(index, forces.peak, ".-", color="black", label="peak |F| over φ")
-        axes.plot(index, forces.mean, ".-", color="0.55", label="mean |F| over φ")
-        for cl in cls:
-            axes.axvline(cl, color="tab:purple", linestyle=":", linewidth=1.0)
-        axes.set(xlabel="CL point index (dotted: shown below)", ylabel="force on the tool (N)",
-                 title="Peak and mean resultant force along the pass")
-        axes.set_xlim(-0.5, index.size - 0.5)
-        axes.set_ylim(0.0, 1.15 * max(forces.peak.max(), 1e-9))
+        draw_force_along(axes, forces, cls)
+        axes.set_xlabel("CL point index (dotted: shown below)")
         axes.legend(loc="lower right", fontsize=9)
-        axes.grid(alpha=0.3)
     for row, cl in enumerate(cls, start=int(bool(along))):
         axes = figure.add_subplot(rows, 1, row + 1)
-        for label, values, style in (("", forces, "-"), (" after", after, "--")):
-            if values is None:
-                continue
-            xyz, resultant = values.xyz[cl], values.resultant[cl]
-            for k, name in enumerate(("F_x", "F_y", "F_z")):
-                axes.plot(values.phi, xyz[:, k], style, color=_COMPONENT_COLOURS[k], label=f"${name}${label}")
-            axes.plot(values.phi, resultant, style, color=_COMPONENT_COLOURS[3], linewidth=1.8, label=f"$|F|${label}")
-        axes.axhline(0.0, color="0.6", linewidth=0.8)
-        feed = f", f = {forces.feed[cl]:.4g}" + ("" if after is None else f" → {after.feed[cl]:.4g}") + " mm/tooth"
-        axes.set(xlabel="rotation angle of flute 1, φ (deg)", ylabel="force on the tool (N)",
-                 title=f"CL {cl}: peak |F| {forces.peak[cl]:.4g} N" + feed)
-        axes.set_xlim(forces.phi[0], forces.phi[-1])
+        draw_force_over_phi(axes, forces, cl, after=after)
         axes.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9)
-        axes.grid(alpha=0.3)
     return figure
+
+
+def draw_force_along(axes, forces, cls):
+    """Draw on `axes` the peak and mean resultant force (N) per CL point along the pass, a dotted
+    line at each CL index of `cls` (no legend)."""
+    index = np.arange(forces.shape[0])
+    axes.plot(index, forces.peak, ".-", color="black", label="peak |F| over φ")
+    axes.plot(index, forces.mean, ".-", color="0.55", label="mean |F| over φ")
+    for cl in cls:
+        axes.axvline(cl, color="tab:purple", linestyle=":", linewidth=1.0)
+    axes.set(xlabel="CL point index", ylabel="force on the tool (N)",
+             title="Peak and mean resultant force along the pass")
+    axes.set_xlim(-0.5, index.size - 0.5)
+    axes.xaxis.set_major_locator(MaxNLocator(integer=True))
+    axes.set_ylim(0.0, 1.15 * max(forces.peak.max(), 1e-9))
+    axes.grid(alpha=0.3)
+
+
+def draw_force_over_phi(axes, forces, cl, *, after=None):
+    """Draw on `axes` F_x, F_y, F_z (global frame) and |F| (N) over φ at CL index `cl`, labelled
+    $F_x$, …, $|F|$ (no legend); `after` (Forces at scheduled feeds) dashed, labelled "… after"."""
+    for label, values, style in (("", forces, "-"), (" after", after, "--")):
+        if values is None:
+            continue
+        xyz, resultant = values.xyz[cl], values.resultant[cl]
+        for k, name in enumerate(("F_x", "F_y", "F_z")):
+            axes.plot(values.phi, xyz[:, k], style, color=_COMPONENT_COLOURS[k], label=f"${name}${label}")
+        axes.plot(values.phi, resultant, style, color=_COMPONENT_COLOURS[3], linewidth=1.8, label=f"$|F|${label}")
+    axes.axhline(0.0, color="0.6", linewidth=0.8)
+    feed = f", f = {forces.feed[cl]:.4g}" + ("" if after is None else f" → {after.feed[cl]:.4g}") + " mm/tooth"
+    axes.set(xlabel="rotation angle of flute 1, φ (deg)", ylabel="force on the tool (N)",
+             title=f"CL {cl}: peak |F| {forces.peak[cl]:.4g} N" + feed)
+    axes.set_xlim(forces.phi[0], forces.phi[-1])
+    axes.grid(alpha=0.3)
 
 
 def schedule_figure(forces, plan):

@@ -1,8 +1,10 @@
 """A validation report as one self-contained HTML page, with the CSV files behind it.
 
 :func:`write_report` writes into a folder: ``index.html`` (plain HTML and a little CSS; every
-plot a PNG embedded as base64) and the tables of :mod:`.tables`. Lengths in mm, angles in
-degrees, times in s, relative errors in %.
+plot a PNG embedded as base64) and the tables of :mod:`.tables`; with cutting forces, a
+"Cutting forces" section (force over φ at the CL points shown, peak force along the pass) whose
+figure is also ``forces.png``. Lengths in mm, angles in degrees, times in s, relative errors in
+%, forces in N.
 """
 
 import base64
@@ -17,6 +19,7 @@ import numpy as np
 from ..engine import CutSettings, Tool, Toolpath
 from ..validation import TINY_LENGTH, overall, segment_summary, surface_summary
 from . import figures
+from .forces import SHOWN_CL, force_over_phi_figure
 from .plots import representative_cl
 from .tables import report_tables
 
@@ -94,22 +97,38 @@ def report_cls(validation, requested=None):
     return chosen
 
 
-def write_report(folder, validation, job: ReportJob, cls):
+def write_report(folder, validation, job: ReportJob, cls, forces=None):
     """Write index.html and the four CSV tables of `validation` into `folder` (which exists).
 
-    cls: (index, why) of the CL points shown in detail. Returns the path of index.html.
+    cls: (index, why) of the CL points shown in detail. forces: the pass's Forces (or an
+    engagement object's PassForces), for the "Cutting forces" section and forces.png; None: no
+    forces. Returns the path of index.html.
     """
     for name, text in report_tables(validation, job.toolpath).items():
         with open(os.path.join(folder, name), "w", encoding="utf-8", newline="") as file:
             file.write(text)
+    force_png = None
+    if forces is not None:
+        buffer = io.BytesIO()
+        force_figure(forces, cls).savefig(buffer, format="png")
+        force_png = buffer.getvalue()
+        with open(os.path.join(folder, "forces.png"), "wb") as file:
+            file.write(force_png)
     page = os.path.join(folder, "index.html")
     with open(page, "w", encoding="utf-8") as file:
-        file.write(report_page(validation, job, cls))
+        file.write(report_page(validation, job, cls, forces, force_png))
     return page
 
 
-def report_page(validation, job: ReportJob, cls):
-    """The HTML text of the report."""
+def force_figure(forces, cls):
+    """The report's force figure: peak and mean resultant along the pass, force over φ at the first
+    SHOWN_CL CL points of `cls` ((index, why) pairs)."""
+    return force_over_phi_figure(forces, sorted({cl for cl, _ in cls[:SHOWN_CL]}), along=True)
+
+
+def report_page(validation, job: ReportJob, cls, forces=None, force_png=None):
+    """The HTML text of the report; with `forces`, the "Cutting forces" section showing `force_png`
+    (force_figure's PNG bytes, made here when not given)."""
     shown = [cl for cl, _ in cls][:DETAIL_PLOTS]
     model = paper_model_test(job.description)
     paper_range = PAPER_DEPTH.get(model)
@@ -135,6 +154,7 @@ def report_page(validation, job: ReportJob, cls):
         "<h2>Error per engagement segment <small>(Fig. 8(c), 8(e))</small></h2>",
         _image(figures.error_figure(validation, shown)), _segment_table(validation, shown),
         "<h2>Error over the pass</h2>", _image(figures.error_pass_figure(validation)),
+        _force_section(forces, cls, force_png) if forces is not None else "",
         "<h2>Timings</h2>", _timings(validation, job),
         "<h2>Files</h2>", _files(),
     ]
@@ -245,6 +265,31 @@ def _timings(validation, job):
     rows += [(f"paper, {name}, 53 CC points (MATLAB, i7 2.7 GHz)", f"{value:g} s", "angle step not stated")
              for name, value in PAPER_SECONDS.items()]
     return _table(("", "time", ""), rows)
+
+
+def _force_section(forces, cls, png):
+    """Cutting forces: peak over the pass, the force figure (PNG bytes `png`, made when None)."""
+    if png is None:
+        buffer = io.BytesIO()
+        force_figure(forces, cls).savefig(buffer, format="png")
+        png = buffer.getvalue()
+    peak = forces.peak
+    worst = int(np.argmax(peak))
+    shown = sorted({cl for cl, _ in cls[:SHOWN_CL]})
+    rows = [
+        ("peak resultant force over the pass", f"{peak[worst]:.4g} N at CL {worst}"),
+        ("mean resultant force, pass average", f"{forces.mean.mean():.4g} N"),
+        ("peak torque", f"{forces.torque.max():.4g} N·mm"),
+    ] + ([("peak spindle power", f"{forces.power.max():.4g} W")] if forces.power is not None else [])
+    data = base64.b64encode(png).decode("ascii")
+    return "\n".join([
+        "<h2>Cutting forces</h2>",
+        "<p class='note'>Linear edge-force model (docs/FORCES.md) on the ABM engagement, global frame, summed "
+        f"over the flutes cutting at each angle of flute 1; over φ at CL {_e(', '.join(map(str, shown)))} "
+        "(dotted in the first plot). Also <a href='forces.png'><code>forces.png</code></a>.</p>",
+        _table(("", ""), rows, header=False),
+        f"<img alt='cutting forces' src='data:image/png;base64,{data}'>",
+    ])
 
 
 def _files():

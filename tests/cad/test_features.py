@@ -13,7 +13,9 @@ import pytest
 
 from abm_workbench.cad.freecad_env import FreeCAD, Part
 from abm_workbench.engine import CutSettings, Tool, engage
+from abm_workbench.engine import flute_engagement
 from abm_workbench.errors import InputError
+from abm_workbench.forces import material, pass_forces
 from abm_workbench.features import VERSION, create_engagement, create_stock, create_toolpath
 from abm_workbench.features import engagement as engagement_module
 from abm_workbench.features.engagement import EngagementFeature
@@ -281,7 +283,9 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     _, _, engagement = model_test(doc)
     engagement.ShowSurfaces = False
     doc.recompute()
-    for name in ("YWindow", "YWindowMin", "YWindowMax", "ValidationReport"):  # as saved by version 1
+    for name in ("YWindow", "YWindowMin", "YWindowMax", "ValidationReport", "HelixAngle", "Forces", "Material",
+                 "Ktc", "Krc", "Kac", "Kte", "Kre", "Kae", "ImmersionStart", "ImmersionEnd", "PeakForce",
+                 "ForceFeedPerTooth"):  # as saved by version 1
         engagement.removeProperty(name)
     engagement.Version = 1
     path = tmp_path / "old.FCStd"
@@ -292,8 +296,9 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
-        assert engagement.Version == VERSION == 2
+        assert engagement.Version == VERSION == 3
         assert engagement.YWindow == "whole" and engagement.ValidationReport == ""  # what version 1 computed
+        assert engagement.HelixAngle.Value == 0.0 and not engagement.Forces and engagement.PeakForce == 0.0
         assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
         reopened.recompute()
         assert_same(engagement.Proxy.result(engagement), reference())
@@ -345,3 +350,106 @@ def test_links_must_be_abm_objects(doc):
     assert engagement.getStatusString() == "Engagement: Toolpath must link an ABM Toolpath object"
     with pytest.raises(TypeError, match="unknown setting 'feed'"):
         create_engagement(doc, stock, toolpath, feed=0.1)
+
+
+def model_test_forces(immersion=(0.0, 120.0), helix=0.0):
+    """pass_forces of model test 1 (JSON stock) with Al7075-T6 coefficients, as the object should give them."""
+    tool = Tool(JOB["diameter"], JOB["flutes"], JOB["flute_length"], helix=helix)
+    settings = CutSettings(JOB["feed_per_tooth"], JOB["inclination"], *JOB["phi_range"], JOB["phi_step"],
+                           JOB["spindle_rpm"])
+    return pass_forces(load_stock(STOCK_JSON).staircase, tool, load_toolpath(TOOLPATH), settings,
+                       material("al7075-t6"), immersion=immersion)
+
+
+def assert_same_forces(forces, expected, atol):
+    for name in ("xyz", "torque", "power", "peak", "mean"):
+        np.testing.assert_allclose(getattr(forces, name), getattr(expected, name), rtol=0.0, atol=atol, err_msg=name)
+
+
+def test_forces_equal_pass_forces_and_are_restored_without_recompute(doc, tmp_path, monkeypatch):
+    _, _, engagement = model_test(doc, forces=True, material="al7075-t6", immersion=(0.0, 120.0))
+    engagement.ShowSurfaces = False
+    assert [engagement.getEditorMode(name) for name in ("Ktc", "PeakForce")] == [["ReadOnly"]] * 2
+    assert engagement.getGroupOfProperty("Ktc") == "Forces" and "N/mm²" in engagement.getDocumentationOfProperty("Ktc")
+    doc.recompute()
+    assert engagement.isValid()
+    expected = model_test_forces()
+    forces = engagement.Proxy.forces(engagement)
+    assert forces.power is not None  # the job has a spindle speed
+    assert_same_forces(forces, expected, 1e-9)
+    assert engagement.PeakForce == pytest.approx(expected.peak.max(), abs=1e-9) and engagement.PeakForce > 100.0
+    assert engagement.Ktc == material("al7075-t6").ktc
+    path = tmp_path / "forces.FCStd"
+    doc.saveAs(str(path))
+    FreeCAD.closeDocument(doc.Name)
+
+    def no_engine(*args, **kwargs):
+        raise AssertionError("the engine ran on restore")
+
+    monkeypatch.setattr(engagement_module, "engage", no_engine)
+    monkeypatch.setattr(engagement_module, "pass_forces", no_engine)
+    reopened = FreeCAD.openDocument(str(path))
+    try:
+        engagement = reopened.getObject("Engagement")
+        assert "Touched" not in engagement.State
+        assert_same_forces(engagement.Proxy.forces(engagement), expected, 1e-9)
+        np.testing.assert_array_equal(engagement.Proxy.forces(engagement).feed, JOB["feed_per_tooth"])
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_forces_off_write_no_force_columns_and_custom_coefficients_are_used(doc):
+    _, _, engagement = model_test(doc)
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert engagement.Proxy.forces(engagement) is None and engagement.PeakForce == 0.0
+    assert "fx" not in open(engagement.ResultsFile, encoding="utf-8").readline().split(",")
+    engagement.Forces, engagement.Material = True, "custom"
+    assert engagement.getEditorMode("Ktc") == []
+    engagement.Ktc = 2.0 * material("al7075-t6").ktc  # the others stay at the table's values
+    doc.recompute()
+    doubled = engagement.Proxy.forces(engagement)
+    table = model_test_forces(immersion=(0.0, 180.0))
+    assert "fx" in open(engagement.ResultsFile, encoding="utf-8").readline().split(",")
+    assert not np.allclose(doubled.xyz, table.xyz)
+    engagement.Material = "al7075-t6"
+    assert engagement.Ktc == material("al7075-t6").ktc and engagement.getEditorMode("Ktc") == ["ReadOnly"]
+    doc.recompute()
+    assert_same_forces(engagement.Proxy.forces(engagement), table, 1e-9)
+
+
+def test_bad_force_settings_fail_the_recompute_with_the_command_line_message(doc):
+    _, _, engagement = model_test(doc, forces=True, material="custom", ktc=-1.0, krc=1.0, kac=1.0)
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert engagement.getStatusString() == "Engagement: Ktc: ktc must be positive, got -1"
+    engagement.Ktc = 700.0
+    engagement.ImmersionStart, engagement.ImmersionEnd = 90.0, 30.0
+    doc.recompute()
+    assert engagement.getStatusString() == (
+        "Engagement: ImmersionStart, ImmersionEnd: immersion 90:30 must satisfy 0 <= start < end <= 180 degrees")
+    engagement.ImmersionStart = 0.0
+    engagement.HelixAngle = 95.0
+    doc.recompute()
+    assert engagement.getStatusString() == "Engagement: HelixAngle: helix must be within (-90, 90) degrees, got 95.0"
+    engagement.HelixAngle = 0.0
+    doc.recompute()
+    assert engagement.isValid() and engagement.PeakForce > 0.0
+
+
+def test_helix_30_changes_the_length_of_cut_as_flute_engagement_does(doc):
+    _, _, engagement = model_test(doc, helix=30.0, forces=True, material="al7075-t6", immersion=(0.0, 120.0))
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert engagement.isValid()
+    tool = Tool(JOB["diameter"], JOB["flutes"], JOB["flute_length"], helix=30.0)
+    settings = CutSettings(JOB["feed_per_tooth"], JOB["inclination"], *JOB["phi_range"], JOB["phi_step"],
+                           JOB["spindle_rpm"])
+    expected = flute_engagement(load_stock(STOCK_JSON).staircase, tool, load_toolpath(TOOLPATH),
+                                settings).as_engagement(0)
+    result = engagement.Proxy.result(engagement)
+    assert_same(result, expected)
+    straight = reference()
+    assert not np.allclose(result.length, straight.length)
+    assert engagement.MaxLengthOfCut.Value == pytest.approx(expected.length.max(), abs=1e-12)
+    assert_same_forces(engagement.Proxy.forces(engagement), model_test_forces(helix=30.0), 1e-9)

@@ -1,13 +1,18 @@
 """The validation report: its CSV tables, the self-contained HTML page, and outputs staged whole."""
 
+import base64
 import csv
+import json
 import os
 import re
 
 import numpy as np
 import pytest
 
+from abm_workbench import cli
 from abm_workbench.engine import CutSettings, Tool, Toolpath, engage
+from abm_workbench.forces import material, pass_forces
+from abm_workbench.formats.staircase_json import dump_staircase
 from abm_workbench.report.html import ReportJob, paper_model_test, report_cls, write_report
 from abm_workbench.report.staging import staged
 from abm_workbench.report.tables import (COMPARISON_COLUMNS, DEPTH_COLUMNS, SEGMENT_COLUMNS, SURFACE_COLUMNS,
@@ -123,3 +128,42 @@ def _umask():
     mask = os.umask(0o022)
     os.umask(mask)
     return mask
+
+
+def test_forces_section_and_png_only_with_forces(tmp_path, validation):
+    forces = pass_forces(STOCKS["ridge"], TOOL, PATH, SETTINGS, material("al6082-t6"))
+    with_forces, without = tmp_path / "with", tmp_path / "without"
+    with_forces.mkdir()
+    without.mkdir()
+    text = open(write_report(with_forces, validation, job(), [(2, "chosen"), (0, "chosen")], forces),
+                encoding="utf-8").read()
+    plain = open(write_report(without, validation, job(), [(2, "chosen"), (0, "chosen")]), encoding="utf-8").read()
+    assert "<h2>Cutting forces</h2>" in text and "Cutting forces" not in plain
+    assert "forces.png" in os.listdir(with_forces) and "forces.png" not in os.listdir(without)
+    png = (with_forces / "forces.png").read_bytes()
+    images = re.findall(r"<img [^>]*src='data:image/png;base64,([^']*)'", text)
+    assert len(images) == 7 and base64.b64decode(images[-1]) == png and png.startswith(b"\x89PNG")
+    worst = int(np.argmax(forces.peak))
+    assert f"{forces.peak[worst]:.4g} N at CL {worst}" in text and forces.peak[worst] > 10.0
+    assert "over φ at CL 0, 2" in text
+
+
+def test_validate_command_with_forces(tmp_path, monkeypatch, capsys):
+    dump_staircase(STOCKS["ridge"], tmp_path / "stock.json")
+    (tmp_path / "path.csv").write_text("x,y,z,theta_a,theta_b\n" + "".join(
+        f"{x},{y},{z},{a},{b}\n" for (x, y, z), a, b in zip(PATH.cl, PATH.theta_a, PATH.theta_b)))
+    (tmp_path / "job.json").write_text(json.dumps({"diameter": 12, "flutes": 2, "flute_length": 25,
+                                                   "feed_per_tooth": 0.1, "phi_step": 15}))
+    monkeypatch.chdir(tmp_path)
+    base = ["validate", "--stock", "stock.json", "--toolpath", "path.csv", "--job", "job.json", "--report", "report"]
+    assert cli.main(base + ["--material", "al6082-t6"]) == 2
+    assert capsys.readouterr().err.splitlines()[-1] == "abm: error: --material applies with --forces"
+    assert cli.main(base + ["--forces", "--ktc", "600", "--krc", "100", "--kac", "200", "--immersion", "0:200"]) == 2
+    assert capsys.readouterr().err.splitlines()[-1].startswith("abm: error: --immersion: immersion 0:200 must satisfy")
+    assert not os.path.exists("report")
+    assert cli.main(base + ["--forces", "--material", "al6082-t6", "--immersion", "0:90"]) == 0
+    out = capsys.readouterr().out
+    expected = pass_forces(STOCKS["ridge"], TOOL, PATH, SETTINGS, material("al6082-t6"), immersion=(0, 90))
+    assert f"; peak force {expected.peak.max():.4g} N at CL {int(np.argmax(expected.peak))}" in out
+    assert "forces.png" in os.listdir("report")
+    assert "<h2>Cutting forces</h2>" in (tmp_path / "report" / "index.html").read_text(encoding="utf-8")

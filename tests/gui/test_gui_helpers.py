@@ -60,9 +60,30 @@ def test_colours_by_segment_and_by_quantity_with_their_legends(engagement):
         assert (legend.unit, legend.low, legend.high) == (unit, values.min(), values.max())
         assert np.allclose(colours[values.argmin()], quantity_colours([0.0], 0.0, 1.0)[0])
         assert np.allclose(colours[values.argmax()], quantity_colours([1.0], 0.0, 1.0)[0])
-    assert COLOUR_BY == ("segment", "length", "area")
+    assert COLOUR_BY == ("segment", "length", "area", "force")
     with pytest.raises(ValueError, match="colour_by must be one of"):
         face_colours(result, faces, "depth")
+    with pytest.raises(ValueError, match="colour by force needs the engagement's forces"):
+        face_colours(result, faces, "force")
+
+
+def test_colours_by_force_are_the_resultant_per_face(engagement):
+    result = engagement.Proxy.result(engagement)
+    faces = face_map(result, engagement.Shape)
+    engagement.Forces = True
+    try:
+        engagement.Document.recompute()
+        forces = engagement.Proxy.forces(engagement)
+        colours, legend = face_colours(result, faces, "force", forces)
+        resultant = np.linalg.norm(forces.xyz, axis=-1)  # |F| from the components, not the class's own
+        values = 0.5 * (resultant[faces.cl, faces.rows[:, 0]] + resultant[faces.cl, faces.rows[:, 1]])
+        assert (legend.kind, legend.unit) == ("force", "N")
+        assert legend.low == pytest.approx(values.min(), abs=1e-9) and legend.high == pytest.approx(values.max())
+        assert legend.high > 100.0
+        np.testing.assert_allclose(colours, quantity_colours(values, values.min(), values.max()), atol=1e-9)
+    finally:
+        engagement.Forces = False
+        engagement.Document.recompute()
 
 
 def test_a_shape_of_other_results_has_no_face_map(engagement):
