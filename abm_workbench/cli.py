@@ -554,7 +554,7 @@ def _run_validate(args):
           + f"; wrote {', '.join(written)}")
     if helical is not None:
         print(f"{PROG}: {_flutes_text(helix_validation)}")
-    print(f"{PROG}: parameters: {parameters.describe()}{_stock_line(stock)}")
+    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
     return 0
 
 

@@ -190,7 +190,7 @@ def _job_table(validation, job):
         ("rotation angles", f"φ {settings.phi_start:g}..{settings.phi_end:g}° step {settings.phi_step:g}°: "
                             f"{p} angles, {m * p} instants"),
         ("tool", f"flat end mill D {job.tool.diameter:g} mm, {job.tool.flutes} flutes, flute length "
-                 f"{job.tool.flute_length:g} mm"),
+                 f"{job.tool.flute_length:g} mm" + (f", helix {job.tool.helix:g}°" if job.tool.helix else "")),
         ("cutting", f"feed {settings.feed_per_tooth:g} mm/tooth, inclination {settings.inclination:g}°"
                     + (f", {settings.spindle_rpm:g} rpm" if settings.spindle_rpm else "")),
         ("parameters [from]", job.parameters),

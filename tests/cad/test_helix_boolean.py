@@ -179,6 +179,7 @@ def test_cli_validate_helix(pass_files, tmp_path, capsys):
     assert "Helical edges against the helix boolean: flute 1: max |Δ axial length|" in out and "flute 2:" in out
     page = (report / "index.html").read_text()
     assert "<h1>Helical edges (β = -20°), flute 1 of 2, ABM against booleans: stock.step / path.csv</h1>" in page
+    assert "flute length 30 mm, helix -20°" in page and ", helix -20° [--helix]" in out
     lines = (report / "flutes.csv").read_text().splitlines()
     assert lines[0] == ",".join(FLUTE_COLUMNS) and len(lines) == 1 + 3 * 7 * 2
     rows = np.genfromtxt(lines[1:], delimiter=",")
