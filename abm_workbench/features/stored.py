@@ -30,6 +30,18 @@ def letter_index(letters):
     return out
 
 
+def _pass_shape(name, cl):
+    """(m, p) of a results CSV's cl column (rows,): m CL points of p angles each, in CL point
+    order; InputError naming the file `name` otherwise."""
+    m = int(cl.max()) + 1 if cl.size else 0
+    if m == 0 or cl.size % m:
+        raise InputError(f"{name}: {cl.size} rows are not the same number of angles for each of {m} CL points")
+    p = cl.size // m
+    if not np.array_equal(cl, np.repeat(np.arange(m), p)):
+        raise InputError(f"{name}: rows are not in CL point order with {p} angles each")
+    return m, p
+
+
 def read_engagement(path):
     """The Engagement in results CSV `path`; InputError naming the file when it is not one."""
     name = os.fspath(path)
@@ -37,13 +49,7 @@ def read_engagement(path):
     missing = [column for column in RESULT_COLUMNS if column not in columns]
     if missing:
         raise InputError(f"{name}: not a results CSV: missing column {missing[0]!r}")
-    cl = columns["cl"]
-    m = int(cl.max()) + 1 if cl.size else 0
-    if m == 0 or cl.size % m:
-        raise InputError(f"{name}: {cl.size} rows are not the same number of angles for each of {m} CL points")
-    p = cl.size // m
-    if not np.array_equal(cl, np.repeat(np.arange(m), p)):
-        raise InputError(f"{name}: rows are not in CL point order with {p} angles each")
+    m, p = _pass_shape(name, columns["cl"])
 
     def grid(column, dtype=float):
         return np.asarray(columns[column], dtype=dtype).reshape(m, p)
@@ -126,11 +132,7 @@ def read_forces(path, feed):
     missing = [column for column in FORCE_COLUMNS[:4] if column not in columns]
     if missing:
         raise InputError(f"{name}: force columns without {missing[0]!r}")
-    cl = columns["cl"]
-    m = int(cl.max()) + 1 if cl.size else 0
-    if m == 0 or cl.size % m:
-        raise InputError(f"{name}: {cl.size} rows are not the same number of angles for each of {m} CL points")
-    p = cl.size // m
+    m, p = _pass_shape(name, columns["cl"])
     xyz = np.stack([columns[axis].reshape(m, p) for axis in ("fx", "fy", "fz")], axis=-1)
     if not np.isfinite(xyz).all():
         raise InputError(f"{name}: a force column has an empty or non-finite field")
