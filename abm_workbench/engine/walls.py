@@ -201,11 +201,6 @@ class SplineWall:
         high = np.maximum(high, np.where(meets, boxes[:, 1, None], -np.inf).max(axis=0))
         return low, high, np.full(low.size, np.inf)
 
-    def crossings(self, x0, y0, dx, dy, lo, hi):
-        """Edge parameters l (k, r) in [lo, hi] where the lines (x0 + l·dx, y0 + l·dy) meet the
-        curve, NaN-padded (see SplineTable.crossings)."""
-        return SplineTable((self,)).crossings(np.zeros(np.shape(x0), dtype=np.intp), x0, y0, dx, dy, lo, hi)
-
 
 class SplineTable:
     """The SplineWall walls of a stock stacked span by span, so that crossings with lines and
