@@ -363,7 +363,7 @@ def _run_engage(args):
     elapsed_ms = 1e3 * (time.perf_counter() - started)
 
     m, p = len(toolpath), settings.phi.size
-    print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms{method_text}; "
+    print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms{method_text} (files included); "
           f"depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
           + ("" if force_model is None else f"; peak force {np.nanmax(peak):.4g} N at CL {int(np.nanargmax(peak))}")
