@@ -19,6 +19,7 @@ import numpy as np
 from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_linear, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
+from .rows import row_any, row_count, row_sum
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
 from .walls import Wall
 
@@ -304,7 +305,7 @@ def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
     u[monotone, 0] = monotone_root_unit(k[monotone])
     if not monotone.all():
         u[~monotone] = real_roots_unit(k[~monotone])
-    return lo[:, None] + u * span[:, None], monotone, k[:, 0] <= 0.0, k.sum(axis=1) <= 0.0
+    return lo[:, None] + u * span[:, None], monotone, k[:, 0] <= 0.0, row_sum(k) <= 0.0
 
 
 def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
@@ -367,7 +368,7 @@ def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
     found (P,), and whether the line is at or beyond the wall at lo and at hi, each (P,)."""
     lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
     roots = stock.splines.crossings(walls, x0, y0, dx, dy, lo, hi)
-    count = (~np.isnan(roots)).sum(axis=1)
+    count = row_count(~np.isnan(roots))
     found = np.full((rows.size, 1), np.nan)
     if roots.shape[1]:
         found[count >= 1, 0] = np.nanmin(roots[count >= 1], axis=1)
@@ -467,7 +468,7 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
     at = np.concatenate(columns, axis=1)
     at[~live] = np.nan
     order = np.argsort(at, axis=1)
-    order = order[:, : max(int((~np.isnan(at)).sum(axis=1).max()), 2)]
+    order = order[:, : max(int(row_count(~np.isnan(at)).max()), 2)]
     at = np.take_along_axis(at, order, axis=1)
 
     # Classify each piece between consecutive breakpoints at its midpoint.
@@ -490,7 +491,7 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
     last_real = np.maximum.accumulate(np.where(real, column, -1), axis=1)
     state = np.where(last_real >= 0, np.take_along_axis(inside, np.maximum(last_real, 0), axis=1), False)
     before = np.concatenate([np.zeros((n, 1), dtype=bool), state[:, :-1]], axis=1)
-    pieces = (inside & ~before).sum(axis=1)
+    pieces = row_count(inside & ~before)
     any_inside = inside.any(axis=1)
     first = np.argmax(inside, axis=1)
     last = inside.shape[1] - 1 - np.argmax(inside[:, ::-1], axis=1)
@@ -505,7 +506,7 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
     bottom = np.where((lo == 0.0) & real[:, 0], section[:, 0], -1)
     case = _table1_case(stock, x0, y0, dx, bottom, inside_section, any_inside, pieces, wall_index)
     return {
-        "lep_l": lep, "uep_l": uep, "length": np.where(inside, end - start, 0.0).sum(axis=1),
+        "lep_l": lep, "uep_l": uep, "length": row_sum(np.where(inside, end - start, 0.0)),
         "pieces": pieces, "uep_surface": surface, "uep_section": uep_section, "uep_wall": wall_index, "case": case,
     }
 
@@ -569,8 +570,8 @@ def _table1_case(stock, x0, y0, dx, bottom, inside_section, engaged, pieces, uep
     z_a, z_b = stock.z_top[a], stock.z_top[b]
     is_a = inside_section == a[:, None]
     is_b = (inside_section == b[:, None]) & has_b[:, None]
-    in_a, in_b = is_a.any(axis=1), is_b.any(axis=1)
-    other = ((inside_section >= 0) & ~is_a & ~is_b).any(axis=1)
+    in_a, in_b = row_any(is_a), row_any(is_b)
+    other = row_any((inside_section >= 0) & ~is_a & ~is_b)
     forward = lean > 0
     between = np.maximum(a, b)  # index of the wall between A and B
     down, up = has_b & (z_a > z_b), has_b & (z_a < z_b)

@@ -12,6 +12,7 @@ from math import comb
 
 import numpy as np
 
+from .rows import row_max, row_min, row_sum
 from .tolerances import FAST_NEWTON, ROOT_MAX_ITER, ROOT_TOL
 
 
@@ -195,8 +196,8 @@ def proved_monotone_unit(coefficients):
         return np.zeros(c.shape[0], dtype=bool)
     slope = derivative(c)
     bernstein = slope @ _power_to_bernstein(d - 1).T
-    margin = 1e-12 * np.abs(slope).sum(axis=1)
-    return (bernstein.min(axis=1) > margin) | (bernstein.max(axis=1) < -margin)
+    margin = 1e-12 * row_sum(np.abs(slope))
+    return (row_min(bernstein) > margin) | (row_max(bernstein) < -margin)
 
 
 def _power_to_bernstein(degree):
@@ -210,7 +211,7 @@ def monotone_root_unit(coefficients):
     """The root in [0, 1] of polynomials known to be monotone there; (m, d+1) -> (m,), NaN if none."""
     c = np.asarray(coefficients, dtype=float)
     m = c.shape[0]
-    f_lo, f_hi = c[:, 0], c.sum(axis=1)
+    f_lo, f_hi = c[:, 0], row_sum(c)
     found = (np.sign(f_lo) * np.sign(f_hi) < 0.0) | (f_lo == 0.0) | (f_hi == 0.0)
     out = np.full(m, np.nan)
     idx = np.flatnonzero(found)

@@ -14,6 +14,7 @@ from scipy.interpolate import BSpline, PPoly
 
 from .polynomials import (bracketed_root, compose_linear, horner, monotone_root_unit, proved_monotone_unit,
                           real_roots_unit)
+from .rows import row_sum
 
 #: Six x values within this (mm) of each other make a straight wall.
 STRAIGHT_EPS = 1e-12
@@ -257,7 +258,7 @@ class SplineTable:
         w, yk = flat_w[known], np.clip(flat_y[known], self.y_first[flat_w[known]], self.y_last[flat_w[known]])
         span[known] += np.clip(self._local_span(w, yk, "right"), 0, self.n_spans[w] - 1)
         c = self.spans_y[span[known]] - yk[:, None] * self.spans_w[span[known]]
-        u[known] = bracketed_root(c, np.zeros(known.size), np.ones(known.size), c[:, 0], c.sum(axis=1))
+        u[known] = bracketed_root(c, np.zeros(known.size), np.ones(known.size), c[:, 0], row_sum(c))
         return span.reshape(y.shape), u.reshape(y.shape)
 
     def x_at(self, walls, y):
