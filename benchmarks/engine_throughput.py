@@ -67,7 +67,7 @@ def main():
     for number in (1, 2):
         stock, tool, path, settings = load_model(MODEL.replace("model_test_1", f"model_test_{number}"))
         p = settings.phi.size
-        rows = [(f"model test {number}, 53 CL x {p} phi", path, args.repeats, 1 << 14)]
+        rows = [(f"model test {number}, 53 CL x {p} phi", path, args.repeats, 1 << 15)]
         if number == 1:
             large = densified(path, -(-args.large // p))
             rows += [(f"{len(large)} CL x {p} phi, chunks of 2^{k} instants", large, 3, 1 << k) for k in (13, 14, 15, 17)]

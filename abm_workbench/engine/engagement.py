@@ -130,7 +130,7 @@ def edge_lines(toolpath, tool, phi_deg):
     return toolpath.cl[:, None, :] + tool.radius * radial, rot[:, :, 2]
 
 
-def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettings, *, chunk_instants=1 << 14,
+def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettings, *, chunk_instants=1 << 15,
            progress=None):
     """Cut geometry of every CL point × every rotation angle of `settings.phi`.
 
