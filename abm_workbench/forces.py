@@ -37,6 +37,7 @@ import numpy as np
 
 from .engine import engage, flute_engagement
 from .engine.frames import rotation_matrix
+from .engine.model import finite_number
 
 #: Default immersion (deg): a flute cuts over the leading half, full slotting.
 FULL_SLOT = (0.0, 180.0)
@@ -62,14 +63,7 @@ class Coefficients:
 
     def __post_init__(self):
         for name in COEFFICIENT_NAMES:
-            value = getattr(self, name)
-            try:
-                number = float(value)
-            except (TypeError, ValueError):
-                raise ValueError(f"{name} must be a number, got {value!r}") from None
-            if isinstance(value, bool) or not np.isfinite(number):
-                raise ValueError(f"{name} must be a finite number, got {value!r}")
-            object.__setattr__(self, name, number)
+            object.__setattr__(self, name, finite_number(name, getattr(self, name)))
         if self.ktc <= 0.0:
             raise ValueError(f"ktc must be positive, got {self.ktc:g}")
 

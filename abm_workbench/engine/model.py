@@ -16,7 +16,7 @@ from .tolerances import WALL_CHECK_SAMPLES
 from .walls import SplineTable, SplineWall, Wall
 
 
-def _number(name, value, *, positive=False):
+def finite_number(name, value, *, positive=False):
     """A finite real number as float; ValueError naming `name` otherwise."""
     try:
         number = float(value)
@@ -57,13 +57,13 @@ class Tool:
     helix: float = 0.0
 
     def __post_init__(self):
-        object.__setattr__(self, "diameter", _number("diameter", self.diameter, positive=True))
-        object.__setattr__(self, "flute_length", _number("flute_length", self.flute_length, positive=True))
-        flutes = _number("flutes", self.flutes, positive=True)
+        object.__setattr__(self, "diameter", finite_number("diameter", self.diameter, positive=True))
+        object.__setattr__(self, "flute_length", finite_number("flute_length", self.flute_length, positive=True))
+        flutes = finite_number("flutes", self.flutes, positive=True)
         if flutes != int(flutes):
             raise ValueError(f"flutes must be a whole number, got {self.flutes!r}")
         object.__setattr__(self, "flutes", int(flutes))
-        helix = _number("helix", self.helix)
+        helix = finite_number("helix", self.helix)
         if not -90.0 < helix < 90.0:
             raise ValueError(f"helix must be within (-90, 90) degrees, got {helix}")
         object.__setattr__(self, "helix", helix)
@@ -104,7 +104,7 @@ class Staircase:
 
     def __post_init__(self):
         for name in ("x_min", "x_max", "y_min", "y_max", "base_z"):
-            object.__setattr__(self, name, _number(name, getattr(self, name)))
+            object.__setattr__(self, name, finite_number(name, getattr(self, name)))
         if self.x_min >= self.x_max:
             raise ValueError(f"x_min ({self.x_min}) must be below x_max ({self.x_max})")
         if self.y_min >= self.y_max:
@@ -250,20 +250,20 @@ class CutSettings:
     spindle_rpm: Optional[float] = None
 
     def __post_init__(self):
-        object.__setattr__(self, "feed_per_tooth", _number("feed_per_tooth", self.feed_per_tooth, positive=True))
-        inclination = _number("inclination", self.inclination)
+        object.__setattr__(self, "feed_per_tooth", finite_number("feed_per_tooth", self.feed_per_tooth, positive=True))
+        inclination = finite_number("inclination", self.inclination)
         if not -90.0 < inclination < 90.0:
             raise ValueError(f"inclination must be within (-90, 90) degrees, got {inclination}")
         object.__setattr__(self, "inclination", inclination)
-        object.__setattr__(self, "phi_start", _number("phi_start", self.phi_start))
-        object.__setattr__(self, "phi_end", _number("phi_end", self.phi_end))
-        object.__setattr__(self, "phi_step", _number("phi_step", self.phi_step, positive=True))
+        object.__setattr__(self, "phi_start", finite_number("phi_start", self.phi_start))
+        object.__setattr__(self, "phi_end", finite_number("phi_end", self.phi_end))
+        object.__setattr__(self, "phi_step", finite_number("phi_step", self.phi_step, positive=True))
         if self.phi_end < self.phi_start:
             raise ValueError(f"phi range {self.phi_start}:{self.phi_end} must not be decreasing")
         if (self.phi_end - self.phi_start) / self.phi_step > 1e6:
             raise ValueError("phi range / phi step gives more than 10^6 angles")
         if self.spindle_rpm is not None:
-            object.__setattr__(self, "spindle_rpm", _number("spindle_rpm", self.spindle_rpm, positive=True))
+            object.__setattr__(self, "spindle_rpm", finite_number("spindle_rpm", self.spindle_rpm, positive=True))
 
     @property
     def phi(self):
