@@ -35,8 +35,8 @@ class WallBands:
         """(low, high, slope), each (P,): x range and max |dx/dy| of wall walls[i] over y between
         y_a[i] and y_b[i]."""
         scale = BINS / (self.y_max - self.y_min)
-        first = np.clip(np.floor((np.minimum(y_a, y_b) - self.y_min) * scale), 0, BINS - 1).astype(np.intp)
-        last = np.clip(np.floor((np.maximum(y_a, y_b) - self.y_min) * scale), 0, BINS - 1).astype(np.intp)
+        first, last = (np.minimum(np.maximum(np.floor((y - self.y_min) * scale), 0.0), BINS - 1.0).astype(np.intp)
+                       for y in (np.minimum(y_a, y_b), np.maximum(y_a, y_b)))
         level = _FLOOR_LOG2[last - first + 1]
         row = (level * self.n_walls + walls) * BINS
         at_first, at_second = row + first, row + last - (1 << level) + 1

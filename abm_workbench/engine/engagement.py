@@ -13,12 +13,13 @@ Lengths are in mm, φ in degrees at the interface.
 """
 
 from dataclasses import dataclass
+from functools import reduce
 
 import numpy as np
 
 from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
-from .polynomials import compose_linear, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
+from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
 from .rows import row_any, row_count, row_sum
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
 from .walls import Wall
@@ -274,11 +275,11 @@ def _uep_surface(stock, column, hi_surface, hi_wall, blocks):
 
 
 def _quintic_table(stock, walls):
-    """Coefficients (P, 6), y_mid (P,) and y_half (P,) of the quintic walls with indices `walls` (P,)."""
+    """Coefficients (6, P) as columns, y_mid (P,) and y_half (P,) of the quintic walls with indices `walls` (P,)."""
     table = [(w.coefficients, w.y_mid, w.y_half) if isinstance(w, Wall) else (np.zeros(6), 0.0, 1.0)
              for w in stock.walls]
-    coefficients = np.array([t[0] for t in table]).reshape(-1, 6)[walls]
-    return coefficients, np.array([t[1] for t in table])[walls], np.array([t[2] for t in table])[walls]
+    columns = np.array([t[0] for t in table]).reshape(-1, 6).T
+    return columns[:, walls], np.array([t[1] for t in table])[walls], np.array([t[2] for t in table])[walls]
 
 
 def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
@@ -295,26 +296,26 @@ def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
     coefficients, y_mid, y_half = _quintic_table(stock, walls)
     lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
     span = hi - lo
-    k = compose_linear(coefficients, (y0 + dy * lo - y_mid) / y_half, dy * span / y_half)
-    k[:, 0] -= x0 + dx * lo
-    k[:, 1] -= dx * span
+    k = compose_columns(coefficients, (y0 + dy * lo - y_mid) / y_half, dy * span / y_half)
+    k[0] -= x0 + dx * lo
+    k[1] -= dx * span
     monotone = np.abs(dy) * steepness < np.abs(dx)
     unproved = np.flatnonzero(~monotone)
-    monotone[unproved] = proved_monotone_unit(k[unproved])
+    monotone[unproved] = proved_monotone_unit(k[:, unproved].T)
     u = np.full((rows.size, 5), np.nan)
-    u[monotone, 0] = monotone_root_unit(k[monotone])
+    u[monotone, 0] = monotone_root_unit(k[:, monotone])
     if not monotone.all():
-        u[~monotone] = real_roots_unit(k[~monotone])
-    return lo[:, None] + u * span[:, None], monotone, k[:, 0] <= 0.0, row_sum(k) <= 0.0
+        u[~monotone] = real_roots_unit(k[:, ~monotone].T)
+    return lo[:, None] + u * span[:, None], monotone, k[0] <= 0.0, row_sum(k.T) <= 0.0
 
 
 def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     """Engagement of N edge lines S(l) = (x0, y0, z0) + l·(dx, dy, dz), 0 ≤ l ≤ length.
 
     Returns a dict of (N,) arrays: lep_l, uep_l, length, pieces, uep_surface, uep_section,
-    uep_wall, case. Lines that can reach no wall stay in one section, and lines that can reach
-    one wall, crossed at most once, pass from one section to the next: both are solved in
-    closed form. The others go through the breakpoints.
+    uep_wall, case. Lines that can reach no wall stay in one section, and lines whose
+    candidate walls are each crossed at most once pass from section to section at the
+    crossings: both are solved in closed form. The others go through the breakpoints.
     """
     n = x0.size
     lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
@@ -327,33 +328,32 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     crossings = _wall_crossings(stock, pair_rows[quintic], pair_walls[quintic], steepness[quintic],
                                 lo, hi, x0, y0, dx, dy)
     reach = np.bincount(pair_rows, minlength=n)
-    # Lines with one candidate wall, crossed at most once: the root (NaN without one) and the
-    # line's side of the wall at lo and at hi, per line.
-    one = np.zeros(n, dtype=bool)
-    root, left_at_lo, left_at_hi = np.full(n, np.nan), np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
-    alone = reach[pair_rows] == 1
-    for pairs, (found, single, at_lo, at_hi) in (
-        (np.flatnonzero(quintic), crossings),
-        (np.flatnonzero(~quintic & alone), _exact_crossings(stock, pair_rows[~quintic & alone],
-                                                            pair_walls[~quintic & alone], lo, hi, x0, y0, dx, dy)),
-    ):
-        take = alone[pairs] & single
-        rows = pair_rows[pairs[take]]
-        one[rows] = True
-        root[rows], left_at_lo[rows], left_at_hi[rows] = found[take, 0], at_lo[take], at_hi[take]
+    # Per pair: the first crossing (NaN without one), whether it is the only one, and the
+    # line's side of the wall at lo and at hi.
+    root = np.full(pair_rows.size, np.nan)
+    single, at_lo, at_hi = (np.zeros(pair_rows.size, dtype=bool) for _ in range(3))
+    solved = [(np.flatnonzero(quintic), crossings)]
+    exact = np.flatnonzero(~quintic)
+    if exact.size:
+        solved.append((exact, _exact_crossings(stock, pair_rows[exact], pair_walls[exact], lo, hi, x0, y0, dx, dy)))
+    for pairs, (found, once, lo_side, hi_side) in solved:
+        root[pairs], single[pairs], at_lo[pairs], at_hi[pairs] = found[:, 0], once, lo_side, hi_side
+    # Lines whose candidate walls are each crossed at most once go in closed form.
+    simple = (reach > 0) & (np.bincount(pair_rows[~single], minlength=n) == 0)
+    rank = np.arange(pair_rows.size) - np.searchsorted(pair_rows, pair_rows)  # pairs come grouped by row
     lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
     result = {}
-    for subset, solve in ((reach == 0, _single_section), (one, _one_crossing), ((reach > 0) & ~one, _broken_lines)):
+    for subset, solve in ((reach == 0, _single_section), (simple, _single_crossings),
+                          ((reach > 0) & ~simple, _broken_lines)):
         rows = np.flatnonzero(subset)
         if rows.size == 0:
             continue
-        if solve is _one_crossing:
-            wall = np.zeros(n, dtype=np.intp)
-            wall[pair_rows] = pair_walls + 1
-            part = solve(stock, *(v[rows] for v in lines + (wall, root, left_at_lo, left_at_hi)))
+        renumber = np.cumsum(subset) - 1
+        pairs = subset[pair_rows]
+        if solve is _single_crossings:
+            part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], rank[pairs], pair_walls[pairs] + 1,
+                         root[pairs], at_lo[pairs], at_hi[pairs])
         else:
-            renumber = np.cumsum(subset) - 1
-            pairs = subset[pair_rows]
             on = pairs[quintic]
             part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], pair_walls[pairs],
                          quintic[pairs], tuple(c[on] for c in crossings))
@@ -398,42 +398,79 @@ def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, 
     }
 
 
-def _one_crossing(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, wall, root, left_at_lo,
-                  left_at_hi):
-    """Engagement of lines that can reach one wall (index wall, 1-based), which they cross at
-    most once, at root (NaN: not in [lo, hi]); left_at_lo, left_at_hi: whether the line is at
-    or beyond the wall at lo and at hi. Piece A lies in the section before the crossing, piece
-    B after it, each inside from its start up to its section's top (same dict as
-    _solve_lines). Without a crossing, piece A is the whole segment."""
+def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, pair_rows, pair_rank,
+                      pair_walls, roots, at_lo, at_hi):
+    """Engagement of lines whose candidate walls are each crossed at most once (same dict as
+    _solve_lines), in closed form.
+
+    Pairs (P,): line pair_rows[i], its pair_rank[i]-th candidate wall pair_walls[i] (1-based
+    wall index j), crossed at roots[i] (NaN: not in [lo, hi]); at_lo, at_hi: whether the line is
+    at or beyond that wall at lo and at hi. The crossings, sorted, cut [lo, hi] into pieces; in
+    each piece the line is beyond the walls it has crossed (side at hi) and on its side at lo
+    of the others, which gives the piece's section. Each piece is inside from its start up to
+    its section's top or its end, whichever comes first.
+    """
+    n, k = x0.size, int(pair_rank.max()) + 1
+    if k == 1:  # one pair per line, in line order
+        root, side_lo, side_hi, wall = (v[:, None] for v in (roots, at_lo, at_hi, pair_walls))
+        rank = np.zeros((n, 1), dtype=np.intp)  # of each wall's crossing along the line
+        cuts, cut_walls = root, wall  # the crossings in order along the line, and their walls
+    else:
+        root = np.full((n, k), np.nan)
+        side_lo, side_hi = np.zeros((n, k), dtype=bool), np.zeros((n, k), dtype=bool)
+        wall = np.zeros((n, k), dtype=np.intp)
+        for dense, values in ((root, roots), (side_lo, at_lo), (side_hi, at_hi), (wall, pair_walls)):
+            dense[pair_rows, pair_rank] = values
+        order = np.argsort(root, axis=1)  # NaN last
+        rank = np.empty_like(order)
+        np.put_along_axis(rank, order, np.arange(k)[None, :], axis=1)
+        cuts, cut_walls = np.take_along_axis(root, order, axis=1), np.take_along_axis(wall, order, axis=1)
     crossed = ~np.isnan(root)
-    cut = np.where(crossed, root, hi)
-    section_a = left_of + np.where(crossed, left_at_lo, left_at_hi)
-    section_b = left_of + left_at_hi
-    with np.errstate(divide="ignore", invalid="ignore"):
-        top_a, top_b = ((stock.z_top[np.clip(s, 0, stock.n_sections - 1)] - z0) / dz for s in (section_a, section_b))
-    end_a = np.minimum(cut, top_a)
-    end_b = np.minimum(hi, top_b)
-    in_a = end_a - lo > LENGTH_EPS
-    in_b = crossed & (end_b - cut > LENGTH_EPS)
-    engaged = in_a | in_b
-    a_to_wall = top_a >= cut  # piece A runs up to the crossing (or to hi without one)
-    pieces = in_a.astype(np.intp) + in_b - (in_a & in_b & a_to_wall)
     straight = np.array([True] + [w.is_straight for w in stock.walls] + [True])
-    wall_surface = np.where(straight[wall], _STRAIGHT, _CURVED)
-    b_surface, b_wall = np.where(top_b < hi, _TOP, hi_surface), np.where(top_b < hi, -1, hi_wall)
-    a_surface = np.where(a_to_wall, np.where(crossed, wall_surface, hi_surface), _TOP)
-    a_wall = np.where(a_to_wall, np.where(crossed, wall, hi_wall), -1)
-    surface = np.where(in_b, b_surface, np.where(in_a, a_surface, _NONE))
-    wall_index = np.where(in_b, b_wall, np.where(in_a, a_wall, -1))
-    uep_section = np.where(in_b, section_b, np.where(in_a, section_a, -1))
-    inside_section = np.stack([np.where(in_a, section_a, -1), np.where(in_b, section_b, -1)], axis=1)
-    first_real = (cut - lo > LENGTH_EPS) | ~crossed
-    bottom = np.where(lo == 0.0, np.where(first_real, section_a, section_b), -1)
+    pieces = np.zeros(n, dtype=np.intp)
+    carry = np.zeros(n, dtype=bool)  # an inside run reaches the current piece's start
+    lep, uep, length = np.full(n, np.nan), np.full(n, np.nan), np.zeros(n)
+    surface, wall_index, uep_section = np.full(n, _NONE), np.full(n, -1), np.full(n, -1)
+    bottom, bottom_found = np.zeros(n, dtype=np.intp), np.zeros(n, dtype=bool)
+    inside_sections = []
+    start = lo
+    for j in range(k + 1):
+        if j < k:
+            at_wall = ~np.isnan(cuts[:, j])
+            end = np.where(at_wall, cuts[:, j], hi)
+        else:
+            end = hi
+        sides = np.where(crossed & (rank >= j), side_lo, side_hi)
+        section = reduce(np.add, (sides[:, c] for c in range(k)), left_of)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            top = (stock.z_top[np.clip(section, 0, stock.n_sections - 1)] - z0) / dz
+        inside_end = np.minimum(end, top)
+        inside = inside_end - start > LENGTH_EPS
+        to_end = top >= end
+        real = end - start > LENGTH_EPS
+        pieces += inside & ~carry
+        carry = np.where(real, inside & to_end, carry)
+        lep = np.where(inside & np.isnan(lep), start, lep)
+        uep = np.where(inside, inside_end, uep)
+        length = length + np.where(inside, inside_end - start, 0.0)
+        if j < k:
+            end_surface = np.where(at_wall, np.where(straight[cut_walls[:, j]], _STRAIGHT, _CURVED), hi_surface)
+            end_wall = np.where(at_wall, cut_walls[:, j], hi_wall)
+        else:
+            end_surface, end_wall = hi_surface, hi_wall
+        surface = np.where(inside, np.where(to_end, end_surface, _TOP), surface)
+        wall_index = np.where(inside, np.where(to_end, end_wall, -1), wall_index)
+        uep_section = np.where(inside, section, uep_section)
+        inside_sections.append(np.where(inside, section, -1))
+        bottom = np.where(bottom_found, bottom, section)
+        bottom_found |= real
+        start = end
+    engaged = ~np.isnan(uep)
+    bottom = np.where(lo == 0.0, bottom, -1)
+    inside_section = np.stack(inside_sections, axis=1)
     return {
-        "lep_l": np.where(in_a, lo, np.where(in_b, cut, np.nan)),
-        "uep_l": np.where(in_b, end_b, np.where(in_a, end_a, np.nan)),
-        "length": np.where(in_a, end_a - lo, 0.0) + np.where(in_b, end_b - cut, 0.0),
-        "pieces": pieces, "uep_surface": surface, "uep_section": uep_section, "uep_wall": wall_index,
+        "lep_l": lep, "uep_l": uep, "length": length, "pieces": pieces, "uep_surface": surface,
+        "uep_section": uep_section, "uep_wall": wall_index,
         "case": _table1_case(stock, x0, y0, dx, bottom, inside_section, engaged, pieces, wall_index),
     }
 
@@ -544,7 +581,7 @@ def _walls_left_of(stock, rows, walls, rank, crossings, x0, y0, dx, dy, along):
         r, lo = rows[other], l[other]
         t = (y0[r, None] + dy[r, None] * lo - y_mid[:, None]) / y_half[:, None]
         with np.errstate(invalid="ignore"):
-            left[other] = x0[r, None] + dx[r, None] * lo >= horner(coefficients[:, None, :], t)
+            left[other] = x0[r, None] + dx[r, None] * lo >= horner(coefficients.T[:, None, :], t)
     count = np.zeros(along.shape, dtype=np.intp)
     starts = np.flatnonzero(rank == 0)  # pairs come grouped by row
     count[rows[starts]] = np.add.reduceat(left.astype(np.intp), starts, axis=0)

@@ -35,21 +35,31 @@ def compose_linear(coefficients, t0, q):
     """Coefficients in u of P(t0 + q·u), for many polynomials at once.
 
     coefficients: (..., d+1) ascending; t0, q: (...) broadcast with them. Returns (..., d+1)
-    ascending in u: K_k = q^k · Σ_{i=k..d} C(i, k) c_i t0^(i−k), the Taylor coefficients of
-    P at t0 (by repeated synthetic division: d(d+1)/2 multiply-adds) scaled by q^k.
+    ascending in u (compose_columns on the coefficients laid out as columns).
     """
-    c = np.asarray(coefficients, dtype=float)
+    c = np.moveaxis(np.asarray(coefficients, dtype=float), -1, 0)
+    return np.moveaxis(compose_columns(c, t0, q), 0, -1)
+
+
+def compose_columns(columns, t0, q):
+    """compose_linear with the coefficients as columns: (d+1, ...) ascending -> (d+1, ...).
+
+    K_k = q^k · Σ_{i=k..d} C(i, k) c_i t0^(i−k), the Taylor coefficients of P at t0 (by
+    repeated synthetic division: d(d+1)/2 multiply-adds) scaled by q^k. Each K_k is one
+    contiguous array, which is what the root finders take.
+    """
+    c = np.asarray(columns, dtype=float)
     t0, q = np.asarray(t0, dtype=float), np.asarray(q, dtype=float)
-    d = c.shape[-1] - 1
-    shape = np.broadcast_shapes(c.shape[:-1], t0.shape, q.shape)
-    taylor = [np.broadcast_to(c[..., k], shape).copy() for k in range(d + 1)]
+    d = c.shape[0] - 1
+    shape = np.broadcast_shapes(c.shape[1:], t0.shape, q.shape)
+    taylor = [np.broadcast_to(c[k], shape).copy() for k in range(d + 1)]
     for i in range(d):
         for k in range(d - 1, i - 1, -1):
             taylor[k] += t0 * taylor[k + 1]
-    out = np.empty(shape + (d + 1,))
+    out = np.empty((d + 1,) + shape)
     scale = np.ones(shape)
     for k in range(d + 1):
-        out[..., k] = taylor[k] * scale
+        np.multiply(taylor[k], scale, out=out[k, ...])
         if k < d:
             scale = scale * q
     return out
@@ -78,10 +88,11 @@ def value_and_slope(columns, t):
     return value, slope
 
 
-def bracketed_root(coefficients, lo, hi, f_lo, f_hi):
+def bracketed_root(columns, lo, hi, f_lo, f_hi):
     """The root of p in [lo, hi] where p(lo), p(hi) differ in sign (or one is zero).
 
-    coefficients: (m, d+1); lo, hi, f_lo, f_hi: (m,). From the secant point, FAST_NEWTON plain
+    columns: (d+1, m) coefficients, ascending, by row (as value_and_slope takes them); lo,
+    hi, f_lo, f_hi: (m,). From the secant point, FAST_NEWTON plain
     Newton steps; a row whose result lies in its bracket with a last Newton step below
     ROOT_TOL is done (p has one root in the bracket, and Newton has converged to a point of
     it). The other rows restart from the secant point with the safeguarded Newton: a step
@@ -93,7 +104,6 @@ def bracketed_root(coefficients, lo, hi, f_lo, f_hi):
         start = np.where(f_hi != f_lo, lo - f_lo * (hi - lo) / (f_hi - f_lo), 0.5 * (lo + hi))
     start = np.where((start > lo) & (start < hi), start, 0.5 * (lo + hi))
     start = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, start))
-    columns = np.ascontiguousarray(coefficients.T)
     x = start
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for _ in range(FAST_NEWTON):
@@ -106,12 +116,13 @@ def bracketed_root(coefficients, lo, hi, f_lo, f_hi):
     ok = done | ((x >= lo) & (x <= hi) & (np.abs(step) <= ROOT_TOL))
     again = np.flatnonzero(~ok)
     if again.size:
-        x[again] = _safeguarded_newton(coefficients[again], lo[again], hi[again], f_lo[again], start[again])
+        x[again] = _safeguarded_newton(columns[:, again], lo[again], hi[again], f_lo[again], start[again])
     return x
 
 
-def _safeguarded_newton(coefficients, lo, hi, f_lo, x):
-    """bracketed_root's fallback from start points x (m,) inside the brackets, p(lo) = f_lo ≠ 0.
+def _safeguarded_newton(columns, lo, hi, f_lo, x):
+    """bracketed_root's fallback from start points x (m,) inside the brackets, p(lo) = f_lo ≠ 0;
+    columns (d+1, m) as bracketed_root takes them.
 
     All rows step together (a finished row stays put), which at these sizes is cheaper than
     gathering the unfinished ones.
@@ -119,7 +130,6 @@ def _safeguarded_newton(coefficients, lo, hi, f_lo, x):
     lo, hi = lo.copy(), hi.copy()
     done = np.zeros(x.shape, dtype=bool)
     negative_lo = f_lo < 0.0
-    columns = np.ascontiguousarray(coefficients.T)
     for _ in range(ROOT_MAX_ITER):
         if done.all():
             break
@@ -161,7 +171,7 @@ def real_roots_unit(coefficients):
     out = np.full((m, d), np.nan)
     r, k = np.nonzero(found)
     if r.size:
-        out[r, k] = bracketed_root(c[r], lo[r, k], hi[r, k], f_lo[r, k], f_hi[r, k])
+        out[r, k] = bracketed_root(np.ascontiguousarray(c[r].T), lo[r, k], hi[r, k], f_lo[r, k], f_hi[r, k])
     return np.sort(out, axis=1)
 
 
@@ -207,14 +217,19 @@ def _power_to_bernstein(degree):
                      for j in range(degree + 1)])
 
 
-def monotone_root_unit(coefficients):
-    """The root in [0, 1] of polynomials known to be monotone there; (m, d+1) -> (m,), NaN if none."""
-    c = np.asarray(coefficients, dtype=float)
-    m = c.shape[0]
-    f_lo, f_hi = c[:, 0], row_sum(c)
+def monotone_root_unit(columns):
+    """The root in [0, 1] of polynomials known to be monotone there, NaN if none.
+
+    columns: (d+1, m) coefficients, ascending, by row (as bracketed_root takes them) -> (m,).
+    """
+    c = np.asarray(columns, dtype=float)
+    m = c.shape[1]
+    f_lo, f_hi = c[0], row_sum(c.T)
     found = (np.sign(f_lo) * np.sign(f_hi) < 0.0) | (f_lo == 0.0) | (f_hi == 0.0)
     out = np.full(m, np.nan)
     idx = np.flatnonzero(found)
-    if idx.size:
-        out[idx] = bracketed_root(c[idx], np.zeros(idx.size), np.ones(idx.size), f_lo[idx], f_hi[idx])
+    if idx.size == m:
+        out = bracketed_root(c, np.zeros(m), np.ones(m), f_lo, f_hi)
+    elif idx.size:
+        out[idx] = bracketed_root(c[:, idx], np.zeros(idx.size), np.ones(idx.size), f_lo[idx], f_hi[idx])
     return out

@@ -258,7 +258,8 @@ class SplineTable:
         w, yk = flat_w[known], np.clip(flat_y[known], self.y_first[flat_w[known]], self.y_last[flat_w[known]])
         span[known] += np.clip(self._local_span(w, yk, "right"), 0, self.n_spans[w] - 1)
         c = self.spans_y[span[known]] - yk[:, None] * self.spans_w[span[known]]
-        u[known] = bracketed_root(c, np.zeros(known.size), np.ones(known.size), c[:, 0], row_sum(c))
+        u[known] = bracketed_root(np.ascontiguousarray(c.T), np.zeros(known.size), np.ones(known.size), c[:, 0],
+                                  row_sum(c))
         return span.reshape(y.shape), u.reshape(y.shape)
 
     def x_at(self, walls, y):
@@ -301,7 +302,7 @@ class SplineTable:
                 - (self.spans_y[span] - y0[line, None] * self.spans_w[span]) * dx[line, None])
         u = np.full((line.size, poly.shape[1] - 1), np.nan)
         single = proved_monotone_unit(poly)
-        u[single, 0] = monotone_root_unit(poly[single])
+        u[single, 0] = monotone_root_unit(np.ascontiguousarray(poly[single].T))
         u[~single] = real_roots_unit(poly[~single])
         w = horner(self.spans_w[span][:, None, :], u)
         px = horner(self.spans_x[span][:, None, :], u) / w

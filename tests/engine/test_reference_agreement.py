@@ -92,6 +92,15 @@ def test_random_many_curved_sections(job):
     assert_agrees(job)
 
 
+@settings(max_examples=60)
+@given(jobs(stocks=staircases(min_sections=5, curved=True),
+            theta_b=st.floats(35.0, 60.0) | st.floats(-60.0, -35.0)))
+def test_random_steep_tilt_across_several_walls(job):
+    """Five or six sections and a steep θ_B: edges that cross two or more walls, each once,
+    which the engine solves in closed form (engagement._single_crossings)."""
+    assert_agrees(job)
+
+
 # ---------------------------------------------------------------- hand-made cases
 
 def _wall(x_of_y, y_min=-30.0, y_max=30.0):
