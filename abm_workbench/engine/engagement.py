@@ -411,21 +411,29 @@ def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall
     its section's top or its end, whichever comes first.
     """
     n, k = x0.size, int(pair_rank.max()) + 1
+    # Per line, its walls as columns: crossing, side at lo, side at hi, wall index (a line
+    # with fewer walls has no crossing and stays on the left of the others).
+    pairs = (roots, at_lo, at_hi, pair_walls)
     if k == 1:  # one pair per line, in line order
-        root, side_lo, side_hi, wall = (v[:, None] for v in (roots, at_lo, at_hi, pair_walls))
-        rank = np.zeros((n, 1), dtype=np.intp)  # of each wall's crossing along the line
-        cuts, cut_walls = root, wall  # the crossings in order along the line, and their walls
+        columns = [[values] for values in pairs]
     else:
-        root = np.full((n, k), np.nan)
-        side_lo, side_hi = np.zeros((n, k), dtype=bool), np.zeros((n, k), dtype=bool)
-        wall = np.zeros((n, k), dtype=np.intp)
-        for dense, values in ((root, roots), (side_lo, at_lo), (side_hi, at_hi), (wall, pair_walls)):
-            dense[pair_rows, pair_rank] = values
-        order = np.argsort(root, axis=1)  # NaN last
-        rank = np.empty_like(order)
-        np.put_along_axis(rank, order, np.arange(k)[None, :], axis=1)
-        cuts, cut_walls = np.take_along_axis(root, order, axis=1), np.take_along_axis(wall, order, axis=1)
-    crossed = ~np.isnan(root)
+        columns = [[np.full(n, fill, dtype=values.dtype) for _ in range(k)] for fill, values in zip((np.nan, 0, 0, 0), pairs)]
+        for c in range(k):
+            at = np.flatnonzero(pair_rank == c)
+            for column, values in zip(columns, pairs):
+                column[c][pair_rows[at]] = values[at]
+    # Sorted along the line (no crossing last) by a bubble network of column swaps.
+    key = [np.where(np.isnan(r), np.inf, r) for r in columns[0]]
+    for last in range(k - 1, 0, -1):
+        for c in range(last):
+            swap = key[c + 1] < key[c]
+            for values in [key] + columns:
+                values[c], values[c + 1] = np.where(swap, values[c + 1], values[c]), np.where(swap, values[c], values[c + 1])
+    cuts, side_lo, side_hi, cut_walls = columns
+    crossed = [~np.isnan(cut) for cut in cuts]
+    # A wall's side in a piece: at hi once crossed, at lo before (and without a crossing, at hi).
+    before = [np.where(crossed[c], side_lo[c], side_hi[c]) for c in range(k)]
+    section = reduce(np.add, before, left_of)
     straight = np.array([True] + [w.is_straight for w in stock.walls] + [True])
     pieces = np.zeros(n, dtype=np.intp)
     carry = np.zeros(n, dtype=bool)  # an inside run reaches the current piece's start
@@ -436,12 +444,11 @@ def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall
     start = lo
     for j in range(k + 1):
         if j < k:
-            at_wall = ~np.isnan(cuts[:, j])
-            end = np.where(at_wall, cuts[:, j], hi)
+            end = np.where(crossed[j], cuts[j], hi)
         else:
             end = hi
-        sides = np.where(crossed & (rank >= j), side_lo, side_hi)
-        section = reduce(np.add, (sides[:, c] for c in range(k)), left_of)
+        if j > 0:
+            section = section - before[j - 1] + side_hi[j - 1]
         with np.errstate(divide="ignore", invalid="ignore"):
             top = (stock.z_top[np.clip(section, 0, stock.n_sections - 1)] - z0) / dz
         inside_end = np.minimum(end, top)
@@ -454,8 +461,8 @@ def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall
         uep = np.where(inside, inside_end, uep)
         length = length + np.where(inside, inside_end - start, 0.0)
         if j < k:
-            end_surface = np.where(at_wall, np.where(straight[cut_walls[:, j]], _STRAIGHT, _CURVED), hi_surface)
-            end_wall = np.where(at_wall, cut_walls[:, j], hi_wall)
+            end_surface = np.where(crossed[j], np.where(straight[cut_walls[j]], _STRAIGHT, _CURVED), hi_surface)
+            end_wall = np.where(crossed[j], cut_walls[j], hi_wall)
         else:
             end_surface, end_wall = hi_surface, hi_wall
         surface = np.where(inside, np.where(to_end, end_surface, _TOP), surface)
@@ -625,8 +632,8 @@ def _table1_case(stock, x0, y0, dx, bottom, inside_section, engaged, pieces, uep
     )
     case = np.full(engaged.shape, c["none"], dtype=np.int8)
     for holds, name in reversed(rules):
-        case = np.where(holds, name, case)
-    return case.astype(np.int8)
+        np.copyto(case, name, where=holds, casting="unsafe")  # case indices fit in int8
+    return case
 
 
 def _segments(engaged, surface, section, wall):
