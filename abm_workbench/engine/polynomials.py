@@ -110,20 +110,26 @@ def bracketed_root(columns, lo, hi, f_lo, f_hi):
         start = np.where(f_hi != f_lo, lo - f_lo * (hi - lo) / (f_hi - f_lo), 0.5 * (lo + hi))
     start = np.where((start > lo) & (start < hi), start, 0.5 * (lo + hi))
     start = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, start))
-    x = start
+    x = start.copy()
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for _ in range(FAST_NEWTON):
-            f, slope = value_and_slope(columns, x)
-            x = x - np.where(f == 0.0, 0.0, f / slope)
-        f, slope = value_and_slope(columns, x)
-        step = np.where(f == 0.0, 0.0, f / slope)
+            x -= _newton_step(columns, x)
+        step = _newton_step(columns, x)
     done = (f_lo == 0.0) | (f_hi == 0.0)
-    x = np.where(done, start, np.clip(x - step, lo, hi))
+    x = np.where(done, start, np.minimum(np.maximum(x - step, lo), hi))
     ok = done | ((x >= lo) & (x <= hi) & (np.abs(step) <= ROOT_TOL))
     again = np.flatnonzero(~ok)
     if again.size:
         x[again] = _safeguarded_newton(columns[:, again], lo[again], hi[again], f_lo[again], start[again])
     return x
+
+
+def _newton_step(columns, x):
+    """p(x)/p′(x), 0 where p(x) = 0, for columns (d+1, m) and x (m,) (call under np.errstate)."""
+    f, step = value_and_slope(columns, x)
+    np.divide(f, step, out=step)
+    np.copyto(step, 0.0, where=f == 0.0)
+    return step
 
 
 def _safeguarded_newton(columns, lo, hi, f_lo, x):
