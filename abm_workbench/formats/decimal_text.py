@@ -71,8 +71,8 @@ def number_field(values):
     """Field (w, n) of float `values` (n,): each rounded to DECIMALS places, in the shortest text
     that reads back as the rounded value (Python's repr), '0.0' for −0.0, NaN empty.
 
-    Byte for byte ``repr(float(np.round(v, DECIMALS) + 0.0))``; w is 3, plus the words of the
-    longest repr when an element needs it (see the module docstring).
+    Byte for byte ``repr(float(np.round(v, DECIMALS) + 0.0))``; w is 3, or more when an element
+    needs a repr of 24 characters (see the module docstring).
     """
     values = _vector(values, float, "values")
     with np.errstate(over="ignore", invalid="ignore"):
@@ -89,10 +89,10 @@ def number_field(values):
     if slow.size == 0:
         return words
     text = text_field([repr(value) for value in (rounded[slow] + 0.0).tolist()])  # + 0.0: −0.0 as 0.0
-    field = np.zeros((words.shape[0] + text.shape[0], values.size), dtype=WORD)
-    field[:words.shape[0]] = words
-    field[words.shape[0]:, slow] = text
-    return field
+    if text.shape[0] > words.shape[0]:
+        words = np.concatenate([words, np.zeros((text.shape[0] - words.shape[0], values.size), dtype=WORD)])
+    words[:text.shape[0], slow] = text
+    return words
 
 
 def _fixed_point(magnitude, negative):

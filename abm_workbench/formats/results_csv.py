@@ -41,8 +41,8 @@ FORCE_COLUMNS = ("fx", "fy", "fz", "torque", "power")
 FORCE_SUMMARY_COLUMNS = ("peak_force", "mean_force", "peak_torque")
 #: Summary columns added when the toolpath is given.
 TOOLPATH_COLUMNS = ("cl_x", "cl_y", "cl_z", "theta_a", "theta_b")
-#: Rows formatted at a time (formats.decimal_text): a text matrix of about 3 MB.
-BLOCK_ROWS = 2**13
+#: Rows formatted at a time (formats.decimal_text): a text matrix of about 6 MB.
+BLOCK_ROWS = 2**14
 #: A comma and a line end in the last byte of a word (decimal_text.WORD).
 _COMMA, _NEWLINE = np.uint64(ord(",") << 56), np.uint64(ord("\n") << 56)
 _TEXT_COLUMNS = {"uep_surface", "case", "segment"}

@@ -48,7 +48,7 @@ HALVES = st.integers(-10**7, 10**7).map(lambda k: (k + 0.5) * 1e-10)
 SHORT_DECIMALS = st.builds(lambda k, places: k / 10**places, st.integers(-10**6, 10**6), st.integers(0, 12))
 FLOATS = ANY_FLOAT | TINY | NEAR_1E5 | HUGE | ON_THE_GRID | HALVES | SHORT_DECIMALS | st.sampled_from(
     [0.0, -0.0, 5e-11, -5e-11, 1e-4, -1e-4, 9.99999e-5, 1e5, 99_999.99999999995, 1e15, 1e16, math.inf, -math.inf,
-     math.nan, 5e-324, 1e300, -1e300, 0.1, 1 / 3])
+     math.nan, 5e-324, 1e300, -1e300, -1.2345678901234567e200, 0.1, 1 / 3])
 
 
 @given(st.lists(FLOATS, min_size=1, max_size=60))
@@ -63,7 +63,10 @@ def test_number_text_over_every_magnitude():
     rng = np.random.default_rng(11)
     values = rng.standard_normal(30000) * 10.0 ** rng.integers(-16, 20, 30000)
     values[::89] = np.nan
-    assert texts(number_field(values)) == [number_text(value) for value in values.tolist()]
+    values[7] = -1.2345678901234567e200  # a repr of 24 characters: a fourth word
+    field = number_field(values)
+    assert field.shape == (4, values.size)
+    assert texts(field) == [number_text(value) for value in values.tolist()]
 
 
 @given(st.lists(st.integers(-2**63, 2**63 - 1), min_size=1, max_size=60))
