@@ -48,18 +48,19 @@ def _group_table():
     _STRIPPED: leading zeros NUL, 0 empty; _UNITS: leading zeros NUL, '0' for 0. Byte 7 is NUL
     everywhere, byte 0 outside _NEGATIVE_WHOLE (room for a sign).
     """
-    numbers = np.arange(_SIZE)[:, None]
-    position = np.arange(GROUP)
-    digits = (numbers // 10 ** (GROUP - 1 - position) % 10 + ord("0")).astype(np.uint8)
-    leading = digits * (numbers >= 10 ** (GROUP - 1 - position))
-    trailing = digits * (numbers % 10 ** (GROUP - position) != 0)
+    numbers = np.arange(_SIZE, dtype=np.int32)[:, None]  # int32 and uint8: small temporaries
+    places = 10 ** np.arange(GROUP - 1, -1, -1, dtype=np.int32)
+    digits = (numbers // places % 10).astype(np.uint8) + np.uint8(ord("0"))
+    leading = digits * (numbers >= places)
+    trailing = digits * (numbers % (10 * places) != 0)
     units, first = leading.copy(), trailing.copy()
     units[0, -1] = first[0, 0] = ord("0")
     table = np.zeros((7, _SIZE, 8), dtype=np.uint8)
     table[:2, :, 1:1 + GROUP] = units
     table[:2, :, 1 + GROUP] = _POINT
     table[1, :, 0] = _MINUS
-    table[2:, :, 2:2 + GROUP] = digits, first, trailing, leading, units
+    for section, text in enumerate((digits, first, trailing, leading, units), start=2):
+        table[section, :, 2:2 + GROUP] = text
     return table.reshape(-1, 8).view(WORD).reshape(-1)
 
 
