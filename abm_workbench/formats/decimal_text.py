@@ -12,14 +12,14 @@ row-major order (results_csv).
 - :func:`integer_field`: integers as ``str(int(v))``.
 - :func:`text_field`: strings as UTF-8.
 
-Why the fast path writes the same text as ``repr`` (docs/SCALING.md, "Number text"): with
-k = rint(v·10^d) and |k| < 10^15, the rounded value r = k / 10^d is the double nearest the
-decimal D = k·10^−d, which has at most 15 significant digits. Two different decimals of at most
-15 significant digits never round to the same double (DBL_DIG = 15), so D is the only one of
-them that reads back as r, and repr's shortest text has D's digits. repr writes them positionally
-for 10^−4 ≤ |r| < 10^16: D written with d decimals, trailing zeros stripped, one '0' kept after
-the point. Elements outside that range (|r| < 10^−4 but not 0, |k| ≥ 10^15, inf) and any whose
-k / 10^d is not numpy's rounded value are written by repr itself.
+Why the fast path writes the same text as ``repr`` (proof in docs/SCALING.md, "The CSV text"):
+with d = DECIMALS, k = rint(v·10^d) and |k| < 10^15, the rounded value r = k / 10^d is the
+double nearest the decimal D = k·10^−d, which has at most 15 significant digits. Two different
+decimals of at most 15 significant digits never round to the same double (DBL_DIG = 15), so D
+is the only one of them that reads back as r, and repr's shortest text has D's digits. repr
+writes them positionally for 10^−4 ≤ |r| < 10^16: D written with d decimals, trailing zeros
+stripped, one '0' kept after the point. Elements outside that range (|r| < 10^−4 but not 0,
+|k| ≥ 10^15, inf) and any whose k / 10^d is not numpy's rounded value are written by repr itself.
 """
 
 import numpy as np
@@ -65,6 +65,7 @@ def _group_table():
 
 
 _TABLE = _group_table()
+_TABLE.flags.writeable = False
 _WHOLE, _NEGATIVE_WHOLE, _FULL, _FIRST_DECIMALS, _TRIMMED, _STRIPPED, _UNITS = range(0, 7 * _SIZE, _SIZE)
 
 

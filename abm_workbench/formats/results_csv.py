@@ -96,8 +96,8 @@ def results_text(engagement, *, first_cl=0, forces=None):
         flat.update(fx=xyz[:, 0], fy=xyz[:, 1], fz=xyz[:, 2], torque=forces.torque.reshape(-1))
         if forces.power is not None:
             flat["power"] = forces.power.reshape(-1)
-    labels = {"uep_surface": text_field(SURFACES), "case": text_field(CASES),
-              "segment": text_field([segment_letter(s) for s in range(int(flat["segment"].max(initial=-1)) + 1)] + [""])}
+    letters = [segment_letter(s) for s in range(int(flat["segment"].max(initial=-1)) + 1)]
+    labels = {"uep_surface": text_field(SURFACES), "case": text_field(CASES), "segment": text_field(letters + [""])}
 
     def block(start):
         rows = slice(start, min(start + BLOCK_ROWS, m * p))

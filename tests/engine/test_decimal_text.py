@@ -177,7 +177,8 @@ CASES_OF_FILES = [(number, walls, with_forces) for number in (1, 2) for walls in
                   for with_forces in (False, True)]
 
 
-@pytest.fixture(scope="module", params=CASES_OF_FILES, ids=lambda c: f"model{c[0]}-{c[1]}-{'forces' if c[2] else 'plain'}")
+@pytest.fixture(scope="module", params=CASES_OF_FILES,
+                ids=lambda case: f"model{case[0]}-{case[1]}-{'forces' if case[2] else 'plain'}")
 def model_pass(request):
     number, walls, with_forces = request.param
     stock, tool, toolpath, settings = model_job(number)
