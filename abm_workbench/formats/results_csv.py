@@ -23,12 +23,11 @@ import os
 
 import numpy as np
 
-from ..engine import segment_letter
+from ..engine import CASES, SURFACES, segment_letter
 from ..errors import InputError
 from . import read_text, replacing
+from .decimal_text import DECIMALS, WORD, integer_field, number_field, text_field
 
-#: Decimal places kept (mm, deg, mm²): values read back within 5e-11 of what was computed.
-DECIMALS = 10
 RESULT_COLUMNS = (
     "cl", "phi_deg", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall",
     "case", "segment", "h", "area", "lep_x", "lep_y", "lep_z", "uep_x", "uep_y", "uep_z",
@@ -42,6 +41,10 @@ FORCE_COLUMNS = ("fx", "fy", "fz", "torque", "power")
 FORCE_SUMMARY_COLUMNS = ("peak_force", "mean_force", "peak_torque")
 #: Summary columns added when the toolpath is given.
 TOOLPATH_COLUMNS = ("cl_x", "cl_y", "cl_z", "theta_a", "theta_b")
+#: Rows formatted at a time (formats.decimal_text): a text matrix of about 6 MB.
+BLOCK_ROWS = 2**14
+#: A comma and a line end in the last byte of a word (decimal_text.WORD).
+_COMMA, _NEWLINE = np.uint64(ord(",") << 56), np.uint64(ord("\n") << 56)
 _TEXT_COLUMNS = {"uep_surface", "case", "segment"}
 _INT_COLUMNS = {"cl", "pieces", "uep_section", "uep_wall"}
 
@@ -78,36 +81,33 @@ def results_text(engagement, *, first_cl=0, forces=None):
     with `forces` (a Forces of the same CL points) the force columns too.
 
     first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass).
+    Formatted BLOCK_ROWS rows at a time (formats.decimal_text), so its working memory is bounded.
     """
     m, p = engagement.shape
     flat = {name: getattr(engagement, name).reshape(-1) for name in (
-        "lep_l", "uep_l", "length", "pieces", "uep_section", "uep_wall", "area")}
-    columns = {
-        "cl": np.repeat(np.arange(first_cl, first_cl + m), p).astype(str),
-        "phi_deg": np.tile(_numbers(engagement.phi), m),
-        **{name: _numbers(flat[name]) for name in ("lep_l", "uep_l", "length")},
-        "pieces": flat["pieces"].astype(str),
-        "uep_surface": engagement.surface_names().reshape(-1),
-        "uep_section": flat["uep_section"].astype(str),
-        "uep_wall": flat["uep_wall"].astype(str),
-        "case": engagement.case_names().reshape(-1),
-        "segment": _letters(engagement.segment.reshape(-1)),
-        "h": np.tile(_numbers(engagement.h), m),
-        "area": _numbers(flat["area"]),
-    }
+        "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall", "case", "segment", "area")}
     for point in ("lep", "uep"):
         xyz = getattr(engagement, f"{point}_xyz").reshape(-1, 3)
-        for axis, name in enumerate("xyz"):
-            columns[f"{point}_{name}"] = _numbers(xyz[:, axis])
+        flat.update({f"{point}_{name}": xyz[:, axis] for axis, name in enumerate("xyz")})
     names = RESULT_COLUMNS
     if forces is not None:
         names += FORCE_COLUMNS[:4] if forces.power is None else FORCE_COLUMNS
         xyz = forces.xyz.reshape(-1, 3)
-        columns.update(fx=_numbers(xyz[:, 0]), fy=_numbers(xyz[:, 1]), fz=_numbers(xyz[:, 2]),
-                       torque=_numbers(forces.torque.reshape(-1)))
+        flat.update(fx=xyz[:, 0], fy=xyz[:, 1], fz=xyz[:, 2], torque=forces.torque.reshape(-1))
         if forces.power is not None:
-            columns["power"] = _numbers(forces.power.reshape(-1))
-    return _csv(names, [columns[name] for name in names])
+            flat["power"] = forces.power.reshape(-1)
+    letters = [segment_letter(s) for s in range(int(flat["segment"].max(initial=-1)) + 1)]
+    labels = {"uep_surface": text_field(SURFACES), "case": text_field(CASES), "segment": text_field(letters + [""])}
+
+    def block(start):
+        rows = slice(start, min(start + BLOCK_ROWS, m * p))
+        index = np.arange(rows.start, rows.stop)
+        values = {name: column[rows] for name, column in flat.items()}
+        values.update(cl=first_cl + index // p, phi_deg=engagement.phi[index % p], h=engagement.h[index % p])
+        return [labels[name][:, values[name]] if name in labels else integer_field(values[name])
+                if name in _INT_COLUMNS else number_field(values[name]) for name in names]
+
+    return _csv(names, map(block, range(0, m * p, BLOCK_ROWS)))
 
 
 def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None):
@@ -129,9 +129,9 @@ def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None):
         return [segment[key] for _, segment in records]
 
     columns = [
-        (cl + first_cl).astype(str), _numbers(engagement.depth_of_cut[cl]), field("letter"),
-        _numbers(field("phi_start")), _numbers(field("phi_end")), field("surface"),
-        np.array(field("section")).astype(str), np.array(field("wall")).astype(str),
+        integer_field(cl + first_cl), _numbers(engagement.depth_of_cut[cl]), text_field(field("letter")),
+        _numbers(field("phi_start")), _numbers(field("phi_end")), text_field(field("surface")),
+        integer_field(np.array(field("section"), dtype=int)), integer_field(np.array(field("wall"), dtype=int)),
         _numbers(field("max_length")), _numbers(field("mean_length")),
     ]
     names = SUMMARY_COLUMNS
@@ -144,7 +144,7 @@ def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None):
     if forces is not None:
         names += FORCE_SUMMARY_COLUMNS
         columns += [_numbers(forces.peak[cl]), _numbers(forces.mean[cl]), _numbers(forces.torque.max(axis=1)[cl])]
-    return _csv(names, columns)
+    return _csv(names, [columns])
 
 
 def chunk_texts(engagement, first_cl, *, toolpath=None, forces=None):
@@ -176,30 +176,38 @@ def write_chunks(parts, path, summary):
 
 
 def _numbers(values):
-    """Text (same shape) of float `values`: rounded to DECIMALS places, '' for NaN.
-
-    Python's repr, the shortest text that reads back as the value (as numpy's str of a float64).
-    """
-    values = np.asarray(values, dtype=float)
-    rounded = (np.round(values, DECIMALS) + 0.0).reshape(-1).tolist()  # + 0.0 turns -0.0 into 0.0
-    text = np.array(list(map(repr, rounded)), dtype=object).reshape(values.shape)
-    text[np.isnan(values)] = ""
-    return text
+    """Field (w, n) of float `values` (n,) rounded to DECIMALS places (decimal_text.number_field)."""
+    return number_field(np.asarray(values, dtype=float))
 
 
-def _letters(segment):
-    """Segment letters for segment indices (N,), '' for −1."""
-    names = np.array([segment_letter(s) for s in range(int(segment.max(initial=-1)) + 1)] + [""])
-    return names[segment]
+def _csv(names, blocks):
+    """CSV text: a header of `names`, then one line per value of each block, a list of fields
+    (decimal_text) in the order of `names`."""
+    parts, buffer = [",".join(names).encode("utf-8") + b"\n"], bytearray()
+    for fields in blocks:
+        shape = fields[0].shape[1], sum(field.shape[0] for field in fields)
+        if len(buffer) < shape[0] * shape[1] * WORD.itemsize:
+            buffer = bytearray(shape[0] * shape[1] * WORD.itemsize)
+        parts.append(_lines(fields, shape, buffer))
+    return b"".join(parts).decode("utf-8")
 
 
-def _csv(names, columns):
-    """CSV text: a header of `names`, then one line per row of the equal-length `columns` (of text)."""
-    lists = []
-    for column in columns:
-        column = np.asarray(column)
-        lists.append((column if column.dtype.kind in "UO" else column.astype(str)).tolist())
-    return "\n".join([",".join(names), *map(",".join, zip(*lists))]) + "\n"
+def _lines(fields, shape, buffer):
+    """CSV lines (bytes, each ending in \\n) of `fields` (decimal_text, of n values each) as the
+    columns of an (n, their total width) = `shape` matrix of WORD at the start of bytearray
+    `buffer` (reused from block to block, NUL after the matrix): a comma (a line end for the
+    last) in each field's last byte, then the non-NUL bytes."""
+    everything = np.frombuffer(buffer, dtype=WORD)
+    everything[shape[0] * shape[1]:] = 0
+    words = everything[:shape[0] * shape[1]].reshape(shape)
+    at = 0
+    for number, field in enumerate(fields, start=1):
+        for row in field[:-1]:
+            words[:, at] = row
+            at += 1
+        np.bitwise_or(field[-1], _NEWLINE if number == len(fields) else _COMMA, out=words[:, at])
+        at += 1
+    return buffer.translate(None, b"\0")
 
 
 def read_results(path):

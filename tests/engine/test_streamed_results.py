@@ -66,12 +66,16 @@ def test_an_error_in_a_late_chunk_leaves_no_file(model_1, tmp_path):
 def test_numbers_read_as_numpy_writes_them():
     """The CSV's number text is numpy's str of the float64 rounded to DECIMALS places (the shortest
     text that reads back as it), '' for NaN, '0.0' for −0.0, over every magnitude."""
-    from abm_workbench.formats.results_csv import DECIMALS, _numbers
+    from abm_workbench.formats.decimal_text import number_field
+    from abm_workbench.formats.results_csv import DECIMALS
+
+    from .test_decimal_text import texts
 
     rng = np.random.default_rng(5)
     values = np.concatenate([rng.standard_normal(20000) * 10.0 ** rng.integers(-15, 20, 20000),
                              [0.0, -0.0, 1e16, 1e-4, 9.99999e-5, 1e15, 0.1, 1 / 3, -1e-11, 5e-11, np.inf, -np.inf]])
     values[::97] = np.nan
     want = np.where(np.isnan(values), "", (np.round(values, DECIMALS) + 0.0).astype(str))
-    assert _numbers(values).astype(str).tolist() == want.tolist()
-    assert _numbers(values.reshape(-1, 4)).shape == (values.size // 4, 4)
+    assert texts(number_field(values)) == want.tolist()
+    with pytest.raises(ValueError, match=r"got shape \(5003, 4\)"):
+        number_field(values.reshape(-1, 4))
