@@ -88,23 +88,42 @@ class Engagement:
         Returns a list of dicts: letter, phi_start, phi_end (deg), surface, section, wall, and
         the mean and max length of cut (mm) over the segment.
         """
-        rows = []
-        seg = self.segment[cl]
-        for s in range(int(seg.max()) + 1 if seg.size else 0):
-            k = np.flatnonzero(seg == s)
-            rows.append(
-                {
-                    "letter": segment_letter(s),
-                    "phi_start": float(self.phi[k[0]]),
-                    "phi_end": float(self.phi[k[-1]]),
-                    "surface": SURFACES[self.uep_surface[cl, k[0]]],
-                    "section": int(self.uep_section[cl, k[0]]),
-                    "wall": int(self.uep_wall[cl, k[0]]),
-                    "mean_length": float(self.length[cl, k].mean()),
-                    "max_length": float(self.length[cl, k].max()),
-                }
-            )
-        return rows
+        table = self.segment_table(cl, cl + 1)
+        return [
+            {
+                "letter": segment_letter(table["index"][i]),
+                "phi_start": float(table["phi_start"][i]), "phi_end": float(table["phi_end"][i]),
+                "surface": SURFACES[table["surface"][i]], "section": int(table["section"][i]),
+                "wall": int(table["wall"][i]), "mean_length": float(table["mean_length"][i]),
+                "max_length": float(table["max_length"][i]),
+            }
+            for i in range(table["cl"].size)
+        ]
+
+    def segment_table(self, start=0, stop=None):
+        """The engagement segments of CL points start … stop − 1 (default: all), in pass order
+        then φ order, as arrays (S,): cl, index (0 = segment A), phi_start, phi_end (deg),
+        surface (index into SURFACES), section, wall, mean_length and max_length (mm, over the
+        segment's instants; a segment's numbers depend on its own instants alone).
+        """
+        segment = self.segment[start:stop].reshape(-1)
+        p = self.segment.shape[1]
+        flat = np.flatnonzero(segment >= 0)  # engaged instants, each segment a run of them
+        cl = flat // p
+        key = cl * (p + 1) + segment[flat]
+        first = np.flatnonzero(np.concatenate([[True], key[1:] != key[:-1]])[: flat.size])
+        last = np.append(first[1:], flat.size)[: first.size] - 1
+        length = self.length[start:stop].reshape(-1)[flat]
+        at = flat[first]
+        with np.errstate(invalid="ignore"):
+            sums = np.add.reduceat(length, first) if first.size else np.zeros(0)
+            peaks = np.maximum.reduceat(length, first) if first.size else np.zeros(0)
+        return {
+            "cl": cl[first] + (start or 0), "index": segment[at], "phi_start": self.phi[at % p],
+            "phi_end": self.phi[flat[last] % p],
+            **{name: getattr(self, f"uep_{name}")[start:stop].reshape(-1)[at] for name in ("surface", "section", "wall")},
+            "mean_length": sums / (last - first + 1), "max_length": peaks,
+        }
 
 
 def segment_letter(index):

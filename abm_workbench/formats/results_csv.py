@@ -116,23 +116,23 @@ def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None):
     first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass;
     toolpath and forces are then the chunk's).
     """
-    records = []
-    for cl in range(engagement.shape[0]):
-        segments = engagement.segments(cl) or [
-            {"letter": "", "phi_start": np.nan, "phi_end": np.nan, "surface": "none", "section": -1, "wall": -1,
-             "max_length": 0.0, "mean_length": 0.0}
-        ]
-        records += [(cl, segment) for segment in segments]
-    cl = np.array([cl for cl, _ in records], dtype=int)
+    table = engagement.segment_table()
+    # One row per segment, and one for each CL point without any, in CL order.
+    idle = np.flatnonzero(np.bincount(table["cl"], minlength=engagement.shape[0]) == 0)
+    order = np.argsort(np.concatenate([table["cl"], idle]), kind="stable")
 
-    def field(key):
-        return [segment[key] for _, segment in records]
+    def rows(values, idle_value):
+        return np.concatenate([values, np.full(idle.size, idle_value, dtype=np.asarray(values).dtype)])[order]
 
+    cl = np.concatenate([table["cl"], idle])[order]
+    letters = [segment_letter(s) for s in range(int(table["index"].max(initial=-1)) + 1)]
     columns = [
-        integer_field(cl + first_cl), _numbers(engagement.depth_of_cut[cl]), text_field(field("letter")),
-        _numbers(field("phi_start")), _numbers(field("phi_end")), text_field(field("surface")),
-        integer_field(np.array(field("section"), dtype=int)), integer_field(np.array(field("wall"), dtype=int)),
-        _numbers(field("max_length")), _numbers(field("mean_length")),
+        integer_field(cl + first_cl), _numbers(engagement.depth_of_cut[cl]),
+        text_field(letters + [""])[:, rows(table["index"], -1)],
+        _numbers(rows(table["phi_start"], np.nan)), _numbers(rows(table["phi_end"], np.nan)),
+        text_field(SURFACES)[:, rows(table["surface"], SURFACES.index("none"))],
+        integer_field(rows(table["section"], -1)), integer_field(rows(table["wall"], -1)),
+        _numbers(rows(table["max_length"], 0.0)), _numbers(rows(table["mean_length"], 0.0)),
     ]
     names = SUMMARY_COLUMNS
     if toolpath is not None:

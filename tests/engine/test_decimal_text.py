@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 from scipy.interpolate import make_interp_spline
 
-from abm_workbench.engine import CASES, SURFACES, CutSettings, Staircase, engage, segment_letter
+from abm_workbench.engine import CASES, SURFACES, CutSettings, Staircase, Toolpath, engage, segment_letter
 from abm_workbench.engine.walls import SplineWall
 from abm_workbench.formats.decimal_text import WORD, integer_field, number_field, text_field
 from abm_workbench.formats.results_csv import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, RESULT_COLUMNS,
@@ -227,3 +227,15 @@ def test_blocks_join_seamlessly(monkeypatch):
     engagement = engage(stock, tool, toolpath_part(toolpath, 20, 26), settings)
     monkeypatch.setattr(results_csv, "BLOCK_ROWS", 7)
     assert results_text(engagement, first_cl=99_998) == reference_results(engagement, 99_998)
+
+
+def test_summary_of_cl_points_without_engagement():
+    """CL points lifted clear of the stock, first, in the middle and last: one empty row each, in CL order."""
+    stock, tool, toolpath, settings = model_job(1)
+    part = toolpath_part(toolpath, 10, 20)
+    lift = np.zeros((len(part), 3))
+    lift[[0, 4, 5, 9], 2] = 500.0
+    lifted = Toolpath(part.cl + lift, part.theta_a, part.theta_b)
+    engagement = engage(stock, tool, lifted, settings)
+    assert not engagement.engaged[[0, 4, 5, 9]].any() and engagement.engaged[[1, 2, 3, 6, 7, 8]].any(axis=1).all()
+    assert summary_text(engagement, toolpath=lifted, first_cl=10) == reference_summary(engagement, lifted, 10)
