@@ -220,9 +220,9 @@ def plot(rows, path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", default=",".join(str(n) for n in SIZES), help="instants, comma-separated")
-    parser.add_argument("--cli-max", type=float, default=1e6,
-                        help="largest size run through the command line in one process (default 10^6: CSV "
-                             "formatting takes ~20 µs per instant, 3-4 minutes more at 10^7)")
+    parser.add_argument("--cli-max", type=float, default=1e7,
+                        help="largest size run through the command line in one process (default 10^7, "
+                             "about a minute there)")
     parser.add_argument("--cases", default="api,cli,cli-2,workers-1,workers-2,dask",
                         help="cases to run, comma-separated (default all)")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "benchmarks"), help="output folder")
