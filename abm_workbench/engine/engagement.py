@@ -362,8 +362,9 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     rank = np.arange(pair_rows.size) - np.searchsorted(pair_rows, pair_rows)  # pairs come grouped by row
     lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
     result = {}
-    for subset, solve in ((reach == 0, _single_section), (simple, _single_crossings),
-                          ((reach > 0) & ~simple, _broken_lines)):
+    # (One wall and several apart: a line with one wall needs no sorting.)
+    for subset, solve in ((reach == 0, _single_section), (simple & (reach == 1), _single_crossings),
+                          (simple & (reach > 1), _single_crossings), ((reach > 0) & ~simple, _broken_lines)):
         rows = np.flatnonzero(subset)
         if rows.size == 0:
             continue
