@@ -115,11 +115,10 @@ class Engagement:
         last = np.append(first[1:], flat.size)[: first.size] - 1
         length = self.length[start:stop].reshape(-1)[flat]
         at = flat[first]
-        with np.errstate(invalid="ignore"):
-            sums = np.add.reduceat(length, first) if first.size else np.zeros(0)
-            peaks = np.maximum.reduceat(length, first) if first.size else np.zeros(0)
+        sums = np.add.reduceat(length, first) if first.size else np.zeros(0)
+        peaks = np.maximum.reduceat(length, first) if first.size else np.zeros(0)
         return {
-            "cl": cl[first] + (start or 0), "index": segment[at], "phi_start": self.phi[at % p],
+            "cl": cl[first] + start, "index": segment[at], "phi_start": self.phi[at % p],
             "phi_end": self.phi[flat[last] % p],
             **{name: getattr(self, f"uep_{name}")[start:stop].reshape(-1)[at] for name in ("surface", "section", "wall")},
             "mean_length": sums / (last - first + 1), "max_length": peaks,

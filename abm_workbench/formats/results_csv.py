@@ -15,8 +15,8 @@ global frame, summed over the flutes cutting at that angle of flute 1), torque (
 with a spindle speed, power (W); the summary gains FORCE_SUMMARY_COLUMNS per CL point:
 peak_force, mean_force (resultant, N), peak_torque (N·mm).
 
-Numbers are rounded to DECIMALS places and written in the shortest form that reads back as
-the rounded value; NaN is an empty field.
+Numbers are rounded to decimal_text.DECIMALS (10) places and written in the shortest form
+that reads back as the rounded value; NaN is an empty field.
 """
 
 import os
@@ -26,7 +26,7 @@ import numpy as np
 from ..engine import CASES, SURFACES, segment_letter
 from ..errors import InputError
 from . import read_text, replacing
-from .decimal_text import DECIMALS, WORD, integer_field, number_field, text_field
+from .decimal_text import WORD, integer_field, number_field, text_field
 
 RESULT_COLUMNS = (
     "cl", "phi_deg", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall",
@@ -176,7 +176,7 @@ def write_chunks(parts, path, summary):
 
 
 def _numbers(values):
-    """Field (w, n) of float `values` (n,) rounded to DECIMALS places (decimal_text.number_field)."""
+    """Field (w, n) of float `values` (n,) rounded to decimal_text.DECIMALS places (decimal_text.number_field)."""
     return number_field(np.asarray(values, dtype=float))
 
 

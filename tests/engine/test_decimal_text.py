@@ -11,7 +11,6 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from hypothesis.extra.numpy import arrays
 from scipy.interpolate import make_interp_spline
 
 from abm_workbench.engine import CASES, SURFACES, CutSettings, Staircase, Toolpath, engage, segment_letter

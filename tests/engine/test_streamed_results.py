@@ -66,8 +66,7 @@ def test_an_error_in_a_late_chunk_leaves_no_file(model_1, tmp_path):
 def test_numbers_read_as_numpy_writes_them():
     """The CSV's number text is numpy's str of the float64 rounded to DECIMALS places (the shortest
     text that reads back as it), '' for NaN, '0.0' for −0.0, over every magnitude."""
-    from abm_workbench.formats.decimal_text import number_field
-    from abm_workbench.formats.results_csv import DECIMALS
+    from abm_workbench.formats.decimal_text import DECIMALS, number_field
 
     from .test_decimal_text import texts
 
