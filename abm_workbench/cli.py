@@ -19,6 +19,8 @@ engage --workers N runs the pass in chunks of CL points on N local processes (0:
 --scheduler tcp://host:port on a Dask cluster; the results are the same bytes (docs/SCALING.md).
 The results CSV is written chunk by chunk, so memory stays bounded however long the pass.
 
+This module only parses arguments and prints: the options of the cutting parameters come from
+their declarations (``jobs.parameters``), the runs from ``jobs.run``, shared with the GUI.
 Errors in the input print ``abm: error: <message>`` on stderr and exit with status 2,
 leaving no output behind (an existing one is replaced only on success); a failure to write
 exits with 1, an interrupt (Ctrl-C) with 130, under the same rule. Missing output folders are
@@ -26,31 +28,20 @@ made before the results are streamed into them, and removed again when the comma
 """
 
 import argparse
-import contextlib
-import dataclasses
-import functools
-import os
-import re
 import sys
 import time
 
 import numpy as np
 
-from .engine import engage, flute_engagement, zmap_engage
-from .errors import InputError
-from .formats import replacing
-from .formats.results_csv import chunk_texts, summary_path, write_chunks
-from .forces import (COEFFICIENT_NAMES, FULL_SLOT, MATERIALS, Coefficients, check_immersion, joined_forces, material,
-                     pass_forces)
-from .parallel import ChunkError, PassAssembly, map_chunks, toolpath_part, worker_count
-from .jobs import (PARAMETERS, SOLID_SUFFIXES, WALL_MODELS, WALL_POINTS, load_job, load_path, load_stock,
-                   resolve_parameters, swept_y_window, tool_and_settings)
+from .errors import InputError, ParameterError
+from .forces import COEFFICIENT_NAMES, MATERIALS
+from .jobs import BY_NAME, CUTTING, REQUIRED, WALL_MODELS, WALL_POINTS, Job, option_words
+from .jobs import run as runs
+from .parallel import ChunkError
 
 PROG = "abm"
 #: Methods of the engage command.
 METHODS = ("abm", "zmap")
-#: Default Z-map cell size (mm), the paper's.
-ZMAP_GRID = 0.2
 
 
 class _Parser(argparse.ArgumentParser):
@@ -70,6 +61,9 @@ def main(argv=None):
         return exit_.code
     try:
         return args.run(args)
+    except ParameterError as error:
+        print(f"{PROG}: error: {option_words(error)}", file=sys.stderr)
+        return 2
     except InputError as error:
         print(f"{PROG}: error: {error}", file=sys.stderr)
         return 2
@@ -168,11 +162,10 @@ def _build_parser():
 
 def _force_arguments(parser, *, always=False, helix=True):
     """The helix angle (unless helix is False) and the cutting-force options (engage, validate: only with
-    --forces; schedule: always used)."""
+    --forces; schedule: always used), from the parameters' declarations."""
     if helix:
-        parser.add_argument("--helix", type=float, default=0.0, metavar="DEG",
-                            help="helix angle β of the flutes (deg), default 0: straight flutes; a helical tool's "
-                                 "engagement comes from the helix solver (every flute's exact helix)")
+        _parameter_option(parser, "helix", "default 0: straight flutes; a helical tool's engagement comes from "
+                                           "the helix solver (every flute's exact helix)")
     group = parser.add_argument_group(
         "cutting forces (linear edge-force model, docs/FORCES.md)" + ("" if always else ": with --forces"))
     if not always:
@@ -183,12 +176,19 @@ def _force_arguments(parser, *, always=False, helix=True):
     group.add_argument("--material", type=str.lower, metavar="NAME",
                        help=f"coefficients of a material: {', '.join(MATERIALS)}; --ktc ... override single values")
     for name in COEFFICIENT_NAMES:
-        unit = "N/mm²" if name.endswith("c") else "N/mm"
-        group.add_argument(f"--{name}", type=float, metavar=unit.replace("²", "2"),
-                           help=f"K_{name[1:]} ({unit})" + ("" if name.endswith("c") else ", default 0"))
+        _parameter_option(group, name, "" if name.endswith("c") else "default 0")
     group.add_argument("--immersion", metavar="START:END",
                        help="angles (deg) where a flute cuts, 0 <= START < END <= 180; default 0:180 (full slot); "
                             "--phi-range only chooses the angles reported")
+
+
+def _parameter_option(group, name, extra=""):
+    """The option of parameter `name`: its declared option, type, unit and help."""
+    parameter = BY_NAME[name]
+    unit = {"deg": "DEG", "mm": "MM", "": "N"}.get(parameter.unit, parameter.unit.replace("²", "2").upper())
+    text = f"{parameter.help} ({parameter.unit})" if parameter.unit else parameter.help
+    group.add_argument(parameter.option, dest=name, type=int if parameter.whole else float, metavar=unit,
+                       help=", ".join(filter(None, [text, extra])))
 
 
 def _input_arguments(parser):
@@ -205,15 +205,14 @@ def _input_arguments(parser):
     cutting = parser.add_argument_group(
         "cutting parameters (the APT file's tool, spindle and feed win where it gives them; "
         "options override --job)")
-    cutting.add_argument("--diameter", type=float, help="tool diameter (mm), required")
-    cutting.add_argument("--flutes", type=int, help="number of flutes, required")
-    cutting.add_argument("--flute-length", type=float, help="flute length (mm), required")
-    cutting.add_argument("--feed-per-tooth", type=float, help="feed per tooth f (mm), required")
-    cutting.add_argument("--inclination", type=float, help="tool inclination angle α (deg), default 0")
-    cutting.add_argument("--spindle-rpm", type=float, help="spindle speed (rpm)")
-    cutting.add_argument("--phi-range", metavar="START:END",
-                         help="tool rotation angles φ (deg), default 0:180 (--phi-range=-10:190 for a negative start)")
-    cutting.add_argument("--phi-step", type=float, help="step of φ (deg), default 1")
+    for name in CUTTING:
+        if name == "phi_start":
+            cutting.add_argument("--phi-range", metavar="START:END", help="tool rotation angles φ (deg), default "
+                                 "0:180 (--phi-range=-10:190 for a negative start)")
+        elif name != "phi_end":
+            default = BY_NAME[name].default
+            _parameter_option(cutting, name, "required" if default is REQUIRED else
+                              "" if default is None else f"default {default:g}")
     solid = parser.add_argument_group("solid stock (STEP, BREP, FCStd) only")
     solid.add_argument("--walls", choices=WALL_MODELS,
                        help="wall model: the solid's own curves (exact, default) or the paper's quintic through "
@@ -227,492 +226,112 @@ def _input_arguments(parser):
                             "Y0:Y1 (--y-window=-10:10 for a negative start)")
 
 
-def _prepare(args):
-    """(job dict, Toolpath, Parameters, Tool, CutSettings) of the command line; warnings printed."""
-    job = load_job(args.job) if args.job else {}
-    toolpath, hints = load_path(args.toolpath)
-    given = {key: getattr(args, key) for key in PARAMETERS}
+
+def _job(args):
+    """The Job of the parsed arguments: the cutting and force options by parameter name."""
+    given = {name: getattr(args, name, None) for name in BY_NAME if name not in
+             ("phi_start", "phi_end", "immersion_start", "immersion_end")}
     if args.phi_range is not None:
-        given["phi_range"] = _phi_range(args.phi_range)
-    parameters = resolve_parameters(given, hints, job, args.job)
-    for message in [*hints.messages(), *parameters.conflicts]:
-        print(f"{PROG}: warning: {message}", file=sys.stderr)
-    tool, settings = tool_and_settings(parameters.values)
-    return job, toolpath, parameters, tool, settings
+        given["phi_start"], given["phi_end"] = _pair(args.phi_range, "phi_start", "START:END in degrees such as 0:180")
+    forces = getattr(args, "forces", True)
+    if getattr(args, "immersion", None) is not None:
+        given["immersion_start"], given["immersion_end"] = _pair(args.immersion, "immersion_start",
+                                                                 "START:END in degrees such as 0:180")
+    if not forces:
+        extra = [f"--{name}" for name in ("material", *COEFFICIENT_NAMES, "immersion") if getattr(args, name) is not None]
+        if extra:
+            raise InputError(f"{extra[0]} applies with --forces")
+    window = args.y_window
+    if window is not None and window not in ("whole", "swept"):
+        window = _pair(window, "y_window", "whole, swept or Y0:Y1 in mm such as -10:10")
+    return Job(args.stock, args.toolpath, args.job, given, forces=forces, material=getattr(args, "material", None),
+               walls=args.walls, wall_points=args.wall_points, y_window=window)
 
 
-def _load_stock(args, toolpath, tool):
-    """(Stock, seconds to read it): solid options checked, the y window chosen."""
-    is_solid = os.path.splitext(args.stock)[1].lower() in SOLID_SUFFIXES
-    options = {"--walls": args.walls, "--wall-points": args.wall_points, "--y-window": args.y_window}
-    for option, value in options.items():
-        if value is not None and not is_solid:
-            raise InputError(f"{option} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
-                             f"{args.stock}")
-    window = args.y_window or ("swept" if args.walls == "quintic" else "whole")
-    if window == "whole":
-        window = None
-    elif window == "swept":
-        window = functools.partial(swept_y_window, toolpath, tool)  # completed with the solid's top z
-    else:
-        window = _pair(window, "--y-window", "whole, swept or Y0:Y1 in mm such as -10:10")
-    started = time.perf_counter()
-    stock = load_stock(args.stock, walls=args.walls or "exact", wall_points=args.wall_points or "chebyshev",
-                       y_window=window)
-    return stock, time.perf_counter() - started
-
-
-def _stock_line(stock):
-    """'; stock: exact walls, y window -15..15 mm' for a solid stock, '' for JSON."""
-    if stock.shape is None:
-        return ""
-    y0, y1 = stock.y_window
-    return f"; stock: {stock.walls} walls, y window {y0:.6g}..{y1:.6g} mm"
-
-
-def _force_model(args, always=False):
-    """(Coefficients, immersion (start, end) deg) of the force options, or None without --forces."""
-    if not (always or args.forces):
-        given = [f"--{name}" for name in ("material", *COEFFICIENT_NAMES, "immersion")
-                 if getattr(args, name) is not None]
-        if given:
-            raise InputError(f"{given[0]} applies with --forces")
-        return None
-    values = {}
-    if args.material is not None:
-        try:
-            values = dataclasses.asdict(material(args.material))
-        except ValueError as error:
-            raise InputError(f"--material: {error}") from None
-    values.update({name: getattr(args, name) for name in COEFFICIENT_NAMES if getattr(args, name) is not None})
-    missing = [name for name in ("ktc", "krc", "kac") if name not in values]
-    if missing:
-        raise InputError(f"missing --{missing[0]}: the forces need --material NAME or --ktc, --krc and --kac")
-    try:
-        coefficients = Coefficients(**values)
-    except ValueError as error:
-        raise InputError(f"--{str(error).split()[0]}: {error}") from None
-    immersion = FULL_SLOT
-    if args.immersion is not None:
-        pair = _pair(args.immersion, "--immersion", "START:END in degrees such as 0:180")
-        try:
-            immersion = check_immersion(pair)
-        except ValueError as error:
-            raise InputError(f"--immersion: {error}") from None
-    return coefficients, immersion
-
-
-def _helical(args, tool):
-    """`tool` with the --helix angle; InputError naming --helix if it is out of range."""
-    try:
-        return dataclasses.replace(tool, helix=args.helix)
-    except ValueError as error:
-        raise InputError(f"--helix: {error}") from None
-
-
-def _flute_1(stock, tool, toolpath, settings, progress=None):
-    """Engagement of flute 1: the straight engine, or flute 0 of the helix solver for a helical tool."""
-    if tool.helix == 0.0:
-        return engage(stock, tool, toolpath, settings, progress=progress)
-    return flute_engagement(stock, tool, toolpath, settings, progress=progress).as_engagement(0)
-
-
-def _run_engage(args):
-    """The engage command; returns 0 or raises InputError."""
-    compute, method_text = _engage_method(args)
-    force_model = _force_model(args)
-    if force_model is not None and args.method != "abm":
-        raise InputError("--forces needs --method abm")
-    if args.helix != 0.0 and args.method != "abm":
-        raise InputError("--helix needs --method abm")
-    job, toolpath, parameters, tool, settings = _prepare(args)
-    tool = _helical(args, tool)
-    outputs = [args.out, summary_path(args.out)] + ([args.plot] if args.plot else [])
-    if args.plot and force_model is not None:
-        outputs.append(os.path.splitext(args.plot)[0] + ".forces.png")
-    _check_outputs(outputs, [args.stock, args.toolpath] + ([args.job] if args.job else []))
-    stock, _ = _load_stock(args, toolpath, tool)
-
-    progress = _engine_progress() if sys.stderr.isatty() else None
-    started = time.perf_counter()
-    whole = PassAssembly(len(toolpath)) if args.plot else None
-    force_parts = [] if args.plot and force_model is not None else None
-    depth, peak = np.full(len(toolpath), np.nan), np.full(len(toolpath), np.nan)
-    with _output_folders(outputs), replacing(*outputs) as temporaries:
-        if compute is None:
-            chunks = map_chunks(_CsvChunk(keep=whole is not None, force_model=force_model),
-                                [(stock.staircase, tool, toolpath, settings)],
-                                workers=args.workers, scheduler=args.scheduler, progress=progress)
-        else:
-            engagement = compute(stock.staircase, tool, toolpath, settings, progress=progress)
-            chunks = [(0, 0, len(toolpath), ChunkResult(chunk_texts(engagement, 0, toolpath=toolpath),
-                                                        engagement.depth_of_cut, engagement))]
-        write_chunks(_kept(chunks, depth, peak, whole, force_parts), temporaries[0], temporaries[1])
-        if np.isnan(depth).all():
-            raise InputError(_no_engagement(args))
-        if whole is not None:
-            from .report.plots import pass_figure  # here: matplotlib takes a while to import
-            title = job.get("description") or (
-                f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}: D {tool.diameter:g} mm, "
-                f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
-            pass_figure(whole.engagement(), title=title).savefig(temporaries[2], format="png")
-        if force_parts is not None:
-            from .report.forces import chosen_cl, force_over_phi_figure
-            forces = joined_forces(force_parts)
-            force_over_phi_figure(forces, chosen_cl(forces), along=True).savefig(temporaries[3], format="png")
-    elapsed_ms = 1e3 * (time.perf_counter() - started)
-
-    m, p = len(toolpath), settings.phi.size
-    print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {elapsed_ms:.0f} ms{method_text} (files included); "
-          f"depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
-          f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
-          + ("" if force_model is None else f"; peak force {np.nanmax(peak):.4g} N at CL {int(np.nanargmax(peak))}")
-          + f"; wrote {', '.join(outputs)}")
-    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
-    return 0
-
-
-def _helix_text(tool):
-    """', helix 30° [--helix]' for a helical tool, '' for straight flutes."""
-    return f", helix {tool.helix:g}° [--helix]" if tool.helix else ""
-
-
-@dataclasses.dataclass(frozen=True)
-class ChunkResult:
-    """What a chunk task of engage gives back: (results, summary) CSV text and the depth of cut
-    (n,); the chunk's Engagement and Forces when kept for the plots; the peak resultant force
-    (n,) when forces are computed."""
-
-    texts: tuple
-    depth: np.ndarray
-    engagement: object = None
-    forces: object = None
-    peak: object = None
-
-
-@dataclasses.dataclass(frozen=True)
-class _CsvChunk:
-    """Task of a parallel engage: a chunk of CL points engaged (flute 1, straight or helical) and,
-    when force_model = (Coefficients, immersion) is given, its forces, as a ChunkResult; the
-    Engagement and Forces are kept for the plots when `keep`."""
-
-    keep: bool
-    force_model: object = None
-
-    def __call__(self, job, start, stop):
-        stock, tool, toolpath, settings = job
-        part = toolpath_part(toolpath, start, stop)
-        engagement = _flute_1(stock, tool, part, settings)
-        forces = None
-        if self.force_model is not None:
-            coefficients, immersion = self.force_model
-            forces = pass_forces(stock, tool, part, settings, coefficients, immersion=immersion,
-                                 first=engagement.length if tool.helix == 0.0 else None)
-        return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces), engagement.depth_of_cut,
-                           engagement if self.keep else None, forces if self.keep else None,
-                           None if forces is None else forces.peak)
-
-
-def _kept(chunks, depth, peak, whole, force_parts):
-    """The CSV texts of (job, start, stop, ChunkResult) `chunks`, in order; each chunk's depth of
-    cut and peak force stored into `depth` and `peak` (m,), its Engagement added to `whole` (a
-    PassAssembly) and its Forces appended to `force_parts`, when these are given."""
-    for _, start, stop, result in chunks:
-        depth[start:stop] = result.depth
-        if result.peak is not None:
-            peak[start:stop] = result.peak
-        if whole is not None:
-            whole.add(result.engagement, start)
-        if force_parts is not None:
-            force_parts.append(result.forces)
-        yield result.texts
-
-
-@contextlib.contextmanager
-def _output_folders(outputs):
-    """Make the missing folders of `outputs`; remove the ones made (if empty) when the block fails."""
-    made = []
-    for path in outputs:
-        folder, missing = os.path.dirname(os.path.abspath(path)), []
-        while not os.path.exists(folder):
-            folder, missing = os.path.dirname(folder), missing + [folder]
-        for folder in reversed(missing):
-            os.mkdir(folder)
-            made.append(folder)
-    try:
-        yield
-    except BaseException:
-        for folder in reversed(made):
-            with contextlib.suppress(OSError):
-                os.rmdir(folder)
-        raise
-
-
-def _engage_method(args):
-    """(function computing the Engagement, text for the output line) of --method, --grid, --edge-step;
-    (None, text) for ABM, which runs in chunks (--workers, --scheduler)."""
-    if args.method == "abm":
-        given = [option for option, value in (("--grid", args.grid), ("--edge-step", args.edge_step))
-                 if value is not None]
-        if given:
-            raise InputError(f"{given[0]} applies to --method zmap, not to --method abm")
-        try:
-            workers = worker_count(args.workers)
-        except ValueError:
-            raise InputError(f"--workers: must be 0 (all cores) or a positive number of processes, got "
-                             f"{args.workers}") from None
-        if args.scheduler is not None and not re.fullmatch(r"[a-z][a-z0-9+.-]*://\S+", args.scheduler):
-            raise InputError(f"--scheduler: expected a Dask scheduler address such as tcp://127.0.0.1:8786, "
-                             f"got {args.scheduler!r}")
-        where = (f" on the Dask cluster at {args.scheduler}" if args.scheduler else
-                 f" on {workers} processes" if workers > 1 else "")
-        return None, where
-    parallel = [option for option, given in (("--workers", args.workers != 1), ("--scheduler", args.scheduler))
-                if given]
-    if parallel:
-        raise InputError(f"{parallel[0]} applies to --method abm: the Z-map updates its stock CL point by CL point")
-    grid = ZMAP_GRID if args.grid is None else args.grid
-    step = grid if args.edge_step is None else args.edge_step
-    for option, value in (("--grid", grid), ("--edge-step", step)):
-        if not (np.isfinite(value) and value > 0.0):
-            raise InputError(f"{option}: must be a positive number of mm, got {value:g}")
-
-    def compute(stock, tool, toolpath, settings, progress=None):
-        try:
-            return zmap_engage(stock, tool, toolpath, settings, grid=grid, edge_step=step, progress=progress)
-        except ValueError as error:
-            raise InputError(f"--method zmap: {error}") from None
-    return compute, f" (Z-map, grid {grid:g} mm, edge step {step:g} mm)"
-
-
-def _run_validate(args):
-    """The validate command; returns 0 or raises InputError."""
-    from .report.html import ReportJob, report_cls, write_report
-    from .report.staging import staged
-    from .validation import NoEngagementError, overall, validate, validate_helix, write_flutes_csv
-
-    force_model = _force_model(args)
-    job, toolpath, parameters, tool, settings = _prepare(args)
-    cls = cl_indices(args.cl, len(toolpath)) if args.cl else None
-    helical = _helical_validation(args, tool)
-    _check_validate_outputs(args)
-    stock, stock_seconds = _load_stock(args, toolpath, tool)
-    started = time.perf_counter()
-    solid = stock.solid()
-    stock_seconds += time.perf_counter() - started
-
-    try:
-        if helical is None:
-            validation = validate(solid, stock.staircase, tool, toolpath, settings,
-                                  progress=_Progress("boolean reference", sys.stderr))
-        else:
-            tool, flutes = helical
-            helix_validation = validate_helix(solid, stock.staircase, tool, toolpath, settings, flutes=flutes,
-                                              progress=_Progress("helix boolean reference", sys.stderr))
-            validation = helix_validation.flute(helix_validation.flutes[0])
-    except NoEngagementError:
-        raise InputError(_no_engagement(args)) from None
-    engagement = validation.engagement
-    forces = None
-    if force_model is not None:
-        coefficients, immersion = force_model
-        forces = pass_forces(stock.staircase, tool, toolpath, settings, coefficients, immersion=immersion,
-                             first=engagement.length if tool.helix == 0.0 else None)
-    shown = report_cls(validation, cls)
-    walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
-    run = "ABM against booleans" if helical is None else (
-        f"Helical edges (β = {tool.helix:g}°), flute {helix_validation.flutes[0] + 1} of {tool.flutes}, "
-        "ABM against booleans")
-    title = f"{run}: {os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}"
-    description = job.get("description", "") if helical is None else " ".join(filter(None, [
-        job.get("description", ""), _flutes_text(helix_validation)]))
-    report_job = ReportJob(title, description, args.stock, args.toolpath, toolpath, tool, settings,
-                           parameters.describe(), walls, stock.y_window, stock_seconds)
-
-    outputs = [args.report] + ([args.fcstd] if args.fcstd else [])
-    for path in outputs:
-        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with staged(args.report, folder=True) as folder, \
-            (staged(args.fcstd) if args.fcstd else contextlib.nullcontext()) as fcstd:
-        page = write_report(folder, validation, report_job, shown, forces)
-        if helical is not None:
-            write_flutes_csv(os.path.join(folder, "flutes.csv"), helix_validation)
-        if fcstd:
-            from .cad.annotate import write_annotated
-            name = re.sub(r"[^A-Za-z0-9_]", "_", os.path.splitext(os.path.basename(args.fcstd))[0])
-            write_annotated(fcstd, f"ABM_{name}", solid, engagement, toolpath, tool, cls=cls,
-                            intersections=[cl for cl, _ in shown])
-    total = overall(validation.comparison)
-    m, p = engagement.shape
-    written = [os.path.join(args.report, os.path.basename(page))] + ([args.fcstd] if args.fcstd else [])
-    print(f"{PROG}: {m} CL points x {p} angles: length of cut max |relative error| "
-          f"{100 * total['max_rel_error']:.3g} % (mean {100 * total['mean_rel_error']:.3g} %, "
-          f"{total['relative_instants']} instants), max |difference| {total['max_abs_difference']:.3g} mm; "
-          f"ABM {validation.seconds['abm']:.3g} s, boolean {validation.seconds['boolean']:.3g} s "
-          f"({validation.speed_ratio:.0f}x)"
-          + ("" if forces is None else f"; peak force {forces.peak.max():.4g} N at CL {int(np.argmax(forces.peak))}")
-          + f"; wrote {', '.join(written)}")
-    if helical is not None:
-        print(f"{PROG}: {_flutes_text(helix_validation)}")
-    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
-    return 0
-
-
-def _helical_validation(args, tool):
-    """None for a straight run, else (tool with --helix, 0-based flutes to check); InputError for a bad
-    --helix or --flute."""
-    if args.helix == 0.0 and args.flute is None:
-        return None
-    tool = _helical(args, tool)
-    if args.flute is None:
-        return tool, None
-    if not 1 <= args.flute <= tool.flutes:
-        raise InputError(f"--flute: must be 1..{tool.flutes} (the tool has {tool.flutes} flutes), got {args.flute}")
-    return tool, [args.flute - 1]
-
-
-def _flutes_text(helix_validation):
-    """One line per checked flute's largest |ABM − boolean| of axial length, LEP and UEP (mm)."""
-    parts = [f"flute {row['flute'] + 1}: max |Δ axial length| {row['max_axial_difference']:.3g} mm, "
-             f"|Δ LEP| {row['max_lep_difference']:.3g} mm, |Δ UEP| {row['max_uep_difference']:.3g} mm, "
-             f"{row['mismatched']} mismatched of {row['instants']} instants"
-             for row in helix_validation.flute_summary()]
-    return "Helical edges against the helix boolean: " + "; ".join(parts) + " (per instant in flutes.csv)."
-
-
-def _run_schedule(args):
-    """The schedule command; returns 0 or raises InputError."""
-    from .formats.apt_writer import write_feed_toolpath
-    from .report.staging import staged
-    from .scheduling import programmed_feed, schedule
-
-    coefficients, immersion = _force_model(args, always=True)
-    kind, limit = ("force", args.max_force) if args.max_force is not None else ("area", args.max_area)
-    option = f"--max-{kind}"
-    if not (np.isfinite(limit) and limit > 0.0):
-        raise InputError(f"{option}: must be a positive number, got {limit:g}")
-    if args.min_feed is not None and not (np.isfinite(args.min_feed) and args.min_feed > 0.0):
-        raise InputError(f"--min-feed: must be a positive feed per tooth (mm), got {args.min_feed:g}")
-    if os.path.splitext(args.out)[1].lower() not in (".apt", ".cls", ".csv"):
-        raise InputError(f"{args.out}: --out must end in .apt, .cls or .csv")
-    job, toolpath, parameters, tool, settings = _prepare(args)
-    tool = _helical(args, tool)
-    _, hints = load_path(args.toolpath)  # the feed of every move, which _prepare reduces to one value
-    try:
-        programmed = programmed_feed(len(toolpath), settings.feed_per_tooth, feed=hints.feed, unit=hints.feed_unit,
-                                     flutes=tool.flutes, spindle_rpm=settings.spindle_rpm)
-    except ValueError as error:
-        raise InputError(f"{args.toolpath}: {error}") from None
-    inputs = [args.stock, args.toolpath] + ([args.job] if args.job else [])
-    if args.report:
-        _check_validate_outputs(argparse.Namespace(stock=args.stock, toolpath=args.toolpath, job=args.job,
-                                                   report=args.report, fcstd=None))
-    _check_outputs([args.out] + ([args.report] if args.report else []), inputs)
-    stock, _ = _load_stock(args, toolpath, tool)
-    engagement = _flute_1(stock.staircase, tool, toolpath, settings)
-    if not engagement.engaged.any():
-        raise InputError(_no_engagement(args))
-    forces = pass_forces(stock.staircase, tool, toolpath, settings, coefficients, immersion=immersion,
-                         feed=programmed, first=engagement.length if tool.helix == 0.0 else None)
-    plan = schedule(forces, limit, kind=kind, min_feed=args.min_feed)
-    unit = "N" if kind == "force" else "mm²"
-    if plan.infeasible.any():
-        shown = ", ".join(f"CL {i} (peak {plan.after[i]:.4g} {unit})" for i in np.flatnonzero(plan.infeasible)[:10])
-        more = "" if plan.infeasible.sum() <= 10 else f" and {int(plan.infeasible.sum()) - 10} more"
-        print(f"{PROG}: warning: {int(plan.infeasible.sum())} CL points cannot keep the {kind} at or under "
-              f"{limit:g} {unit} at any feed from the minimum feed up; they get the minimum feed: {shown}{more}",
-              file=sys.stderr)
-    comment = (f"re-scheduled by abm schedule: peak {kind} <= {limit:g} {unit}, feed per tooth "
-               f"{plan.feed.min():.6g}..{plan.feed.max():.6g} mm (programmed {plan.programmed.max():.6g} mm)")
-    for path in [args.out] + ([args.report] if args.report else []):
-        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with (staged(args.report, folder=True) if args.report else contextlib.nullcontext()) as folder:
-        if folder:
-            from .report.forces import write_schedule_report
-            title = job.get("description") or f"{os.path.basename(args.stock)} / {os.path.basename(args.toolpath)}"
-            write_schedule_report(folder, forces, plan, title=f"Feed schedule: {title}",
-                                  parameters=parameters.describe())
-        write_feed_toolpath(args.out, toolpath, plan.feed, flutes=tool.flutes, diameter=tool.diameter,
-                            flute_length=tool.flute_length, spindle_rpm=settings.spindle_rpm, comment=comment)
-    written = [args.out] + ([os.path.join(args.report, "index.html")] if args.report else [])
-    print(f"{PROG}: {len(toolpath)} CL points: peak {kind} {plan.before.max():.4g} -> {plan.after.max():.4g} {unit} "
-          f"(limit {limit:g}); feed lowered at {int(plan.reduced.sum())} CL points, to "
-          f"{plan.feed.min():.4g} mm/tooth at least; {int(plan.infeasible.sum())} cannot meet the limit; "
-          f"wrote {', '.join(written)}")
-    print(f"{PROG}: parameters: {parameters.describe()}{_helix_text(tool)}{_stock_line(stock)}")
-    return 0
-
-
-def _no_engagement(args):
-    """The message for a pass whose tool never touches the stock."""
-    return (f"{args.toolpath}: the tool never touches the stock: no CL point of the pass engages it "
-            f"(are the toolpath and {args.stock} in the same frame?)")
-
-
-def _phi_range(text):
-    """(start, end) in degrees from 'START:END'; InputError naming --phi-range otherwise."""
-    return _pair(text, "--phi-range", "START:END in degrees such as 0:180")
-
-
-def _pair(text, option, expected):
-    """(a, b) floats from 'A:B'; InputError naming `option` and what was `expected` otherwise."""
+def _pair(text, field, expected):
+    """(a, b) floats from 'A:B'; ParameterError naming `field` and what was `expected` otherwise."""
     parts = text.split(":")
     try:
         if len(parts) != 2:
             raise ValueError
         return float(parts[0]), float(parts[1])
     except ValueError:
-        raise InputError(f"{option}: expected {expected}, got {text!r}") from None
+        raise ParameterError(field, f"expected {expected}, got {text!r}") from None
 
 
-def cl_indices(text, m):
-    """Sorted distinct CL indices from '0,22,40'; InputError unless each is an integer in 0..m−1."""
-    indices = set()
-    for part in text.split(","):
-        try:
-            index = int(part)
-        except ValueError:
-            raise InputError(f"--cl: expected CL indices such as 0,22,40, got {text!r}") from None
-        if not 0 <= index < m:
-            raise InputError(f"--cl: CL point {index} is not in the pass (0..{m - 1})")
-        indices.add(index)
-    return sorted(indices)
+def _warn(message):
+    """Print a warning on stderr."""
+    print(f"{PROG}: warning: {message}", file=sys.stderr)
 
 
-def _check_outputs(outputs, inputs):
-    """InputError if an output's folder cannot be made, or outputs clash with each other or an input."""
-    seen = {}
-    for path in outputs:
-        folder = os.path.dirname(os.path.abspath(path))
-        while not os.path.exists(folder):
-            folder = os.path.dirname(folder)
-        if not os.path.isdir(folder):
-            raise InputError(f"{path}: cannot write: {folder} is not a folder")
-        key = os.path.normcase(os.path.abspath(path))
-        if key in seen:
-            raise InputError(f"{path}: written twice (as {seen[key]} too); choose another name")
-        seen[key] = path
-    for path in inputs:
-        if os.path.normcase(os.path.abspath(path)) in seen:
-            raise InputError(f"{path}: is an input and would be overwritten by an output")
+def _parameters_line(prepared, stock):
+    """The second output line: each parameter and where it came from, the helix, the stock's model."""
+    helix = f", helix {prepared.tool.helix:g}° [--helix]" if prepared.tool.helix else ""
+    solid = ""
+    if stock.shape is not None:
+        y0, y1 = stock.y_window
+        solid = f"; stock: {stock.walls} walls, y window {y0:.6g}..{y1:.6g} mm"
+    return f"{PROG}: parameters: {prepared.parameters.describe()}{helix}{solid}"
 
 
-def _check_validate_outputs(args):
-    """The report folder and FCStd can be written, replace nothing but an older report, hold no input."""
-    inputs = [args.stock, args.toolpath] + ([args.job] if args.job else [])
-    _check_outputs([args.report] + ([args.fcstd] if args.fcstd else []), inputs)
-    report = os.path.abspath(args.report)
-    if os.path.exists(report) and not os.path.isdir(report):
-        raise InputError(f"{args.report}: --report must be a folder, and this is a file")
-    if os.path.isdir(report) and os.listdir(report) and not os.path.isfile(os.path.join(report, "index.html")):
-        raise InputError(f"{args.report}: folder holds files but no report (index.html); it would be replaced "
-                         "as a whole: choose a new or empty folder")
-    inside = [path for path in inputs + ([args.fcstd] if args.fcstd else [])
-              if os.path.abspath(path).startswith(report + os.sep)]
-    if inside:
-        raise InputError(f"{inside[0]}: lies inside the --report folder {args.report}, which is replaced as a whole")
-    if args.fcstd and not args.fcstd.lower().endswith(".fcstd"):
-        raise InputError(f"{args.fcstd}: --fcstd must end in .FCStd")
+def _run_engage(args):
+    """The engage command; returns 0 or raises InputError."""
+    method = runs.Method(args.method, args.grid, args.edge_step, args.workers, args.scheduler)
+    progress = _engine_progress() if sys.stderr.isatty() else None
+    result = runs.engage(_job(args), args.out, plot=args.plot, method=method, warn=_warn, progress=progress)
+    prepared, depth, peak = result.prepared, result.depth, result.peak
+    if args.method == "abm":
+        workers = runs.worker_count(args.workers)
+        where = (f" on the Dask cluster at {args.scheduler}" if args.scheduler else
+                 f" on {workers} processes" if workers > 1 else "")
+    else:
+        grid, step = runs.zmap_cells(method)
+        where = f" (Z-map, grid {grid:g} mm, edge step {step:g} mm)"
+    m, p = len(prepared.toolpath), prepared.settings.phi.size
+    print(f"{PROG}: {m} CL points x {p} angles = {m * p} instants in {1e3 * result.seconds:.0f} ms{where} "
+          f"(files included); depth of cut {np.nanmin(depth):.3f}-{np.nanmax(depth):.3f} mm "
+          f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
+          + ("" if peak is None else f"; peak force {np.nanmax(peak):.4g} N at CL {int(np.nanargmax(peak))}")
+          + f"; wrote {', '.join(result.written)}")
+    print(_parameters_line(prepared, result.stock))
+    return 0
+
+
+def _run_validate(args):
+    """The validate command; returns 0 or raises InputError."""
+    from .validation import overall
+
+    label = "boolean reference" if not args.helix and args.flute is None else "helix boolean reference"
+    result = runs.validate(_job(args), args.report, fcstd=args.fcstd, cls=args.cl, flute=args.flute, warn=_warn,
+                           progress=_Progress(label, sys.stderr))
+    validation, forces = result.validation, result.forces
+    total = overall(validation.comparison)
+    m, p = validation.engagement.shape
+    print(f"{PROG}: {m} CL points x {p} angles: length of cut max |relative error| "
+          f"{100 * total['max_rel_error']:.3g} % (mean {100 * total['mean_rel_error']:.3g} %, "
+          f"{total['relative_instants']} instants), max |difference| {total['max_abs_difference']:.3g} mm; "
+          f"ABM {validation.seconds['abm']:.3g} s, boolean {validation.seconds['boolean']:.3g} s "
+          f"({validation.speed_ratio:.0f}x)"
+          + ("" if forces is None else f"; peak force {forces.peak.max():.4g} N at CL {int(np.argmax(forces.peak))}")
+          + f"; wrote {', '.join(result.written)}")
+    if result.helix is not None:
+        print(f"{PROG}: {runs.flutes_text(result.helix)}")
+    print(_parameters_line(result.prepared, result.stock))
+    return 0
+
+
+def _run_schedule(args):
+    """The schedule command; returns 0 or raises InputError."""
+    result = runs.schedule(_job(args), args.out, max_force=args.max_force, max_area=args.max_area,
+                           min_feed=args.min_feed, report=args.report, warn=_warn)
+    plan, kind = result.plan, result.kind
+    unit = "N" if kind == "force" else "mm²"
+    print(f"{PROG}: {len(result.prepared.toolpath)} CL points: peak {kind} {plan.before.max():.4g} -> "
+          f"{plan.after.max():.4g} {unit} (limit {result.limit:g}); feed lowered at {int(plan.reduced.sum())} CL "
+          f"points, to {plan.feed.min():.4g} mm/tooth at least; {int(plan.infeasible.sum())} cannot meet the limit; "
+          f"wrote {', '.join(result.written)}")
+    print(_parameters_line(result.prepared, result.stock))
+    return 0
 
 
 def _engine_progress():

@@ -62,7 +62,7 @@ def load_model(number):
     folder = os.path.join(MODELS, f"model_test_{number}")
     job = load_job(os.path.join(folder, "job.json"))
     tool = Tool(job["diameter"], int(job["flutes"]), job["flute_length"])
-    settings = CutSettings(job["feed_per_tooth"], job["inclination"], *job["phi_range"], job["phi_step"],
+    settings = CutSettings(job["feed_per_tooth"], job["inclination"], job["phi_start"], job["phi_end"], job["phi_step"],
                            job.get("spindle_rpm"))
     toolpath = load_toolpath(os.path.join(folder, "toolpath.csv"))
     step = os.path.join(folder, "stock.step")

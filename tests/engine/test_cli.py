@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from abm_workbench import cli
+from abm_workbench.jobs import run as runs
 from abm_workbench.formats.results_csv import RESULT_COLUMNS, SUMMARY_COLUMNS, TOOLPATH_COLUMNS, read_results
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -118,7 +119,7 @@ def test_apt_toolpath_gives_tool_and_spindle(case, capsys):
 @pytest.mark.parametrize("option", [["--walls", "exact"], ["--wall-points", "even"], ["--y-window", "swept"]])
 def test_solid_options_refused_for_a_json_stock(case, capsys, option):
     status, _, err = run(BASE + option, capsys)
-    assert status == 2 and err == (f"abm: error: {option[0]} applies to a solid stock (.step, .stp, .brep, .brp, "
+    assert status == 2 and err == (f"abm: error: {option[0]}: applies to a solid stock (.step, .stp, .brep, .brp, "
                                    ".FCStd), not to stock.json\n")
 
 
@@ -149,13 +150,13 @@ def _nothing(folder):
         (_nothing, ["--stock", "missing.json"], "missing.json: cannot read: No such file or directory"),
         (_nothing, ["--phi-range", "a:b"], "--phi-range: expected START:END in degrees such as 0:180, got 'a:b'"),
         (_nothing, ["--phi-range", "0:90:180"], "--phi-range: expected START:END"),
-        (_nothing, ["--phi-range", "180:0"], "cut settings: phi range 180.0:0.0 must not be decreasing"),
-        (_nothing, ["--phi-step", "0"], "cut settings: phi_step must be positive, got 0.0"),
-        (_nothing, ["--diameter", "-12"], "tool: diameter must be positive, got -12.0"),
-        (_nothing, ["--flute-length", "nan"], "tool: flute_length must be a finite number, got nan"),
+        (_nothing, ["--phi-range", "180:0"], "--phi-range: must not be below the first rotation angle 180°, got 0°"),
+        (_nothing, ["--phi-step", "0"], "--phi-step: must be positive, got 0°"),
+        (_nothing, ["--diameter", "-12"], "--diameter: must be positive, got -12 mm"),
+        (_nothing, ["--flute-length", "nan"], "--flute-length: must be a finite number, got nan"),
         (_job(diameter=None), [], "job.json: diameter: must be a number, got null"),
         (_job(flutes="two"), [], "job.json: flutes: must be a number, got \"two\""),
-        (_job(flutes=2.5), [], "tool: flutes must be a whole number, got 2.5"),
+        (_job(flutes=2.5), [], "job.json: flutes: must be a whole number, got 2.5"),
         (_job(phi_range=[0]), [], "job.json: phi_range: must be [start, end] in degrees"),
         (_job(description=3), [], "job.json: description: must be a string"),
         (_job(tool="ball"), [], "job.json: unknown key 'tool'"),
@@ -164,7 +165,7 @@ def _nothing(folder):
         (_write("toolpath.csv", "x,y,z,theta_a,theta_b\n10,0,40,0,0\n20,0,40,0,0\n"), [],
          "toolpath.csv: the tool never touches the stock"),
         (_nothing, ["--out", "toolpath.csv/R.csv"], "toolpath.csv/R.csv: cannot write: "),
-        (_nothing, ["--out", "new/R.csv", "--diameter", "0"], "tool: diameter must be positive"),
+        (_nothing, ["--out", "new/R.csv", "--diameter", "0"], "--diameter: must be positive"),
         (_nothing, ["--plot", "R.csv"], "R.csv: written twice"),
         (_nothing, ["--toolpath", "toolpath.nc"], "toolpath.nc: unknown toolpath file type"),
         (_nothing, ["--stock", "stock.txt"], "stock.txt: unknown stock file type"),
@@ -212,7 +213,7 @@ def test_interrupt_while_writing_leaves_nothing(case, capsys, monkeypatch):
                 written.append(path)
                 raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli, "write_chunks", interrupt_after_first_chunk)
+    monkeypatch.setattr(runs, "write_chunks", interrupt_after_first_chunk)
     status, _, err = run(BASE, capsys)
     assert (status, err) == (130, "abm: interrupted\n")
     assert len(written) == 1 and sorted(os.listdir(case)) == INPUTS
@@ -222,7 +223,7 @@ def test_interrupt_in_the_engine(case, capsys, monkeypatch):
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli, "engage", interrupted)
+    monkeypatch.setattr(runs, "straight_engage", interrupted)
     status, _, _ = run(BASE, capsys)
     assert status == 130 and sorted(os.listdir(case)) == INPUTS
 

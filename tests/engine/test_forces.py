@@ -238,12 +238,12 @@ def test_engage_forces_columns(case, capsys):
 @pytest.mark.parametrize("options, message", [
     (["--ktc", "700"], "--ktc applies with --forces"),
     (["--immersion", "0:90"], "--immersion applies with --forces"),
-    (["--forces", "--ktc", "700", "--krc", "200"], "missing --kac: the forces need --material NAME or --ktc"),
+    (["--forces", "--ktc", "700", "--krc", "200"], "--kac: is required for the forces: give a material or the coefficients ktc, krc and kac"),
     (["--forces", "--material", "steel"], "--material: unknown material 'steel'"),
-    (["--forces", "--material", "al7075-t6", "--ktc", "-5"], "--ktc: ktc must be positive"),
-    (["--forces", "--material", "al7075-t6", "--immersion", "0:200"], "--immersion: immersion 0:200 must satisfy"),
+    (["--forces", "--material", "al7075-t6", "--ktc", "-5"], "--ktc: must be positive, got -5 N/mm²"),
+    (["--forces", "--material", "al7075-t6", "--immersion", "0:200"], "--immersion: must be within (0, 180]°, got 200°"),
     (["--forces", "--material", "al7075-t6", "--immersion", "30"], "--immersion: expected START:END"),
-    (["--forces", "--material", "al7075-t6", "--method", "zmap"], "--forces needs --method abm"),
+    (["--forces", "--material", "al7075-t6", "--method", "zmap"], "--forces: needs the abm method"),
 ])
 def test_engage_force_option_errors(case, capsys, options, message):
     status, _, err = run(BASE + options, capsys)
@@ -361,9 +361,9 @@ def test_engage_helical_forces_from_the_command_line(case, capsys):
                          CutSettings(0.1, 10, 0, 180, 5, 4000), Coefficients(700, 210, 120))
     np.testing.assert_allclose(results["fz"], forces.xyz[..., 2].reshape(-1), atol=1e-9)
     status, _, err = run(BASE + ["--helix", "95"], capsys)
-    assert status == 2 and err.startswith("abm: error: --helix: helix must be within (-90, 90) degrees")
+    assert status == 2 and err.startswith("abm: error: --helix: must be within (-90, 90)°, got 95°")
     status, _, err = run(BASE + ["--helix", "20", "--method", "zmap"], capsys)
-    assert status == 2 and err.startswith("abm: error: --helix needs --method abm")
+    assert status == 2 and err.startswith("abm: error: --helix: needs the abm method")
 
 
 def test_engage_forces_plot(case, capsys):

@@ -35,7 +35,7 @@ def _model(number):
     stock = load_stock(os.path.join(folder, "stock.json")).staircase
     path, _ = load_path(os.path.join(folder, "toolpath.csv"))
     job = load_job(os.path.join(folder, "job.json"))
-    settings_ = CutSettings(job["feed_per_tooth"], job["inclination"], *job["phi_range"], job["phi_step"])
+    settings_ = CutSettings(job["feed_per_tooth"], job["inclination"], job["phi_start"], job["phi_end"], job["phi_step"])
     return stock, path, job, settings_
 
 

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from abm_workbench.engine import Staircase, Tool, Toolpath, edge_lines
-from abm_workbench.errors import InputError
-from abm_workbench.jobs import PathHints, load_job, load_path, load_stock, resolve_parameters, swept_y_window
+from abm_workbench.errors import InputError, MissingParameter, ParameterError
+from abm_workbench.jobs import PathHints, load_job, load_path, load_stock, option_words, resolve, swept_y_window
 from tests.conftest import ROOT
 
 STOCK = {
@@ -32,7 +32,7 @@ AUXFUN/4
 END-OF-PATH
 """
 NONE = dict.fromkeys(("diameter", "flutes", "flute_length", "feed_per_tooth", "inclination", "spindle_rpm",
-                      "phi_range", "phi_step"))
+                      "phi_start", "phi_end", "phi_step"))
 
 
 @pytest.fixture
@@ -83,16 +83,16 @@ def test_parameters_apt_over_option_over_job_over_default(files):
     _, hints = load_path(files / "path.apt")
     job = {"diameter": 10.0, "flutes": 2.0, "flute_length": 30.0, "feed_per_tooth": 0.2, "phi_step": 5.0}
     given = {**NONE, "flute_length": 25.0, "spindle_rpm": 5000.0}
-    parameters = resolve_parameters(given, hints, job, str(files / "job.json"))
+    parameters = resolve(given, hints, job, str(files / "job.json"))
     values, sources = parameters.values, parameters.sources
-    assert (values["diameter"], sources["diameter"]) == (12.0, "path.apt CUTTER")
-    assert (values["flute_length"], sources["flute_length"]) == (30.0, "path.apt CUTTER")
-    assert (values["flutes"], sources["flutes"]) == (2.0, "job.json")
-    assert (values["spindle_rpm"], sources["spindle_rpm"]) == (4000.0, "path.apt SPINDL")
+    assert (values["diameter"], sources["diameter"]) == (12.0, ("file", "path.apt CUTTER"))
+    assert (values["flute_length"], sources["flute_length"]) == (30.0, ("file", "path.apt CUTTER"))
+    assert (values["flutes"], sources["flutes"]) == (2.0, ("job", "job.json"))
+    assert (values["spindle_rpm"], sources["spindle_rpm"]) == (4000.0, ("file", "path.apt SPINDL"))
     # A constant FEDRAT of 800 mm/min at 4000 rpm with 2 flutes: 0.1 mm per tooth.
-    assert sources["feed_per_tooth"] == "path.apt FEDRAT" and values["feed_per_tooth"] == pytest.approx(0.1)
-    assert (values["inclination"], sources["inclination"]) == (0.0, "default")
-    assert (values["phi_step"], sources["phi_step"]) == (5.0, "job.json")
+    assert sources["feed_per_tooth"] == ("file", "path.apt FEDRAT") and values["feed_per_tooth"] == pytest.approx(0.1)
+    assert (values["inclination"], sources["inclination"]) == (0.0, ("default", ""))
+    assert (values["phi_step"], sources["phi_step"]) == (5.0, ("job", "job.json"))
     # diameter 12 vs the job's 10, flute length 30 vs --flute-length 25, spindle 4000 vs
     # --spindle-rpm 5000, feed per tooth 0.1 vs the job's 0.2
     assert len(parameters.conflicts) == 4
@@ -116,18 +116,28 @@ def test_parameters_apt_over_option_over_job_over_default(files):
 def test_feed_per_tooth_from_the_apt_feed(feed, unit, rpm, expected):
     hints = PathHints("p.apt", spindle_rpm=rpm, feed=np.array(feed), feed_unit=unit)
     job = {"diameter": 10.0, "flutes": 2.0, "flute_length": 30.0, "feed_per_tooth": 0.3}
-    values = resolve_parameters(NONE, hints, job, "job.json").values
+    values = resolve(NONE, hints, job, "job.json").values
     assert values["feed_per_tooth"] == pytest.approx(0.3 if expected is None else expected)
 
 
 def test_missing_required_parameter():
-    with pytest.raises(InputError, match=r"missing --flutes \(or 'flutes' in a --job file\)"):
-        resolve_parameters({**NONE, "diameter": 10.0}, PathHints("p.csv"), {})
+    with pytest.raises(MissingParameter) as caught:
+        resolve({**NONE, "diameter": 10.0}, PathHints("p.csv"), {})
+    assert caught.value.field == "flutes"
+    assert option_words(caught.value) == "missing --flutes (or 'flutes' in a --job file)"
 
 
 def test_job_file(files):
     (files / "job.json").write_text(json.dumps({"diameter": 12, "phi_range": [0, 90], "description": "t"}))
-    assert load_job(files / "job.json") == {"diameter": 12.0, "phi_range": (0.0, 90.0), "description": "t"}
+    assert load_job(files / "job.json") == {"diameter": 12.0, "phi_start": 0.0, "phi_end": 90.0, "description": "t"}
+
+
+def test_job_file_values_are_checked_naming_the_file(files):
+    (files / "job.json").write_text(json.dumps({"diameter": -1}))
+    with pytest.raises(ParameterError) as caught:
+        load_job(files / "job.json")
+    assert (caught.value.field, caught.value.where) == ("diameter", str(files / "job.json"))
+    assert option_words(caught.value) == f"{files / 'job.json'}: diameter: must be positive, got -1 mm"
 
 
 def test_swept_window_holds_every_edge_point():

@@ -11,6 +11,7 @@ import pytest
 from hypothesis import given, settings
 
 from abm_workbench import cli, parallel
+from abm_workbench.jobs import run as runs
 from abm_workbench.engine import CutSettings, Engagement, Tool, engage
 from abm_workbench.formats.staircase_json import load_staircase
 from abm_workbench.formats.toolpath_csv import load_toolpath
@@ -174,8 +175,8 @@ def test_cli_on_the_dask_cluster_writes_the_same_bytes(tmp_path, capsys, single_
     [
         (["--workers", "-2"], "--workers: must be 0 (all cores) or a positive number of processes, got -2"),
         (["--scheduler", "localhost:8786"], "--scheduler: expected a Dask scheduler address such as tcp://"),
-        (["--method", "zmap", "--workers", "2"], "--workers applies to --method abm"),
-        (["--method", "zmap", "--scheduler", "tcp://127.0.0.1:8786"], "--scheduler applies to --method abm"),
+        (["--method", "zmap", "--workers", "2"], "--workers: applies to the abm method"),
+        (["--method", "zmap", "--scheduler", "tcp://127.0.0.1:8786"], "--scheduler: applies to the abm method"),
     ],
 )
 def test_cli_bad_parallel_options(tmp_path, capsys, extra, message):
@@ -212,7 +213,7 @@ def test_cli_engine_failure_names_the_cl_range_and_leaves_nothing(tmp_path, caps
     def broken(*args, **kwargs):
         raise FloatingPointError("overflow")
 
-    monkeypatch.setattr(cli, "engage", broken)
+    monkeypatch.setattr(runs, "straight_engage", broken)
     assert cli.main(engage_argv(tmp_path / "new" / "R.csv")) == 1
     assert capsys.readouterr().err == "abm: error: CL points 0..52: FloatingPointError: overflow\n"
     assert os.listdir(tmp_path) == []

@@ -223,7 +223,7 @@ def test_schedule_warns_about_cl_points_that_cannot_meet_the_limit(case, capsys)
     (["--max-force", "-1", "--out", "P.apt"], "abm: error: --max-force: must be a positive number"),
     (["--max-area", "1", "--min-feed", "-0.1", "--out", "P.apt"], "abm: error: --min-feed: must be a positive"),
     (["--max-area", "1", "--min-feed", "0", "--out", "P.apt"], "abm: error: --min-feed: must be a positive"),
-    (["--max-force", "100", "--out", "P.txt"], "abm: error: P.txt: --out must end in .apt, .cls or .csv"),
+    (["--max-force", "100", "--out", "P.txt"], "abm: error: --out: must end in .apt, .cls or .csv, got P.txt"),
     (["--max-force", "100", "--max-area", "1", "--out", "P.apt"], "abm: error: argument --max-area: not allowed"),
     (["--out", "P.apt"], "abm: error: one of the arguments --max-force --max-area is required"),
     (["--max-force", "100", "--out", "toolpath.csv"], "abm: error: toolpath.csv: is an input"),

@@ -200,12 +200,12 @@ def test_cli_zmap_end_to_end(case, capsys):
 
 
 @pytest.mark.parametrize("options, message", [
-    (["--grid", "0.2"], "--grid applies to --method zmap"),
-    (["--method", "abm", "--edge-step", "0.1"], "--edge-step applies to --method zmap"),
+    (["--grid", "0.2"], "--grid: applies to the Z-map method"),
+    (["--method", "abm", "--edge-step", "0.1"], "--edge-step: applies to the Z-map method"),
     (["--method", "zmap", "--grid", "0"], "--grid: must be a positive"),
     (["--method", "zmap", "--grid", "nan"], "--grid: must be a positive"),
     (["--method", "zmap", "--edge-step", "-0.1"], "--edge-step: must be a positive"),
-    (["--method", "zmap", "--grid", "0.00001"], "--method zmap: grid"),
+    (["--method", "zmap", "--grid", "0.00001"], "--method: the Z-map method: grid"),
     (["--method", "fast"], "invalid choice"),
     (["--method", "zmap", "--grid", "x"], "invalid float value"),
 ])

@@ -5,9 +5,7 @@
   solids, so JSON jobs never need it.
 - :func:`load_path`: a toolpath CSV (``.csv``) or an APT / CL file (``.apt``, ``.cls``), with
   what an APT file says about the tool, spindle and feed (:class:`PathHints`).
-- :func:`load_job`: a ``--job`` JSON of default cutting parameters.
-- :func:`resolve_parameters`: each parameter from the command line, else the APT file, else
-  the job file, else its default, remembering where it came from.
+- :func:`load_job`: a job JSON of default parameters, each checked by its declaration.
 
 The y window of a recognised solid is the stock's whole y range by default: the staircase
 then describes every point of the solid, so the engine and the boolean reference see the same
@@ -25,12 +23,13 @@ from typing import Optional
 
 import numpy as np
 
-from .engine import CutSettings, Staircase, Tool, Toolpath, rotation_matrix
-from .errors import InputError
-from .formats import check_keys, json_number, load_json_object
-from .formats.apt import MM_PER_INCH, load_apt
-from .formats.staircase_json import load_staircase
-from .formats.toolpath_csv import load_toolpath
+from ..engine import Staircase, Tool, Toolpath, rotation_matrix
+from ..errors import InputError
+from ..formats import check_keys, load_json_object
+from ..formats.apt import load_apt
+from ..formats.staircase_json import load_staircase
+from ..formats.toolpath_csv import load_toolpath
+from .parameters import BY_NAME
 
 SOLID_SUFFIXES = (".step", ".stp", ".brep", ".brp", ".fcstd")
 APT_SUFFIXES = (".apt", ".cls")
@@ -38,18 +37,6 @@ WALL_MODELS = ("exact", "quintic")
 WALL_POINTS = ("chebyshev", "even")
 #: Extra width (mm) on each side of the swept y window.
 SWEPT_MARGIN = 1.0
-#: A feed that varies by less than this fraction along the pass counts as constant.
-_FEED_SPREAD = 1e-9
-
-#: Marks a parameter without a default.
-REQUIRED = object()
-#: Cutting parameters (as the --job keys) and their defaults.
-PARAMETERS = {
-    "diameter": REQUIRED, "flutes": REQUIRED, "flute_length": REQUIRED, "feed_per_tooth": REQUIRED,
-    "inclination": 0.0, "spindle_rpm": None, "phi_range": (0.0, 180.0), "phi_step": 1.0,
-}
-
-
 @dataclass(frozen=True)
 class Stock:
     """A loaded stock.
@@ -74,7 +61,7 @@ class Stock:
         """The stock as a Part.Shape: the solid read, or for JSON the staircase built as a solid."""
         if self.shape is not None:
             return self.shape
-        from .cad.solids import staircase_solid
+        from ..cad.solids import staircase_solid
         return staircase_solid(self.staircase)
 
 
@@ -128,7 +115,7 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None):
         return Stock(load_staircase(name), name)
     if suffix not in SOLID_SUFFIXES:
         raise InputError(f"{name}: unknown stock file type; expected .json, .step, .stp, .brep, .brp or .FCStd")
-    from .cad.recognise import load_solid, recognise  # FreeCAD only for solids
+    from ..cad.recognise import load_solid, recognise  # FreeCAD only for solids
     shape = load_solid(name)
     if callable(y_window):
         y_window = y_window(shape.BoundBox.ZMax)
@@ -176,113 +163,31 @@ def swept_y_window(toolpath: Toolpath, tool: Tool, z_max=np.inf, margin=SWEPT_MA
     return float(low.min() - margin), float(high.max() + margin)
 
 
+#: Job-file keys holding a [start, end] pair -> the parameters they give.
+PAIRS = {"phi_range": ("phi_start", "phi_end"), "immersion": ("immersion_start", "immersion_end")}
+#: Job-file keys: every parameter (pairs as one key), the material and a description.
+JOB_KEYS = tuple(name for name in BY_NAME if not any(name in pair for pair in PAIRS.values())) + (
+    *PAIRS, "material", "description")
+
+
 def load_job(path):
-    """Cutting parameters of a --job JSON file: a dict with keys of PARAMETERS (+ description)."""
-    data = load_json_object(path)
-    check_keys(data, (), (*PARAMETERS, "description"), path)
+    """Parameters of a job JSON file: {parameter name: checked value, "material": name,
+    "description": text}; a pair such as "phi_range": [0, 180] gives its two parameters.
+    ParameterError naming the file for a bad value, InputError for a bad key or file."""
+    name = os.fspath(path)
+    data = load_json_object(name)
+    check_keys(data, (), JOB_KEYS, name)
     job = {}
     for key, value in data.items():
-        where = f"{path}: {key}"
-        if key == "description":
+        if key in ("description", "material"):
             if not isinstance(value, str):
-                raise InputError(f"{where}: must be a string")
+                raise InputError(f"{name}: {key}: must be a string")
             job[key] = value
-        elif key == "phi_range":
+        elif key in PAIRS:
             if not isinstance(value, list) or len(value) != 2:
-                raise InputError(f"{where}: must be [start, end] in degrees, e.g. [0, 180]")
-            job[key] = tuple(json_number(v, f"{where}[{i}]") for i, v in enumerate(value))
+                raise InputError(f"{name}: {key}: must be [start, end] in degrees, e.g. [0, 180]")
+            for field, item in zip(PAIRS[key], value):
+                job[field] = BY_NAME[field].check(item, name)
         else:
-            job[key] = json_number(value, where)
+            job[key] = BY_NAME[key].check(value, name)
     return job
-
-
-@dataclass(frozen=True)
-class Parameters:
-    """Resolved cutting parameters (keys of PARAMETERS) and where each came from.
-
-    values: {name: value}. sources: {name: "--option", "<path file> <RECORD>", "<job file>" or
-    "default"}. conflicts: messages where the toolpath file and the job file disagree.
-    """
-
-    values: dict
-    sources: dict
-    conflicts: tuple
-
-    def describe(self):
-        """One line: each parameter, its value and [its source]."""
-        v, s = self.values, self.sources
-        spindle = "none" if v["spindle_rpm"] is None else f"{v['spindle_rpm']:g} rpm"
-        start, end = v["phi_range"]
-        items = [
-            ("diameter", f"diameter {v['diameter']:g} mm"), ("flutes", f"{v['flutes']:g} flutes"),
-            ("flute_length", f"flute length {v['flute_length']:g} mm"),
-            ("feed_per_tooth", f"feed {v['feed_per_tooth']:g} mm/tooth"),
-            ("inclination", f"inclination {v['inclination']:g}°"), ("spindle_rpm", f"spindle {spindle}"),
-            ("phi_range", f"φ {start:g}..{end:g}°"), ("phi_step", f"step {v['phi_step']:g}°"),
-        ]
-        return ", ".join(f"{text} [{s[key]}]" for key, text in items)
-
-
-def resolve_parameters(given, hints: PathHints, job, job_source=None):
-    """Each cutting parameter from the toolpath file where it gives it (the tool and feed the
-    path was made for), else from `given` (command-line values, None when not given), else the
-    job, else its default; InputError for a missing required one. Where the file and the
-    command line or the job disagree, the file's value is used and `conflicts` says so.
-
-    given: {name: value or None} for the keys of PARAMETERS. The feed per tooth comes from the
-    APT feed only when it is the same at every CL point and, for a feed per minute, the spindle
-    speed is known: f_z = F / (n · Z) (mm/min), F / Z (mm/rev), inches converted.
-    """
-    values, sources, conflicts = {}, {}, []
-    from_path = {"diameter": (hints.diameter, "CUTTER"), "flute_length": (hints.flute_length, "CUTTER"),
-                 "spindle_rpm": (hints.spindle_rpm, "SPINDL")}
-    order = [key for key in PARAMETERS if key != "feed_per_tooth"] + ["feed_per_tooth"]
-    for key in order:
-        if key == "feed_per_tooth":
-            from_path[key] = (_feed_per_tooth(hints, values["flutes"], values["spindle_rpm"]), "FEDRAT")
-        file_value, record = from_path.get(key, (None, None))
-        if file_value is not None:
-            values[key], sources[key] = file_value, f"{os.path.basename(hints.source)} {record}"
-            option = f"--{key.replace('_', '-')}"
-            for other, where in ((given.get(key), option), (job.get(key), job_source)):
-                if other is not None and not np.isclose(other, file_value, rtol=1e-9, atol=0.0):
-                    conflicts.append(f"{hints.source} gives {key} {file_value:g}, {where} {other:g}: "
-                                     f"using {file_value:g}, the value the toolpath was made for")
-        elif given.get(key) is not None:
-            values[key], sources[key] = given[key], f"--{key.replace('_', '-')}"
-        elif key in job:
-            values[key], sources[key] = job[key], os.path.basename(job_source)
-        elif PARAMETERS[key] is REQUIRED:
-            raise InputError(f"missing --{key.replace('_', '-')} (or {key!r} in a --job file)")
-        else:
-            values[key], sources[key] = PARAMETERS[key], "default"
-    return Parameters(values, sources, tuple(conflicts))
-
-
-def tool_and_settings(values):
-    """(Tool, CutSettings) of resolved parameter values (Parameters.values); InputError if invalid."""
-    try:
-        tool = Tool(values["diameter"], values["flutes"], values["flute_length"])
-    except ValueError as error:
-        raise InputError(f"tool: {error}") from None
-    try:
-        settings = CutSettings(values["feed_per_tooth"], values["inclination"], *values["phi_range"],
-                               values["phi_step"], values["spindle_rpm"])
-    except ValueError as error:
-        raise InputError(f"cut settings: {error}") from None
-    return tool, settings
-
-
-def _feed_per_tooth(hints, flutes, spindle_rpm):
-    """Feed per tooth (mm) from a constant APT feed, or None (see resolve_parameters)."""
-    feed = hints.feed
-    if feed is None or hints.feed_unit is None or not np.isfinite(feed).all() or flutes is None:
-        return None
-    if np.ptp(feed) > _FEED_SPREAD * np.abs(feed).max():
-        return None
-    value = float(feed[0]) * (MM_PER_INCH if hints.feed_unit.startswith("I") else 1.0) / flutes
-    if hints.feed_unit.endswith("PM"):
-        if spindle_rpm is None:
-            return None
-        value /= spindle_rpm
-    return value if value > 0 else None

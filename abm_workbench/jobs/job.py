@@ -1,0 +1,164 @@
+"""A job: one run's inputs as any front end gives them, resolved into what the engine runs on.
+
+:class:`Job` holds the input files and the front end's own values (the command line's
+options, the engagement object's properties, the task panel's fields) by parameter name.
+:func:`prepare` reads the job file and the toolpath, resolves every parameter
+(:mod:`.resolve`) and checks it (:mod:`.parameters`); :func:`load_job_stock` reads the stock
+with the job's wall model and y window. Bad input raises InputError naming the file, or
+ParameterError naming the parameter, which the front end words its own way.
+
+Lengths in mm, angles in degrees.
+"""
+
+import dataclasses
+import functools
+import os
+import time
+from dataclasses import dataclass, field
+from typing import Optional
+
+from ..errors import InputError, ParameterError
+from ..forces import COEFFICIENT_NAMES, Coefficients, material
+from .inputs import SOLID_SUFFIXES, load_job, load_path, load_stock, swept_y_window
+from .parameters import BY_NAME, check_pairs
+from .resolve import resolve, tool_and_settings
+
+#: y window choices besides a (y0, y1) pair.
+Y_WINDOW_WORDS = ("whole", "swept")
+
+
+@dataclass(frozen=True)
+class Job:
+    """One run's inputs.
+
+    stock, toolpath: file paths. job_file: a job JSON of defaults, or None. given: {parameter
+    name: value or None} the front end's own values (None or missing: not given). forces: compute
+    the cutting forces. material: a material name (forces.MATERIALS) or None (the coefficients as
+    given). walls ("exact" / "quintic"), wall_points ("chebyshev" / "even"), y_window ("whole",
+    "swept" or (y0, y1) mm): a solid stock's recognition, None for the default.
+    """
+
+    stock: str
+    toolpath: str
+    job_file: Optional[str] = None
+    given: dict = field(default_factory=dict)
+    forces: bool = False
+    material: Optional[str] = None
+    walls: Optional[str] = None
+    wall_points: Optional[str] = None
+    y_window: object = None
+
+
+@dataclass(frozen=True)
+class Prepared:
+    """A job resolved: the job file's values (with "description"), the Toolpath and PathHints,
+    the Parameters, the Tool (with its helix) and CutSettings, and the force model
+    ((Coefficients, immersion (start, end) deg) or None without forces)."""
+
+    job: Job
+    defaults: dict
+    toolpath: object
+    hints: object
+    parameters: object
+    tool: object
+    settings: object
+    force_model: object
+
+    @property
+    def description(self):
+        """The job file's description, or ''."""
+        return self.defaults.get("description", "")
+
+    def warnings(self):
+        """What the toolpath file could not read and where the sources disagree, as messages."""
+        return [*self.hints.messages(), *self.parameters.conflicts]
+
+
+def prepare(job: Job, *, forces=None):
+    """The Prepared job (the stock is read apart, by load_job_stock). forces: override job.forces."""
+    defaults = load_job(job.job_file) if job.job_file else {}
+    toolpath, hints = load_path(job.toolpath)
+    parameters = resolve(job.given, hints, defaults, job.job_file)
+    helix = _value("helix", job, defaults)
+    tool, settings = tool_and_settings(parameters.values, helix)
+    model = force_model(job, defaults) if (job.forces if forces is None else forces) else None
+    return Prepared(job, defaults, toolpath, hints, parameters, tool, settings, model)
+
+
+def _value(name, job, defaults):
+    """A parameter outside the cutting ones (helix, coefficients, immersion): given, else the job
+    file's, else its default; checked."""
+    parameter = BY_NAME[name]
+    if job.given.get(name) is not None:
+        return parameter.check(job.given[name])
+    return defaults.get(name, parameter.default)
+
+
+def force_model(job: Job, defaults=None):
+    """(Coefficients, immersion (start, end) deg) of the job's material and coefficients.
+
+    The material (given, else the job file's) fills every coefficient; single coefficients given
+    override it. ParameterError naming the material or the coefficient that is bad or missing.
+    """
+    defaults = defaults or {}
+    name = job.material if job.material is not None else defaults.get("material")
+    values = {}
+    if name is not None:
+        try:
+            values = dataclasses.asdict(material(name))
+        except ValueError as error:
+            raise ParameterError("material", str(error)) from None
+    for key in COEFFICIENT_NAMES:
+        value = _value(key, job, defaults)
+        if value is not None:
+            values[key] = value
+    missing = [key for key in ("ktc", "krc", "kac") if key not in values]
+    if missing:
+        raise ParameterError(missing[0], "is required for the forces: give a material or the coefficients "
+                                         "ktc, krc and kac")
+    immersion = {key: _value(key, job, defaults) for key in ("immersion_start", "immersion_end")}
+    check_pairs(immersion)
+    return Coefficients(**values), (immersion["immersion_start"], immersion["immersion_end"])
+
+
+def is_solid(path):
+    """Whether the stock file `path` is a solid (STEP, BREP, FCStd) rather than a staircase JSON."""
+    return os.path.splitext(path)[1].lower() in SOLID_SUFFIXES
+
+
+def load_job_stock(prepared: Prepared):
+    """(Stock, seconds to read it) of a prepared job: a solid's options checked, the y window chosen.
+
+    ParameterError naming walls, wall_points or y_window when they are given for a JSON stock.
+    """
+    job = prepared.job
+    if not is_solid(job.stock):
+        for name in ("walls", "wall_points", "y_window"):
+            if getattr(job, name) is not None:
+                raise ParameterError(name, f"applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
+                                           f"{job.stock}")
+    window = job.y_window or ("swept" if job.walls == "quintic" else "whole")
+    if window == "whole":
+        window = None
+    elif window == "swept":
+        window = functools.partial(swept_y_window, prepared.toolpath, prepared.tool)  # with the solid's top z
+    elif not (isinstance(window, tuple) and len(window) == 2):
+        raise InputError(f"y window must be whole, swept or (y0, y1), got {window!r}")
+    started = time.perf_counter()
+    stock = load_stock(job.stock, walls=job.walls or "exact", wall_points=job.wall_points or "chebyshev",
+                       y_window=window)
+    return stock, time.perf_counter() - started
+
+
+def cl_indices(text, m, field="cl"):
+    """Sorted distinct CL indices from '0,22,40'; ParameterError(field) unless each is an integer in 0..m−1."""
+    indices = set()
+    for part in text.split(","):
+        try:
+            index = int(part)
+        except ValueError:
+            raise ParameterError(field, f"expected CL indices such as 0,22,40, got {text!r}") from None
+        if not 0 <= index < m:
+            raise ParameterError(field, f"CL point {index} is not in the pass (0..{m - 1})")
+        indices.add(index)
+    return sorted(indices)

@@ -1,0 +1,441 @@
+"""The runs both front ends share: engage, validate and schedule a job, writing their outputs.
+
+Each run takes a :class:`~.job.Job` and its own options, reports warnings and progress through
+callbacks, writes its files whole or not at all (an older file at the same path is replaced only
+on success; folders it made are removed again on failure) and returns what it found for the front
+end to show. The engine of flute 1 is the straight-edge ABM or, for a helical tool, flute 1 of the
+helix solver (:func:`flute_1`); the validation follows the tool likewise (:func:`validation`).
+
+Lengths in mm, angles in degrees, forces in N.
+"""
+
+import contextlib
+import dataclasses
+import os
+import re
+import time
+from typing import Optional
+
+import numpy as np
+
+from ..engine import engage as straight_engage
+from ..engine import flute_engagement, zmap_engage
+from ..errors import InputError, ParameterError
+from ..formats import replacing
+from ..formats.results_csv import chunk_texts, summary_path, write_chunks
+from ..forces import joined_forces, pass_forces
+from ..parallel import PassAssembly, map_chunks, toolpath_part, worker_count
+from .job import Job, cl_indices, load_job_stock, prepare
+
+
+def flute_1(staircase, tool, toolpath, settings, progress=None):
+    """Engagement of flute 1: the straight engine, or flute 0 of the helix solver for a helical tool."""
+    if tool.helix == 0.0:
+        return straight_engage(staircase, tool, toolpath, settings, progress=progress)
+    return flute_engagement(staircase, tool, toolpath, settings, progress=progress).as_engagement(0)
+
+
+def forces_of(prepared, staircase, engagement, toolpath=None, feed=None):
+    """The Forces of a prepared job with forces on, over `toolpath` (default the job's), reusing flute 1's
+    straight-edge lengths of `engagement`."""
+    coefficients, immersion = prepared.force_model
+    return pass_forces(staircase, prepared.tool, toolpath or prepared.toolpath, prepared.settings, coefficients,
+                       immersion=immersion, feed=feed,
+                       first=engagement.length if prepared.tool.helix == 0.0 else None)
+
+
+def no_engagement(job: Job):
+    """The error for a pass whose tool never touches the stock."""
+    return InputError(f"{job.toolpath}: the tool never touches the stock: no CL point of the pass engages it "
+                      f"(are the toolpath and {job.stock} in the same frame?)")
+
+
+def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None):
+    """(Validation of flute 1 or the first checked flute, HelixValidation or None) of the engine against
+    OpenCASCADE booleans: straight edges by ``validation.validate``, a helical tool (or chosen `flutes`,
+    0-based) by ``validation.validate_helix``. validation.NoEngagementError when the tool never touches
+    the stock."""
+    from ..validation import validate, validate_helix
+
+    if tool.helix == 0.0 and flutes is None:
+        return validate(solid, staircase, tool, toolpath, settings, progress=progress), None
+    helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress)
+    return helix.flute(helix.flutes[0]), helix
+
+
+def check_outputs(outputs, inputs):
+    """Output paths checked before any work: InputError if an output's folder cannot be made, or
+    outputs clash with each other or with an input (links resolved)."""
+    seen = {}
+    for path in outputs:
+        folder = os.path.dirname(os.path.abspath(path))
+        while not os.path.exists(folder):
+            folder = os.path.dirname(folder)
+        if not os.path.isdir(folder):
+            raise InputError(f"{path}: cannot write: {folder} is not a folder")
+        key = os.path.normcase(os.path.realpath(path))
+        if key in seen:
+            raise InputError(f"{path}: written twice (as {seen[key]} too); choose another name")
+        seen[key] = path
+    for path in inputs:
+        if os.path.normcase(os.path.realpath(path)) in seen:
+            raise InputError(f"{path}: is an input and would be overwritten by an output")
+
+
+def _inputs(job):
+    """The input files of a job."""
+    return [job.stock, job.toolpath] + ([job.job_file] if job.job_file else [])
+
+
+def check_report_outputs(job, report, fcstd=None):
+    """The report folder and FCStd can be written, replace nothing but an older report, hold no input."""
+    inputs = _inputs(job)
+    check_outputs([report] + ([fcstd] if fcstd else []), inputs)
+    folder = os.path.realpath(report)
+    if os.path.exists(folder) and not os.path.isdir(folder):
+        raise ParameterError("report", f"must be a folder, and {report} is a file")
+    if os.path.isdir(folder) and os.listdir(folder) and not os.path.isfile(os.path.join(folder, "index.html")):
+        raise InputError(f"{report}: folder holds files but no report (index.html); it would be replaced "
+                         "as a whole: choose a new or empty folder")
+    inside = [path for path in inputs + ([fcstd] if fcstd else [])
+              if os.path.realpath(path).startswith(folder + os.sep)]
+    if inside:
+        raise InputError(f"{inside[0]}: lies inside the report folder {report}, which is replaced as a whole")
+    if fcstd and not fcstd.lower().endswith(".fcstd"):
+        raise ParameterError("fcstd", f"must end in .FCStd, got {fcstd}")
+
+
+@contextlib.contextmanager
+def output_folders(outputs):
+    """Make the missing folders of `outputs`; remove the ones made (if empty) when the block fails."""
+    made = []
+    for path in outputs:
+        folder, missing = os.path.dirname(os.path.abspath(path)), []
+        while not os.path.exists(folder):
+            folder, missing = os.path.dirname(folder), missing + [folder]
+        for folder in reversed(missing):
+            os.mkdir(folder)
+            made.append(folder)
+    try:
+        yield
+    except BaseException:
+        for folder in reversed(made):
+            with contextlib.suppress(OSError):
+                os.rmdir(folder)
+        raise
+
+
+# ---- engage --------------------------------------------------------------------------------------
+
+@dataclasses.dataclass(frozen=True)
+class Method:
+    """How engage computes: "abm" (in chunks on `workers` local processes, 0 all cores, or on the Dask
+    cluster at `scheduler`) or "zmap" (the Z-map baseline with cells of `grid` mm, the edge sampled every
+    `edge_step` mm)."""
+
+    name: str = "abm"
+    grid: Optional[float] = None
+    edge_step: Optional[float] = None
+    workers: int = 1
+    scheduler: Optional[str] = None
+
+
+@dataclasses.dataclass(frozen=True)
+class EngageResult:
+    """What engage found: the Prepared job, the Stock, the outputs written, the depth of cut (m,) (NaN
+    where a CL point does not engage), the peak force (m,) or None, the seconds it took."""
+
+    prepared: object
+    stock: object
+    written: list
+    depth: np.ndarray
+    peak: Optional[np.ndarray]
+    seconds: float
+
+
+@dataclasses.dataclass(frozen=True)
+class ChunkResult:
+    """What a chunk task of engage gives back: (results, summary) CSV text and the depth of cut
+    (n,); the chunk's Engagement and Forces when kept for the plots; the peak resultant force
+    (n,) when forces are computed."""
+
+    texts: tuple
+    depth: np.ndarray
+    engagement: object = None
+    forces: object = None
+    peak: object = None
+
+
+@dataclasses.dataclass(frozen=True)
+class CsvChunk:
+    """Task of a parallel engage: a chunk of CL points engaged (flute 1, straight or helical) and,
+    when force_model = (Coefficients, immersion) is given, its forces, as a ChunkResult; the
+    Engagement and Forces are kept for the plots when `keep`."""
+
+    keep: bool
+    force_model: object = None
+
+    def __call__(self, job, start, stop):
+        stock, tool, toolpath, settings = job
+        part = toolpath_part(toolpath, start, stop)
+        engagement = flute_1(stock, tool, part, settings)
+        forces = None
+        if self.force_model is not None:
+            coefficients, immersion = self.force_model
+            forces = pass_forces(stock, tool, part, settings, coefficients, immersion=immersion,
+                                 first=engagement.length if tool.helix == 0.0 else None)
+        return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces), engagement.depth_of_cut,
+                           engagement if self.keep else None, forces if self.keep else None,
+                           None if forces is None else forces.peak)
+
+
+def _kept(chunks, depth, peak, whole, force_parts):
+    """The CSV texts of (job, start, stop, ChunkResult) `chunks`, in order; each chunk's depth of
+    cut and peak force stored into `depth` and `peak` (m,), its Engagement added to `whole` (a
+    PassAssembly) and its Forces appended to `force_parts`, when these are given."""
+    for _, start, stop, result in chunks:
+        depth[start:stop] = result.depth
+        if result.peak is not None:
+            peak[start:stop] = result.peak
+        if whole is not None:
+            whole.add(result.engagement, start)
+        if force_parts is not None:
+            force_parts.append(result.forces)
+        yield result.texts
+
+
+def check_method(method: Method, forces, helix):
+    """ParameterError (grid, edge_step, workers, scheduler, method) for options that do not fit the method."""
+
+    if method.name == "abm":
+        for name in ("grid", "edge_step"):
+            if getattr(method, name) is not None:
+                raise ParameterError(name, "applies to the Z-map method (zmap), not to abm")
+        try:
+            worker_count(method.workers)
+        except ValueError:
+            raise ParameterError("workers", f"must be 0 (all cores) or a positive number of processes, got "
+                                            f"{method.workers}") from None
+        if method.scheduler is not None and not re.fullmatch(r"[a-z][a-z0-9+.-]*://\S+", method.scheduler):
+            raise ParameterError("scheduler", f"expected a Dask scheduler address such as tcp://127.0.0.1:8786, "
+                                              f"got {method.scheduler!r}")
+        return
+    if method.workers != 1 or method.scheduler:
+        raise ParameterError("workers" if method.workers != 1 else "scheduler",
+                             "applies to the abm method: the Z-map updates its stock CL point by CL point")
+    for name in ("grid", "edge_step"):
+        value = getattr(method, name)
+        if value is not None and not (np.isfinite(value) and value > 0.0):
+            raise ParameterError(name, f"must be a positive number of mm, got {value:g}")
+    if forces:
+        raise ParameterError("forces", "needs the abm method")
+    if helix:
+        raise ParameterError("helix", "needs the abm method")
+
+
+def zmap_cells(method: Method):
+    """(grid, edge step) mm of the Z-map method: the paper's 0.2 mm grid and the grid as edge step by default."""
+    grid = 0.2 if method.grid is None else method.grid
+    return grid, grid if method.edge_step is None else method.edge_step
+
+
+def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=None):
+    """Engage a job: the results CSV `out`, its summary beside it and, with `plot`, the PNG (and with
+    forces its force PNG). Returns an EngageResult. warn(message) is told each warning."""
+    helix = job.given.get("helix")
+    check_method(method, job.forces, helix not in (None, 0.0))
+    prepared = prepare(job)
+    for message in prepared.warnings():
+        warn(message)
+    toolpath, tool, settings = prepared.toolpath, prepared.tool, prepared.settings
+    outputs = [out, summary_path(out)] + ([plot] if plot else [])
+    if plot and prepared.force_model is not None:
+        outputs.append(os.path.splitext(plot)[0] + ".forces.png")
+    check_outputs(outputs, _inputs(job))
+    stock, _ = load_job_stock(prepared)
+
+    started = time.perf_counter()
+    whole = PassAssembly(len(toolpath)) if plot else None
+    force_parts = [] if plot and prepared.force_model is not None else None
+    depth, peak = np.full(len(toolpath), np.nan), np.full(len(toolpath), np.nan)
+    with output_folders(outputs), replacing(*outputs) as temporaries:
+        if method.name == "abm":
+            chunks = map_chunks(CsvChunk(keep=whole is not None, force_model=prepared.force_model),
+                                [(stock.staircase, tool, toolpath, settings)],
+                                workers=method.workers, scheduler=method.scheduler, progress=progress)
+        else:
+            grid, step = zmap_cells(method)
+            try:
+                engagement = zmap_engage(stock.staircase, tool, toolpath, settings, grid=grid, edge_step=step,
+                                         progress=progress)
+            except ValueError as error:
+                raise ParameterError("method", f"the Z-map method: {error}") from None
+            chunks = [(0, 0, len(toolpath), ChunkResult(chunk_texts(engagement, 0, toolpath=toolpath),
+                                                        engagement.depth_of_cut, engagement))]
+        write_chunks(_kept(chunks, depth, peak, whole, force_parts), temporaries[0], temporaries[1])
+        if np.isnan(depth).all():
+            raise no_engagement(job)
+        if whole is not None:
+            from ..report.plots import pass_figure  # here: matplotlib takes a while to import
+            title = prepared.description or (
+                f"{os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}: D {tool.diameter:g} mm, "
+                f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
+            pass_figure(whole.engagement(), title=title).savefig(temporaries[2], format="png")
+        if force_parts is not None:
+            from ..report.forces import chosen_cl, force_over_phi_figure
+            forces = joined_forces(force_parts)
+            force_over_phi_figure(forces, chosen_cl(forces), along=True).savefig(temporaries[3], format="png")
+    return EngageResult(prepared, stock, outputs, depth, None if prepared.force_model is None else peak,
+                        time.perf_counter() - started)
+
+
+# ---- validate ------------------------------------------------------------------------------------
+
+@dataclasses.dataclass(frozen=True)
+class ValidateResult:
+    """What validate found: the Prepared job, the Stock, the Validation (flute 1 or the first checked
+    flute), the HelixValidation or None, the Forces or None, the files written."""
+
+    prepared: object
+    stock: object
+    validation: object
+    helix: object
+    forces: object
+    written: list
+
+
+def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, warn=print, progress=None):
+    """Validate a job against OpenCASCADE booleans: the HTML report folder `report` and, with `fcstd`, an
+    annotated FreeCAD document. cls: CL indices shown in detail ('0,22,40'), None: chosen. flute: check
+    only this flute (1-based) of a helical tool. Returns a ValidateResult."""
+    from ..report.html import ReportJob, report_cls, write_report
+    from ..report.staging import staged
+    from ..validation import NoEngagementError, write_flutes_csv
+
+    prepared = prepare(job)
+    for message in prepared.warnings():
+        warn(message)
+    toolpath, tool, settings = prepared.toolpath, prepared.tool, prepared.settings
+    chosen = cl_indices(cls, len(toolpath)) if cls else None
+    flutes = None
+    if flute is not None:
+        if not 1 <= flute <= tool.flutes:
+            raise ParameterError("flute", f"must be 1..{tool.flutes} (the tool has {tool.flutes} flutes), got {flute}")
+        flutes = [flute - 1]
+    check_report_outputs(job, report, fcstd)
+    stock, stock_seconds = load_job_stock(prepared)
+    started = time.perf_counter()
+    solid = stock.solid()
+    stock_seconds += time.perf_counter() - started
+
+    try:
+        checked, helix = validation(solid, stock.staircase, tool, toolpath, settings, flutes=flutes,
+                                    progress=progress)
+    except NoEngagementError:
+        raise no_engagement(job) from None
+    engagement = checked.engagement
+    forces = forces_of(prepared, stock.staircase, engagement) if prepared.force_model is not None else None
+    shown = report_cls(checked, chosen)
+    walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
+    run = "ABM against booleans" if helix is None else (
+        f"Helical edges (β = {tool.helix:g}°), flute {helix.flutes[0] + 1} of {tool.flutes}, ABM against booleans")
+    title = f"{run}: {os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}"
+    description = prepared.description if helix is None else " ".join(filter(None, [
+        prepared.description, flutes_text(helix)]))
+    report_job = ReportJob(title, description, job.stock, job.toolpath, toolpath, tool, settings,
+                           prepared.parameters.describe(), walls, stock.y_window, stock_seconds)
+
+    for path in [report] + ([fcstd] if fcstd else []):
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with staged(report, folder=True) as folder, (staged(fcstd) if fcstd else contextlib.nullcontext()) as document:
+        page = write_report(folder, checked, report_job, shown, forces)
+        if helix is not None:
+            write_flutes_csv(os.path.join(folder, "flutes.csv"), helix)
+        if document:
+            from ..cad.annotate import write_annotated
+            name = re.sub(r"[^A-Za-z0-9_]", "_", os.path.splitext(os.path.basename(fcstd))[0])
+            write_annotated(document, f"ABM_{name}", solid, engagement, toolpath, tool, cls=chosen,
+                            intersections=[cl for cl, _ in shown])
+    written = [os.path.join(report, os.path.basename(page))] + ([fcstd] if fcstd else [])
+    return ValidateResult(prepared, stock, checked, helix, forces, written)
+
+
+def flutes_text(helix_validation):
+    """One line per checked flute's largest |ABM − boolean| of axial length, LEP and UEP (mm)."""
+    parts = [f"flute {row['flute'] + 1}: max |Δ axial length| {row['max_axial_difference']:.3g} mm, "
+             f"|Δ LEP| {row['max_lep_difference']:.3g} mm, |Δ UEP| {row['max_uep_difference']:.3g} mm, "
+             f"{row['mismatched']} mismatched of {row['instants']} instants"
+             for row in helix_validation.flute_summary()]
+    return "Helical edges against the helix boolean: " + "; ".join(parts) + " (per instant in flutes.csv)."
+
+
+# ---- schedule ------------------------------------------------------------------------------------
+
+@dataclasses.dataclass(frozen=True)
+class ScheduleResult:
+    """What schedule found: the Prepared job, the Stock, the Schedule (feeds before and after), the
+    limit's kind ("force" or "area") and value, and the files written."""
+
+    prepared: object
+    stock: object
+    plan: object
+    kind: str
+    limit: float
+    written: list
+
+
+def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, report=None, warn=print):
+    """The feed per CL point that keeps the peak force (max_force, N) or the cut area (max_area, mm²)
+    at or under the limit, never above the programmed feed nor below `min_feed` (mm/tooth): the
+    toolpath rewritten to `out` (APT / CL or CSV) and, with `report`, an HTML report. Returns a
+    ScheduleResult; CL points that cannot meet the limit are told to warn()."""
+    from ..formats.apt_writer import write_feed_toolpath
+    from ..report.staging import staged
+    from ..scheduling import programmed_feed
+    from ..scheduling import schedule as feed_schedule
+
+    kind, limit = ("force", max_force) if max_force is not None else ("area", max_area)
+    if not (np.isfinite(limit) and limit > 0.0):
+        raise ParameterError(f"max_{kind}", f"must be a positive number, got {limit:g}")
+    if min_feed is not None and not (np.isfinite(min_feed) and min_feed > 0.0):
+        raise ParameterError("min_feed", f"must be a positive feed per tooth (mm), got {min_feed:g}")
+    if os.path.splitext(out)[1].lower() not in (".apt", ".cls", ".csv"):
+        raise ParameterError("out", f"must end in .apt, .cls or .csv, got {out}")
+    prepared = prepare(job, forces=True)
+    for message in prepared.warnings():
+        warn(message)
+    toolpath, tool, settings, hints = prepared.toolpath, prepared.tool, prepared.settings, prepared.hints
+    try:
+        programmed = programmed_feed(len(toolpath), settings.feed_per_tooth, feed=hints.feed, unit=hints.feed_unit,
+                                     flutes=tool.flutes, spindle_rpm=settings.spindle_rpm)
+    except ValueError as error:
+        raise InputError(f"{job.toolpath}: {error}") from None
+    if report:
+        check_report_outputs(job, report)
+    check_outputs([out] + ([report] if report else []), _inputs(job))
+    stock, _ = load_job_stock(prepared)
+    engagement = flute_1(stock.staircase, tool, toolpath, settings)
+    if not engagement.engaged.any():
+        raise no_engagement(job)
+    forces = forces_of(prepared, stock.staircase, engagement, feed=programmed)
+    plan = feed_schedule(forces, limit, kind=kind, min_feed=min_feed)
+    unit = "N" if kind == "force" else "mm²"
+    if plan.infeasible.any():
+        shown = ", ".join(f"CL {i} (peak {plan.after[i]:.4g} {unit})" for i in np.flatnonzero(plan.infeasible)[:10])
+        more = "" if plan.infeasible.sum() <= 10 else f" and {int(plan.infeasible.sum()) - 10} more"
+        warn(f"{int(plan.infeasible.sum())} CL points cannot keep the {kind} at or under {limit:g} {unit} at any "
+             f"feed from the minimum feed up; they get the minimum feed: {shown}{more}")
+    comment = (f"re-scheduled by abm schedule: peak {kind} <= {limit:g} {unit}, feed per tooth "
+               f"{plan.feed.min():.6g}..{plan.feed.max():.6g} mm (programmed {plan.programmed.max():.6g} mm)")
+    for path in [out] + ([report] if report else []):
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with (staged(report, folder=True) if report else contextlib.nullcontext()) as folder:
+        if folder:
+            from ..report.forces import write_schedule_report
+            title = prepared.description or f"{os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}"
+            write_schedule_report(folder, forces, plan, title=f"Feed schedule: {title}",
+                                  parameters=prepared.parameters.describe())
+        write_feed_toolpath(out, toolpath, plan.feed, flutes=tool.flutes, diameter=tool.diameter,
+                            flute_length=tool.flute_length, spindle_rpm=settings.spindle_rpm, comment=comment)
+    written = [out] + ([os.path.join(report, "index.html")] if report else [])
+    return ScheduleResult(prepared, stock, plan, kind, limit, written)
