@@ -27,11 +27,12 @@ fz (N), torque (N·mm) and, with a spindle speed, power (W) per instant; they ar
 the results (:meth:`EngagementFeature.forces`, a :class:`.stored.PassForces`). Version 3 added
 the helix and the forces; older objects are migrated with straight flutes and forces off.
 
-Parameters follow the command line's precedence (:func:`abm_workbench.jobs.resolve_parameters`):
-what an APT / CL toolpath file gives (tool diameter, flute length, spindle speed, a constant
-feed) wins over the properties, which play the command-line options; a required value that is
-0 and not in the file is "missing", with the command line's message. ``create_engagement``
-fills the properties not given from the file, so they show the values used.
+Parameters follow the job model's precedence (:func:`abm_workbench.jobs.resolve`): what an
+APT / CL toolpath file gives (tool diameter, flute length, spindle speed, a constant feed) wins
+over the properties, which play the command-line options; a required value that is 0 and not in
+the file is missing. Every value is checked by its declaration (``jobs.parameters``); a bad one
+fails the recompute with the parameter's plain label and its property named.
+``create_engagement`` fills the properties not given from the file, so they show the values used.
 
 Results are not pickled into the document. ``execute`` writes the results CSV and its summary
 (:mod:`abm_workbench.formats.results_csv`) to ``<folder of the .FCStd>/<file stem>_abm/<object
@@ -49,7 +50,6 @@ compound; see docs/FEATURES.md for its cost.
 """
 
 import atexit
-import dataclasses
 import hashlib
 import os
 import shutil
@@ -60,11 +60,12 @@ from typing import NamedTuple
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
-from ..engine import engage, flute_engagement
-from ..errors import InputError
-from ..forces import COEFFICIENT_NAMES, FULL_SLOT, MATERIALS, Coefficients, check_immersion, pass_forces
+from ..errors import InputError, ParameterError
+from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..formats.results_csv import write_results
-from ..jobs import PARAMETERS, WALL_MODELS, Parameters, resolve_parameters, swept_y_window, tool_and_settings
+from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
+from ..jobs import tool_and_settings
+from ..jobs.run import flute_1, pass_forces_of
 from .base import READ_ONLY, FeatureProxy, add_properties, document_or_active
 from .stored import PassForces, read_engagement, read_forces
 from .stock import StockFeature
@@ -74,27 +75,17 @@ from .toolpath import ToolpathFeature, polyline
 WALL_CHOICES = ("stock",) + WALL_MODELS
 #: YWindow choices: auto is the command line's default (swept for quintic walls, whole for exact ones).
 Y_WINDOWS = ("auto", "whole", "swept", "custom")
-#: Material choices: the force table's materials, or custom (the coefficient properties as typed).
-MATERIAL_CHOICES = tuple(MATERIALS) + ("custom",)
 #: Coefficient name (forces.COEFFICIENT_NAMES) -> property.
 COEFFICIENT_PROPERTIES = {name: name.capitalize() for name in COEFFICIENT_NAMES}
 #: create_engagement keyword -> (property, value when not set). Required ones are 0 when not set.
 SETTINGS = {
     "diameter": ("Diameter", 0.0), "flutes": ("Flutes", 0), "flute_length": ("FluteLength", 0.0),
     "feed_per_tooth": ("FeedPerTooth", 0.0), "spindle_rpm": ("SpindleSpeed", 0.0),
-    "inclination": ("Inclination", PARAMETERS["inclination"]),
-    "phi_start": ("PhiStart", PARAMETERS["phi_range"][0]), "phi_end": ("PhiEnd", PARAMETERS["phi_range"][1]),
-    "phi_step": ("PhiStep", PARAMETERS["phi_step"]), "helix": ("HelixAngle", 0.0),
+    **{name: (BY_NAME[name].prop, BY_NAME[name].default)
+       for name in ("inclination", "phi_start", "phi_end", "phi_step", "helix", "immersion_start", "immersion_end")},
     "forces": ("Forces", False), "material": ("Material", MATERIAL_CHOICES[0]),
     **{name: (COEFFICIENT_PROPERTIES[name], getattr(MATERIALS[MATERIAL_CHOICES[0]][0], name))
        for name in COEFFICIENT_NAMES},
-    "immersion_start": ("ImmersionStart", FULL_SLOT[0]), "immersion_end": ("ImmersionEnd", FULL_SLOT[1]),
-}
-#: Where resolve_parameters says "--option", the engagement object took the value from this property.
-_PROPERTY_SOURCE = {
-    "--diameter": "Diameter", "--flutes": "Flutes", "--flute-length": "FluteLength",
-    "--feed-per-tooth": "FeedPerTooth", "--inclination": "Inclination", "--spindle-rpm": "SpindleSpeed",
-    "--phi-range": "PhiStart, PhiEnd", "--phi-step": "PhiStep",
 }
 #: Property type flag: changing it does not touch the object (FreeCAD's Prop_Output).
 _PROP_OUTPUT = 8
@@ -103,25 +94,32 @@ _TEMP_FOLDERS = {}  # document Name -> temporary results folder of an unsaved do
 
 class EngagementInputs(NamedTuple):
     """The engine's inputs of an engagement object: the Toolpath and PathHints of its file, the
-    resolved Parameters (sources named by property), the Tool and CutSettings, and the stock as a
+    resolved Parameters, the Tool and CutSettings, and the stock as a
     :class:`abm_workbench.jobs.Stock` (its staircase, solid and wall model)."""
 
     toolpath: object
     hints: object
-    parameters: Parameters
+    parameters: object
     tool: object
     settings: object
     stock: object
 
 
 def given_parameters(obj):
-    """The engagement object's cutting properties as resolve_parameters' `given` (unset: None)."""
+    """The engagement object's cutting properties as jobs.resolve's `given` (unset: None)."""
     return {
         "diameter": _or_none(obj.Diameter.Value), "flutes": _or_none(obj.Flutes),
         "flute_length": _or_none(obj.FluteLength.Value), "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
         "inclination": obj.Inclination.Value, "spindle_rpm": _or_none(obj.SpindleSpeed),
-        "phi_range": (obj.PhiStart.Value, obj.PhiEnd.Value), "phi_step": obj.PhiStep.Value,
+        "phi_start": obj.PhiStart.Value, "phi_end": obj.PhiEnd.Value, "phi_step": obj.PhiStep.Value,
     }
+
+
+def property_words(label, error):
+    """InputError of a ParameterError of the engagement `label` in plain words, its property named."""
+    parameter = BY_NAME.get(error.field)
+    prop = f" (property {parameter.prop})" if parameter is not None and parameter.prop else ""
+    return InputError(f"{label}: {label_words(error)[:-1]}{prop}.")
 
 
 class EngagementFeature(FeatureProxy):
@@ -150,10 +148,8 @@ class EngagementFeature(FeatureProxy):
             ("App::PropertyLength", "FeedPerTooth", "feed per tooth f (required; a constant FEDRAT in the "
                                                     "toolpath file wins)", 0.0),
             ("App::PropertyFloat", "SpindleSpeed", "spindle speed (rpm), 0 for none (the file's SPINDL wins)", 0.0),
-            ("App::PropertyAngle", "Inclination", "tool inclination angle α", PARAMETERS["inclination"]),
-            ("App::PropertyAngle", "PhiStart", "first tool rotation angle φ reported", PARAMETERS["phi_range"][0]),
-            ("App::PropertyAngle", "PhiEnd", "last tool rotation angle φ reported", PARAMETERS["phi_range"][1]),
-            ("App::PropertyAngle", "PhiStep", "step of the rotation angle φ", PARAMETERS["phi_step"]),
+            *(("App::PropertyAngle", BY_NAME[name].prop, BY_NAME[name].help, BY_NAME[name].default)
+              for name in ("inclination", "phi_start", "phi_end", "phi_step")),
         ])
         add_properties(obj, "Display", [
             ("App::PropertyBool", "ShowSurfaces", "Shape: the engaged cutter surface of every CL point "
@@ -189,16 +185,16 @@ class EngagementFeature(FeatureProxy):
     def inputs(self, obj):
         """What the engine runs on, as ``execute`` resolves it (an :class:`EngagementInputs`).
 
-        InputError with the command line's message for bad or missing input.
+        InputError in plain words for bad or missing input.
         """
         toolpath, hints = _proxy(obj.Toolpath, ToolpathFeature, "Toolpath", obj).load(obj.Toolpath)
         stock_obj = obj.Stock
         stock_proxy = _proxy(stock_obj, StockFeature, "Stock", obj)
-        parameters = resolve_parameters(given_parameters(obj), hints, {})
-        sources = {key: _PROPERTY_SOURCE.get(source, source) for key, source in parameters.sources.items()}
-        parameters = Parameters(parameters.values, sources, parameters.conflicts)
-        tool, settings = tool_and_settings(parameters.values)
-        tool = helical_tool(obj.Label, tool, obj.HelixAngle.Value)
+        try:
+            parameters = resolve(given_parameters(obj), hints, {})
+            tool, settings = tool_and_settings(parameters.values, obj.HelixAngle.Value)
+        except ParameterError as error:
+            raise property_words(obj.Label, error) from None
         walls = None if obj.WallModel == "stock" else obj.WallModel
         if walls is not None and not stock_proxy.is_solid(stock_obj):
             raise InputError(f"WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
@@ -210,17 +206,14 @@ class EngagementFeature(FeatureProxy):
     def execute(self, obj):
         """Run the engine; store the results (CSV, read-only properties, Shape)."""
         self._result, self._written, self._forces = None, None, None
-        model = force_model(obj)
+        model = force_model_of(obj)
         toolpath, hints, parameters, tool, settings, stock = self.inputs(obj)
         staircase = stock.staircase
         if obj.YWindow != "custom":
             obj.YWindowMin, obj.YWindowMax = staircase.y_min, staircase.y_max
 
         started = time.perf_counter()
-        if tool.helix == 0.0:
-            result = engage(staircase, tool, toolpath, settings)
-        else:
-            result = flute_engagement(staircase, tool, toolpath, settings).as_engagement(0)
+        result = flute_1(staircase, tool, toolpath, settings)
         elapsed = time.perf_counter() - started
         if not result.engaged.any():
             raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "
@@ -230,9 +223,7 @@ class EngagementFeature(FeatureProxy):
         for message in warnings:
             FreeCAD.Console.PrintWarning(f"{obj.Label}: {message}\n")
         if model is not None:
-            coefficients, immersion = model
-            forces = pass_forces(staircase, tool, toolpath, settings, coefficients, immersion=immersion,
-                                 first=result.length if tool.helix == 0.0 else None)
+            forces = pass_forces_of(staircase, tool, toolpath, settings, model, result)
             self._forces = PassForces.of(forces)
             obj.PeakForce = float(forces.peak.max())
             obj.ForceFeedPerTooth = settings.feed_per_tooth
@@ -242,7 +233,7 @@ class EngagementFeature(FeatureProxy):
         self._write(obj, results_path(obj))
         self._summary(obj, result)
         obj.EngineTime = elapsed
-        obj.Parameters = parameters.describe()
+        obj.Parameters = parameters.describe(lambda parameter: parameter.prop)
         obj.Warnings = warnings
         obj.Shape = engaged_surfaces(result) if obj.ShowSurfaces else Part.Shape()
 
@@ -381,8 +372,8 @@ def add_version_3_properties(obj):
            f"{name[:1].upper()}_{name[1:]}: {'tangential' if name[1] == 't' else 'radial' if name[1] == 'r' else 'axial'} "
            f"{cut if name.endswith('c') else edge}") for name in COEFFICIENT_NAMES],
         ("App::PropertyAngle", "ImmersionStart", "angle from which a flute cuts (0 <= start < end <= 180)",
-         FULL_SLOT[0]),
-        ("App::PropertyAngle", "ImmersionEnd", "angle up to which a flute cuts", FULL_SLOT[1]),
+         BY_NAME["immersion_start"].default),
+        ("App::PropertyAngle", "ImmersionEnd", "angle up to which a flute cuts", BY_NAME["immersion_end"].default),
     ])
     add_properties(obj, "Results", [
         ("App::PropertyFloat", "PeakForce", "largest resultant cutting force over the pass (N); 0 with forces off"),
@@ -406,44 +397,29 @@ def show_material(obj):
         obj.setEditorMode(prop, 0 if custom else READ_ONLY)
 
 
-def helical_tool(label, tool, helix):
-    """`tool` with helix angle `helix` (deg); InputError "<label>: HelixAngle: <the Tool's message>"."""
-    try:
-        return dataclasses.replace(tool, helix=helix)
-    except ValueError as error:
-        raise InputError(f"{label}: HelixAngle: {error}") from None
-
-
-def force_model(obj):
+def force_model_of(obj):
     """(Coefficients, immersion (start, end) deg) of the engagement `obj`, or None with Forces off.
 
-    InputError naming the object with the command line's message for bad coefficients or immersion.
+    InputError in plain words, the property named, for bad coefficients or immersion.
     """
     if not obj.Forces:
         return None
     values = {prop: getattr(obj, prop) for prop in COEFFICIENT_PROPERTIES.values()}
-    return force_settings(obj.Label, obj.Material, values, (obj.ImmersionStart.Value, obj.ImmersionEnd.Value))
+    try:
+        return force_settings(obj.Material, values, (obj.ImmersionStart.Value, obj.ImmersionEnd.Value))
+    except ParameterError as error:
+        raise property_words(obj.Label, error) from None
 
 
-def force_settings(label, material_name, values, immersion):
+def force_settings(material_name, values, immersion):
     """(Coefficients, immersion (start, end) deg) of a material name of MATERIAL_CHOICES (custom: the
-    coefficient `values`, {property: number}) and an immersion (start, end) deg.
-
-    InputError "<label>: <property>: <the command line's message>" when they are bad.
-    """
+    coefficient `values`, {property: number}) and an immersion (start, end) deg; ParameterError naming
+    the coefficient or immersion that is bad."""
+    given = {"immersion_start": immersion[0], "immersion_end": immersion[1]}
     if material_name == "custom":
-        values = {name: values[prop] for name, prop in COEFFICIENT_PROPERTIES.items()}
-    else:
-        values = dataclasses.asdict(MATERIALS[material_name][0])
-    try:
-        coefficients = Coefficients(**values)
-    except ValueError as error:
-        raise InputError(f"{label}: {COEFFICIENT_PROPERTIES[str(error).split()[0]]}: {error}") from None
-    try:
-        immersion = check_immersion(immersion)
-    except ValueError as error:
-        raise InputError(f"{label}: ImmersionStart, ImmersionEnd: {error}") from None
-    return coefficients, immersion
+        given.update({name: values[prop] for name, prop in COEFFICIENT_PROPERTIES.items()})
+    return force_model(Job("", "", given=given, forces=True,
+                           material=None if material_name == "custom" else material_name))
 
 
 def y_window(obj, stock_obj, walls, toolpath, tool):

@@ -3,9 +3,9 @@
 ``Name = "ABM_<Verb><Noun>"`` is also the icon's name (``resources/icons/<Name>.svg``). Every
 action runs inside a document transaction (``openTransaction`` / ``commitTransaction``), so
 one undo takes it back. A failure aborts the transaction (the document is left as it was) and
-prints the command line's message, ``abm: error: <message>``, to the report view
-(``FreeCAD.Console.PrintError``); objects that a recompute marks invalid count as failures,
-with their status string as the message.
+prints its message in plain words to the report view (``FreeCAD.Console.PrintError``; a bad
+parameter in its label's words, ``jobs.label_words``); objects that a recompute marks invalid
+count as failures, with their status string as the message.
 
 The work of each command is ``execute(*args)`` (errors reported) or ``run(*args)`` (errors
 raised), with the dialog's answer as an argument, so it can be driven without a dialog (the
@@ -22,7 +22,7 @@ from .progress import ProgressDialog, busy
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODEL_TEST_1 = os.path.join(ROOT, "resources", "models", "model_test_1")
-PROG = "abm"
+PROG = "ABM"
 STOCK_FILTER = "Stock (*.step *.stp *.brep *.brp *.FCStd *.json);;All files (*)"
 TOOLPATH_FILTER = "Toolpath (*.csv *.apt *.cls);;All files (*)"
 
@@ -31,16 +31,22 @@ class CommandError(Exception):
     """A command cannot do what was asked (the message says why)."""
 
 
-def message(error):
-    """The text of `error` (FreeCAD's own exceptions carry a dict whose "sErrMsg" is the text)."""
+def message_of(error):
+    """The text of `error` in the GUI's words: a ParameterError by its parameter's label, FreeCAD's own
+    exceptions by their dict's "sErrMsg", others as they say it."""
+    from ..errors import ParameterError
+    from ..jobs import label_words
+
+    if isinstance(error, ParameterError):
+        return label_words(error)
     if error.args and isinstance(error.args[0], dict) and "sErrMsg" in error.args[0]:
         return error.args[0]["sErrMsg"]
     return str(error)
 
 
 def report_error(error):
-    """Print `error` to the report view as the command line would: ``abm: error: …``."""
-    FreeCAD.Console.PrintError(f"{PROG}: error: {message(error)}\n")
+    """Print `error` to the report view in the GUI's words (message_of)."""
+    FreeCAD.Console.PrintError(f"{PROG}: {message_of(error)}\n")
 
 
 def load_settings(path):

@@ -4,16 +4,16 @@ Opened by ABM_ComputeEngagement for a new engagement (:func:`compute`) and by do
 ``setEdit`` for an existing one (:func:`edit`). Lengths and angles are FreeCAD quantity spin
 boxes (``Gui::QuantitySpinBox``: units typed or shown, "12 mm", "0.5 in", "10 °").
 
-As the user types, the values are checked by the command line's own code:
-``jobs.resolve_parameters`` (what an APT / CL toolpath file gives wins; a missing required value)
-and ``jobs.tool_and_settings`` (the engine's ``Tool`` and ``CutSettings`` checks), and the y
-window as ``features.engagement.y_window`` checks it; the helix angle by the engine's ``Tool``, the
-cutting-force settings (on / off, material or custom coefficients, immersion) by
-``forces.Coefficients`` and ``forces.check_immersion`` (``features.engagement.force_settings``).
-The coefficient fields show the material's values, read-only, unless the material is custom.
-The first problem is shown at the top of the panel as ``abm: error: <message>`` (the command
-line's words), its field is marked, and OK is disabled. Fields the toolpath file fixes show its
-value, are read-only and say so.
+As the user types, the values are checked by the job model, as the command line's are:
+``jobs.resolve`` (every value against its declaration in ``jobs.parameters``; what an APT / CL
+toolpath file gives wins; a missing required value), ``jobs.tool_and_settings`` (with the helix
+angle), the cutting-force settings (on / off, material or custom coefficients, immersion) by
+``features.engagement.force_settings``, and the y window as ``features.engagement.y_window``
+checks it. A problem is a ParameterError naming its parameter: the parameter's field is marked
+(its declared property) and the problem shown at the top of the panel in plain words
+(``jobs.label_words``), and OK is disabled. The coefficient fields show the material's values,
+read-only, unless the material is custom. Fields the toolpath file fixes show its value, are
+read-only and say so.
 
 The whole edit is one document transaction: OK commits it (after a recompute that succeeds),
 Cancel aborts it, which for a new engagement removes the object.
@@ -23,11 +23,10 @@ from PySide2 import QtWidgets
 
 import FreeCADGui
 
-from ..errors import InputError
-from ..features.engagement import (COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings,
-                                   helical_tool)
+from ..errors import InputError, ParameterError
+from ..features.engagement import COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings
 from ..forces import MATERIALS
-from ..jobs import resolve_parameters, tool_and_settings
+from ..jobs import BY_NAME, label_words, resolve, tool_and_settings
 from .progress import busy
 
 #: Fields: (property, label, unit or None for a plain number, minimum, maximum, step).
@@ -49,18 +48,8 @@ FIELDS = (
 FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm'})", None, -1e6, 1e6, 10.0)
                      for prop in COEFFICIENT_PROPERTIES.values()) + (
     ("ImmersionStart", "Immersion from", "deg", -1e6, 1e6, 5.0), ("ImmersionEnd", "Immersion to", "deg", -1e6, 1e6, 5.0))
-#: resolve_parameters key -> the field it fills.
-KEY_FIELD = {"diameter": "Diameter", "flutes": "Flutes", "flute_length": "FluteLength",
-             "feed_per_tooth": "FeedPerTooth", "spindle_rpm": "SpindleSpeed", "inclination": "Inclination",
-             "phi_range": "PhiStart", "phi_step": "PhiStep"}
-#: Words of an error message -> the field to mark (first match wins).
-ERROR_WORDS = (("HelixAngle", "HelixAngle"), *((prop + ":", prop) for prop in COEFFICIENT_PROPERTIES.values()),
-               ("ImmersionStart", "ImmersionStart"), ("flute_length", "FluteLength"), ("flute-length", "FluteLength"), ("flutes", "Flutes"),
-               ("diameter", "Diameter"), ("feed", "FeedPerTooth"), ("inclination", "Inclination"),
-               ("phi step", "PhiStep"), ("phi-step", "PhiStep"), ("phi_step", "PhiStep"),
-               ("phi range", "PhiEnd"), ("phi-range", "PhiEnd"), ("angles", "PhiStep"), ("phi_start", "PhiStart"),
-               ("phi_end", "PhiEnd"),
-               ("spindle", "SpindleSpeed"), ("YWindow", "YWindowMin"), ("y window", "YWindowMin"))
+#: Cutting parameters a toolpath file can fix, with their fields.
+FILE_FIELDS = ("diameter", "flute_length", "spindle_rpm", "feed_per_tooth")
 INVALID_STYLE = "background-color: #ffc8c8;"
 
 
@@ -170,7 +159,7 @@ class EngagementPanel:
         return values
 
     def given(self, values):
-        """resolve_parameters' `given` of the field values (required ones 0: not given)."""
+        """jobs.resolve's `given` of the field values (required ones 0: not given)."""
         def unset_zero(value):
             return None if value == 0 else value
 
@@ -178,7 +167,7 @@ class EngagementPanel:
             "diameter": unset_zero(values["Diameter"]), "flutes": unset_zero(values["Flutes"]),
             "flute_length": unset_zero(values["FluteLength"]), "feed_per_tooth": unset_zero(values["FeedPerTooth"]),
             "inclination": values["Inclination"], "spindle_rpm": unset_zero(values["SpindleSpeed"]),
-            "phi_range": (values["PhiStart"], values["PhiEnd"]), "phi_step": values["PhiStep"],
+            "phi_start": values["PhiStart"], "phi_end": values["PhiEnd"], "phi_step": values["PhiStep"],
         }
 
     def problem(self, values):
@@ -186,44 +175,39 @@ class EngagementPanel:
         if isinstance(self.hints, Exception):
             return str(self.hints), None
         try:
-            parameters = resolve_parameters(self.given(values), self.hints, {})
-        except InputError as error:
-            return str(error), _field_of(str(error))
-        self.show_fixed(parameters)
-        label = self.obj.Label
-        try:
-            tool, _ = tool_and_settings(parameters.values)
-            helical_tool(label, tool, values["HelixAngle"])
+            parameters = resolve(self.given(values), self.hints, {})
+            self.show_fixed(parameters)
+            tool_and_settings(parameters.values, values["HelixAngle"])
             if values["Forces"]:
-                force_settings(label, values["Material"], values,
-                               (values["ImmersionStart"], values["ImmersionEnd"]))
-        except InputError as error:
-            return str(error), _field_of(str(error))
+                force_settings(values["Material"], values, (values["ImmersionStart"], values["ImmersionEnd"]))
+        except ParameterError as error:
+            parameter = BY_NAME.get(error.field)
+            return label_words(error), parameter.prop if parameter is not None else None
         stock = self.obj.Stock
         solid = stock is not None and stock.Proxy.is_solid(stock)
         if values["WallModel"] != "stock" and not solid:
-            return (f"WallModel {values['WallModel']} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), "
-                    f"not to {stock.Proxy.source_name(stock)}", "WallModel")
+            return (f"The wall model {values['WallModel']} applies to a solid stock (STEP, BREP or FCStd), not to "
+                    f"{stock.Proxy.source_name(stock)}.", "WallModel")
         if values["YWindow"] in ("swept", "custom") and not solid:
-            return (f"YWindow {values['YWindow']} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), "
-                    f"not to {stock.Proxy.source_name(stock)}", "YWindow")
+            return (f"The y window {values['YWindow']} applies to a solid stock (STEP, BREP or FCStd), not to "
+                    f"{stock.Proxy.source_name(stock)}.", "YWindow")
         if values["YWindow"] == "custom" and not values["YWindowMin"] < values["YWindowMax"]:
-            return (f"{self.obj.Label}: YWindowMin ({values['YWindowMin']:g} mm) must be below YWindowMax "
-                    f"({values['YWindowMax']:g} mm)", "YWindowMin")
+            return (f"The y window must start below its end: {values['YWindowMin']:g} mm to "
+                    f"{values['YWindowMax']:g} mm.", "YWindowMin")
         return None, None
 
     def show_fixed(self, parameters):
         """Fields whose value the toolpath file gives: its value, read-only, explained."""
         notes = []
-        for key, name in KEY_FIELD.items():
-            source = parameters.sources[key]
+        for key in FILE_FIELDS:
+            name = BY_NAME[key].prop
             widget = self.field(name)
-            fixed = not source.startswith("--") and source != "default"
+            fixed = parameters.fixed_by_file(key)
             if fixed:
                 widget.blockSignals(True)
                 _set_value(widget, parameters.values[key])
                 widget.blockSignals(False)
-                notes.append(f"{name} {parameters.values[key]:g} ({source})")
+                notes.append(f"{BY_NAME[key].label} {parameters.values[key]:g} ({parameters.sources[key][1]})")
             widget.setEnabled(not fixed)
         self.fixed.setText("Fixed by the toolpath file, the values it was made for: " + ", ".join(notes)
                            if notes else "")
@@ -253,7 +237,7 @@ class EngagementPanel:
         message, field = self.problem(values)
         for name in self.names:
             self.field(name).setStyleSheet(INVALID_STYLE if name == field else "")
-        self.message.setText(f"abm: error: {message}" if message else "")
+        self.message.setText(message or "")
         if self.buttons is not None:
             self.buttons.button(QtWidgets.QDialogButtonBox.Ok).setEnabled(message is None)
         return message is None
@@ -269,7 +253,7 @@ class EngagementPanel:
 
     def accept(self):
         """Apply the values and recompute; close and commit when that works, else say why and stay."""
-        from .commands import CommandError, recompute_checked, report_error
+        from .commands import CommandError, message_of, recompute_checked, report_error
 
         if not self.check():
             return False
@@ -282,7 +266,7 @@ class EngagementPanel:
                 recompute_checked(doc, (obj,))
         except (CommandError, InputError) as error:
             report_error(error)
-            self.message.setText(f"abm: error: {error}")
+            self.message.setText(message_of(error))
             return False
         self.close()
         doc.commitTransaction()
@@ -342,13 +326,6 @@ def _show(panel):
 
 def _label(obj):
     return obj.Label if obj is not None else "(none)"
-
-
-def _field_of(message):
-    for word, field in ERROR_WORDS:
-        if word in message:
-            return field
-    return None
 
 
 def _property_value(obj, name):

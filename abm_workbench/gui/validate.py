@@ -10,7 +10,8 @@ With a subset, the pass validated is made of the chosen CL points only, in their
 report numbers them 0, 1, … and each detailed CL point says which CL point of the pass it is.
 The boolean costs about 0.5–1 s per CL point, so the progress callback is called after each.
 With the object's Forces on, the report gets its "Cutting forces" section: the object's force
-model (``features.engagement.force_model``) on the pass validated.
+model (``features.engagement.force_model_of``) on the pass validated. A helical tool is
+validated by the helix boolean (``jobs.run.validation``), flute 1 reported, as ``validate --helix``.
 """
 
 import os
@@ -19,7 +20,7 @@ import time
 import numpy as np
 
 from ..engine import Toolpath
-from ..errors import InputError
+from ..errors import InputError, ParameterError
 
 
 class Cancelled(Exception):
@@ -28,13 +29,16 @@ class Cancelled(Exception):
 
 def cl_indices(text, count):
     """CL indices (0-based, sorted, distinct) of "all" / "" (every CL point) or "0,22,40", checked by
-    the command line's ``--cl`` code (its messages) against a pass of `count` CL points."""
-    from ..cli import cl_indices as command_line_cl_indices
+    the job model (``jobs.cl_indices``) against a pass of `count` CL points; InputError "CL points: ..."."""
+    from ..jobs import cl_indices as checked_indices
 
     text = text.strip().replace(" ", "")
     if text.lower() in ("", "all"):
         return list(range(count))
-    return command_line_cl_indices(text, count)
+    try:
+        return checked_indices(text, count)
+    except ParameterError as error:
+        raise InputError(f"CL points: {error.detail}") from None
 
 
 def report_folder(obj):
@@ -53,14 +57,14 @@ def validate_engagement(obj, cls, folder, progress=None):
     it raises (e.g. :class:`Cancelled`) stops the validation and leaves `folder` as it was.
     InputError with the command line's message for bad input.
     """
-    from ..features.engagement import force_model
-    from ..forces import pass_forces
+    from ..features.engagement import force_model_of
+    from ..jobs.run import pass_forces_of, validation as checked_validation
     from ..report.html import ReportJob, write_report
     from ..report.staging import staged
-    from ..validation import NoEngagementError, validate
+    from ..validation import NoEngagementError
 
     started = time.perf_counter()
-    model = force_model(obj)
+    model = force_model_of(obj)
     toolpath, _, parameters, tool, settings, stock = obj.Proxy.inputs(obj)
     solid = stock.solid()
     stock_seconds = time.perf_counter() - started  # the stock object's cache makes this small
@@ -71,23 +75,21 @@ def validate_engagement(obj, cls, folder, progress=None):
     pass_ = Toolpath(toolpath.cl[index], toolpath.theta_a[index], toolpath.theta_b[index],
                      None if toolpath.cc is None else toolpath.cc[index])
     try:
-        validation = validate(solid, stock.staircase, tool, pass_, settings, progress=progress)
+        validation, helix = checked_validation(solid, stock.staircase, tool, pass_, settings, progress=progress)
     except NoEngagementError:
         raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock at CL points "
                          f"{_cl_list(chosen)}") from None
-    forces = None
-    if model is not None:
-        coefficients, immersion = model
-        forces = pass_forces(stock.staircase, tool, pass_, settings, coefficients, immersion=immersion,
-                             first=validation.engagement.length if tool.helix == 0.0 else None)
+    forces = None if model is None else pass_forces_of(stock.staircase, tool, pass_, settings, model,
+                                                         validation.engagement)
     subset = len(chosen) < len(toolpath)
-    title = f"ABM against booleans: {obj.Label} ({os.path.basename(stock.source)} / " \
-            f"{os.path.basename(obj.Toolpath.File)})"
+    run = "ABM against booleans" if helix is None else (
+        f"Helical edges (β = {tool.helix:g}°), flute 1 of {tool.flutes}, ABM against booleans")
+    title = f"{run}: {obj.Label} ({os.path.basename(stock.source)} / {os.path.basename(obj.Toolpath.File)})"
     description = (f"CL points {_cl_list(chosen)} of the pass, numbered 0..{len(chosen) - 1} here."
                    if subset else "")
     walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
     job = ReportJob(title, description, stock.source, obj.Toolpath.File, pass_, tool, settings,
-                    parameters.describe(), walls, stock.y_window, stock_seconds)
+                    parameters.describe(lambda parameter: parameter.prop), walls, stock.y_window, stock_seconds)
     shown = [(i, f"pass CL {cl}") for i, cl in enumerate(chosen)][:6]
     os.makedirs(os.path.dirname(os.path.abspath(folder)), exist_ok=True)
     with staged(folder, folder=True) as temporary:

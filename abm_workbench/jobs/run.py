@@ -35,13 +35,12 @@ def flute_1(staircase, tool, toolpath, settings, progress=None):
     return flute_engagement(staircase, tool, toolpath, settings, progress=progress).as_engagement(0)
 
 
-def forces_of(prepared, staircase, engagement, toolpath=None, feed=None):
-    """The Forces of a prepared job with forces on, over `toolpath` (default the job's), reusing flute 1's
-    straight-edge lengths of `engagement`."""
-    coefficients, immersion = prepared.force_model
-    return pass_forces(staircase, prepared.tool, toolpath or prepared.toolpath, prepared.settings, coefficients,
-                       immersion=immersion, feed=feed,
-                       first=engagement.length if prepared.tool.helix == 0.0 else None)
+def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=None):
+    """The Forces of a pass under force model (Coefficients, immersion (start, end) deg), reusing flute 1's
+    straight-edge lengths of `engagement`; feed: (m,) feed per tooth (mm) per CL point, or None."""
+    coefficients, immersion = model
+    return pass_forces(staircase, tool, toolpath, settings, coefficients, immersion=immersion, feed=feed,
+                       first=engagement.length if tool.helix == 0.0 else None)
 
 
 def no_engagement(job: Job):
@@ -334,7 +333,8 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, warn=print, 
     except NoEngagementError:
         raise no_engagement(job) from None
     engagement = checked.engagement
-    forces = forces_of(prepared, stock.staircase, engagement) if prepared.force_model is not None else None
+    forces = None if prepared.force_model is None else pass_forces_of(
+        stock.staircase, tool, toolpath, settings, prepared.force_model, engagement)
     shown = report_cls(checked, chosen)
     walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
     run = "ABM against booleans" if helix is None else (
@@ -417,7 +417,8 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     engagement = flute_1(stock.staircase, tool, toolpath, settings)
     if not engagement.engaged.any():
         raise no_engagement(job)
-    forces = forces_of(prepared, stock.staircase, engagement, feed=programmed)
+    forces = pass_forces_of(stock.staircase, tool, toolpath, settings, prepared.force_model, engagement,
+                            feed=programmed)
     plan = feed_schedule(forces, limit, kind=kind, min_feed=min_feed)
     unit = "N" if kind == "force" else "mm²"
     if plan.infeasible.any():

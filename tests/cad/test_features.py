@@ -127,7 +127,7 @@ def test_engagement_equals_the_engine_and_is_restored_without_recompute(doc, tmp
     def no_engine(*args, **kwargs):
         raise AssertionError("the engine ran on restore")
 
-    monkeypatch.setattr(engagement_module, "engage", no_engine)
+    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
@@ -173,7 +173,7 @@ def test_missing_file_is_an_error_state_and_the_document_stays_usable(doc, tmp_p
     assert engagement.Proxy.result(engagement) is not None
 
 
-def test_errors_carry_the_command_line_messages(doc, tmp_path):
+def test_errors_are_in_plain_words_with_the_property_named(doc, tmp_path):
     far = tmp_path / "far.csv"
     path = load_toolpath(TOOLPATH)
     rows = "".join(f"{x},{y + 500},{z},{a},{b}\n" for (x, y, z), a, b in zip(path.cl, path.theta_a, path.theta_b))
@@ -183,7 +183,8 @@ def test_errors_carry_the_command_line_messages(doc, tmp_path):
     engagement = create_engagement(doc, stock, toolpath, **{**SETTINGS, "flutes": None})
     engagement.ShowSurfaces = False
     doc.recompute()
-    assert engagement.getStatusString() == "missing --flutes (or 'flutes' in a --job file)"
+    assert engagement.getStatusString() == ("Engagement: Number of flutes is required: the toolpath file does not "
+                                            "give it (property Flutes).")
     engagement.Flutes = 2
     doc.recompute()
     assert engagement.getStatusString() == (
@@ -386,8 +387,8 @@ def test_forces_equal_pass_forces_and_are_restored_without_recompute(doc, tmp_pa
     def no_engine(*args, **kwargs):
         raise AssertionError("the engine ran on restore")
 
-    monkeypatch.setattr(engagement_module, "engage", no_engine)
-    monkeypatch.setattr(engagement_module, "pass_forces", no_engine)
+    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
+    monkeypatch.setattr(engagement_module, "pass_forces_of", no_engine)
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
@@ -418,11 +419,12 @@ def test_forces_off_write_no_force_columns_and_custom_coefficients_are_used(doc)
     assert_same_forces(engagement.Proxy.forces(engagement), table, 1e-9)
 
 
-def test_bad_force_settings_fail_the_recompute_with_the_command_line_message(doc):
+def test_bad_force_settings_fail_the_recompute_in_plain_words(doc):
     _, _, engagement = model_test(doc, forces=True, material="custom", ktc=-1.0, krc=1.0, kac=1.0)
     engagement.ShowSurfaces = False
     doc.recompute()
-    assert engagement.getStatusString() == "Engagement: Ktc: ktc must be positive, got -1"
+    assert engagement.getStatusString() == ("Engagement: Ktc (tangential cutting coefficient) must be positive, "
+                                            "got -1 N/mm² (property Ktc).")
     engagement.Ktc = 700.0
     engagement.ImmersionStart, engagement.ImmersionEnd = 90.0, 30.0
     doc.recompute()

@@ -159,7 +159,7 @@ def test_validate_command_with_forces(tmp_path, monkeypatch, capsys):
     assert cli.main(base + ["--material", "al6082-t6"]) == 2
     assert capsys.readouterr().err.splitlines()[-1] == "abm: error: --material applies with --forces"
     assert cli.main(base + ["--forces", "--ktc", "600", "--krc", "100", "--kac", "200", "--immersion", "0:200"]) == 2
-    assert capsys.readouterr().err.splitlines()[-1].startswith("abm: error: --immersion: immersion 0:200 must satisfy")
+    assert capsys.readouterr().err.splitlines()[-1].startswith("abm: error: --immersion: must be within (0, 180]°, got 200°")
     assert not os.path.exists("report")
     assert cli.main(base + ["--forces", "--material", "al6082-t6", "--immersion", "0:90"]) == 0
     out = capsys.readouterr().out

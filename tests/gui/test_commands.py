@@ -10,8 +10,8 @@ import os
 import numpy as np
 import pytest
 
-from abm_workbench.errors import InputError
-from abm_workbench.jobs import load_path, tool_and_settings
+from abm_workbench.errors import InputError, ParameterError
+from abm_workbench.jobs import BY_NAME, label_words, load_path
 from tests.conftest import ROOT
 
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
@@ -275,9 +275,8 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     bad.write_text("x,y,z\n1,2,3\n")
     with pytest.raises(InputError) as cli_error:
         load_path(str(bad))
-    with pytest.raises(InputError) as negative:
-        tool_and_settings({"diameter": -3.0, "flutes": 2, "flute_length": 30.0, "feed_per_tooth": 0.1,
-                           "inclination": 10.0, "phi_range": (0.0, 180.0), "phi_step": 1.0, "spindle_rpm": 4000.0})
+    with pytest.raises(ParameterError) as negative:
+        BY_NAME["diameter"].check(-3.0)
     toolpath = load_toolpath(os.path.join(MODEL, "toolpath.csv"))
     axes = np.stack([np.sin(np.radians(toolpath.theta_b)),
                      -np.sin(np.radians(toolpath.theta_a)) * np.cos(np.radians(toolpath.theta_b)),
@@ -327,9 +326,10 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert max_distance < 0.1 and colour_error < 1e-6, verdict["length_colours"]  # neighbours: 0.1 mm apart
     assert (low_length, high_length) == (pytest.approx(face_low), pytest.approx(face_high))
     assert "error" not in verdict["report_dock"].lower(), verdict["report_dock"]
-    # the task panel: the engine's check, the command line's words, the field marked, OK disabled
+    # the task panel: the job model's check in plain words, the field marked, OK disabled
     assert verdict["panel_open"] == [True, True, "", 12.0, 10.0]
-    assert verdict["panel_bad"] == [False, f"abm: error: {negative.value}", True, False, False]
+    assert verdict["panel_bad"] == [False, label_words(negative.value), True, False, False]
+    assert label_words(negative.value) == "Tool diameter must be positive, got -3 mm."
     assert verdict["panel_good"] == [True, ""] and verdict["accepted"] is True
     state, inclination, said, instants, closed, not_editing, undo_names = verdict["edited"]
     assert state == ["Up-to-date"] and inclination == 5.0 and said and closed and not_editing
@@ -344,7 +344,7 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert "CL points 22, " in text and "pass CL 22" in text
     assert {"comparison.csv", "segments.csv", "surfaces.csv", "depth.csv"} <= set(os.listdir(report_folder))
     assert verdict["cancelled"] == [None, False, True]
-    assert "abm: validation cancelled: nothing written" in verdict["report_validate"]
+    assert "ABM: validation cancelled: nothing written" in verdict["report_validate"]
     assert "error" not in verdict["report_validate"].lower(), verdict["report_validate"]
     # ComputeEngagement for scripts: the job's values, the same results; one undo removes it
     state, depth_max, stock, path, colours = verdict["second"]
@@ -353,13 +353,13 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert verdict["undo_names_2"][0] == "Compute engagement"
     assert verdict["after_undo"] == ["Stock", "Toolpath", "Engagement"]
     assert "error" not in verdict["report_compute"].lower(), verdict["report_compute"]
-    # errors: the command line's message, nothing added, the document still recomputes
+    # errors: in plain words, nothing added, the document still recomputes
     assert verdict["bad_import"] == [True, True, True]
-    assert f"abm: error: {cli_error.value}" in verdict["report_errors"]
+    assert f"ABM: {cli_error.value}" in verdict["report_errors"]
     assert verdict["ambiguous"]
-    assert "abm: error: 2 stocks in the document: select the one to use" in verdict["report_errors"]
+    assert "ABM: 2 stocks in the document: select the one to use" in verdict["report_errors"]
     # the task panel of a new engagement: OK only once the required values are typed
-    assert verdict["new_panel"] == [False, "abm: error: missing --diameter (or 'diameter' in a --job file)",
+    assert verdict["new_panel"] == [False, "Tool diameter is required: the toolpath file does not give it.",
                                     ["Stock", "Toolpath", "Engagement"]]
     assert verdict["new_ok"] == [True, "", True]
     assert verdict["imported"][:3] == [["Up-to-date"]] * 3

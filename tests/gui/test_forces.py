@@ -4,7 +4,6 @@ object's forces), and in the validation report."""
 
 import os
 
-from abm_workbench.forces import check_immersion
 from tests.conftest import ROOT
 
 BODY = """
@@ -33,7 +32,7 @@ panel.field("Forces").setChecked(True)
 panel.field("Material").setCurrentText("al7075-t6")
 panel.field("ImmersionEnd").setProperty("rawValue", 200.0)
 FreeCADGui.updateGui()
-verdict["bad"] = [ok(), panel.message.text(), bool(panel.field("ImmersionStart").styleSheet()),
+verdict["bad"] = [ok(), panel.message.text(), bool(panel.field("ImmersionEnd").styleSheet()),
                   panel.field("Ktc").value(), panel.field("Ktc").isEnabled()]
 panel.field("ImmersionEnd").setProperty("rawValue", 120.0)
 panel.field("HelixAngle").setProperty("rawValue", 95.0)
@@ -94,15 +93,11 @@ def test_forces_in_the_task_panel_the_dock_and_the_validation_report(tmp_path, r
 
     assert verdict["before"] == [False, True, False]
     assert verdict["off"] == [False, False, False]
-    try:
-        check_immersion((0.0, 200.0))
-    except ValueError as error:
-        immersion_message = str(error)
-    assert verdict["bad"] == [False, f"abm: error: Engagement: ImmersionStart, ImmersionEnd: {immersion_message}",
-                              True, 767.01, False]
-    assert verdict["bad_helix"][:2] == [False, "abm: error: Engagement: HelixAngle: helix must be within (-90, 90) "
-                                               "degrees, got 95.0"] and verdict["bad_helix"][2]
-    assert verdict["bad_ktc"] == [False, "abm: error: Engagement: Ktc: ktc must be positive, got -5", True]
+    # plain words and the field of the bad value marked (the end of immersion, not its start)
+    assert verdict["bad"] == [False, "End of immersion must be within (0, 180]°, got 200°.", True, 767.01, False]
+    assert verdict["bad_helix"][:2] == [False, "Helix angle must be within (-90, 90)°, got 95°."]
+    assert verdict["bad_helix"][2]
+    assert verdict["bad_ktc"] == [False, "Ktc (tangential cutting coefficient) must be positive, got -5 N/mm².", True]
     assert verdict["good"] == [True, ""] and verdict["accepted"] is True
     state, on, material, end, peak, computed = verdict["object"]
     assert (state, on, material, end) == (["Up-to-date"], True, "al7075-t6", 120.0)

@@ -94,12 +94,12 @@ def test_a_shape_of_other_results_has_no_face_map(engagement):
     assert face_map(result, other) is not None
 
 
-def test_cl_lists_as_the_command_line_checks_them():
+def test_cl_lists_checked_by_the_job_model_in_the_gui_words():
     assert cl_indices("all", 4) == cl_indices(" ", 4) == [0, 1, 2, 3]
     assert cl_indices("29, 22,22", 53) == [22, 29]
-    with pytest.raises(InputError, match=r"^--cl: expected CL indices such as 0,22,40, got '1,x'$"):
+    with pytest.raises(InputError, match=r"^CL points: expected CL indices such as 0,22,40, got '1,x'$"):
         cl_indices("1,x", 53)
-    with pytest.raises(InputError, match=r"^--cl: CL point 60 is not in the pass \(0..52\)$"):
+    with pytest.raises(InputError, match=r"^CL points: CL point 60 is not in the pass \(0..52\)$"):
         cl_indices("60", 53)
 
 
