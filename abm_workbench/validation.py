@@ -314,30 +314,3 @@ def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *
     boolean_seconds = time.perf_counter() - started
     return HelixValidation(engagement, reference, chosen, toolpath, tool,
                            {"abm": abm_seconds, "boolean": boolean_seconds})
-
-
-#: Columns of flutes.csv (write_flutes_csv).
-FLUTE_COLUMNS = ("cl", "phi_deg", "flute", "axial_abm", "axial_ref", "axial_difference", "edge_length_abm",
-                 "edge_length_ref", "lep_abm", "lep_ref", "lep_difference", "uep_abm", "uep_ref", "uep_difference",
-                 "pieces_abm", "pieces_ref")
-
-
-def write_flutes_csv(path, helix_validation: HelixValidation):
-    """Write flutes.csv: one row per CL point × φ × checked flute (flute numbered 1..Z), FLUTE_COLUMNS:
-    axial length of cut, length along the helix, LEP and UEP (axial positions l), all mm, by ABM
-    and by the boolean, the differences ABM − boolean, and the pieces of each."""
-    from .report.tables import csv_text
-
-    engagement, reference = helix_validation.engagement, helix_validation.reference
-    chosen = list(helix_validation.flutes)
-    m, p, _ = engagement.shape
-    grid = np.meshgrid(np.arange(m), engagement.phi, np.array(chosen) + 1, indexing="ij")
-    columns = {"cl": grid[0], "phi_deg": grid[1], "flute": grid[2]}
-    for key, name in (("axial", "axial_length"), ("edge_length", "edge_length"), ("lep", "lep_l"), ("uep", "uep_l"),
-                      ("pieces", "pieces")):
-        abm, ref = getattr(engagement, name)[..., chosen], reference[name][..., chosen]
-        columns[f"{key}_abm"], columns[f"{key}_ref"] = abm, ref
-        if key in ("axial", "lep", "uep"):
-            columns[f"{key}_difference"] = abm - ref
-    with open(path, "w", encoding="utf-8", newline="") as file:
-        file.write(csv_text(FLUTE_COLUMNS, [np.ravel(columns[name]) for name in FLUTE_COLUMNS]))

@@ -309,7 +309,8 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, warn=print, 
     only this flute (1-based) of a helical tool. Returns a ValidateResult."""
     from ..report.html import ReportJob, report_cls, write_report
     from ..report.staging import staged
-    from ..validation import NoEngagementError, write_flutes_csv
+    from ..report.tables import write_flutes_csv
+    from ..validation import NoEngagementError
 
     prepared = prepare(job)
     for message in prepared.warnings():

@@ -22,7 +22,8 @@ from abm_workbench.cad.helix_boolean import flute_lengths_by_boolean, helix_edge
 from abm_workbench.cad.recognise import load_solid, recognise
 from abm_workbench.engine import SURFACES, CutSettings, Tool, Toolpath, flute_engagement, rotation_matrix
 from abm_workbench.formats.toolpath_csv import load_toolpath
-from abm_workbench.validation import FLUTE_COLUMNS, NoEngagementError, validate_helix
+from abm_workbench.report.tables import FLUTE_COLUMNS
+from abm_workbench.validation import NoEngagementError, validate_helix
 
 MODELS = os.path.join(os.path.dirname(__file__), "..", "..", "resources", "models")
 TOL = 1e-6  # mm
