@@ -26,6 +26,8 @@ QUANTITIES = {"length": ("length", "length of cut", "mm"), "area": ("area", "cut
               "force": ("resultant", "resultant cutting force", "N")}
 #: matplotlib colour map of the quantities.
 COLOUR_MAP = "viridis"
+#: Colour of the chosen CL point, in the 3D view and on the dock's plots.
+HIGHLIGHT_COLOUR = (1.0, 0.85, 0.0)
 
 
 @dataclass(frozen=True)

@@ -17,36 +17,14 @@ import os
 import FreeCAD
 import FreeCADGui
 
-from . import view_providers
+from . import dock, task_panel, view_providers  # noqa: F401 (the dock and task panel listen to gui.state)
 from .progress import ProgressDialog, busy
+from .reporting import PROG, CommandError, recompute_checked, report_error
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODEL_TEST_1 = os.path.join(ROOT, "resources", "models", "model_test_1")
-PROG = "ABM"
 STOCK_FILTER = "Stock (*.step *.stp *.brep *.brp *.FCStd *.json);;All files (*)"
 TOOLPATH_FILTER = "Toolpath (*.csv *.apt *.cls);;All files (*)"
-
-
-class CommandError(Exception):
-    """A command cannot do what was asked (the message says why)."""
-
-
-def message_of(error):
-    """The text of `error` in the GUI's words: a ParameterError by its parameter's label, FreeCAD's own
-    exceptions by their dict's "sErrMsg", others as they say it."""
-    from ..errors import ParameterError
-    from ..jobs import label_words
-
-    if isinstance(error, ParameterError):
-        return label_words(error)
-    if error.args and isinstance(error.args[0], dict) and "sErrMsg" in error.args[0]:
-        return error.args[0]["sErrMsg"]
-    return str(error)
-
-
-def report_error(error):
-    """Print `error` to the report view in the GUI's words (message_of)."""
-    FreeCAD.Console.PrintError(f"{PROG}: {message_of(error)}\n")
 
 
 def load_settings(path):
@@ -58,16 +36,6 @@ def load_settings(path):
     if "flutes" in job:
         job["flutes"] = int(round(job["flutes"]))
     return job
-
-
-def recompute_checked(doc, objects):
-    """Recompute `doc`; CommandError with the status string of the first of `objects` left invalid."""
-    doc.recompute()
-    for obj in objects:
-        if "Invalid" in obj.State or "Error" in obj.State:
-            raise CommandError(obj.getStatusString())
-    for obj in objects:
-        view_providers.refresh(obj)
 
 
 def fit_view():
@@ -150,8 +118,6 @@ class OpenModelTest(Command):
         with busy("Computing model test 1…"):
             recompute_checked(doc, (stock, toolpath, engagement))
         fit_view()
-        from . import dock
-
         dock.show(engagement)
         return stock, toolpath, engagement
 
@@ -255,8 +221,6 @@ class ComputeEngagement(Command):
 
     def Activated(self):
         """Interactive: the task panel (:mod:`.task_panel`) for a new engagement; it owns the transaction."""
-        from . import task_panel
-
         try:
             doc = FreeCAD.ActiveDocument
             selection = FreeCADGui.Selection.getSelection(doc.Name)
@@ -269,8 +233,6 @@ class ComputeEngagement(Command):
         """Scripts and tests: add and compute the engagement with `settings` (create_engagement's
         keywords, e.g. a job.json's through load_settings) without the panel."""
         from ..features import create_engagement
-        from . import dock
-
         if selection is None:
             selection = FreeCADGui.Selection.getSelection(doc.Name)
         stock, toolpath = pick(doc, "ABM::Stock", selection), pick(doc, "ABM::Toolpath", selection)
@@ -303,8 +265,6 @@ class InspectEngagement(Command):
     @staticmethod
     def show(engagement, cl=None):
         """Open the dock on `engagement` at CL point `cl`; the dock."""
-        from . import dock
-
         return dock.show(engagement, cl)
 
 
@@ -319,7 +279,6 @@ class ValidateEngagement(Command):
     def Activated(self):
         from PySide2 import QtWidgets
 
-        from . import dock
         from .validate import report_folder
 
         try:

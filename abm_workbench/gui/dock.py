@@ -26,7 +26,8 @@ import FreeCAD
 import FreeCADGui
 
 from .colouring import COLOUR_BY, COLOUR_MAP, QUANTITIES
-from .view_providers import HIGHLIGHT_COLOUR
+from . import state
+from .colouring import HIGHLIGHT_COLOUR
 
 OBJECT_NAME = "ABM_EngagementDock"
 #: Width (px) of the legend's colour bar.
@@ -340,3 +341,8 @@ def forget(doc):
     if dock is not None and _alive(dock.obj) and dock.obj.Document.Name == doc.Name:
         dock.obj = None
         dock.refresh()
+
+
+state.listen("show", show)
+state.listen("refresh", refresh)
+state.listen("forget", forget)

@@ -27,7 +27,9 @@ from ..errors import InputError, ParameterError
 from ..features.engagement import COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings
 from ..forces import MATERIALS
 from ..jobs import BY_NAME, label_words, resolve, tool_and_settings
+from . import state, view_providers
 from .progress import busy
+from .reporting import CommandError, message_of, recompute_checked, report_error
 
 #: Fields: (property, label, unit or None for a plain number, minimum, maximum, step).
 FIELDS = (
@@ -253,8 +255,6 @@ class EngagementPanel:
 
     def accept(self):
         """Apply the values and recompute; close and commit when that works, else say why and stay."""
-        from .commands import CommandError, message_of, recompute_checked, report_error
-
         if not self.check():
             return False
         obj, doc = self.obj, self.obj.Document
@@ -270,9 +270,7 @@ class EngagementPanel:
             return False
         self.close()
         doc.commitTransaction()
-        from . import dock
-
-        dock.show(obj)
+        state.tell("show", obj)
         return True
 
     def reject(self):
@@ -298,8 +296,6 @@ def compute(doc, stock, toolpath):
     """Open a transaction, add an engagement of `stock` and `toolpath` (what the toolpath file gives
     filled in) and open its task panel; the panel."""
     from ..features import create_engagement
-    from . import view_providers
-
     doc.openTransaction("Compute engagement")
     try:
         obj = create_engagement(doc, stock, toolpath)
@@ -361,3 +357,6 @@ def _get_value(widget):
     if isinstance(widget, (QtWidgets.QSpinBox, QtWidgets.QDoubleSpinBox)):
         return widget.value()
     return float(widget.property("rawValue"))
+
+
+state.listen("edit", edit)

@@ -26,6 +26,9 @@ import os
 
 import FreeCAD
 
+from . import state
+from .colouring import HIGHLIGHT_COLOUR
+
 #: Folder of the SVG icons (named like the commands).
 ICONS = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
                      "resources", "icons")
@@ -136,10 +139,7 @@ class EngagementViewProvider(ViewProvider):
     def setEdit(self, vobj, mode=0):
         if mode != 0:
             return None
-        from . import task_panel
-
-        task_panel.edit(vobj.Object)
-        return True
+        return state.tell("edit", vobj.Object)
 
     def unsetEdit(self, vobj, mode=0):
         if mode != 0:
@@ -197,7 +197,6 @@ class EngagementViewProvider(ViewProvider):
 
 
 #: Highlight of the chosen CL point: colour, line width and point size (px).
-HIGHLIGHT_COLOUR = (1.0, 0.85, 0.0)
 HIGHLIGHT_POINT_COLOUR = (0.0, 0.0, 0.0)
 HIGHLIGHT_LINE_WIDTH, HIGHLIGHT_POINT_SIZE = 3.0, 12.0
 #: About this many cutting edges (LEP to UEP) drawn across the highlighted CL point.
@@ -224,9 +223,7 @@ def add_colour_by(vobj):
 def _colour_later(vobj):
     try:
         colour(vobj)
-        from . import dock
-
-        dock.refresh(vobj.Object)
+        state.tell("refresh", vobj.Object)
     except Exception as error:  # noqa: BLE001 (the object may be gone: deleted, undone, closed)
         FreeCAD.Console.PrintLog(f"ABM: engagement not coloured: {error}\n")
 
@@ -294,9 +291,7 @@ class _Observer:
         attach(obj)
 
     def slotDeletedDocument(self, doc):
-        from . import dock
-
-        dock.forget(doc)
+        state.tell("forget", doc)
 
 
 _OBSERVER = None
