@@ -1,0 +1,50 @@
+"""What a toolpath file holds, judged by its content, never its name.
+
+- Binary: a NUL byte, or many control characters, in the first 64 KiB.
+- The project's toolpath CSV: the first line that is not blank or a ``#`` comment is a
+  comma-separated header naming ``x``, ``y`` and ``z``.
+- APT / CL text: a record ``WORD/`` (or a bare record word such as RAPID) on some line.
+
+Text is read as UTF-8 and, failing that, as Latin-1 (CAM systems write comments in either).
+"""
+
+import os
+import re
+
+from ...errors import InputError
+
+_PROBE = 65536
+_RECORD = re.compile(r"^\s*(?:[A-Za-z][A-Za-z0-9_ -]*\s*/|RAPID\b|MULTAX\b)", re.IGNORECASE | re.MULTILINE)
+
+
+def read_file(path):
+    """(kind, text) of the file at `path`: kind "csv" or "apt"; InputError for unreadable,
+    binary or unknown content, naming the file."""
+    name = os.fspath(path)
+    try:
+        with open(name, "rb") as file:
+            data = file.read()
+    except OSError as error:
+        raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+    probe = data[:_PROBE]
+    controls = sum(probe.count(bytes([c])) for c in range(32) if c not in (9, 10, 12, 13, 26))
+    if b"\0" in probe or controls > len(probe) // 100:
+        raise InputError(f"{name}: binary content, not a CL file (APT / CLSF text) or toolpath CSV")
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        text = data.decode("latin-1")
+    for line in text.splitlines():
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        fields = {field.strip().lower() for field in stripped.split(",")}
+        if {"x", "y", "z"} <= fields:
+            return "csv", text
+        break
+    if _RECORD.search(text):
+        return "apt", text
+    if not text.strip():
+        raise InputError(f"{name}: empty file: no CL records and no toolpath CSV header")
+    raise InputError(f"{name}: unknown content: neither APT / CL records (WORD/...) nor a toolpath CSV header "
+                     "(x,y,z,...)")
