@@ -22,7 +22,8 @@ BARE_WORDS = frozenset({"RAPID", "MULTAX", "END", "FINI", "END-OF-PATH", "STOP",
 
 @dataclass(frozen=True)
 class Record:
-    """One record: the 1-based line it starts on, its major word (upper case), its argument texts."""
+    """One record: the 1-based line it starts on, its major word (upper case), its argument texts,
+    and the text after its '/' (empty for a record without one)."""
 
     line: int
     word: str
@@ -99,4 +100,4 @@ def _record(line, statement, name):
             raise InputError(f"{name}:{line}: record {statement!r} has no major word before '/'")
         return Record(line, word, tuple(args), rest)
     word, *more = statement.split(None, 1)
-    return Record(line, word.upper(), tuple(more), more[0] if more else "")
+    return Record(line, word.upper(), tuple(more), "")

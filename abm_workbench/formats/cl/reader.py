@@ -180,7 +180,9 @@ class _Reader:
     def numbers(self, record):
         """The record's arguments as floats; InputError naming the first that is not a number."""
         if _NUMBER_LIST.fullmatch(record.rest):
-            return [float(arg) for arg in record.args]
+            values = [float(arg) for arg in record.args]
+            if all(map(math.isfinite, values)):
+                return values
         for position, arg in enumerate(record.args, start=1):
             if not _NUMBER_TEXT.fullmatch(arg) or not math.isfinite(float(arg)):
                 raise self.error(record, f"argument {position} {arg!r} is not a number"

@@ -12,9 +12,11 @@ import os
 import re
 
 from ...errors import InputError
+from .lexer import BARE_WORDS
 
 _PROBE = 65536
-_RECORD = re.compile(r"^\s*(?:[A-Za-z][A-Za-z0-9_ -]*\s*/|RAPID\b|MULTAX\b)", re.IGNORECASE | re.MULTILINE)
+_RECORD = re.compile(r"^\s*(?:[A-Za-z][A-Za-z0-9_ -]*\s*/|(?:" + "|".join(map(re.escape, sorted(BARE_WORDS)))
+                     + r")\s*$)", re.IGNORECASE)
 
 
 def read_file(path):
@@ -42,7 +44,7 @@ def read_file(path):
         if {"x", "y", "z"} <= fields:
             return "csv", text
         break
-    if _RECORD.search(text):
+    if any(_RECORD.match(line) for line in text.splitlines()):
         return "apt", text
     if not text.strip():
         raise InputError(f"{name}: empty file: no CL records and no toolpath CSV header")
