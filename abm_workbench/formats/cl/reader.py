@@ -487,7 +487,9 @@ class _Reader:
         diameter = numbers[0] * self.scale if numbers and numbers[0] > 0.0 else None
         radius = numbers[1] * self.scale if len(numbers) > 1 else 0.0
         if kind in KIND_WORDS:
-            self.set_tool(ToolSpec(KIND_WORDS[kind], diameter, None, None, (source,)), record.line)
+            # A turning insert's first number is its nose radius, not a diameter.
+            size = None if KIND_WORDS[kind] == "turning" else diameter
+            self.set_tool(ToolSpec(KIND_WORDS[kind], size, None, None, (source,)), record.line)
         elif kind == "MILL" and diameter is not None:
             self.set_tool(mill(diameter, radius, source), record.line)
         else:
