@@ -20,7 +20,8 @@ def bspline_points(knots, control, tolerance):
     """Points (k, 3) along the B-spline of `knots` (m,) and `control` points (n, 3), mm.
 
     The points after the curve's start, up to and including its end, chord error <= `tolerance`
-    mm. ValueError for knots that decrease or a count that leaves no degree >= 1.
+    mm. ValueError for knots that decrease, a count that leaves no degree >= 1, or an inner knot
+    repeated more often than the degree (a curve in pieces).
     """
     knots = np.asarray(knots, dtype=float)
     control = np.asarray(control, dtype=float)
@@ -34,6 +35,11 @@ def bspline_points(knots, control, tolerance):
     low, high = knots[degree], knots[n]
     if not high > low:
         raise ValueError("the knots leave the curve no parameter range")
+    inner = knots[(knots > low) & (knots < high)]
+    values, counts = np.unique(inner, return_counts=True)
+    if (counts > degree).any():
+        raise ValueError(f"knot {values[counts > degree][0]:g} is repeated more often than the degree "
+                         f"{degree}: the curve breaks there")
     spline = BSpline(knots, control, degree)
     bound = _second_derivative_bounds(knots, control, degree)
     spans = np.arange(degree, n)
