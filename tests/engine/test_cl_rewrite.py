@@ -96,3 +96,13 @@ def test_bad_feeds_and_csv_programs_are_refused(tmp_path):
     csv.write_text("x,y,z,i,j,k\n0,0,0,0,0,1\n")
     with pytest.raises(InputError, match="only a CL"):
         rewritten_text(read_program(csv), 1, [1.0])
+
+
+def test_latin1_file_keeps_its_bytes(tmp_path):
+    path = tmp_path / "l.apt"
+    original = "$$ Opération d'ébauche\nFEDRAT/MMPM,300\nGOTO/0,0,0\nGOTO/5,0,0\n".encode("latin-1")
+    path.write_bytes(original)
+    program = read_program(path)
+    out = tmp_path / "o.apt"
+    write_rescheduled_program(out, program, 1, [300.0, 300.0])
+    assert out.read_bytes() == original

@@ -12,6 +12,7 @@ machine), :mod:`.arcs` (CIRCLE), :mod:`.nurbs` (NX NURBS), :mod:`.units`, :mod:`
 """
 
 import os
+from dataclasses import replace
 
 from ...errors import InputError
 from .csv_program import read_csv_program
@@ -30,10 +31,10 @@ def read_program(path, tolerance=TOLERANCE):
     name = os.fspath(path)
     if not tolerance > 0.0:
         raise InputError(f"{name}: the chordal tolerance must be positive, got {tolerance:g} mm")
-    kind, text = read_file(name)
+    kind, text, encoding = read_file(name)
     if kind == "csv":
         return read_csv_program(name, text)
-    return read_cl_text(text, name, tolerance)
+    return replace(read_cl_text(text, name, tolerance), encoding=encoding)
 
 
 __all__ = ["Moves", "Operation", "OperationChoiceError", "Program", "TOLERANCE", "ToolSpec", "read_program"]

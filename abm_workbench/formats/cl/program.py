@@ -139,7 +139,7 @@ class Program:
     order), ignored ({major word: (first line, count)} of records known to carry nothing the
     engine needs), unknown (the same for records not understood), warnings (list of
     ``"file:line: ..."``), format ("apt" or "csv"), text (the file's text, for rewriting),
-    last_line (the file's number of lines)."""
+    last_line (the file's number of lines), encoding (the text's, for rewriting)."""
 
     source: str
     units: str
@@ -150,6 +150,7 @@ class Program:
     format: str = "apt"
     text: str = field(default="", repr=False)
     last_line: int = 0
+    encoding: str = "utf-8"
 
     def milling(self):
         """The operations the engine can run: flat-end mills (or undescribed tools) with cutting moves."""

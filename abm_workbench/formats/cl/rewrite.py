@@ -113,6 +113,6 @@ def write_rescheduled_program(path, program, number, feed):
     name = os.fspath(path)
     text = rewritten_text(program, number, feed)
     with replacing(name) as (temporary,):
-        with open(temporary, "w", encoding="utf-8", newline="") as file:
+        with open(temporary, "w", encoding=program.encoding, newline="") as file:
             file.write(text)
     return name

@@ -20,8 +20,8 @@ _RECORD = re.compile(r"^\s*(?:[A-Za-z][A-Za-z0-9_ -]*\s*/|(?:" + "|".join(map(re
 
 
 def read_file(path):
-    """(kind, text) of the file at `path`: kind "csv" or "apt"; InputError for unreadable,
-    binary or unknown content, naming the file."""
+    """(kind, text, encoding) of the file at `path`: kind "csv" or "apt", encoding the one the
+    text was read with; InputError for unreadable, binary or unknown content, naming the file."""
     name = os.fspath(path)
     try:
         with open(name, "rb") as file:
@@ -32,20 +32,22 @@ def read_file(path):
     controls = sum(probe.count(bytes([c])) for c in range(32) if c not in (9, 10, 12, 13, 26))
     if b"\0" in probe or controls > len(probe) // 100:
         raise InputError(f"{name}: binary content, not a CL file (APT / CLSF text) or toolpath CSV")
+    encoding = "utf-8-sig" if data.startswith(b"\xef\xbb\xbf") else "utf-8"
     try:
-        text = data.decode("utf-8-sig")
+        text = data.decode(encoding)
     except UnicodeDecodeError:
-        text = data.decode("latin-1")
+        encoding = "latin-1"
+        text = data.decode(encoding)
     for line in text.splitlines():
         stripped = line.strip()
         if not stripped or stripped.startswith("#"):
             continue
         fields = {field.strip().lower() for field in stripped.split(",")}
         if {"x", "y", "z"} <= fields:
-            return "csv", text
+            return "csv", text, encoding
         break
     if any(_RECORD.match(line) for line in text.splitlines()):
-        return "apt", text
+        return "apt", text, encoding
     if not text.strip():
         raise InputError(f"{name}: empty file: no CL records and no toolpath CSV header")
     raise InputError(f"{name}: unknown content: neither APT / CL records (WORD/...) nor a toolpath CSV header "
