@@ -143,3 +143,12 @@ def test_latin1_comments_and_tolerance_option(tmp_path):
     for op, tolerance in ((fine, 0.001), (coarse, 0.1)):
         step = np.diff(np.arctan2(op.points_file[:, 1], op.points_file[:, 0]))
         assert (10 * (1 - np.cos(step / 2))).max() <= tolerance
+
+
+def test_a_program_without_moves_has_no_operation_to_choose(tmp_path):
+    prog = program(tmp_path, "CUTTER/10\nSPINDL/1000\nFINI\n", "none.cl")
+    assert prog.operations == ()
+    with pytest.raises(InputError, match=f"^{tmp_path / 'none.cl'}: no operation: the file has no moves$"):
+        prog.operation()
+    with pytest.raises(InputError, match="operation 1: the program has operations 1 to 0"):
+        prog.operation(1)

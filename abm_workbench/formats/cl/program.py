@@ -170,6 +170,8 @@ class Program:
         milling = self.milling()
         if len(milling) == 1:
             return milling[0]
+        if not self.operations:
+            raise OperationChoiceError(f"{self.source}: no operation: the file has no moves", ())
         listing = "; ".join(op.summary() + ("" if op.refusal() is None else " (not milling)")
                             for op in self.operations)
         if milling:
