@@ -10,7 +10,7 @@ around ``/`` and ``,`` are dropped; trailing empty arguments (``GOTO/1,2,3,``) a
 """
 
 import re
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from ...errors import InputError
 
@@ -20,8 +20,7 @@ _RECORD_START = re.compile(r"\s*[A-Za-z][A-Za-z0-9_ -]*\s*/")
 BARE_WORDS = frozenset({"RAPID", "MULTAX", "END", "FINI", "END-OF-PATH", "STOP", "OPSTOP", "GOHOME", "NURBS"})
 
 
-@dataclass(frozen=True)
-class Record:
+class Record(NamedTuple):
     """One record: the 1-based line it starts on, its major word (upper case), its argument texts,
     and the text after its '/' (empty for a record without one)."""
 

@@ -32,7 +32,8 @@ from .tools import KIND_WORDS, ToolSpec, mill
 
 _NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 _NUMBER_TEXT = re.compile(_NUMBER)
-_NUMBER_LIST = re.compile(rf"\s*{_NUMBER}(?:\s*,\s*{_NUMBER})*[\s,]*")
+#: A record whose text after '/' holds only these characters is read by float() at once.
+_NUMBER_CHARACTERS = "0123456789+-.eE ,\t"
 _WORD = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
 _CREO = re.compile(r"->\s*([A-Za-z_]+)\s*/?\s*(.*)")
 _OPERATION_NAME = re.compile(r"OPERATION\s+NAME\s*:\s*(.+)", re.IGNORECASE)
@@ -179,8 +180,11 @@ class _Reader:
 
     def numbers(self, record):
         """The record's arguments as floats; InputError naming the first that is not a number."""
-        if _NUMBER_LIST.fullmatch(record.rest):
-            values = [float(arg) for arg in record.args]
+        if record.rest and not record.rest.strip(_NUMBER_CHARACTERS):
+            try:
+                values = [float(arg) for arg in record.args]
+            except ValueError:
+                values = [math.inf]
             if all(map(math.isfinite, values)):
                 return values
         for position, arg in enumerate(record.args, start=1):
