@@ -183,7 +183,8 @@ def test_an_axis_beyond_a_half_space_is_refused_with_operation_and_line(tmp_path
     path = tmp_path / "wild.cl"
     path.write_text("CUTTER/10\nGOTO/0,0,0,0,0,1\nGOTO/1,0,0,1,0,0\nGOTO/2,0,0,-1,0,0\n")
     op = read_program(path).operation()
-    with pytest.raises(InputError, match=rf"^{path}:3: operation 1: tool axis \(1, 0, 0\) turns 90 degrees"):
+    with pytest.raises(InputError, match=rf"^{path}:3: operation 1: tool axis \(1, 0, 0\), written in the file.s "
+                                         r"frame \(no MSYS, CSYS or ROTABL\), turns 90 degrees"):
         op.toolpath()
 
 

@@ -105,6 +105,7 @@ def test_a_frame_change_after_moves_starts_an_operation(tmp_path):
     ops = program(tmp_path, text).operations
     assert [op.lines.tolist() for op in ops] == [[2, 4], [6]]
     assert [op.frame for op in ops] == ["", "MSYS line 5"]
+    assert [op.name for op in ops] == ["", ""]
     np.testing.assert_allclose(ops[1].points_part, [[12, 0, 0]])
 
 
@@ -125,6 +126,13 @@ def test_errors_name_file_line_and_record(tmp_path, text, line, fragment):
         read_program(path)
     assert str(caught.value).startswith(f"{path}:{line}: "), str(caught.value)
     assert fragment in str(caught.value)
+
+
+def test_an_operation_split_by_a_frame_keeps_its_name(tmp_path):
+    text = "TOOL PATH/SIDES,TOOL,EM8\nGOTO/0,0,0\nROTABL/90,CAXIS\nGOTO/1,0,0\nTOOL PATH/TOP\nGOTO/2,0,0\n"
+    ops = program(tmp_path, text).operations
+    assert [(op.name, op.lines.tolist()) for op in ops] == [("SIDES", [2]), ("SIDES", [4]), ("TOP", [6])]
+    np.testing.assert_allclose(ops[1].points_part, [[0, -1, 0]], atol=1e-15)  # table turned +90 about Z
 
 
 def test_circle_radius_far_from_the_points_is_warned(tmp_path):

@@ -99,10 +99,11 @@ class Operation:
         frame, bad = engine_frame(self.to_part, self.axes_file)
         if bad is not None:
             axis = ", ".join(f"{v:.6g}" for v in self.axes_file[bad])
-            raise InputError(f"{self.source}:{self.lines[bad]}: {self.label()}: tool axis ({axis}) turns 90 "
-                             "degrees or more from the operation's frame (its axes span more than a half-space), "
-                             "so the engine, which needs the tool pointing up in one frame per operation, "
-                             "cannot take it")
+            written = f"the frame of {self.frame}" if self.frame else "the file's frame (no MSYS, CSYS or ROTABL)"
+            raise InputError(f"{self.source}:{self.lines[bad]}: {self.label()}: tool axis ({axis}), written in "
+                             f"{written}, turns 90 degrees or more from the operation's frame (its axes span more "
+                             "than a half-space), so the engine, which needs the tool pointing up in one frame per "
+                             "operation, cannot take it")
         return frame
 
     def toolpath(self):

@@ -240,7 +240,7 @@ class _Reader:
         if np.array_equal(frame[0], old[0]) and np.array_equal(frame[1], old[1]):
             self.op.frame_words = self.frame_words()
             return
-        self.boundary(line)
+        self.boundary(line, self.op.name)  # the same CAM operation goes on in another frame
         self.op.frame, self.op.frame_words = frame, self.frame_words()
 
     # Motion.
