@@ -92,6 +92,11 @@ def test_each_tool_change_is_an_operation_with_its_tool(tmp_path):
     assert [op.tool.records for op in ops] == [("CUTTER line 4",), ("CUTTER line 7",), ("TLDATA line 9",)]
 
 
+def test_a_cutter_with_a_bottom_angle_and_no_corner_radius_is_a_drill(tmp_path):
+    text = "CUTTER/8.5,0,0,2.45,31,0,90\nGOTO/0,0,0\nCUTTER/8,0,4,0,0,0,60\nGOTO/1,0,0\n"
+    assert [op.tool.kind for op in program(tmp_path, text).operations] == ["drill", "flat"]
+
+
 def test_loadtl_kind_words_name_drills_taps_and_turning_tools(tmp_path):
     text = "LOADTL/1,TAP\nCUTTER/8\nGOTO/0,0,0\nLOADTL/2,ADJUST,1,MILL\nCUTTER/8\nGOTO/1,0,0\n"
     ops = program(tmp_path, text).operations

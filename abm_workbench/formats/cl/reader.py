@@ -469,7 +469,8 @@ class _Reader:
     # Tools.
 
     def on_cutter(self, record):
-        """CUTTER/d[,r,e,f,a,b,h]: diameter and corner radius (h is the tool's height)."""
+        """CUTTER/d[,r,e,f,a,b,h]: diameter and corner radius (h is the tool's height); a bottom
+        angle a with no corner radius makes it a drill."""
         numbers, words = self.numbers_and_words(record)
         if not numbers:
             self.warn(record.line, record.word, f"{','.join(record.args)!r} gives no diameter; not read")
@@ -478,7 +479,10 @@ class _Reader:
         if diameter <= 0.0:
             raise self.error(record, f"diameter must be positive, got {numbers[0]:g}")
         radius = numbers[1] * self.scale if len(numbers) > 1 else 0.0
-        self.set_tool(mill(diameter, radius, f"CUTTER line {record.line}", self.kind_word), record.line)
+        # A bottom angle (the fifth number) with no corner radius: a pointed tool, a drill.
+        pointed = len(numbers) > 4 and numbers[4] != 0.0 and radius == 0.0
+        kind_word = self.kind_word or ("DRILL" if pointed else None)
+        self.set_tool(mill(diameter, radius, f"CUTTER line {record.line}", kind_word), record.line)
 
     def on_tldata(self, record):
         """TLDATA/kind,d,r,...: MILL gives diameter and corner radius; DRILL, TURN... the kind."""
