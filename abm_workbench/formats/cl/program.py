@@ -52,7 +52,8 @@ class Operation:
     lines: (n,). points_file, axes_file: (n, 3) cutting CL points and unit tool axes in the
     file frame, mm. to_part: (R, t). frame: words naming the frame records ("" for none).
     rapids, cycle_points: :class:`Moves`. arcs, curves: CIRCLE and NURBS moves interpolated.
-    source: the file. first_line: the line the operation starts on.
+    source: the file. first_line: the line the operation starts on. cycles: the canned-cycle
+    kinds used (``"DRILL"``, ``"TAP"`` ...), in order.
     """
 
     number: int

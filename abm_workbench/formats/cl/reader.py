@@ -100,7 +100,7 @@ class _Reader:
         self.circle = None
         self.nurbs = None
         self.cycle = None
-        self.feed, self.feed_kind, self.feed_line = math.nan, None, None
+        self.feed, self.feed_kind = math.nan, None
         self.spindle = None
         self.tool = ToolSpec()
         self.kind_word = None
@@ -260,8 +260,7 @@ class _Reader:
         op = self.op
         line = record.line
         if self.rapid or self.cycle is not None:
-            if self.circle is not None:
-                self.circle = None
+            self.circle = None  # a rapid or hole position ends a pending arc: it is not cut
             target = (op.rapids, op.rapid_axes, op.rapid_lines) if self.rapid else (op.holes, op.hole_axes,
                                                                                       op.hole_lines)
             target[0].append(point)
@@ -436,7 +435,6 @@ class _Reader:
         else:
             unit = "IPM" if self.scale != 1.0 else "MMPM"
         self.feed, self.feed_kind = unit_words.feed_to_mm(numbers[0], unit)
-        self.feed_line = record.line
 
     def on_spindl(self, record):
         """SPINDL in its forms: [RPM|SFM|SMM,]n[,CLW|CCLW], n,RPM, MAIN,..., ON, OFF."""
