@@ -18,6 +18,7 @@ from ...errors import InputError
 from .csv_program import read_csv_program
 from .program import Moves, Operation, OperationChoiceError, Program
 from .reader import read_cl_text
+from .rewrite import rewritten_text, write_rescheduled_program
 from .sniff import read_file
 from .tools import ToolSpec
 
@@ -37,4 +38,5 @@ def read_program(path, tolerance=TOLERANCE):
     return replace(read_cl_text(text, name, tolerance), encoding=encoding)
 
 
-__all__ = ["Moves", "Operation", "OperationChoiceError", "Program", "TOLERANCE", "ToolSpec", "read_program"]
+__all__ = ["Moves", "Operation", "OperationChoiceError", "Program", "TOLERANCE", "ToolSpec", "read_program",
+           "rewritten_text", "write_rescheduled_program"]
