@@ -165,3 +165,19 @@ def test_a_program_without_moves_has_no_operation_to_choose(tmp_path):
         prog.operation()
     with pytest.raises(InputError, match="operation 1: the program has operations 1 to 0"):
         prog.operation(1)
+
+
+def test_rotabl_clockwise_and_incremental(tmp_path):
+    text = ("CUTTER/8\nROTABL/30,AAXIS,CLW\nGOTO/0,1,0\nROTABL/30,AAXIS,CCLW,INCR\nGOTO/0,1,0\n"
+            "ROTABL/0,AAXIS\nGOTO/0,1,0\n")
+    ops = program(tmp_path, text).operations
+    c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+    # Table at -30 degrees about X: machine (0, 1, 0) was part Rx(-30)^T (0, 1, 0) = Rx(30) (0, 1, 0) = (0, cos, sin).
+    np.testing.assert_allclose(ops[0].points_part, [[0, c, s]], atol=1e-15)
+    assert len(ops) == 2 and ops[1].lines.tolist() == [5, 7] and ops[1].frame == ""
+    np.testing.assert_allclose(ops[1].points_part, [[0, 1, 0], [0, 1, 0]], atol=1e-15)
+
+
+def test_inch_csys_moves_by_the_converted_translation(tmp_path):
+    (op,) = program(tmp_path, "UNITS/INCHES\nCSYS/1,0,0,1,0,1,0,2,0,0,1,3\nGOTO/1,1,1\n").operations
+    np.testing.assert_allclose(op.points_part, [[50.8, 76.2, 101.6]], rtol=1e-15)
