@@ -28,7 +28,7 @@ def test_summary_lines_per_operation(capsys):
     cut = len(read_program(FIXTURES / "nx_two_ops.clsf").operations[0].lines)  # the summary reports the reader's count
     assert lines[1].startswith(f"operation 1 (CAVITY_MILL): flat-end mill D10; {cut} CL points cut, 1 rapid, "
                                "0 canned-cycle; 1 arcs and 1 curves interpolated; axis 180..180 deg from part Z; "
-                               "frame MSYS line 3")
+                               "frame MSYS line 3; units mm; spindle 6000 rpm")
     assert "not for the engine: ball mill D6 R3: the ABM engine is for flat-end mills" in lines[2]
     assert lines[4] == ("ignored records: TOOL PATH x3 (first line 1), PAINT x5 (first line 5), "
                         "END-OF-PATH x3 (first line 29)")

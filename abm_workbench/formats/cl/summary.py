@@ -35,8 +35,9 @@ def _coordinates(op, frame):
     return op.points_part, op.axes_part
 
 
-def operation_line(op, frame="part"):
-    """One line of words about operation `op` (see the module docstring for `frame`)."""
+def operation_line(op, frame="part", units="mm"):
+    """One line of words about operation `op` of a program in `units` as written (see the module
+    docstring for `frame`)."""
     _, axes = _coordinates(op, frame)
     if len(axes):
         tilt = np.degrees(np.arccos(np.clip(axes[:, 2], -1.0, 1.0)))
@@ -49,6 +50,7 @@ def operation_line(op, frame="part"):
         f"{op.arcs} arcs and {op.curves} curves interpolated",
         axis,
         f"frame {op.frame or 'none (file = part)'}",
+        "units mm" if units == "mm" else f"units {units} (converted to mm)",
     ]
     if op.spindle_rpm is not None:
         parts.append(f"spindle {op.spindle_rpm:.6g} rpm")
@@ -62,7 +64,7 @@ def summary_lines(program, frame="part"):
     """Lines describing `program`: a header, one line per operation, then ignored and unknown records."""
     lines = [f"{program.source}: {len(program.operations)} operation(s), {len(program.milling())} for the engine; "
              f"units {program.units}" + (" (converted to mm)" if program.units != "mm" else "")]
-    lines += [operation_line(op, frame) for op in program.operations]
+    lines += [operation_line(op, frame, program.units) for op in program.operations]
     if program.ignored:
         lines.append("ignored records: " + ", ".join(f"{word} x{count} (first line {first})"
                                                      for word, (first, count) in program.ignored.items()))
