@@ -37,7 +37,7 @@ def test_arc_points_on_the_circle_turning_right_handed(centre, axis, radius, sta
     if full:
         sweep = 2 * math.pi
     else:  # an end point within the tolerance of the start (in the plane) means a full turn
-        assume(2 * radius * math.sin(sweep / 2) > tolerance and sweep < 2 * math.pi)
+        assume(2 * radius * math.sin(sweep / 2) > 1e-5 and sweep < 2 * math.pi)
     begin = centre + radius * u
     end = centre + radius * (math.cos(sweep) * u + math.sin(sweep) * v) + rise * w
     points = arc_points(begin, end, centre, axis, tolerance)
@@ -53,6 +53,14 @@ def test_arc_points_on_the_circle_turning_right_handed(centre, axis, radius, sta
     assert turned[-1] == pytest.approx(sweep, abs=1e-7)
     np.testing.assert_allclose(height, rise * turned[1:] / sweep, rtol=0, atol=scale)
     assert (radius * (1 - np.cos(step / 2))).max() <= tolerance * (1 + 1e-9) + 1e-12
+
+
+def test_a_tiny_arc_stays_tiny_and_the_same_point_is_a_full_turn():
+    tiny = arc_points([10, 0, 0], [10 * math.cos(1e-5), 10 * math.sin(1e-5), 0], [0, 0, 0], [0, 0, 1], 1e-3)
+    assert len(tiny) == 1
+    full = arc_points([10, 0, 0], [10, 0, 0], [0, 0, 0], [0, 0, 1], 1e-3)
+    turned = np.unwrap(np.concatenate([[0.0], np.arctan2(full[:, 1], full[:, 0])]))
+    assert turned[-1] == pytest.approx(2 * math.pi, abs=1e-12)
 
 
 def test_arc_with_a_zero_axis_or_a_point_on_it_is_refused():

@@ -3,7 +3,8 @@
 APT's ``CIRCLE/xc,yc,zc,i,j,k[,r,...]`` followed by the GOTO of the arc's end point moves the
 tool from where it is to that end point along the circle about the axis (i, j, k) through the
 centre, turning by the right-hand rule about the axis. End point = start point (in the
-circle's plane, within the tolerance): a full turn. An end point at another height along the
+circle's plane, to within SAME_POINT mm, far below the precision files are written to): a full
+turn. An end point at another height along the
 axis: a helical arc, the height (and any change of radius between start and end, which a file
 only has from rounding) varying in proportion to the angle turned.
 """
@@ -14,6 +15,8 @@ import numpy as np
 
 #: Largest angle (rad) between two interpolated points, however coarse the tolerance.
 MAX_STEP = math.pi / 4
+#: Start and end points of an arc closer than this (mm, in the circle's plane) make a full turn.
+SAME_POINT = 1e-6
 
 
 def arc_points(start, end, centre, axis, tolerance):
@@ -39,7 +42,7 @@ def arc_points(start, end, centre, axis, tolerance):
     u = radial_a / radius_a
     v = np.cross(w, u)
     sweep = math.atan2(radial_b @ v, radial_b @ u) % (2.0 * math.pi)
-    if np.linalg.norm(radial_b - radial_a) <= tolerance:
+    if np.linalg.norm(radial_b - radial_a) <= SAME_POINT:
         sweep = 2.0 * math.pi
     count = max(1, math.ceil(sweep / step_angle(max(radius_a, radius_b), tolerance)))
     t = np.arange(1, count + 1) / count
