@@ -6,6 +6,7 @@ Commands:
   validate  the engine against OpenCASCADE booleans at every instant -> HTML report (+ FCStd).
   schedule  the feed per CL point that keeps the peak force (or cut area) under a limit -> a
             re-scheduled toolpath (APT with FEDRAT records, or CSV) (+ HTML report).
+  toolpath  what a CL file or toolpath CSV holds, one line per operation (+ CSV of its CL points).
 
 engage --forces adds the cutting forces of the linear edge-force model (docs/FORCES.md).
 
@@ -157,7 +158,40 @@ def _build_parser():
     outputs.add_argument("--out", required=True, metavar="P.apt|P.cls|P.csv", help="re-scheduled toolpath")
     outputs.add_argument("--report", metavar="DIR", help="also write an HTML report (index.html, schedule.csv)")
     schedule_parser.set_defaults(run=_run_schedule)
+
+    toolpath_parser = commands.add_parser(
+        "toolpath", help="what a CL file (APT, CLSF, ...) or toolpath CSV holds, per operation", description=(
+            "Reads a CL file as CAM systems write it (NX, CATIA, Creo, SOLIDWORKS CAM, Mastercam, PowerMill APT; "
+            "the file type is judged by content) and prints one line per operation (docs/CL_FILES.md); with "
+            "--out, writes every cutting CL point as CSV."),
+    )
+    toolpath_parser.add_argument("file", metavar="FILE", help="CL file or toolpath CSV")
+    toolpath_parser.add_argument("--out", metavar="P.csv", help="CSV of every cutting CL point "
+                                 "(operation, name, tool, diameter, corner_radius, x, y, z, i, j, k, ...)")
+    toolpath_parser.add_argument("--frame", choices=("part", "file"), default="part",
+                                 help="part (default): MSYS / CSYS / ROTABL applied; file: as written, in mm")
+    toolpath_parser.add_argument("--tolerance", type=float, default=0.001, metavar="MM",
+                                 help="chordal tolerance of interpolated arcs and curves (mm), default 0.001")
+    toolpath_parser.set_defaults(run=_run_toolpath)
     return parser
+
+
+def _run_toolpath(args):
+    """The toolpath command: the program's summary, and with --out its CSV; returns 0."""
+    from .formats.cl import read_program
+    from .formats.cl.summary import summary_lines, write_toolpath_csv
+
+    if args.out:
+        _check_outputs([args.out], [args.file])
+    program = read_program(args.file, tolerance=args.tolerance)
+    for warning in program.warnings:
+        print(f"{PROG}: warning: {warning}", file=sys.stderr)
+    print("\n".join(summary_lines(program, args.frame)))
+    if args.out:
+        os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
+        write_toolpath_csv(program, args.out, args.frame)
+        print(f"{PROG}: wrote {args.out}")
+    return 0
 
 
 def _force_arguments(parser, *, always=False, helix=True):

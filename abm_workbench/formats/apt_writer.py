@@ -1,12 +1,14 @@
 """A toolpath with a feed per CL point as an APT / CL file, or as a toolpath CSV with feeds.
 
-APT: ``UNITS/MM``, ``CUTTER/d,0,0,0,0,0,h`` (diameter and flute length, mm),
-``SPINDL/RPM,n,CLW`` when the speed is known, ``MULTAX/ON``, then per CL point a
+APT: ``UNITS/MM``, ``CUTTER/d`` (diameter, mm; APT's seventh CUTTER number would be the
+tool's height, not its flute length), ``CSI_SET_FLUTE_LENGTH/h`` (flute length, mm, the record
+SOLIDWORKS CAM writes it in), ``SPINDL/RPM,n,CLW`` when the speed is known, ``MULTAX/ON``, then per CL point a
 ``FEDRAT/MMPM,F`` (mm/min, F = f_z·Z·n; ``FEDRAT/MMPR,F`` in mm/rev, F = f_z·Z, without a
 spindle speed) whenever the feed changes, and ``GOTO/x,y,z,i,j,k`` (the CL point and the unit
 tool axis); ``END``. Every number is written in the shortest form that reads back as the
-same float, so :func:`abm_workbench.formats.apt.load_apt` gives back the same CL points and
-feeds.
+same float, so :func:`abm_workbench.formats.apt.load_apt` gives back the same CL points,
+feeds and tool sizes. A CL program read by :mod:`abm_workbench.formats.cl` is written back with
+only one operation's feeds changed by :func:`abm_workbench.formats.cl.rewrite.write_rescheduled_program`.
 
 CSV: the toolpath CSV columns ``x,y,z,theta_a,theta_b`` (mm, deg) and ``feed_per_tooth`` (mm),
 plus ``feed_mm_min`` when the spindle speed is known; the toolpath reader accepts and skips
@@ -38,7 +40,7 @@ def apt_text(toolpath, feed_per_tooth, *, flutes, diameter, flute_length, spindl
     unit = "MMPR" if spindle_rpm is None else "MMPM"
     axes = angles_to_axis(toolpath.theta_a, toolpath.theta_b)
     lines = [f"$$ {line}" for line in comment.splitlines()]
-    lines += ["UNITS/MM", f"CUTTER/{_number(diameter)},0,0,0,0,0,{_number(flute_length)}"]
+    lines += ["UNITS/MM", f"CUTTER/{_number(diameter)}", f"CSI_SET_FLUTE_LENGTH/{_number(flute_length)}"]
     if spindle_rpm is not None:
         lines.append(f"SPINDL/RPM,{_number(spindle_rpm)},CLW")
     lines.append("MULTAX/ON")

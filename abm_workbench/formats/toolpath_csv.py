@@ -6,14 +6,21 @@ The header names the columns, in any order, case-insensitive, whitespace trimmed
 - ``theta_a, theta_b`` (rotations about x and y, degrees, |θ| < 90) or
 - ``i, j, k`` (tool-axis vector, any length, k > 0);
 - optionally ``xc, yc, zc`` (cutter-contact point, mm), all three or none;
-- optionally ``feed_per_tooth`` (mm), ``feed_mm_min``: the feeds a ``schedule`` wrote, skipped here.
+- optionally ``feed_per_tooth`` (mm), ``feed_mm_min``: the feeds a ``schedule`` wrote, skipped here;
+- optionally the columns the ``toolpath --out`` command writes: ``operation`` (1-based number of
+  the CL file's operation), ``name`` (its CAM name), ``tool`` (its kind: flat, ball, ...),
+  ``diameter``, ``corner_radius`` (mm, empty when unknown), ``feed_rate`` with ``feed_unit``
+  (MMPM mm/min or MMPR mm/rev, empty before any feed), ``line`` (the CL file's line).
 
 One row per CL point in pass order. Blank lines and lines starting with ``#`` are skipped.
+A file with an ``operation`` column holds several passes: :func:`load_toolpath` takes the one
+asked for, or the only one.
 """
 
 import csv
 import math
 import os
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -26,36 +33,105 @@ _ANGLES = ("theta_a", "theta_b")
 _AXIS = ("i", "j", "k")
 _CONTACT = ("xc", "yc", "zc")
 _FEEDS = ("feed_per_tooth", "feed_mm_min")
+#: Columns of the toolpath command's CSV: numbers (empty allowed where marked) and texts.
+OPERATION_NUMBERS = ("operation", "diameter", "corner_radius", "feed_rate", "line")
+OPERATION_TEXTS = ("name", "tool", "feed_unit")
+_MAY_BE_EMPTY = ("diameter", "corner_radius", "feed_rate")
 _EXAMPLE = "x,y,z,theta_a,theta_b"
 
 
-def load_toolpath(path):
-    """Read a toolpath CSV into a :class:`Toolpath`; InputError naming the file and line."""
+@dataclass(frozen=True, eq=False)
+class Table:
+    """A toolpath CSV read: source, header (lower-case names), lines (n,) 1-based, numbers
+    {column: (n,) float, NaN where empty}, texts {column: list of n str}."""
+
+    source: str
+    header: list
+    lines: np.ndarray
+    numbers: dict
+    texts: dict
+
+
+def load_table(path):
+    """The :class:`Table` of a toolpath CSV; InputError naming the file and line."""
     name = os.fspath(path)
     rows = _rows(read_text(path))
     if not rows:
         raise InputError(f"{name}: empty file; expected a header such as {_EXAMPLE!r}")
     header_line, fields = rows[0]
     header = [field.strip().lower() for field in fields]
-    columns = _columns(header, f"{name}:{header_line}")
+    _columns(header, f"{name}:{header_line}")
     if len(rows) == 1:
         raise InputError(f"{name}: no CL points: the file has a header but no rows")
-    lines = [line for line, _ in rows[1:]]
-    table = np.array([_numbers(fields, header, f"{name}:{line}") for line, fields in rows[1:]])
-    data = {column: table[:, index] for index, column in enumerate(header)}
+    lines = np.array([line for line, _ in rows[1:]], dtype=int)
+    texts = {column: [] for column in header if column in OPERATION_TEXTS}
+    numeric = [column for column in header if column not in OPERATION_TEXTS]
+    values = []
+    for line, fields in rows[1:]:
+        values.append(_numbers(fields, header, f"{name}:{line}"))
+        for column in texts:
+            texts[column].append(fields[header.index(column)].strip())
+    table = np.array(values, dtype=float).reshape(len(values), len(numeric))
+    return Table(name, header, lines, {column: table[:, k] for k, column in enumerate(numeric)}, texts)
+
+
+def load_toolpath(path, operation=None):
+    """Read a toolpath CSV into a :class:`Toolpath`; InputError naming the file and line.
+
+    With an ``operation`` column: the rows of operation `operation` (1-based), or when it is
+    None of the only operation; else InputError listing the operations (number, tool, points).
+    """
+    table = load_table(path)
+    name = table.source
+    columns = set(table.header)
+    data = table.numbers
+    rows = _operation_rows(table, operation)
+    lines = table.lines[rows]
 
     def stack(names):
-        return np.stack([data[column] for column in names], axis=1)
+        return np.stack([data[column][rows] for column in names], axis=1)
 
     cc = stack(_CONTACT) if _CONTACT[0] in columns else None
     try:
         if _AXIS[0] in columns:
             return Toolpath.from_axes(stack(_POSITION), stack(_AXIS), cc)
-        return Toolpath(stack(_POSITION), data["theta_a"], data["theta_b"], cc)
+        return Toolpath(stack(_POSITION), data["theta_a"][rows], data["theta_b"][rows], cc)
     except CLPointError as error:
         raise InputError(f"{name}:{lines[error.index]}: {error.detail}") from None
     except ValueError as error:
         raise InputError(f"{name}: {error}") from None
+
+
+def _operation_rows(table, operation):
+    """Indices of the rows of the chosen operation (all rows without an operation column)."""
+    if "operation" not in table.numbers:
+        if operation not in (None, 1):
+            raise InputError(f"{table.source}: operation {operation}: the file has one pass (no operation column)")
+        return np.arange(len(table.lines))
+    numbers = table.numbers["operation"]
+    present = list(dict.fromkeys(numbers.tolist()))
+    if operation is None and len(present) == 1:
+        operation = present[0]
+    if operation is None:
+        listing = "; ".join(_describe(table, number) for number in present)
+        raise InputError(f"{table.source}: {len(present)} operations; choose one with --operation N; "
+                         f"operations: {listing}")
+    rows = np.flatnonzero(numbers == float(operation))
+    if rows.size == 0:
+        raise InputError(f"{table.source}: no operation {operation}; the file has operations "
+                         f"{', '.join(f'{n:g}' for n in present)}")
+    return rows
+
+
+def _describe(table, number):
+    """``N: name, tool D, k CL points`` of operation `number` of `table`."""
+    rows = np.flatnonzero(table.numbers["operation"] == number)
+    first = int(rows[0])
+    name = table.texts.get("name", [""] * (first + 1))[first] or "-"
+    tool = table.texts.get("tool", ["tool"] * (first + 1))[first] or "tool"
+    diameter = table.numbers.get("diameter")
+    size = f" D{diameter[first]:g}" if diameter is not None and np.isfinite(diameter[first]) else ""
+    return f"{number:g}: {name}, {tool}{size}, {rows.size} CL points"
 
 
 def _rows(text):
@@ -70,7 +146,7 @@ def _rows(text):
 
 def _columns(header, where):
     """Check the header's names (already lower-cased, trimmed); return them as a set."""
-    known = (*_POSITION, *_ANGLES, *_AXIS, *_CONTACT, *_FEEDS)
+    known = (*_POSITION, *_ANGLES, *_AXIS, *_CONTACT, *_FEEDS, *OPERATION_NUMBERS, *OPERATION_TEXTS)
     duplicate = sorted({column for column in header if header.count(column) > 1})
     if duplicate:
         raise InputError(f"{where}: duplicate column {duplicate[0]!r}")
@@ -94,11 +170,16 @@ def _columns(header, where):
 
 
 def _numbers(fields, header, where):
-    """The row's fields as finite floats, in header order."""
+    """The row's numeric fields as finite floats (NaN for an allowed empty one), in header order."""
     if len(fields) != len(header):
         raise InputError(f"{where}: expected {len(header)} fields ({','.join(header)}), got {len(fields)}")
     values = []
     for column, field in zip(header, fields):
+        if column in OPERATION_TEXTS:
+            continue
+        if column in _MAY_BE_EMPTY and not field.strip():
+            values.append(math.nan)
+            continue
         try:
             value = float(field)
         except ValueError:

@@ -1,4 +1,4 @@
-"""APT / CL data files: the records NX and CATIA write, and every error naming file and line."""
+"""load_apt, the one-pass adapter over formats.cl: the records NX and CATIA write, every error naming file and line."""
 
 import dataclasses
 import math
@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from abm_workbench.engine import axis_to_angles
 from abm_workbench.errors import InputError
 from abm_workbench.formats.apt import AptProgram, load_apt
+from abm_workbench.formats.cl import OperationChoiceError
 
 
 def write(tmp_path, text, name="path.apt", newline="\n"):
@@ -31,7 +32,7 @@ def fails(tmp_path, text, line, *fragments):
     with pytest.raises(InputError) as caught:
         load_apt(path)
     message = str(caught.value)
-    assert message.startswith(f"{path}:{line}: "), message
+    assert message.startswith(f"{path}:{line}: " if line else f"{path}: "), message
     for fragment in fragments:
         assert fragment in message, message
     return message
@@ -77,10 +78,10 @@ def test_nx_file(tmp_path):
     assert program.line_numbers.tolist() == [15, 16, 18]
     assert program.feed.tolist() == [250.0, 250.0, 300.0]
     assert program.feed_unit == "MMPM"
-    assert (program.diameter, program.flute_length, program.spindle_rpm) == (10.0, 75.0, 8000.0)
+    # TLDATA/MILL's third number is the tool's length, not its flute length.
+    assert (program.diameter, program.flute_length, program.spindle_rpm) == (10.0, None, 8000.0)
     assert program.unknown == ()
-    assert len(program.warnings) == 1
-    assert program.warnings[0].startswith(f"{tmp_path / 'path.apt'}:3: MSYS: ")
+    assert program.warnings == ()
 
 
 CATIA_FILE = """\
@@ -127,7 +128,8 @@ def test_catia_file(tmp_path, newline):
     assert program.line_numbers.tolist() == [20, 24, 25, 27]
     assert program.feed.tolist() == [1000.0, 1000.0, 1000.0, 500.0]
     assert program.feed_unit == "MMPM"
-    assert (program.diameter, program.flute_length, program.spindle_rpm) == (10.0, 30.0, 3000.0)
+    # CUTTER's seventh number is the tool's height, not its flute length.
+    assert (program.diameter, program.flute_length, program.spindle_rpm) == (10.0, None, 3000.0)
     assert program.unknown == ()
     assert program.warnings == ()
 
@@ -150,12 +152,12 @@ def test_three_axis_file_uses_tlaxis_default_and_given(tmp_path):
     assert (program.feed_unit, program.diameter, program.flute_length, program.spindle_rpm) == (None,) * 4
 
 
-def test_multax_off_returns_to_tlaxis_and_bare_multax_is_on(tmp_path):
-    # The last GOTO (x, y, z under MULTAX) keeps the axis of the move before: TLAXIS's.
-    text = "TLAXIS/0,.6,.8\nMULTAX\nGOTO/0,0,0,1,0,1\nGOTO/1,0,0\nMULTAX/OFF\nGOTO/2,0,0\n" \
-           "multax/on\nGOTO/3,0,0\n"
+def test_three_number_goto_keeps_the_axis_in_force_whatever_multax_says(tmp_path):
+    # The axis in force is TLAXIS's or the last six-number GOTO's; MULTAX changes nothing.
+    text = "TLAXIS/0,.6,.8\nGOTO/9,0,0\nMULTAX\nGOTO/0,0,0,1,0,1\nGOTO/1,0,0\nMULTAX/OFF\nGOTO/2,0,0\n" \
+           "GOTO/3,0,0,0,0,1\nmultax/on\nGOTO/4,0,0\n"
     program = load(tmp_path, text)
-    assert_axes(program, [[1, 0, 1], [1, 0, 1], [0, 0.6, 0.8], [0, 0.6, 0.8]])
+    assert_axes(program, [[0, 0.6, 0.8], [1, 0, 1], [1, 0, 1], [1, 0, 1], [0, 0, 1], [0, 0, 1]])
 
 
 def test_tlaxis_under_multax_sets_the_current_axis(tmp_path):
@@ -178,61 +180,54 @@ def test_a_rapid_move_may_point_down(tmp_path):
     ("FEDRAT/MMPM,250", "MMPM", 250.0),
     ("FEDRAT/250,MMPM", "MMPM", 250.0),
     ("fedrat/ 0.1 , mmpr", "MMPR", 0.1),
-    ("FEDRAT/IPM,20", "IPM", 20.0),
-    ("FEDRAT/.004,IPR", "IPR", 0.004),
-    ("FEDRAT/250", None, 250.0),
+    ("FEDRAT/IPM,20", "MMPM", 508.0),
+    ("FEDRAT/.004,IPR", "MMPR", 0.1016),
+    ("FEDRAT/250", "MMPM", 250.0),
 ])
 def test_fedrat_forms(tmp_path, record, unit, feed):
     program = load(tmp_path, f"{record}\nGOTO/1,2,3\n")
-    assert (program.feed_unit, program.feed.tolist()) == (unit, [feed])
-    assert program.toolpath.cl.tolist() == [[1.0, 2.0, 3.0]]  # no conversion for inch feeds
+    assert program.feed_unit == unit
+    np.testing.assert_allclose(program.feed, [feed], rtol=1e-15)
+    assert program.toolpath.cl.tolist() == [[1.0, 2.0, 3.0]]
 
 
-def test_fedrat_without_unit_keeps_the_unit(tmp_path):
-    program = load(tmp_path, "FEDRAT/IPM,20\nGOTO/0,0,0\nFEDRAT/30\nGOTO/1,0,0\n")
-    assert (program.feed_unit, program.feed.tolist(), program.warnings) == ("IPM", [20.0, 30.0], ())
-
-
-def test_feed_unit_change_is_warned(tmp_path):
-    program = load(tmp_path, "FEDRAT/MMPM,200\nGOTO/0,0,0\nFEDRAT/0.1,MMPR\nGOTO/1,0,0\n")
-    assert program.feed_unit == "MMPR"
-    assert program.warnings == (f"{tmp_path / 'path.apt'}:3: FEDRAT: feed_unit changes from MMPM to MMPR; "
-                                "the last value is reported",)
+def test_fedrat_without_unit_keeps_the_kind(tmp_path):
+    program = load(tmp_path, "FEDRAT/MMPR,0.1\nGOTO/0,0,0\nFEDRAT/0.2\nGOTO/1,0,0\n")
+    assert (program.feed_unit, program.feed.tolist(), program.warnings) == ("MMPR", [0.1, 0.2], ())
 
 
 @pytest.mark.parametrize("record, diameter, length", [
     ("CUTTER/8", 8.0, None),
     ("CUTTER/8,0", 8.0, None),
-    ("CUTTER/8,0,4,0,0,0,25", 8.0, 25.0),
-    ("TLDATA/MILL,6.0,0.0,40.0,0.0,0.0", 6.0, 40.0),
+    ("CUTTER/8,0,4,0,0,0,25", 8.0, None),
+    ("TLDATA/MILL,6.0,0.0,40.0,0.0,0.0", 6.0, None),
     ("tldata/mill,6", 6.0, None),
+    ("CUTTER/8,0,4,0,0,0,25\nCSI_SET_FLUTE_LENGTH/32.", 8.0, 32.0),
 ])
 def test_tool_records(tmp_path, record, diameter, length):
     program = load(tmp_path, f"{record}\nGOTO/0,0,0\n")
     assert (program.diameter, program.flute_length, program.warnings) == (diameter, length, ())
 
 
-def test_corner_radius_is_warned(tmp_path):
-    program = load(tmp_path, "CUTTER/10,1,4,1,0,0,30\nGOTO/0,0,0\n")
-    assert program.diameter == 10.0
-    assert program.warnings == (f"{tmp_path / 'path.apt'}:1: CUTTER: corner radius 1 is ignored: "
-                                "the engine models a flat-end mill",)
+@pytest.mark.parametrize("record, words", [
+    ("CUTTER/10,1,4,1,0,0,30", "bull-nose mill D10 R1"),
+    ("CUTTER/6,3", "ball mill D6 R3"),
+    ("TLDATA/DRILL,5,118", "drill D5"),
+])
+def test_a_file_of_other_tools_is_refused_by_name(tmp_path, record, words):
+    fails(tmp_path, f"{record}\nGOTO/0,0,0\n", None, f"operation 1: {words}: the ABM engine is for flat-end mills")
 
 
-def test_tool_change_reports_the_last_tool_and_warns(tmp_path):
-    program = load(tmp_path, "CUTTER/10,0,0,0,0,0,30\nGOTO/0,0,0\nTLDATA/MILL,12,0,40\nGOTO/1,0,0\n")
-    assert (program.diameter, program.flute_length) == (12.0, 40.0)
-    assert [w.split(": ", 2)[2] for w in program.warnings] == [
-        "diameter changes from 10 to 12; the last value is reported",
-        "flute_length changes from 30 to 40; the last value is reported",
-    ]
-
-
-def test_tldata_of_another_kind_is_warned_and_not_read(tmp_path):
-    program = load(tmp_path, "TLDATA/DRILL,5,118\nGOTO/0,0,0\n")
-    assert program.diameter is None
-    assert program.warnings == (f"{tmp_path / 'path.apt'}:1: TLDATA: only TLDATA/MILL gives the tool size; "
-                                "TLDATA/DRILL is not read",)
+def test_several_tools_are_several_operations_to_choose_from(tmp_path):
+    path = write(tmp_path, "CUTTER/10\nGOTO/0,0,0\nGOTO/1,0,0\nTLDATA/MILL,12,0,40\nGOTO/1,0,0\n")
+    with pytest.raises(OperationChoiceError) as caught:
+        load_apt(path)
+    assert [op.number for op in caught.value.operations] == [1, 2]
+    message = str(caught.value)
+    assert "1: -, flat-end mill D10, 2 CL points" in message and "2: -, flat-end mill D12, 1 CL points" in message
+    assert "--operation N" in message
+    second = load_apt(path, operation=2)
+    assert (second.diameter, second.operation, second.line_numbers.tolist()) == (12.0, 2, [5])
 
 
 @pytest.mark.parametrize("record", ["SPINDL/1200", "SPINDL/RPM,1200", "SPINDL/1200,RPM",
@@ -242,21 +237,24 @@ def test_spindl_forms(tmp_path, record):
     assert program.spindle_rpm == 1200.0
 
 
-def test_spindle_change_is_warned(tmp_path):
-    program = load(tmp_path, "SPINDL/1200\nGOTO/0,0,0\nSPINDL/1500\nGOTO/1,0,0\n")
-    assert program.spindle_rpm == 1500.0
-    assert program.warnings == (f"{tmp_path / 'path.apt'}:3: SPINDL: spindle_rpm changes from 1200 "
-                                "to 1500; the last value is reported",)
+@pytest.mark.parametrize("record, rpm", [
+    ("SPINDL/SMM,100,CLW", 100_000 / (math.pi * 10)),
+    ("SPINDL/SFM,300", 300 * 304.8 / (math.pi * 10)),
+    ("SPINDL/MAIN,RPM,2500,CLW", 2500.0),
+    ("SPINDL/RPM,2500,CLW,RANGE,2", 2500.0),
+])
+def test_spindl_surface_speed_and_other_forms(tmp_path, record, rpm):
+    program = load(tmp_path, f"CUTTER/10\n{record}\nGOTO/0,0,0\n")
+    assert program.spindle_rpm == pytest.approx(rpm, rel=1e-14)
 
 
-def test_units_inches_converts_coordinates_and_tool_not_feed(tmp_path):
+def test_units_inches_converts_coordinates_tools_and_feeds(tmp_path):
     text = "UNITS/INCHES\nCUTTER/0.5,0,0,0,0,0,1\nFEDRAT/IPM,20\nGOTO/1,2,3\nUNITS/MM\nGOTO/1,2,3\n"
     program = load(tmp_path, text)
     np.testing.assert_allclose(program.toolpath.cl, [[25.4, 50.8, 76.2], [1, 2, 3]])
-    assert (program.diameter, program.flute_length) == (12.7, 25.4)
-    assert (program.feed_unit, program.feed.tolist()) == ("IPM", [20.0, 20.0])
-    assert len(program.warnings) == 1
-    assert program.warnings[0].startswith(f"{tmp_path / 'path.apt'}:1: UNITS: coordinates and tool sizes")
+    assert (program.diameter, program.flute_length) == (12.7, None)
+    assert program.feed_unit == "MMPM"
+    np.testing.assert_allclose(program.feed, [508.0, 508.0])
 
 
 def test_msys_in_inches_moves_by_the_converted_origin(tmp_path):
@@ -267,15 +265,13 @@ def test_msys_in_inches_moves_by_the_converted_origin(tmp_path):
 def test_msys_rotates_points_and_axes(tmp_path):
     # Local frame tilted 30 degrees about the global x axis: X = (1,0,0), Y = (0,cos,sin).
     c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
-    text = (f"MSYS/0,0,10,1,0,0,0,{c:.7f},{s:.7f}\nMULTAX\nGOTO/0,1,0,0,0,1\n"
-            "MSYS/0,0,0,1,0,0,0,1,0\nGOTO/0,1,0,0,0,1\n")
+    text = f"MSYS/0,0,10,1,0,0,0,{c:.7f},{s:.7f}\nMULTAX\nGOTO/0,1,0,0,0,1\n"
     program = load(tmp_path, text)
-    np.testing.assert_allclose(program.toolpath.cl, [[0, c, 10 + s], [0, 1, 0]], atol=1e-7)
-    assert_axes(program, [[0, -s, c], [0, 0, 1]])
-    assert len(program.warnings) == 1  # the identity MSYS is not warned about
+    np.testing.assert_allclose(program.toolpath.cl, [[0, c, 10 + s]], atol=1e-7)
+    assert_axes(program, [[0, -s, c]])
 
 
-def test_silent_words_are_accepted_and_others_reported(tmp_path):
+def test_ignored_words_are_accepted_and_others_reported(tmp_path):
     text = """\
 PARTNO TEST PART
 MACHIN/MILL,1
@@ -283,30 +279,25 @@ SELECT/TOOL,1
 PPRINT/ROUGHING $$ comment
 INSERT/G90
 COOLNT/FLOOD
-CYCLE/OFF
 FROM/0,0,100
 CUTCOM/LEFT
-GOTO/0,0,0
-CIRCLE/0,0,0,0,0,1,5
+OPSKIP/ON
 GOTO/5,0,0
-cutcom/off
+OPSKIP/OFF
 OPSTOP
 GOHOME
 END
 FINI
 """
     program = load(tmp_path, text)
-    assert program.unknown == (("CUTCOM", 9, 2), ("CIRCLE", 11, 1))
+    assert program.unknown == (("OPSKIP", 9, 2),)
     assert program.warnings == ()
-    assert len(program.toolpath) == 2
+    assert program.toolpath.cl.tolist() == [[5.0, 0.0, 0.0]]
 
 
-def test_cycle_and_second_operation_are_warned(tmp_path):
-    text = "TOOL PATH/OP1\nGOTO/0,0,0\nEND-OF-PATH\nTOOL PATH/OP2\nCYCLE/DRILL,5\nGOTO/1,0,0\nCYCLE/OFF\n"
-    program = load(tmp_path, text)
-    assert [w.split(": ")[0].rsplit(":", 1)[1] for w in program.warnings] == ["4", "5"]
-    assert "appended to the same toolpath" in program.warnings[0]
-    assert "canned cycle" in program.warnings[1]
+def test_canned_cycle_holes_are_not_cutting_moves(tmp_path):
+    text = "GOTO/0,0,0\nCYCLE/DRILL,5\nGOTO/1,0,0\nGOTO/2,0,0\nCYCLE/OFF\nGOTO/3,0,0\n"
+    assert load(tmp_path, text).line_numbers.tolist() == [1, 6]
 
 
 def test_blank_lines_spaces_and_no_final_line_end(tmp_path):
@@ -343,70 +334,64 @@ def test_continuation_anywhere_gives_the_same_record(tmp_path_factory, cuts):
 # Errors: every one names the file and the line where the record starts.
 
 @pytest.mark.parametrize("text, line, fragments", [
-    ("GOTO/1,2\n", 1, ["GOTO: needs at least x, y, z, got 2"]),
+    ("GOTO/1,2\n", 1, ["GOTO: takes x,y,z or x,y,z,i,j,k, got 2"]),
     ("\nGOTO/1,2,$\n\n", 2, ["continuation mark '$'"]),
     ("GOTO/1,x,3\n", 1, ["GOTO: argument 2 'x' is not a number"]),
     ("GOTO/1,,3\n", 1, ["GOTO: argument 2 is empty"]),
-    ("GOTO/1,2,3,\n", 1, ["argument 4 is empty"]),
-    ("GOTO 1,2,3\n", 1, ["'1,2,3' is not a number"]),
-    ("GOTO\t1, 2\n", 1, ["'1, 2' is not a number"]),
+    ("MULTAX\nGOTO 1,2,3\n", 2, ["'1,2,3' is not a number"]),
     ("GOTO/nan,2,3\n", 1, ["'nan' is not a number"]),
     ("GOTO/inf,2,3\n", 1, ["'inf' is not a number"]),
     ("GOTO/1e999,2,3\n", 1, ["'1e999' is not a number"]),
     ("GOTO/1.2.3,2,3\n", 1, ["'1.2.3' is not a number"]),
     ("GOTO/0x10,2,3\n", 1, ["'0x10' is not a number"]),
     ("GOTO/1_0,2,3\n", 1, ["'1_0' is not a number"]),
-    ("GOTO/1,2,3,0,0,1\n", 1, ["takes x,y,z without MULTAX, got 6", "MULTAX/ON"]),
-    ("MULTAX\nGOTO/1,2,3,0,0\n", 2, ["with MULTAX on takes x,y,z or x,y,z,i,j,k, got 5"]),
-    ("MULTAX\nGOTO/1,2,3,0,0,1,0\n", 2, ["got 7"]),
-    ("MULTAX\n\nGOTO/1,2,3,0,0,0\n", 3, ["GOTO: tool axis (0, 0, 0) is zero"]),
-    ("MULTAX\nRAPID\nGOTO/1,2,3,0,0,0\n", 3, ["tool axis (0, 0, 0) is zero"]),
+    ("GOTO/1,2,3,0,0\n", 1, ["GOTO: takes x,y,z or x,y,z,i,j,k, got 5"]),
+    ("GOTO/1,2,3,0,0,1,0\n", 1, ["got 7"]),
+    ("\nGOTO/1,2,3,0,0,0\n", 2, ["GOTO: tool axis (0, 0, 0) is zero"]),
+    ("RAPID\nGOTO/1,2,3,0,0,0\n", 2, ["tool axis (0, 0, 0) is zero"]),
     ("TLAXIS/0,0,0\nGOTO/1,2,3\n", 1, ["TLAXIS: tool axis (0, 0, 0) is zero"]),
-    ("TLAXIS/0,0\n", 1, ["TLAXIS: needs i, j, k, got 2"]),
-    ("TLAXIS/NORMPS\n", 1, ["'NORMPS' is not a number"]),
-    ("MULTAX\nGOTO/0,0,0,0,0,1\nGOTO/1,0,0,1,0,-1\n", 3, ["GOTO: tool axis", "k <= 0"]),
-    ("MULTAX\nGOTO/0,0,0,1,0,0\n", 2, ["GOTO: tool axis", "k <= 0"]),
+    ("GOTO/0,0,0,0,0,1\nGOTO/1,0,0,1,0,-1\n", 2, ["GOTO: tool axis", "k <= 0"]),
+    ("GOTO/0,0,0,1,0,0\n", 1, ["GOTO: tool axis", "k <= 0"]),
     ("TLAXIS/0,0,-1\nGOTO/0,0,0\n", 2, ["k <= 0"]),
     ("MSYS/0,0,0,1,0,0,0,0,1\nGOTO/0,0,0\n", 2, ["k <= 0"]),
-    ("MULTAX\nGOTO/0,0,0,0,0,1\nGOTO/0,0,0,1,0,1e-300\n", 3, ["GOTO: theta_b = 90.0 must be within"]),
-    ("MULTAX/MAYBE\n", 1, ["MULTAX: expected ON or OFF, got 'MAYBE'"]),
-    ("RAPID/5\n", 1, ["RAPID: takes no arguments"]),
-    ("FEDRAT/MMPS,250\n", 1, ["FEDRAT: unknown feed unit 'MMPS'", "MMPM, MMPR, IPM, IPR"]),
-    ("FEDRAT/MMPM\n", 1, ["FEDRAT: expected a feed rate"]),
-    ("FEDRAT/100,200\n", 1, ["FEDRAT: expected a feed rate"]),
-    ("FEDRAT/MMPM,IPM,20\n", 1, ["FEDRAT: expected a feed rate"]),
+    ("GOTO/0,0,0,0,0,1\nGOTO/0,0,0,1,0,1e-300\n", 2, ["GOTO: theta_b = 90.0 must be within"]),
     ("FEDRAT/0,MMPM\n", 1, ["FEDRAT: feed rate must be positive, got 0"]),
     ("FEDRAT/MMPM,#1\n", 1, ["FEDRAT: argument 2 '#1' is neither a number nor a word"]),
-    ("FEDRAT/MMPM,\n", 1, ["FEDRAT: argument 2 is empty"]),
-    ("CUTTER/1,2,3,4,5,6,7,8\n", 1, ["CUTTER: expected 1 to 7 numbers", "got 8"]),
-    ("CUTTER/\n", 1, ["CUTTER: argument 1 is empty"]),
-    ("CUTTER/TOOLNO,5\n", 1, ["CUTTER: argument 1 'TOOLNO' is not a number"]),
     ("CUTTER/0\n", 1, ["CUTTER: diameter must be positive, got 0"]),
-    ("CUTTER/10,0,0,0,0,0,-5\n", 1, ["CUTTER: flute length must be positive, got -5"]),
-    ("TLDATA/MILL\n", 1, ["TLDATA: MILL needs at least the diameter"]),
-    ("TLDATA/MILL,D10\n", 1, ["TLDATA: argument 1 'D10' is not a number"]),
-    ("SPINDL/SFM,200\n", 1, ["SPINDL: unknown word 'SFM'"]),
-    ("SPINDL/RPM,1000,2000\n", 1, ["SPINDL: expected one speed, got 2"]),
-    ("SPINDL/-5\n", 1, ["SPINDL: spindle speed must be positive, got -5"]),
-    ("UNITS/FEET\n", 1, ["UNITS: expected INCHES or MM, got 'FEET'"]),
-    ("UNITS\n", 1, ["UNITS: expected INCHES or MM"]),
+    ("UNITS/FEET\n", 1, ["UNITS: expected MM or INCHES, got 'FEET'"]),
+    ("UNITS/\n", 1, ["UNITS: expected MM or INCHES"]),
     ("MSYS/0,0,0,1,0,0\n", 1, ["MSYS: needs 9 numbers", "got 6"]),
-    ("MSYS/0,0,0,2,0,0,0,1,0\n", 1, ["MSYS: X axis [2.0, 0.0, 0.0] is not a unit vector"]),
-    ("MSYS/0,0,0,1,0,0,0,0,0\n", 1, ["MSYS: Y axis [0.0, 0.0, 0.0] is not a unit vector"]),
-    ("MSYS/0,0,0,1,0,0,.6,.8,0\n", 1, ["MSYS: X axis", "are not orthogonal"]),
-    ("/1,2,3\n", 1, ["has no major word"]),
+    ("MSYS/0,0,0,2,0,0,0,1,0\n", 1, ["MSYS: not a frame: its axes are not unit vectors square to each other"]),
+    ("MSYS/0,0,0,1,0,0,.6,.8,0\n", 1, ["MSYS: not a frame"]),
+    ("CSYS/1,0,0,0,0,1,0,0\n", 1, ["CSYS: needs 12 numbers", "got 8"]),
+    ("CSYS/1,0,0,0,0,1,0,0,0,0,-1,0\n", 1, ["CSYS: not a frame: it is a reflection"]),
+    ("CIRCLE/0,0,0,0,0,1,5\nGOTO/5,0,0\n", 2, ["GOTO: the arc of the CIRCLE on line 1 has no start point"]),
+    ("GOTO/0,0,0\nCIRCLE/0,0,0,0,0,1,5\nGOTO/5,0,0\n", 3, ["start or end point lies on the circle's axis"]),
+    ("CIRCLE/0,0,0,0,0\n", 1, ["CIRCLE: needs xc,yc,zc,i,j,k[,r], got 5"]),
+    ("GOTO/0,0,0\n/1,2,3\n", 2, ["has no major word"]),
 ])
 def test_malformed_records(tmp_path, text, line, fragments):
     fails(tmp_path, text, line, *fragments)
 
 
 @pytest.mark.parametrize("text, line, reason", [
-    ("", 1, "no GOTO record"),
     ("$$ nothing here\n\nFINI\n", 3, "no GOTO record"),
-    ("RAPID\nGOTO/0,0,50\nFINI\n", 3, "every GOTO follows RAPID"),
+    ("RAPID\nGOTO/0,0,50\nFINI\n", 3, "every GOTO is a rapid move or a canned-cycle hole"),
 ])
 def test_no_cutting_move(tmp_path, text, line, reason):
     fails(tmp_path, text, line, "end of file and no cutting move", reason)
+
+
+@pytest.mark.parametrize("content, fragment", [
+    (b"", "empty file"),
+    (b"\x00\x01binary\x00", "binary content"),
+    (b"hello world\nthis is prose\n", "unknown content"),
+])
+def test_content_that_is_no_cl_file(tmp_path, content, fragment):
+    path = tmp_path / "x.apt"
+    path.write_bytes(content)
+    with pytest.raises(InputError, match=f"^{path}: {fragment}"):
+        load_apt(path)
 
 
 def test_unreadable_file_names_it(tmp_path):

@@ -1,0 +1,42 @@
+"""CL files as CAM systems write them: APT / CLDATA text, NX CLSF, CATIA, Creo NCL, SOLIDWORKS
+CAM / CAMWorks, Mastercam and PowerMill APT, and the project's toolpath CSV.
+
+:func:`read_program` reads a file (by its content, whatever its name) into a :class:`Program`
+of :class:`Operation` objects; docs/CL_FILES.md tells which records are read and what each
+becomes. Lengths in mm, angles in degrees, feeds in mm/min or mm/rev, spindle in rpm.
+
+Modules: :mod:`.sniff` (content), :mod:`.lexer` (records), :mod:`.reader` (the modal state
+machine), :mod:`.arcs` (CIRCLE), :mod:`.nurbs` (NX NURBS), :mod:`.units`, :mod:`.tools`,
+:mod:`.frames`, :mod:`.program` (the dataclasses), :mod:`.csv_program` (the toolpath CSV),
+:mod:`.summary` (the ``toolpath`` command's lines and CSV), :mod:`.rewrite` (feeds written back).
+"""
+
+import os
+from dataclasses import replace
+
+from ...errors import InputError
+from .csv_program import read_csv_program
+from .program import Moves, Operation, OperationChoiceError, Program
+from .reader import read_cl_text
+from .rewrite import rewritten_text, write_rescheduled_program
+from .sniff import read_file
+from .tools import ToolSpec
+
+#: Default chordal tolerance (mm) of interpolated arcs and curves.
+TOLERANCE = 0.001
+
+
+def read_program(path, tolerance=TOLERANCE):
+    """The :class:`Program` of the CL file or toolpath CSV at `path`; arcs and curves to
+    `tolerance` mm. InputError naming the file (and line) for anything unreadable."""
+    name = os.fspath(path)
+    if not tolerance > 0.0:
+        raise InputError(f"{name}: the chordal tolerance must be positive, got {tolerance:g} mm")
+    kind, text, encoding = read_file(name)
+    if kind == "csv":
+        return read_csv_program(name, text)
+    return replace(read_cl_text(text, name, tolerance), encoding=encoding)
+
+
+__all__ = ["Moves", "Operation", "OperationChoiceError", "Program", "TOLERANCE", "ToolSpec", "read_program",
+           "rewritten_text", "write_rescheduled_program"]
