@@ -207,7 +207,7 @@ def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, s
         raise ValueError(f"walls must be 'exact' or 'quintic', got {walls!r}")
     if wall_points not in ("chebyshev", "even"):
         raise ValueError(f"wall_points must be 'chebyshev' or 'even', got {wall_points!r}")
-    solid = _single_solid(shape, where)
+    solid = single_solid(shape, where)
     names = {face.hashCode(): f"Face{k}" for k, face in enumerate(shape.Faces, start=1)}
     limits = shape_box(solid)
     window = _window(y_window, limits, where)
@@ -239,7 +239,7 @@ def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, s
     return Recognition(staircase, tuple(found), tuple(names[f.hashCode()] for f in top_faces), window, limits)
 
 
-def _single_solid(shape, where):
+def single_solid(shape, where):
     """The one closed, valid solid of `shape`; InputError otherwise."""
     solids = shape.Solids
     if not solids:
@@ -248,7 +248,7 @@ def _single_solid(shape, where):
                 raise InputError(f"{where}not a closed solid: an open shell, {_free_edges(shape)}")
         raise InputError(f"{where}holds no solid (a {shape.ShapeType} of {len(shape.Faces)} faces)")
     if len(solids) > 1:
-        raise InputError(f"{where}holds {len(solids)} solids; a staircase is one solid")
+        raise InputError(f"{where}holds {len(solids)} solids; a stock is one solid")
     solid = solids[0]
     if len(shape.Faces) != len(solid.Faces):
         raise InputError(f"{where}holds {len(shape.Faces) - len(solid.Faces)} faces outside its solid")
