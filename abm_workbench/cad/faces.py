@@ -250,16 +250,23 @@ def _net_face(face, name, box, where):
         separable = np.allclose(w * w[:1, :1], w[:, :1] * w[:1, :], rtol=1e-12, atol=0.0)
         if spread.max() <= TOL and separable:
             return FaceKind(name, "wall", float("nan"), box, _net_plan(surface, direction, rows[:, 0], w[:, 0]))
-    # Report the lean of the rows running most steeply in z.
+    u0, u1, v0, v1 = face.ParameterRange
+    if abs(face.normalAt(0.5 * (u0 + u1), 0.5 * (v0 + v1)).z) >= 0.5:
+        z = poles[..., 2]
+        pole = poles.reshape(-1, 3)[np.argmax(np.abs(z - np.median(z)).ravel())]
+        raise InputError(f"{where}{name}: curved top: not a horizontal plane: a {type(surface).__name__} whose "
+                         f"control points span z {z.min():.6g} to {z.max():.6g}, near x = {pole[0]:.6g}, "
+                         f"y = {pole[1]:.6g}; {RULE}")
+    # The lean of the row of poles that leans most, along the direction that runs most in z.
     direction = 1 if np.ptp(poles[..., 2], axis=1).max() >= np.ptp(poles[..., 2], axis=0).max() else 0
     rows = poles if direction == 1 else poles.transpose(1, 0, 2)
     drift = np.hypot(np.ptp(rows[..., 0], axis=1), np.ptp(rows[..., 1], axis=1))
     rise = np.ptp(rows[..., 2], axis=1)
     k = int(np.argmax(drift / np.maximum(rise, TOL)))
-    lean = _degrees(np.arctan2(drift[k], rise[k]))
-    _refuse(face, name, f"a {type(surface).__name__} whose control points drift {drift[k]:.3g} mm sideways over "
-            f"{rise[k]:.3g} mm of height (a lean of up to {lean}°) or spread {np.ptp(poles[..., 2]):.3g} mm in z",
-            where)
+    row = rows[k].mean(axis=0)
+    raise InputError(f"{where}{name}: wall not vertical: leans up to {_degrees(np.arctan2(drift[k], rise[k]))}° near "
+                     f"x = {row[0]:.6g}, y = {row[1]:.6g} (a {type(surface).__name__} whose control points drift "
+                     f"{drift[k]:.3g} mm sideways over {rise[k]:.3g} mm of height); {RULE}")
 
 
 def _net_plan(surface, direction, poles, weights):
