@@ -23,7 +23,7 @@ named as FreeCAD names them, ``Face1``, ``Face2``, … in ``shape.Faces`` order)
 
 - one closed, valid solid;
 - every face a horizontal plane or a vertical wall: tops face up (+z), the base faces down at
-  the lowest z, the stock's four sides are planes on its exact bounding box, every other
+  the lowest z, the stock's four sides are vertical faces in the planes of its exact bounding box, every other
   vertical face is a wall; faces stacked on each other in z belong to one wall;
 - each wall's top edge (one edge, or a chain of edges over several faces) has one x for every
   y in the window: each of its edges runs one way in y (no turning point of y(t) where the
@@ -304,7 +304,7 @@ def _face_role(face, kind, limits, where):
                              f"(z = {limits[4]:.6g}); a staircase stands on its base")
         return "base"
     x0, x1, y0, y1 = kind.box[:4]
-    on_box = isinstance(face.Surface, Part.Plane) and (
+    on_box = (
         (x1 - x0 <= TOL and min(abs(x0 - limits[0]), abs(x1 - limits[1])) <= TOL)
         or (y1 - y0 <= TOL and min(abs(y0 - limits[2]), abs(y1 - limits[3])) <= TOL)
     )

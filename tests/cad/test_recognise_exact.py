@@ -70,6 +70,18 @@ def test_a_flat_top_stored_as_a_spline_surface_is_accepted():
     assert_same_solid(staircase_solid(stock), solid)
 
 
+def test_a_stock_whose_every_face_is_a_spline_surface_is_accepted():
+    """As some CAD exports write them: sides, tops, base and wall all B-spline surfaces."""
+    solid = shapes.bezier_wall()
+    nurbs = solid.toNurbs()
+    nurbs = Part.Solid(Part.Shell(nurbs.Faces))
+    assert all(isinstance(f.Surface, Part.BSplineSurface) for f in nurbs.Faces)
+    stock = recognise(nurbs).staircase
+    bezier = next(e.Curve for e in solid.Edges if isinstance(e.Curve, Part.BezierCurve))
+    _wall_matches_bezier(stock, bezier)
+    assert stock.z_top == pytest.approx([10.0, 5.0], abs=TOL)
+
+
 def _wall_matches_bezier(stock, bezier):
     """The recognised wall passes through the Bézier curve's own points (to TOL)."""
     points = np.array([tuple(bezier.value(t)) for t in np.linspace(0.0, 1.0, 201)])
