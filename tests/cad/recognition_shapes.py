@@ -181,3 +181,15 @@ def face_name(shape, predicate):
     """The name ("Face7") of the one face of `shape` for which predicate(face) holds."""
     (name,) = [f"Face{k}" for k, face in enumerate(shape.Faces, start=1) if predicate(face)]
     return name
+
+
+def rounded_terraces():
+    """Partial arcs: a 60 × 40 × 10 block with its vertical edges rounded (radius 6), a stadium-shaped
+    boss (a slot of width 10 with round ends) up to z = 16, and a pocket with rounded corners."""
+    block = Part.makeBox(60, 40, 10)
+    block = block.makeFillet(6, [e for e in block.Edges if e.BoundBox.ZLength > 1])
+    slot = Part.makeBox(20, 10, 6, V(10, 25, 10)).fuse(
+        [Part.makeCylinder(5, 6, V(10, 30, 10)), Part.makeCylinder(5, 6, V(30, 30, 10))])
+    pocket = Part.makeBox(16, 12, 4, V(35, 8, 6))
+    pocket = pocket.makeFillet(3, [e for e in pocket.Edges if e.BoundBox.ZLength > 1])
+    return block.fuse(slot).cut(pocket).removeSplitter().Solids[0]

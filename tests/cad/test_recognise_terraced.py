@@ -233,3 +233,12 @@ def random_terraces(seed):
 def test_random_terraces(seed):
     solid = random_terraces(seed)
     assert_recognised(solid, recognise_terraced(solid), None)
+
+
+def test_partial_arcs_of_rounded_corners_and_slots():
+    solid = shapes.rounded_terraces()
+    stock = recognise_terraced(solid)
+    assert_recognised(solid, stock)
+    arcs = [c for slab in stock.slabs for c in curves_of(slab, PlanArc)]
+    assert {round(a.radius, 12) for a in arcs} == {3.0, 5.0, 6.0}
+    assert all(abs(a.sweep) < 2 * math.pi - 1e-9 for a in arcs)
