@@ -101,30 +101,51 @@ def _bernstein_to_power(degree):
 def critical_points(edge, axis):
     """(k, 3) points of an edge, in order along it: its start, every turning point of coordinate
     `axis` (0 x, 1 y, 2 z) and its end (mm). The coordinate's extremes over the edge, and every
-    change of its direction, are among them.
+    change of its direction, are among them. All spans at once: (m spans, degree p).
     """
-    curve = bspline_of_edge(edge)
-    points = [np.array(tuple(curve.StartPoint))]
-    for span in curve.toBezier():
-        poles = np.array([tuple(p) for p in span.getPoles()])
-        weights = np.array(span.getWeights())
-        to_power = _bernstein_to_power(span.Degree)
-        c = to_power @ (weights * poles[:, axis])
-        w = to_power @ weights
-        numerator = np.polynomial.polynomial.polysub(
-            np.polynomial.polynomial.polymul(np.polynomial.polynomial.polyder(c), w),
-            np.polynomial.polynomial.polymul(c, np.polynomial.polynomial.polyder(w)))
-        numerator = np.trim_zeros(numerator, "b")
-        if numerator.size > 1:
-            roots = real_roots_unit(numerator[None, :])[0]
-            for t in np.sort(roots[np.isfinite(roots)]):
-                points.append(np.array(tuple(span.value(float(t)))))
-        points.append(np.array(tuple(span.EndPoint)))
-    return np.array(points)
+    if isinstance(edge.Curve, Part.Line):  # no turning points
+        return np.array([tuple(edge.valueAt(u)) for u in edge.ParameterRange])
+    spans = bspline_of_edge(edge).toBezier()
+    p = spans[0].Degree
+    poles = np.array([[tuple(pole) for pole in span.getPoles()] for span in spans])  # (m, p+1, 3)
+    weights = np.array([span.getWeights() for span in spans])  # (m, p+1)
+    to_power = _bernstein_to_power(p).T
+    c = (weights * poles[..., axis]) @ to_power
+    w = weights @ to_power
+    slope = np.arange(1, p + 1)
+    numerator = _product(c[:, 1:] * slope, w) - _product(c, w[:, 1:] * slope)  # C′W − CW′, (m, 2p)
+    roots = real_roots_unit(numerator) if p > 0 else np.full((len(spans), 0), np.nan)
+    t = np.concatenate([np.zeros((len(spans), 1)), np.sort(roots, axis=1), np.ones((len(spans), 1))], axis=1)
+    span = np.repeat(np.arange(len(spans)), t.shape[1]).reshape(t.shape)
+    keep = np.isfinite(t)
+    keep[1:, 0] = False  # a span's start is the previous span's end
+    points = _bezier_points(poles[span[keep]], weights[span[keep]], t[keep])
+    return points
+
+
+def _product(a, b):
+    """Row-wise products of polynomials: ascending coefficients (m, i), (m, j) -> (m, i + j), zero-padded
+    to the same width for any i, j with i + j fixed by the caller."""
+    out = np.zeros((a.shape[0], a.shape[1] + b.shape[1]))
+    for k in range(a.shape[1]):
+        out[:, k:k + b.shape[1]] += a[:, k:k + 1] * b
+    return out
+
+
+def _bezier_points(poles, weights, t):
+    """Points (k, 3) of rational Bézier spans with poles (k, p+1, 3), weights (k, p+1) at t (k,) in [0, 1]."""
+    p = poles.shape[1] - 1
+    i = np.arange(p + 1)
+    basis = np.array([comb(p, k) for k in i]) * t[:, None] ** i * (1.0 - t[:, None]) ** (p - i)
+    weighted = basis * weights
+    return (weighted[..., None] * poles).sum(axis=1) / weighted.sum(axis=1)[:, None]
 
 
 def edge_box(edge):
     """(6,) exact x_min, x_max, y_min, y_max, z_min, z_max of an edge (mm)."""
+    if isinstance(edge.Curve, Part.Line):
+        ends = critical_points(edge, 0)
+        return tuple(float(v) for pair in zip(ends.min(axis=0), ends.max(axis=0)) for v in pair)
     limits = []
     for axis in range(3):
         values = critical_points(edge, axis)[:, axis]
@@ -132,13 +153,21 @@ def edge_box(edge):
     return tuple(float(v) for v in limits)
 
 
-def shape_box(shape):
+def shape_box(shape, known=None):
     """(6,) exact x_min, x_max, y_min, y_max, z_min, z_max of a shape's edges (mm).
 
     A face's extreme points lie on its boundary for the planes, vertical walls and horizontal
-    B-spline faces of a 2.5D solid, so the edges give the solid's box.
+    B-spline faces of a 2.5D solid, so the edges give the solid's box. known: a dict of edge
+    boxes by ``edge.hashCode()``, read and filled, to compute each edge of a solid once.
     """
-    boxes = np.array([edge_box(edge) for edge in shape.Edges])
+    known = {} if known is None else known
+    boxes = []
+    for edge in shape.Edges:
+        key = edge.hashCode()
+        if key not in known:
+            known[key] = edge_box(edge)
+        boxes.append(known[key])
+    boxes = np.array(boxes)
     return (boxes[:, 0].min(), boxes[:, 1].max(), boxes[:, 2].min(), boxes[:, 3].max(),
             boxes[:, 4].min(), boxes[:, 5].max())
 
@@ -161,12 +190,12 @@ def fold(points, axis):
     return float(back[k]), points[k]
 
 
-def classify_face(face, name, where=""):
+def classify_face(face, name, where="", known=None):
     """FaceKind of a face of a 2.5D solid; InputError naming it when it is neither horizontal nor vertical.
 
-    where: prefix of messages, e.g. "part.step: ".
+    where: prefix of messages, e.g. "part.step: ". known: edge boxes by hash (see shape_box).
     """
-    box = shape_box(face)
+    box = shape_box(face, known)
     surface = face.Surface
     height = box[5] - box[4]
     if isinstance(surface, Part.Plane):

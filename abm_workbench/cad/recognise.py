@@ -209,9 +209,10 @@ def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, s
         raise ValueError(f"wall_points must be 'chebyshev' or 'even', got {wall_points!r}")
     solid = single_solid(shape, where)
     names = {face.hashCode(): f"Face{k}" for k, face in enumerate(shape.Faces, start=1)}
-    limits = shape_box(solid)
+    known = {}
+    limits = shape_box(solid, known)
     window = _window(y_window, limits, where)
-    kinds = {face.hashCode(): classify_face(face, names[face.hashCode()], where) for face in solid.Faces}
+    kinds = {face.hashCode(): classify_face(face, names[face.hashCode()], where, known) for face in solid.Faces}
     tops, wall_faces = [], []
     for face in solid.Faces:
         role = _face_role(face, kinds[face.hashCode()], limits, where)

@@ -95,7 +95,8 @@ def recognise_terraced(shape, *, source=""):
     where = f"{source}: " if source else ""
     solid = single_solid(shape, where)
     names = {face.hashCode(): f"Face{k}" for k, face in enumerate(shape.Faces, start=1)}
-    kinds = [(face, classify_face(face, names[face.hashCode()], where)) for face in solid.Faces]
+    known = {}
+    kinds = [(face, classify_face(face, names[face.hashCode()], where, known)) for face in solid.Faces]
     walls = [(face, kind) for face, kind in kinds if kind.kind == "wall"]
     faces = {kind.name: face for face, kind in kinds}
     levels = _levels(solid)
