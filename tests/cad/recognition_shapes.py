@@ -61,8 +61,9 @@ def long_spline_wall():
     curve = Part.BSplineCurve()
     curve.interpolate([V(30 + 3 * np.sin(0.05 * y), y, 0) for y in np.linspace(-40, 40, 9)])
     box = Part.makeBox(60, 30, 10, V(0, -15, 0))
-    cutter = Part.Face(Part.Wire([curve.toShape(), line((30 + 3 * np.sin(2.0), 40, 0), (70, 40, 0)),
-                                  line((70, 40, 0), (70, -40, 0)), line((70, -40, 0), (30 + 3 * np.sin(-2.0), -40, 0))]))
+    north, south = (30 + 3 * np.sin(2.0), 40, 0), (30 + 3 * np.sin(-2.0), -40, 0)
+    cutter = Part.Face(Part.Wire([curve.toShape(), line(north, (70, 40, 0)), line((70, 40, 0), (70, -40, 0)),
+                                  line((70, -40, 0), south)]))
     return box.cut(cutter.extrude(V(0, 0, 20)).translate(V(0, 0, 5))).removeSplitter().Solids[0]
 
 
