@@ -194,3 +194,11 @@ def rounded_terraces():
     pocket = Part.makeBox(16, 12, 4, V(35, 8, 6))
     pocket = pocket.makeFillet(3, [e for e in pocket.Edges if e.BoundBox.ZLength > 1])
     return block.fuse(slot).cut(pocket).removeSplitter().Solids[0]
+
+
+def elliptic_pocket():
+    """A 60 × 40 × 10 block with an elliptic pocket (semi-axes 8 and 4, turned 30°) 5 mm deep."""
+    ellipse = Part.Ellipse(V(30, 0, 0), 8, 4)
+    ellipse.rotate(FreeCAD.Placement(V(30, 0, 0), FreeCAD.Rotation(V(0, 0, 1), 30), V(0, 0, 0)))
+    pocket = Part.Face(Part.Wire(ellipse.toShape())).extrude(V(0, 0, 5)).translate(V(0, 0, 5))
+    return Part.makeBox(60, 40, 10, V(0, -20, 0)).cut(pocket).removeSplitter().Solids[0]

@@ -242,3 +242,11 @@ def test_partial_arcs_of_rounded_corners_and_slots():
     arcs = [c for slab in stock.slabs for c in curves_of(slab, PlanArc)]
     assert {round(a.radius, 12) for a in arcs} == {3.0, 5.0, 6.0}
     assert all(abs(a.sweep) < 2 * math.pi - 1e-9 for a in arcs)
+
+
+def test_an_elliptic_pocket_becomes_a_rational_spline():
+    solid = shapes.elliptic_pocket()
+    stock = recognise_terraced(solid)
+    assert_recognised(solid, stock, None)
+    splines = curves_of(stock.slabs[1], PlanSpline)
+    assert splines and all(s.weights is not None for s in splines)
