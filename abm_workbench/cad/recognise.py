@@ -17,16 +17,23 @@ in a solid the shape of the paper's staircase and returns it as a
 Either way the Staircase records six points on each wall (``wall_points``), placed at
 Chebyshev nodes (or evenly) over the window.
 
-What the solid must be, checked face by face (faces are named as FreeCAD names them,
-``Face1``, ``Face2``, … in ``shape.Faces`` order):
+What the solid must be, decided exactly from its geometry (:mod:`.faces`, one tolerance
+:data:`~abm_workbench.engine.tolerances.RECOGNITION_TOL`), checked face by face (faces are
+named as FreeCAD names them, ``Face1``, ``Face2``, … in ``shape.Faces`` order):
 
 - one closed, valid solid;
-- every face horizontal or vertical: tops face up (+z), the base faces down at the lowest z,
-  the stock's four sides are planes on its bounding box, every other vertical face is a wall;
+- every face a horizontal plane or a vertical wall: tops face up (+z), the base faces down at
+  the lowest z, the stock's four sides are vertical faces in the planes of its exact bounding box, every other
+  vertical face is a wall; faces stacked on each other in z belong to one wall;
 - each wall's top edge (one edge, or a chain of edges over several faces) has one x for every
-  y in the window: the stock is 2.5D along x;
+  y in the window: each of its edges runs one way in y (no turning point of y(t) where the
+  edge turns back by more than the tolerance) and the edges follow each other in y without
+  overlap or gap: the stock is 2.5D along x;
 - the walls split the stock into sections ordered along +x, each with exactly one top face,
   and each wall rises from the lower to the higher of the two tops beside it.
+
+A staircase recognised over a y window describes the stock only inside that window:
+:func:`check_window` tells whether a toolpath's swept y range stays inside it.
 
 A wall's faces, edges and exact curve stay available in :class:`RecognisedWall`.
 """
@@ -37,21 +44,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine import Staircase
+from ..engine.tolerances import RECOGNITION_TOL as TOL
 from ..engine.walls import SplineWall
 from ..errors import InputError
+from .faces import bspline_of_edge, classify_face, critical_points, fold, shape_box
 from .freecad_env import FreeCAD, Part
 from .solids import bspline_curve, parameter_at_y, trimmed_to_y
-
-#: A face is horizontal when its normal's horizontal part, vertical when its n_z, is below this.
-NORMAL_TOL = 1e-7
-#: Points closer than this (mm) coincide; a face within this of a bounding-box limit lies on it.
-LENGTH_TOL = 1e-6
-#: Normals are sampled on a NORMAL_GRID × NORMAL_GRID grid of each face's parameter range.
-NORMAL_GRID = 5
-#: Least number of samples along each top edge for the one-x-per-y check.
-EDGE_SAMPLES = 257
-#: Number of y levels across the window at which every wall must have exactly one x.
-Y_LEVELS = 256
 
 _SUFFIXES = {".step": "STEP", ".stp": "STEP", ".brep": "BREP", ".brp": "BREP", ".fcstd": "FCStd"}
 
@@ -96,10 +94,12 @@ class Recognition:
 def load_solid(path, name=None):
     """The shape in a STEP (.step, .stp), BREP (.brep, .brp) or FreeCAD (.FCStd) file.
 
-    For FCStd, the shape of the object named `name` (its Name or Label), or else of the one
-    top-level object holding a solid; a document already open is used as it is and left open.
-    InputError naming the file when it is missing, unreadable, empty, or when the document
-    holds no or several candidate solids.
+    name chooses one solid when the file holds several: for FCStd the object's Name or Label;
+    for STEP and BREP "Solid1", "Solid2", … in the file's order. Without it, the file's one
+    solid (or one top-level object holding solids); a document already open is used as it is
+    and left open. InputError naming the file when it is missing, unreadable, empty, when
+    `name` matches nothing, or when several solids are there and none is chosen: the message
+    lists the names and says "choose one with --solid NAME".
     """
     path = os.fspath(path)
     kind = _SUFFIXES.get(os.path.splitext(path)[1].lower())
@@ -109,15 +109,38 @@ def load_solid(path, name=None):
         raise InputError(f"{path}: no such file")
     if kind == "FCStd":
         return _load_document_solid(path, name)
-    if name is not None:
-        raise InputError(f"{path}: name= selects an object of a .FCStd document, not of a {kind} file")
     try:
         shape = Part.read(path)
     except Exception as error:  # FreeCAD raises RuntimeError or Part.OCCError
         raise InputError(f"{path}: cannot read as {kind}: {error}") from None
     if shape.isNull() or not shape.Faces:
         raise InputError(f"{path}: the {kind} file holds no shape")
-    return shape
+    solids = shape.Solids
+    names = [f"Solid{k}" for k in range(1, len(solids) + 1)]
+    if name is None:
+        if len(solids) > 1:
+            raise InputError(f"{path}: several solids ({', '.join(names)}); choose one with --solid NAME")
+        return shape
+    if name not in names:
+        listed = ", ".join(names) or "none"
+        raise InputError(f"{path}: no solid named {name!r} in the {kind} file (its solids: {listed})")
+    return solids[names.index(name)]
+
+
+def check_window(y_window, swept, *, source=""):
+    """Raise InputError unless the swept y range lies inside the recognised y window.
+
+    A staircase recognised over a y window knows the stock only there; a toolpath whose cutting
+    edges reach beyond it would meet no material outside, silently. y_window: (y0, y1) mm, the
+    window recognised; swept: (y0, y1) mm, the y range the cutting edges sweep. The message gives
+    both ranges. source names the input in messages.
+    """
+    where = f"{source}: " if source else ""
+    w0, w1 = (float(v) for v in y_window)
+    s0, s1 = (float(v) for v in swept)
+    if s0 < w0 - TOL or s1 > w1 + TOL:
+        raise InputError(f"{where}the cutting edges sweep y {s0:.6g} to {s1:.6g} mm, beyond the y window "
+                         f"{w0:.6g} to {w1:.6g} mm that the stock was recognised over: widen the window")
 
 
 def _load_document_solid(path, name):
@@ -139,7 +162,8 @@ def _load_document_solid(path, name):
             chosen = [o for o in solid_objects if not any(_has_solid(parent) for parent in o.InList)]
             if len(chosen) != 1:
                 names = ", ".join(o.Name for o in chosen)
-                detail = "no object holds a solid" if not chosen else f"several solids ({names}); choose one with name="
+                detail = ("no object holds a solid" if not chosen
+                          else f"several solids ({names}); choose one with --solid NAME")
                 raise InputError(f"{path}: {detail}")
         return chosen[0].Shape
     finally:
@@ -183,14 +207,15 @@ def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, s
         raise ValueError(f"walls must be 'exact' or 'quintic', got {walls!r}")
     if wall_points not in ("chebyshev", "even"):
         raise ValueError(f"wall_points must be 'chebyshev' or 'even', got {wall_points!r}")
-    solid = _single_solid(shape, where)
+    solid = single_solid(shape, where)
     names = {face.hashCode(): f"Face{k}" for k, face in enumerate(shape.Faces, start=1)}
-    box = solid.BoundBox
-    limits = (box.XMin, box.XMax, box.YMin, box.YMax, box.ZMin, box.ZMax)
-    window = _window(y_window, box, where)
+    known = {}
+    limits = shape_box(solid, known)
+    window = _window(y_window, limits, where)
+    kinds = {face.hashCode(): classify_face(face, names[face.hashCode()], where, known) for face in solid.Faces}
     tops, wall_faces = [], []
     for face in solid.Faces:
-        role = _face_role(face, names[face.hashCode()], limits, where)
+        role = _face_role(face, kinds[face.hashCode()], limits, where)
         if role == "top":
             tops.append(face)
         elif role == "wall":
@@ -198,24 +223,24 @@ def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, s
     if not tops:
         raise InputError(f"{where}the solid has no top face facing +z")
     y_samples = _sample_ys(window, wall_points)
-    found = [_wall(chain, names, window, y_samples, where) for chain in _chains(wall_faces, names, where)]
+    found = [_wall(chain, names, kinds, window, y_samples, where) for chain in _chains(wall_faces, tops, names, kinds)]
     # Sections are told apart at an inner sample y, where every wall's x is known.
     found.sort(key=lambda w: w.points[2, 0])
-    x_probe = [box.XMin] + [w.points[2, 0] for w in found] + [box.XMax]
-    top_faces = _section_tops(tops, names, x_probe, y_samples[2], box, where)
-    z_top = [face.BoundBox.ZMax for face in top_faces]
+    x_probe = [limits[0]] + [w.points[2, 0] for w in found] + [limits[1]]
+    top_faces = _section_tops(tops, names, kinds, x_probe, y_samples[2], limits, where)
+    z_top = [kinds[face.hashCode()].z for face in top_faces]
     for j, wall in enumerate(found, start=1):
         _check_wall_heights(wall, j, z_top[j - 1], z_top[j], where)
     curves = tuple(w.curve for w in found) if walls == "exact" else None
     try:
-        staircase = Staircase(box.XMin, box.XMax, window[0], window[1], box.ZMin, z_top,
+        staircase = Staircase(limits[0], limits[1], window[0], window[1], limits[4], z_top,
                               [w.points for w in found], curves)
     except ValueError as error:
         raise InputError(f"{where}{error}") from None
     return Recognition(staircase, tuple(found), tuple(names[f.hashCode()] for f in top_faces), window, limits)
 
 
-def _single_solid(shape, where):
+def single_solid(shape, where):
     """The one closed, valid solid of `shape`; InputError otherwise."""
     solids = shape.Solids
     if not solids:
@@ -224,7 +249,7 @@ def _single_solid(shape, where):
                 raise InputError(f"{where}not a closed solid: an open shell, {_free_edges(shape)}")
         raise InputError(f"{where}holds no solid (a {shape.ShapeType} of {len(shape.Faces)} faces)")
     if len(solids) > 1:
-        raise InputError(f"{where}holds {len(solids)} solids; a staircase is one solid")
+        raise InputError(f"{where}holds {len(solids)} solids; a stock is one solid")
     solid = solids[0]
     if len(shape.Faces) != len(solid.Faces):
         raise InputError(f"{where}holds {len(shape.Faces) - len(solid.Faces)} faces outside its solid")
@@ -248,17 +273,17 @@ def _free_edges(shape):
     return f"{', '.join(faces)} {'has an edge' if len(faces) == 1 else 'have edges'} bordering no other face"
 
 
-def _window(y_window, box, where):
+def _window(y_window, limits, where):
     """(y0, y1) inside the stock's y range: y_window, or the whole range."""
+    y_min, y_max = limits[2], limits[3]
     if y_window is None:
-        return (box.YMin, box.YMax)
+        return (y_min, y_max)
     y0, y1 = (float(v) for v in y_window)
-    if not (box.YMin - LENGTH_TOL <= y0 < y1 <= box.YMax + LENGTH_TOL):
+    if not (y_min - TOL <= y0 < y1 <= y_max + TOL):
         raise InputError(
-            f"{where}y_window ({y0}, {y1}) must be increasing and inside the stock's y range "
-            f"[{box.YMin}, {box.YMax}]"
+            f"{where}y_window ({y0}, {y1}) must be increasing and inside the stock's y range [{y_min}, {y_max}]"
         )
-    return (max(y0, box.YMin), min(y1, box.YMax))
+    return (max(y0, y_min), min(y1, y_max))
 
 
 def _sample_ys(window, wall_points):
@@ -270,60 +295,33 @@ def _sample_ys(window, wall_points):
     return 0.5 * (y0 + y1) + 0.5 * (y1 - y0) * nodes
 
 
-def _face_role(face, name, limits, where):
-    """'top', 'base', 'side' or 'wall'; InputError for a face that is neither horizontal nor vertical."""
-    normals = _normals(face)
-    nz = normals[:, 2]
-    horizontal = np.hypot(normals[:, 0], normals[:, 1]).max() <= NORMAL_TOL
-    box = face.BoundBox
-    x_min, x_max, y_min, y_max, z_min, _ = limits
-    if horizontal and nz[0] > 0:
+def _face_role(face, kind, limits, where):
+    """'top', 'base', 'side' or 'wall' of a face whose FaceKind is `kind`; InputError for an overhang."""
+    if kind.kind == "up":
         return "top"
-    if horizontal:
-        if abs(box.ZMax - z_min) > LENGTH_TOL:
-            raise InputError(
-                f"{where}{name}: overhang: faces downwards at z = {box.ZMax:.6g}, above the base (z = {z_min:.6g})"
-            )
+    if kind.kind == "down":
+        if abs(kind.z - limits[4]) > TOL:
+            raise InputError(f"{where}{kind.name}: overhang: faces downwards at z = {kind.z:.6g}, above the base "
+                             f"(z = {limits[4]:.6g}); a staircase stands on its base")
         return "base"
-    if np.abs(nz).max() <= NORMAL_TOL:
-        on_box = isinstance(face.Surface, Part.Plane) and (
-            (box.XLength <= LENGTH_TOL and min(abs(box.XMin - x_min), abs(box.XMax - x_max)) <= LENGTH_TOL)
-            or (box.YLength <= LENGTH_TOL and min(abs(box.YMin - y_min), abs(box.YMax - y_max)) <= LENGTH_TOL)
-        )
-        return "side" if on_box else "wall"
-    if nz.min() < -NORMAL_TOL:
-        raise InputError(f"{where}{name}: overhang: faces downwards (normal z-component down to {nz.min():.3g})")
-    planar = isinstance(face.Surface, Part.Plane)
-    if nz.mean() >= 0.5:
-        what = "slanted top: a plane not horizontal" if planar else "curved top: not a horizontal plane"
-    else:
-        what = "wall not vertical" + ("" if planar else ", and curved across its height")
-    spread = f"{nz.min():.3g}" if np.ptp(nz) <= NORMAL_TOL else f"{nz.min():.3g} to {nz.max():.3g}"
-    raise InputError(f"{where}{name}: {what} (normal z-component {spread})")
+    x0, x1, y0, y1 = kind.box[:4]
+    on_box = (
+        (x1 - x0 <= TOL and min(abs(x0 - limits[0]), abs(x1 - limits[1])) <= TOL)
+        or (y1 - y0 <= TOL and min(abs(y0 - limits[2]), abs(y1 - limits[3])) <= TOL)
+    )
+    return "side" if on_box else "wall"
 
 
-def _normals(face):
-    """(NORMAL_GRID², 3) outward unit normals of a face on a grid inside its parameter range."""
-    u0, u1, v0, v1 = face.ParameterRange
-    inset = (np.arange(NORMAL_GRID) + 0.5) / NORMAL_GRID
-    return np.array([
-        tuple(face.normalAt(u0 + a * (u1 - u0), v0 + b * (v1 - v0))) for a in inset for b in inset
-    ])
+def _chains(wall_faces, tops, names, kinds):
+    """Wall faces grouped into walls: lists of (face, top edge), the top edges joining end to end.
 
-
-def _chains(wall_faces, names, where):
-    """Wall faces grouped into walls: lists of (face, top edge) whose top edges join end to end."""
-    items = []
-    for face in wall_faces:
-        z_top = face.BoundBox.ZMax
-        top_edges = [
-            e for e in face.Edges
-            if e.BoundBox.ZLength <= LENGTH_TOL and abs(e.BoundBox.ZMax - z_top) <= LENGTH_TOL
-        ]
-        if not top_edges:
-            raise InputError(f"{where}{names[face.hashCode()]}: wall has no horizontal top edge")
-        items += [(face, edge) for edge in top_edges]
-    group = list(range(len(items)))
+    Wall faces that share an edge belong to one wall: faces side by side along the wall, and
+    faces stacked in z. A wall's top edges are the edges it shares with a top face at the
+    wall's highest z. A group without one (no top face above it) is returned with an empty
+    list of top edges, and refused by _wall.
+    """
+    top_edges = {edge.hashCode() for face in tops for edge in face.Edges}
+    group = list(range(len(wall_faces)))
 
     def root(i):
         while group[i] != i:
@@ -331,54 +329,83 @@ def _chains(wall_faces, names, where):
             i = group[i]
         return i
 
-    ends = [[v.Point for v in edge.Vertexes] for _, edge in items]
-    for i in range(len(items)):
-        for k in range(i + 1, len(items)):
-            if any(p.distanceToPoint(q) <= LENGTH_TOL for p in ends[i] for q in ends[k]):
-                group[root(k)] = root(i)
-    chains = {}
-    for i, item in enumerate(items):
-        chains.setdefault(root(i), []).append(item)
-    return list(chains.values())
+    owner = {}
+    for i, face in enumerate(wall_faces):
+        for edge in face.Edges:
+            k = owner.setdefault(edge.hashCode(), i)
+            group[root(i)] = root(k)
+    members = {}
+    for i, face in enumerate(wall_faces):
+        members.setdefault(root(i), []).append(face)
+    chains = []
+    for faces in members.values():
+        z_top = max(kinds[face.hashCode()].box[5] for face in faces)
+        chain = [(face, None) for face in faces]
+        chain += [
+            (face, edge) for face in faces for edge in face.Edges
+            if edge.hashCode() in top_edges and np.abs(_edge_z(edge) - z_top).max() <= TOL
+        ]
+        chains.append(chain)
+    return chains
 
 
-def _wall(chain, names, window, y_samples, where):
-    """RecognisedWall of a chain of (face, top edge); InputError unless it has one x per y in the window."""
+def _edge_z(edge):
+    """(k,) z of an edge's vertices (mm)."""
+    return np.array([vertex.Point.z for vertex in edge.Vertexes])
+
+
+def _wall(chain, names, kinds, window, y_samples, where):
+    """RecognisedWall of a chain of (face, top edge or None); InputError unless its top edge has one x
+    per y across the window (decided exactly: :func:`.faces.critical_points`)."""
     faces = sorted({names[face.hashCode()] for face, _ in chain}, key=lambda n: int(n[4:]))
     label = ", ".join(faces)
-    edges = _ordered_edges([edge for _, edge in chain])
-    samples = [_edge_samples(edge) for edge in edges]
-    y_all = np.concatenate([s[:, 2] for s in samples])
+    edges = [edge for _, edge in chain if edge is not None]
+    if not edges:
+        raise InputError(f"{where}{label}: wall has no top edge along a top face")
     y0, y1 = window
-    levels = y0 + (np.arange(Y_LEVELS) + 0.5) / Y_LEVELS * (y1 - y0)
-    crossings = sum(_crossing_counts(s[:, 2], levels) for s in samples)
-    if (crossings > 1).any():
-        y = levels[np.argmax(crossings > 1)]
-        raise InputError(f"{where}{label}: wall has more than one x for y = {y:.6g} (its top edge turns back in y)")
-    if (crossings == 0).any():
-        y = levels[np.argmax(crossings == 0)]
-        raise InputError(
-            f"{where}{label}: wall does not run across the y window [{y0:.6g}, {y1:.6g}]: no x at y = {y:.6g} "
-            f"(its top edge spans y {y_all.min():.6g} to {y_all.max():.6g})"
-        )
-    x = [_x_at(edges, samples, y) for y in y_samples]
-    if None in x:
-        y = y_samples[x.index(None)]
-        raise InputError(f"{where}{label}: wall's top edge has no point at y = {y:.6g} (it spans y "
-                         f"{y_all.min():.6g} to {y_all.max():.6g})")
-    points = np.column_stack([x, y_samples])
-    straight = all(isinstance(e.Curve, Part.Line) for e in edges) and np.ptp(
-        np.concatenate([s[:, 1] for s in samples])) <= LENGTH_TOL
+    spans = []
+    for edge in edges:
+        points = critical_points(edge, 1)
+        back, at = fold(points, 1)
+        x_values = critical_points(edge, 0)[:, 0]
+        if np.ptp(points[:, 1]) <= TOL and np.ptp(x_values) > TOL:
+            raise InputError(f"{where}{label}: wall has more than one x for y = {points[0, 1]:.6g} (its top edge runs "
+                             f"along x there, from x = {x_values.min():.6g} to {x_values.max():.6g}); {_ALONG_X}")
+        if back > TOL:
+            raise InputError(f"{where}{label}: wall has more than one x for y = {at[1]:.6g} (its top edge turns back "
+                             f"by {back:.3g} mm in y near x = {at[0]:.6g}); {_ALONG_X}")
+        spans.append((points[:, 1].min(), points[:, 1].max(), edge))
+    spans.sort(key=lambda span: span[0])
+    for (_, high, _), (low, _, _) in zip(spans[:-1], spans[1:]):
+        if low < high - TOL:
+            raise InputError(f"{where}{label}: wall has more than one x for y = {0.5 * (low + high):.6g} (two of its "
+                             f"top edges overlap in y from {low:.6g} to {high:.6g}); {_ALONG_X}")
+        if low > high + TOL:
+            raise InputError(f"{where}{label}: wall does not run across the y window [{y0:.6g}, {y1:.6g}]: no x at "
+                             f"y = {0.5 * (low + high):.6g} (its top edges leave a gap from {high:.6g} to {low:.6g})")
+    y_low, y_high = spans[0][0], spans[-1][1]
+    if y_low > y0 + TOL or y_high < y1 - TOL:
+        y = y0 if y_low > y0 + TOL else y1
+        raise InputError(f"{where}{label}: wall does not run across the y window [{y0:.6g}, {y1:.6g}]: no x at "
+                         f"y = {y:.6g} (its top edge spans y {y_low:.6g} to {y_high:.6g}); {_ALONG_X}")
+    edges = [edge for _, _, edge in spans]
+    points = np.column_stack([[_x_at(edges, y) for y in y_samples], y_samples])
+    x_all = np.concatenate([critical_points(edge, 0)[:, 0] for edge in edges])
+    straight = all(isinstance(e.Curve, Part.Line) for e in edges) and np.ptp(x_all) <= TOL
     if straight:
         points[:, 0] = points[:, 0].mean()
     try:
         curve = _exact_curve(edges, window, points[0, 0] if straight else None)
     except ValueError as error:
         raise InputError(f"{where}{label}: {error}") from None
-    z_low = min(face.BoundBox.ZMin for face, _ in chain)
-    z_high = max(face.BoundBox.ZMax for face, _ in chain)
-    return RecognisedWall(tuple(faces), tuple(edges), (float(y_all.min()), float(y_all.max())),
-                          (z_low, z_high), points, straight, curve)
+    z_low = min(kinds[face.hashCode()].box[4] for face, _ in chain)
+    z_high = max(kinds[face.hashCode()].box[5] for face, _ in chain)
+    return RecognisedWall(tuple(faces), tuple(edges), (float(y_low), float(y_high)), (z_low, z_high), points,
+                          straight, curve)
+
+
+#: What a staircase's walls must be, added to refusals of its walls.
+_ALONG_X = "a staircase's walls run across y with one x for each y"
 
 
 def _exact_curve(edges, window, straight_x):
@@ -400,17 +427,9 @@ def _exact_curve(edges, window, straight_x):
 
 
 def _edge_bspline(edge):
-    """The edge's curve over its own parameter range as a Part.BSplineCurve running towards +y.
-
-    ``edge.toNurbs()`` converts exactly (a line to degree 1, a conic to a rational B-spline)
-    and keeps the edge's range; the curve is then cut to that range.
-    """
-    nurbs = edge.toNurbs().Edges[0]
-    curve = nurbs.Curve.copy()
-    if curve.isPeriodic():
-        curve.setNotPeriodic()
-    if (nurbs.FirstParameter, nurbs.LastParameter) != (curve.FirstParameter, curve.LastParameter):
-        curve.segment(nurbs.FirstParameter, nurbs.LastParameter)
+    """The edge's curve over its own parameter range as a Part.BSplineCurve running towards +y (exact:
+    :func:`.faces.bspline_of_edge`)."""
+    curve = bspline_of_edge(edge)
     if curve.StartPoint.y > curve.EndPoint.y:
         curve.reverse()
     return curve
@@ -443,49 +462,26 @@ def _joined(pieces, degree):
     return knots, poles, weights
 
 
-def _ordered_edges(edges):
-    """Edges of a chain in order along +y (by the y of their middle points)."""
-    return sorted(edges, key=lambda e: e.valueAt(0.5 * (e.FirstParameter + e.LastParameter)).y)
-
-
-def _edge_samples(edge):
-    """(k, 4) samples [u, x, y, z] along an edge's parameter range."""
-    u0, u1 = edge.FirstParameter, edge.LastParameter
-    knots = len(edge.Curve.getKnots()) if isinstance(edge.Curve, Part.BSplineCurve) else 2
-    u = np.linspace(u0, u1, max(EDGE_SAMPLES, 16 * knots))
-    return np.array([(t, *edge.valueAt(t)) for t in u])
-
-
-def _crossing_counts(y, levels):
-    """(L,) how many times the polyline with ordinates y (k,) crosses each level (a touch from one side counts 0)."""
-    above = y[None, :] >= levels[:, None]
-    return (above[:, 1:] != above[:, :-1]).sum(axis=1)
-
-
-def _x_at(edges, samples, y):
-    """x (mm) of a wall's top edge at y: safeguarded Newton on the edge parameter; None if none.
-
-    samples: per edge, its _edge_samples, which bracket y. Beyond the chain's ends by at most
-    LENGTH_TOL, the nearest end's x is used.
+def _x_at(edges, y):
+    """x (mm) of a wall's top edge at y: edges (each monotone in y, in order along y), safeguarded Newton on
+    the parameter of the edge whose y range holds y; beyond the chain's ends by at most TOL, the nearest end's x.
     """
-    for edge, edge_samples in zip(edges, samples):
-        rel = edge_samples[:, 2] - y
-        change = np.flatnonzero((rel[:-1] <= 0) != (rel[1:] <= 0))
-        if change.size:
-            k = change[0]
-            return edge.valueAt(parameter_at_y(edge.Curve, y, edge_samples[k, 0], edge_samples[k + 1, 0])).x
+    for edge in edges:
+        u0, u1 = edge.ParameterRange
+        y_a, y_b = edge.valueAt(u0).y, edge.valueAt(u1).y
+        if min(y_a, y_b) <= y <= max(y_a, y_b):
+            return edge.valueAt(parameter_at_y(edge.Curve, y, u0, u1)).x
     ends = [(abs(edge.valueAt(u).y - y), edge.valueAt(u).x) for edge in edges for u in edge.ParameterRange]
-    distance, x = min(ends)
-    return x if distance <= LENGTH_TOL else None
+    return min(ends)[1]
 
 
-def _section_tops(tops, names, x_probe, y_probe, box, where):
+def _section_tops(tops, names, kinds, x_probe, y_probe, limits, where):
     """(n,) the top face of each section; at y = y_probe, section j lies between x_probe[j] and x_probe[j+1]."""
     n = len(x_probe) - 1
     found = [[] for _ in range(n)]
     for face in tops:
-        z = face.BoundBox.ZMax
-        probe = Part.LineSegment(FreeCAD.Vector(box.XMin - 1, y_probe, z), FreeCAD.Vector(box.XMax + 1, y_probe, z))
+        z = kinds[face.hashCode()].z
+        probe = Part.LineSegment(FreeCAD.Vector(limits[0] - 1, y_probe, z), FreeCAD.Vector(limits[1] + 1, y_probe, z))
         pieces = face.common(probe.toShape()).Edges
         if not pieces:
             raise InputError(
@@ -508,7 +504,7 @@ def _section_tops(tops, names, x_probe, y_probe, box, where):
 def _check_wall_heights(wall, j, z_left, z_right, where):
     """Wall j must rise from the lower to the higher top beside it."""
     low, high = min(z_left, z_right), max(z_left, z_right)
-    if abs(wall.z_range[0] - low) > LENGTH_TOL or abs(wall.z_range[1] - high) > LENGTH_TOL:
+    if abs(wall.z_range[0] - low) > TOL or abs(wall.z_range[1] - high) > TOL:
         raise InputError(
             f"{where}{', '.join(wall.faces)}: wall between sections {j - 1} and {j} spans z "
             f"{wall.z_range[0]:.6g} to {wall.z_range[1]:.6g}, but the tops beside it are at {low:.6g} and {high:.6g}"

@@ -14,3 +14,9 @@ LENGTH_EPS = 1e-12
 PARALLEL_EPS = 1e-14
 #: Points sampled per wall when checking that walls are ordered and inside the x limits.
 WALL_CHECK_SAMPLES = 2049
+#: Recognition of solids (mm): a face is horizontal when its points stay within this of one z,
+#: a wall vertical when its points over each plan point stay within this in x and y, a plan
+#: curve runs one way when it never turns back by more than this, and points, levels and
+#: limits closer than this coincide. One tolerance for every decision of abm_workbench.cad.faces,
+#: recognise and terraced_recognise.
+RECOGNITION_TOL = 1e-6

@@ -167,7 +167,7 @@ def test_loads_a_named_solid_and_refuses_to_guess(solids, tmp_path):
     path = tmp_path / "two.FCStd"
     save_document(path, {"Up": solids["ascending"], "Down": solids["descending"]})
     assert load_solid(path, name="Down").Volume == pytest.approx(solids["descending"].Volume)
-    with pytest.raises(InputError, match=r"two\.FCStd: several solids \(Up, Down\); choose one with name="):
+    with pytest.raises(InputError, match=r"two\.FCStd: several solids \(Up, Down\); choose one with --solid NAME"):
         load_solid(path)
     with pytest.raises(InputError, match=r"two\.FCStd: no object with a solid named 'Side'"):
         load_solid(path, name="Side")
