@@ -182,14 +182,16 @@ def _run_toolpath(args):
     from .formats.cl.summary import summary_lines, write_toolpath_csv
 
     if args.out:
-        _check_outputs([args.out], [args.file])
+        runs.check_outputs([args.out], [args.file])
+    if not args.tolerance > 0.0:
+        raise ParameterError("tolerance", f"must be a positive number of mm, got {args.tolerance:g}")
     program = read_program(args.file, tolerance=args.tolerance)
     for warning in program.warnings:
         print(f"{PROG}: warning: {warning}", file=sys.stderr)
     print("\n".join(summary_lines(program, args.frame)))
     if args.out:
-        os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
-        write_toolpath_csv(program, args.out, args.frame)
+        with runs.output_folders([args.out]):
+            write_toolpath_csv(program, args.out, args.frame)
         print(f"{PROG}: wrote {args.out}")
     return 0
 
@@ -231,8 +233,12 @@ def _input_arguments(parser):
     files.add_argument("--stock", required=True, metavar="STOCK",
                        help="staircase stock: abm-staircase/1 JSON, or a solid (.step, .stp, .brep, .brp, .FCStd)")
     files.add_argument("--toolpath", required=True, metavar="PATH",
-                       help="CL points: CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k; + optional xc,yc,zc) "
-                            "or APT / CL file (.apt, .cls)")
+                       help="CL points: a CL file as CAM systems write it (APT, NX CLSF, CATIA, Creo NCL, "
+                            "SOLIDWORKS CAM, Mastercam, PowerMill; any name, read by its content) or a toolpath CSV "
+                            "(x,y,z,theta_a,theta_b or x,y,z,i,j,k; + optional xc,yc,zc; docs/CL_FILES.md)")
+    files.add_argument("--operation", type=int, metavar="N",
+                       help="the toolpath file's operation N (1-based; the toolpath command lists them); default "
+                            "its one milling operation")
     files.add_argument("--job", metavar="JOB.json",
                        help="JSON of default cutting parameters (keys as the options below, with _ for -; "
                             "phi_range as [start, end]; description); options and the APT file override it")
@@ -248,6 +254,9 @@ def _input_arguments(parser):
             _parameter_option(cutting, name, "required" if default is REQUIRED else
                               "" if default is None else f"default {default:g}")
     solid = parser.add_argument_group("solid stock (STEP, BREP, FCStd) only")
+    solid.add_argument("--solid", metavar="NAME",
+                       help="the solid to use in a file holding several: an FCStd object's Name or Label, or "
+                            "Solid1, Solid2, ... in a STEP or BREP file's order")
     solid.add_argument("--walls", choices=WALL_MODELS,
                        help="wall model: the solid's own curves (exact, default) or the paper's quintic through "
                             "six points (quintic)")
@@ -279,7 +288,8 @@ def _job(args):
     if window is not None and window not in ("whole", "swept"):
         window = _pair(window, "y_window", "whole, swept or Y0:Y1 in mm such as -10:10")
     return Job(args.stock, args.toolpath, args.job, given, forces=forces, material=getattr(args, "material", None),
-               walls=args.walls, wall_points=args.wall_points, y_window=window)
+               walls=args.walls, wall_points=args.wall_points, y_window=window, operation=args.operation,
+               solid=args.solid)
 
 
 def _pair(text, field, expected):

@@ -189,3 +189,16 @@ def export_brep(shape, path):
     """Write `shape` to an OpenCASCADE BREP file, atomically (as export_step)."""
     with replacing(path) as (temporary,):
         shape.exportBrep(temporary)
+
+
+def moved(shape, rotation, translation):
+    """A copy of `shape` moved rigidly: p -> rotation @ p + translation (rotation (3, 3), translation (3,) mm).
+
+    The geometry keeps its kind (planes, B-splines ...): only the shape's placement changes.
+    """
+    rotation, translation = np.asarray(rotation, dtype=float), np.asarray(translation, dtype=float)
+    matrix = FreeCAD.Matrix(*rotation[0], translation[0], *rotation[1], translation[1], *rotation[2], translation[2],
+                            0.0, 0.0, 0.0, 1.0)
+    copy = shape.copy()
+    copy.transformShape(matrix)
+    return copy

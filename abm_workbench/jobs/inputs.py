@@ -18,7 +18,7 @@ Lengths in mm, angles in degrees, spindle speed in rpm. Bad input raises
 """
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Optional
 
 import numpy as np
@@ -26,13 +26,10 @@ import numpy as np
 from ..engine import Staircase, Tool, Toolpath, rotation_matrix
 from ..errors import InputError
 from ..formats import check_keys, load_json_object
-from ..formats.apt import load_apt
 from ..formats.staircase_json import load_staircase
-from ..formats.toolpath_csv import load_toolpath
 from .parameters import BY_NAME
 
 SOLID_SUFFIXES = (".step", ".stp", ".brep", ".brp", ".fcstd")
-APT_SUFFIXES = (".apt", ".cls")
 WALL_MODELS = ("exact", "quintic")
 WALL_POINTS = ("chebyshev", "even")
 #: Extra width (mm) on each side of the swept y window.
@@ -43,7 +40,8 @@ class Stock:
 
     staircase: the Staircase the engine works on. source: the file. shape: the Part.Shape read
     from a solid file, or None for a JSON stock. walls: "quintic" (JSON, or a solid recognised
-    with the paper's quintics) or "exact" (a solid's own wall curves). y_window: (2,) mm, the
+    with the paper's quintics) or "exact" (a solid's own wall curves). frame: (R, t) from part
+    coordinates to the engine frame the stock was moved into, or None. y_window: (2,) mm, the
     staircase's y range.
     """
 
@@ -51,6 +49,7 @@ class Stock:
     source: str
     shape: object = None
     walls: str = "quintic"
+    frame: Optional[tuple] = None
 
     @property
     def y_window(self):
@@ -67,12 +66,16 @@ class Stock:
 
 @dataclass(frozen=True)
 class PathHints:
-    """What a toolpath file says besides the CL points (all None / empty for a CSV).
+    """What a toolpath file says besides the CL points of the chosen operation.
 
-    diameter, flute_length: mm. spindle_rpm: rpm. feed: (m,) feed at each CL point in
-    feed_unit ("MMPM", "MMPR", "IPM" or "IPR"; NaN before the first FEDRAT), or None.
-    unknown: (major word, first line, count) of APT records not understood. warnings: messages
-    ``file:line: ...``. source: the file.
+    diameter, flute_length: mm, or None where the file does not give them. spindle_rpm: rpm.
+    feed: (m,) feed at each CL point in feed_unit ("MMPM" or "MMPR"; NaN before the first
+    FEDRAT), or None. records: {parameter name: the record that gave it} where it differs from
+    the parameter's declared record. unknown: (major word, first line, count) of records not
+    understood; ignored: the same of records known to carry nothing the engine needs.
+    warnings: messages ``file:line: ...``. source: the file. program, operation: the
+    formats.cl Program and its chosen Operation (None for hints made by hand). frame: (R (3, 3),
+    t (3,)) from part coordinates to the operation's engine frame, or None (the same frame).
     """
 
     source: str
@@ -83,19 +86,27 @@ class PathHints:
     feed_unit: Optional[str] = None
     unknown: tuple = ()
     warnings: tuple = ()
+    records: dict = field(default_factory=dict)
+    ignored: tuple = ()
+    program: object = field(default=None, repr=False, compare=False)
+    operation: object = field(default=None, repr=False, compare=False)
+    frame: Optional[tuple] = field(default=None, repr=False, compare=False)
 
     def messages(self):
-        """Every warning and each unknown APT record kind, once, as text for ``abm: warning: ...``."""
+        """Every warning, each record kind not understood, and the records ignored (one line), as text
+        for warnings."""
         unknown = [
             f"{self.source}:{line}: {word}: record not understood, ignored"
             + (f" ({count} times)" if count > 1 else "")
             for word, line, count in self.unknown
         ]
-        return list(self.warnings) + unknown
+        ignored = [f"{self.source}: records that carry nothing the engine needs, ignored: " + ", ".join(
+            f"{word} ({count})" for word, _, count in self.ignored)] if self.ignored else []
+        return list(self.warnings) + unknown + ignored
 
 
-def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None):
-    """The stock in `path` as a :class:`Stock`.
+def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None, solid=None):
+    """The stock in `path` as a :class:`Stock`, in the frame the engine works in.
 
     A ``.json`` file is read as an abm-staircase/1 staircase (its walls are the paper's
     quintics; walls, wall_points and y_window do not apply). A solid is recognised as a
@@ -103,7 +114,10 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None):
     own wall curves, "quintic" fits the paper's quintic through six points per wall placed by
     wall_points ("chebyshev" or "even") over y_window ((y0, y1) mm, cut to the stock's y range;
     None: the whole range; or a function of the solid's highest z giving (y0, y1), as
-    :func:`swept_y_window` does). InputError naming the file for anything else.
+    :func:`swept_y_window` does). frame: (R (3, 3), t (3,)) from part coordinates to the
+    operation's engine frame (PathHints.frame), or None: the stock is moved there first (a JSON
+    staircase only by a translation). solid: the name of the solid in a file that holds several
+    (``cad.recognise.load_solid``). InputError naming the file for anything else.
     """
     name = os.fspath(path)
     suffix = os.path.splitext(name)[1].lower()
@@ -112,11 +126,21 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None):
     if wall_points not in WALL_POINTS:
         raise ValueError(f"wall_points must be one of {WALL_POINTS}, got {wall_points!r}")
     if suffix == ".json":
-        return Stock(load_staircase(name), name)
+        staircase = load_staircase(name)
+        if frame is not None:
+            rotation, translation = frame
+            if not np.allclose(rotation, np.eye(3), rtol=0.0, atol=1e-12):
+                raise InputError(f"{name}: the operation's frame is turned against the part's, and a staircase "
+                                 "JSON can only be moved, not turned: give the stock as a solid (STEP, BREP, FCStd)")
+            staircase = staircase.translated(translation)
+        return Stock(staircase, name, frame=frame)
     if suffix not in SOLID_SUFFIXES:
         raise InputError(f"{name}: unknown stock file type; expected .json, .step, .stp, .brep, .brp or .FCStd")
     from ..cad.recognise import load_solid, recognise  # FreeCAD only for solids
-    shape = load_solid(name)
+    shape = load_solid(name, solid)
+    if frame is not None:
+        from ..cad.solids import moved
+        shape = moved(shape, *frame)
     if callable(y_window):
         y_window = y_window(shape.BoundBox.ZMax)
     if y_window is not None:
@@ -127,21 +151,38 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None):
                              f"{box.YMin:g}..{box.YMax:g} mm")
         y_window = (low, high)
     recognition = recognise(shape, walls=walls, wall_points=wall_points, y_window=y_window, source=name)
-    return Stock(recognition.staircase, name, shape, walls)
+    return Stock(recognition.staircase, name, shape, walls, frame)
 
 
-def load_path(path):
-    """(Toolpath, PathHints) of a toolpath CSV (``.csv``) or APT / CL file (``.apt``, ``.cls``)."""
+def load_path(path, operation=None):
+    """(Toolpath, PathHints) of operation `operation` (1-based; None: the file's one milling operation)
+    of a toolpath file of any name, read by its content (formats.cl: APT / CL text or the toolpath
+    CSV). The Toolpath is in the operation's engine frame (PathHints.frame). InputError naming the
+    file for an operation the engine cannot run (formats.cl.OperationChoiceError when the file has
+    several and none is chosen)."""
+    from ..formats.cl import read_program
+
     name = os.fspath(path)
-    suffix = os.path.splitext(name)[1].lower()
-    if suffix == ".csv":
-        return load_toolpath(name), PathHints(name)
-    if suffix not in APT_SUFFIXES:
-        raise InputError(f"{name}: unknown toolpath file type; expected .csv, .apt or .cls")
-    program = load_apt(name)
-    hints = PathHints(name, program.diameter, program.flute_length, program.spindle_rpm, program.feed,
-                      program.feed_unit, program.unknown, program.warnings)
-    return program.toolpath, hints
+    program = read_program(name)
+    chosen = program.operation(operation)
+    refusal = chosen.refusal()
+    if refusal is not None:
+        raise InputError(f"{name}: {refusal}")
+    toolpath = chosen.toolpath()
+    rotation, translation = frame = chosen.engine_frame()
+    tool = chosen.tool
+    records = {}
+    if program.format == "csv":
+        records = {"diameter": "diameter column"}
+    elif tool.flute_length is not None and any(record.startswith("CSI_SET_FLUTE_LENGTH") for record in tool.records):
+        records = {"flute_length": "CSI_SET_FLUTE_LENGTH"}
+    same = np.array_equal(rotation, np.eye(3)) and not np.any(translation)
+    hints = PathHints(name, tool.diameter, tool.flute_length, chosen.spindle_rpm, chosen.feed, chosen.feed_unit,
+                      tuple((word, line, count) for word, (line, count) in program.unknown.items()),
+                      tuple(program.warnings), records,
+                      tuple((word, line, count) for word, (line, count) in program.ignored.items()),
+                      program, chosen, None if same else frame)
+    return toolpath, hints
 
 
 def swept_y_window(toolpath: Toolpath, tool: Tool, z_max=np.inf, margin=SWEPT_MARGIN):
@@ -186,8 +227,8 @@ def load_job(path):
         elif key in PAIRS:
             if not isinstance(value, list) or len(value) != 2:
                 raise InputError(f"{name}: {key}: must be [start, end] in degrees, e.g. [0, 180]")
-            for field, item in zip(PAIRS[key], value):
-                job[field] = BY_NAME[field].check(item, name)
+            for pair_name, item in zip(PAIRS[key], value):
+                job[pair_name] = BY_NAME[pair_name].check(item, name)
         else:
             job[key] = BY_NAME[key].check(value, name)
     return job

@@ -35,7 +35,9 @@ class Job:
     name: value or None} the front end's own values (None or missing: not given). forces: compute
     the cutting forces. material: a material name (forces.MATERIALS) or None (the coefficients as
     given). walls ("exact" / "quintic"), wall_points ("chebyshev" / "even"), y_window ("whole",
-    "swept" or (y0, y1) mm): a solid stock's recognition, None for the default.
+    "swept" or (y0, y1) mm): a solid stock's recognition, None for the default. operation: the
+    toolpath file's operation (1-based), None for its one milling operation. solid: the solid's
+    name in a stock file holding several, or None.
     """
 
     stock: str
@@ -47,6 +49,8 @@ class Job:
     walls: Optional[str] = None
     wall_points: Optional[str] = None
     y_window: object = None
+    operation: Optional[int] = None
+    solid: Optional[str] = None
 
 
 @dataclass(frozen=True)
@@ -77,7 +81,7 @@ class Prepared:
 def prepare(job: Job, *, forces=None):
     """The Prepared job (the stock is read apart, by load_job_stock). forces: override job.forces."""
     defaults = load_job(job.job_file) if job.job_file else {}
-    toolpath, hints = load_path(job.toolpath)
+    toolpath, hints = load_path(job.toolpath, job.operation)
     parameters = resolve(job.given, hints, defaults, job.job_file)
     helix = _value("helix", job, defaults)
     tool, settings = tool_and_settings(parameters.values, helix)
@@ -133,7 +137,7 @@ def load_job_stock(prepared: Prepared):
     """
     job = prepared.job
     if not is_solid(job.stock):
-        for name in ("walls", "wall_points", "y_window"):
+        for name in ("walls", "wall_points", "y_window", "solid"):
             if getattr(job, name) is not None:
                 raise ParameterError(name, f"applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
                                            f"{job.stock}")
@@ -146,7 +150,7 @@ def load_job_stock(prepared: Prepared):
         raise InputError(f"y window must be whole, swept or (y0, y1), got {window!r}")
     started = time.perf_counter()
     stock = load_stock(job.stock, walls=job.walls or "exact", wall_points=job.wall_points or "chebyshev",
-                       y_window=window)
+                       y_window=window, frame=prepared.hints.frame, solid=job.solid)
     return stock, time.perf_counter() - started
 
 

@@ -82,7 +82,7 @@ def resolve(given, hints, job, job_source=None):
             mine = parameter.check(mine)
         if file_value is not None:
             values[name] = parameter.check(file_value, hints.source)
-            sources[name] = ("file", f"{os.path.basename(hints.source)} {parameter.record}")
+            sources[name] = ("file", f"{os.path.basename(hints.source)} {hints.records.get(name, parameter.record)}")
             for other, where in ((mine, parameter.option), (theirs, job_source)):
                 if other is not None and not np.isclose(other, file_value, rtol=1e-9, atol=0.0):
                     conflicts.append(f"{hints.source} gives {name} {file_value:g}, {where} {other:g}: "

@@ -43,6 +43,17 @@ def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=
                        first=engagement.length if tool.helix == 0.0 else None)
 
 
+def in_part_frame(engagement, frame):
+    """`engagement` with its LEP and UEP points (mm) moved back from the engine frame to part coordinates;
+    frame: (R, t) from part to engine coordinates (PathHints.frame), or None (the same frame). Depth of
+    cut and the CL points stay in the operation's frame, whose z is its tool's up."""
+    if frame is None:
+        return engagement
+    rotation, translation = frame
+    return dataclasses.replace(engagement, lep_xyz=(engagement.lep_xyz - translation) @ rotation,
+                               uep_xyz=(engagement.uep_xyz - translation) @ rotation)
+
+
 def no_engagement(job: Job):
     """The error for a pass whose tool never touches the stock."""
     return InputError(f"{job.toolpath}: the tool never touches the stock: no CL point of the pass engages it "
@@ -169,10 +180,12 @@ class ChunkResult:
 class CsvChunk:
     """Task of a parallel engage: a chunk of CL points engaged (flute 1, straight or helical) and,
     when force_model = (Coefficients, immersion) is given, its forces, as a ChunkResult; the
-    Engagement and Forces are kept for the plots when `keep`."""
+    Engagement and Forces are kept for the plots when `keep`. frame: the operation's (R, t) from
+    part to engine coordinates, or None: LEP and UEP points are written in part coordinates."""
 
     keep: bool
     force_model: object = None
+    frame: object = None
 
     def __call__(self, job, start, stop):
         stock, tool, toolpath, settings = job
@@ -183,6 +196,7 @@ class CsvChunk:
             coefficients, immersion = self.force_model
             forces = pass_forces(stock, tool, part, settings, coefficients, immersion=immersion,
                                  first=engagement.length if tool.helix == 0.0 else None)
+        engagement = in_part_frame(engagement, self.frame)
         return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces), engagement.depth_of_cut,
                            engagement if self.keep else None, forces if self.keep else None,
                            None if forces is None else forces.peak)
@@ -259,14 +273,15 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     depth, peak = np.full(len(toolpath), np.nan), np.full(len(toolpath), np.nan)
     with output_folders(outputs), replacing(*outputs) as temporaries:
         if method.name == "abm":
-            chunks = map_chunks(CsvChunk(keep=whole is not None, force_model=prepared.force_model),
+            chunks = map_chunks(CsvChunk(keep=whole is not None, force_model=prepared.force_model,
+                                         frame=prepared.hints.frame),
                                 [(stock.staircase, tool, toolpath, settings)],
                                 workers=method.workers, scheduler=method.scheduler, progress=progress)
         else:
             grid, step = zmap_cells(method)
             try:
-                engagement = zmap_engage(stock.staircase, tool, toolpath, settings, grid=grid, edge_step=step,
-                                         progress=progress)
+                engagement = in_part_frame(zmap_engage(stock.staircase, tool, toolpath, settings, grid=grid,
+                                                   edge_step=step, progress=progress), prepared.hints.frame)
             except ValueError as error:
                 raise ParameterError("method", f"the Z-map method: {error}") from None
             chunks = [(0, 0, len(toolpath), ChunkResult(chunk_texts(engagement, 0, toolpath=toolpath),
@@ -389,7 +404,9 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     """The feed per CL point that keeps the peak force (max_force, N) or the cut area (max_area, mm²)
     at or under the limit, never above the programmed feed nor below `min_feed` (mm/tooth): the
     toolpath rewritten to `out` (APT / CL or CSV) and, with `report`, an HTML report. Returns a
-    ScheduleResult; CL points that cannot meet the limit are told to warn()."""
+    ScheduleResult; CL points that cannot meet the limit are told to warn(). A CL program written to
+    .apt / .cls keeps every record but the chosen operation's feeds (FEDRAT records added before
+    each changed move); otherwise the cutting moves are written with their feeds."""
     from ..formats.apt_writer import write_feed_toolpath
     from ..report.staging import staged
     from ..scheduling import programmed_feed
@@ -437,7 +454,26 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
             title = prepared.description or f"{os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}"
             write_schedule_report(folder, forces, plan, title=f"Feed schedule: {title}",
                                   parameters=prepared.parameters.describe())
-        write_feed_toolpath(out, toolpath, plan.feed, flutes=tool.flutes, diameter=tool.diameter,
-                            flute_length=tool.flute_length, spindle_rpm=settings.spindle_rpm, comment=comment)
+        program = hints.program
+        if program is not None and program.format == "apt" and os.path.splitext(out)[1].lower() != ".csv":
+            _write_program_feeds(out, program, hints.operation, plan.feed, tool.flutes, settings.spindle_rpm)
+        else:
+            write_feed_toolpath(out, toolpath, plan.feed, flutes=tool.flutes, diameter=tool.diameter,
+                                flute_length=tool.flute_length, spindle_rpm=settings.spindle_rpm, comment=comment)
     written = [out] + ([os.path.join(report, "index.html")] if report else [])
     return ScheduleResult(prepared, stock, plan, kind, limit, written)
+
+
+def _write_program_feeds(out, program, operation, feed_per_tooth, flutes, spindle_rpm):
+    """The CL program written to `out` with only `operation`'s feeds changed to `feed_per_tooth` (m,) mm,
+    every other record as it was: per revolution where the operation's feed is, else per minute."""
+    from ..formats.cl.rewrite import write_rescheduled_program
+
+    if operation.feed_unit == "MMPR":
+        feed = feed_per_tooth * flutes
+    elif spindle_rpm is not None:
+        feed = feed_per_tooth * flutes * spindle_rpm
+    else:
+        raise InputError(f"{program.source}: {operation.label()}: feeds per minute need a spindle speed (SPINDL, or "
+                         "give the spindle speed)")
+    write_rescheduled_program(out, program, operation.number, feed)

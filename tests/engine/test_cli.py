@@ -98,12 +98,13 @@ def test_engage_as_a_module_from_the_repository_root(case):
 def test_apt_toolpath_gives_tool_and_spindle(case, capsys):
     axes = ",".join(f"{v:.9f}" for v in (np.sin(np.radians(10)), 0, np.cos(np.radians(10))))
     moves = "".join(f"GOTO/{x:.6f},0,{x / 60 - 1:.6f},{axes}\n" for x in np.linspace(10, 120, M))
-    (case / "path.apt").write_text(f"MULTAX\nCUTTER/10,0,5,0,0,0,25\nSPINDL/3000\nOPSKIP/ON\n{moves}OPSKIP/OFF\n")
+    (case / "path.apt").write_text(f"MULTAX\nCUTTER/10,0,5,0,0,0,60\nCSI_SET_FLUTE_LENGTH/25\nSPINDL/3000\n"
+                                  f"OPSKIP/ON\n{moves}OPSKIP/OFF\n")
     status, out, err = run(BASE[:4] + ["path.apt", "--job", "job.json", "--spindle-rpm", "5000", "--out", "R.csv"],
                            capsys)
     assert status == 0
     assert err.splitlines() == [
-        "abm: warning: path.apt:4: OPSKIP: record not understood, ignored (2 times)",
+        "abm: warning: path.apt:5: OPSKIP: record not understood, ignored (2 times)",
         "abm: warning: path.apt gives diameter 10, job.json 12: using 10, the value the toolpath was made for",
         "abm: warning: path.apt gives flute_length 25, job.json 30: using 25, the value the toolpath was made for",
         "abm: warning: path.apt gives spindle_rpm 3000, --spindle-rpm 5000: using 3000, the value the toolpath "
@@ -111,7 +112,7 @@ def test_apt_toolpath_gives_tool_and_spindle(case, capsys):
         "abm: warning: path.apt gives spindle_rpm 3000, job.json 4000: using 3000, the value the toolpath was made for",
     ]
     sources = out.splitlines()[1]
-    assert "diameter 10 mm [path.apt CUTTER]" in sources and "flute length 25 mm [path.apt CUTTER]" in sources
+    assert "diameter 10 mm [path.apt CUTTER]" in sources and "flute length 25 mm [path.apt CSI_SET_FLUTE_LENGTH]" in sources
     assert "spindle 3000 rpm [path.apt SPINDL]" in sources and "2 flutes [job.json]" in sources
     assert len(read_results(case / "R.csv")["cl"]) == M * P
 
@@ -146,7 +147,7 @@ def _nothing(folder):
         (_write("toolpath.csv", "x,y,z,theta_a,theta_b\n10,0,0,0,10\n20,0,zero,0,10\n"), [],
          "toolpath.csv:3: column 'z': 'zero' is not a number"),
         (_write("toolpath.csv", "x,y,z,i,j,k\n10,0,0,0,0,1\n20,0,0,0,0,-1\n"), [],
-         "toolpath.csv:3: tool axis [0.0, 0.0, -1.0] has k <= 0"),
+         "toolpath.csv:3: operation 1: tool axis (0, 0, -1), written in the file's frame"),
         (_nothing, ["--stock", "missing.json"], "missing.json: cannot read: No such file or directory"),
         (_nothing, ["--phi-range", "a:b"], "--phi-range: expected START:END in degrees such as 0:180, got 'a:b'"),
         (_nothing, ["--phi-range", "0:90:180"], "--phi-range: expected START:END"),
@@ -167,7 +168,8 @@ def _nothing(folder):
         (_nothing, ["--out", "toolpath.csv/R.csv"], "toolpath.csv/R.csv: cannot write: "),
         (_nothing, ["--out", "new/R.csv", "--diameter", "0"], "--diameter: must be positive"),
         (_nothing, ["--plot", "R.csv"], "R.csv: written twice"),
-        (_nothing, ["--toolpath", "toolpath.nc"], "toolpath.nc: unknown toolpath file type"),
+        (_nothing, ["--toolpath", "toolpath.nc"], "toolpath.nc: cannot read: No such file or directory"),
+        (_write("toolpath.csv", "\x00\x01\x02 binary"), [], "toolpath.csv: "),
         (_nothing, ["--stock", "stock.txt"], "stock.txt: unknown stock file type"),
         (_nothing, ["--out", "toolpath.csv"], "toolpath.csv: is an input and would be overwritten"),
     ],

@@ -20,7 +20,8 @@ STOCK = {
 APT = """\
 $$ a pass of three CL points
 MULTAX/ON
-CUTTER/12,0,6,0,0,0,30
+CUTTER/12,0,6,0,0,0,60
+CSI_SET_FLUTE_LENGTH/30
 SPINDL/RPM,4000,CLW
 FEDRAT/MMPM,800
 COOLNT/ON
@@ -58,13 +59,15 @@ def test_apt_path_and_its_hints(files):
     np.testing.assert_allclose(toolpath.theta_b, csv_path.theta_b, atol=1e-6)
     assert (hints.diameter, hints.flute_length, hints.spindle_rpm, hints.feed_unit) == (12.0, 30.0, 4000.0, "MMPM")
     assert hints.feed.tolist() == [800.0] * 3
-    assert hints.messages() == [f"{files / 'path.apt'}:8: AUXFUN: record not understood, ignored (2 times)"]
-    assert csv_hints == PathHints(str(files / "path.csv"))
+    assert hints.messages() == [f"{files / 'path.apt'}: records that carry nothing the engine needs, ignored: "
+                                "COOLNT (1), AUXFUN (2), END-OF-PATH (1)"]
+    assert (csv_hints.diameter, csv_hints.flute_length, csv_hints.spindle_rpm, csv_hints.frame) == (None,) * 4
+    assert csv_hints.messages() == []
 
 
 @pytest.mark.parametrize("name, message", [
     ("stock.txt", "stock.txt: unknown stock file type; expected .json, .step"),
-    ("path.nc", "path.nc: unknown toolpath file type; expected .csv, .apt or .cls"),
+    ("path.nc", "path.nc: empty file: no CL records and no toolpath CSV header"),
 ])
 def test_unknown_file_types(files, name, message):
     (files / name).write_text("")
@@ -86,7 +89,7 @@ def test_parameters_apt_over_option_over_job_over_default(files):
     parameters = resolve(given, hints, job, str(files / "job.json"))
     values, sources = parameters.values, parameters.sources
     assert (values["diameter"], sources["diameter"]) == (12.0, ("file", "path.apt CUTTER"))
-    assert (values["flute_length"], sources["flute_length"]) == (30.0, ("file", "path.apt CUTTER"))
+    assert (values["flute_length"], sources["flute_length"]) == (30.0, ("file", "path.apt CSI_SET_FLUTE_LENGTH"))
     assert (values["flutes"], sources["flutes"]) == (2.0, ("job", "job.json"))
     assert (values["spindle_rpm"], sources["spindle_rpm"]) == (4000.0, ("file", "path.apt SPINDL"))
     # A constant FEDRAT of 800 mm/min at 4000 rpm with 2 flutes: 0.1 mm per tooth.
@@ -101,7 +104,7 @@ def test_parameters_apt_over_option_over_job_over_default(files):
     assert parameters.conflicts[1].startswith(f"{files / 'path.apt'} gives flute_length 30, --flute-length 25: ")
     assert parameters.conflicts[2].startswith(f"{files / 'path.apt'} gives spindle_rpm 4000, --spindle-rpm 5000: ")
     line = parameters.describe()
-    assert "diameter 12 mm [path.apt CUTTER]" in line and "flute length 30 mm [path.apt CUTTER]" in line
+    assert "diameter 12 mm [path.apt CUTTER]" in line and "flute length 30 mm [path.apt CSI_SET_FLUTE_LENGTH]" in line
     assert "feed 0.1 mm/tooth [path.apt FEDRAT]" in line and "φ 0..180° [default]" in line
 
 

@@ -42,9 +42,10 @@ def imports_of(name, path, modules):
                 base = ".".join(parts[: len(parts) - node.level + 1] + ([node.module] if node.module else []))
             else:
                 base = node.module or ""
-            if base in modules:
+            submodules = {f"{base}.{alias.name}" for alias in node.names} & set(modules)
+            found.update(submodules)
+            if base in modules and len(submodules) < len(node.names):  # names defined by the package itself
                 found.add(base)
-            found.update(f"{base}.{alias.name}" for alias in node.names if f"{base}.{alias.name}" in modules)
     found.discard(name)
     return found
 

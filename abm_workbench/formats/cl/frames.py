@@ -88,8 +88,8 @@ def engine_frame(to_part, axes_file):
         return inverse, None
     mean = axes_file.mean(axis=0)
     size = np.linalg.norm(mean)
-    if size < 1e-9:
-        return inverse, 0
+    if size < 1e-9:  # the axes cancel out: no frame has them all up; blame the first one not up here
+        return inverse, int(np.flatnonzero(axes_file[:, 2] <= 0.0)[0])
     z = mean / size
     x = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
     x = x - (x @ z) * z
