@@ -15,8 +15,8 @@ workbench adds missing properties, renames old ones, etc. there, then sets ``Ver
 
 from ..cad.freecad_env import FreeCAD
 
-#: Version of the document objects' properties: bump it when they change, and migrate.
-VERSION = 3
+#: Version of the document objects' properties: bump it when they change, and migrate (4: the toolpath's Operation).
+VERSION = 4
 #: Editor modes of FreeCAD properties.
 READ_ONLY, HIDDEN = 1, 2
 

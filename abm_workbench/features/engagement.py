@@ -65,7 +65,7 @@ from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..formats.results_csv import write_results
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
 from ..jobs import tool_and_settings
-from ..jobs.run import flute_1, pass_forces_of
+from ..jobs.run import flute_1, in_part_frame, pass_forces_of
 from .base import READ_ONLY, FeatureProxy, add_properties, document_or_active
 from .stored import PassForces, read_engagement, read_forces
 from .stock import StockFeature
@@ -200,7 +200,7 @@ class EngagementFeature(FeatureProxy):
             raise InputError(f"WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
                              f"{stock_proxy.source_name(stock_obj)}")
         window = y_window(obj, stock_obj, walls or stock_obj.WallModel, toolpath, tool)
-        stock = stock_proxy.load(stock_obj, walls, window)
+        stock = stock_proxy.load(stock_obj, walls, window, hints.frame)
         return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)
 
     def execute(self, obj):
@@ -213,7 +213,7 @@ class EngagementFeature(FeatureProxy):
             obj.YWindowMin, obj.YWindowMax = staircase.y_min, staircase.y_max
 
         started = time.perf_counter()
-        result = flute_1(staircase, tool, toolpath, settings)
+        result = in_part_frame(flute_1(staircase, tool, toolpath, settings), hints.frame)
         elapsed = time.perf_counter() - started
         if not result.engaged.any():
             raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "

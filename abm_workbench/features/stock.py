@@ -19,6 +19,8 @@ Bad input raises the command line's InputError message; FreeCAD then marks the o
 
 import os
 
+import numpy as np
+
 from ..errors import InputError
 from ..jobs import WALL_MODELS, WALL_POINTS, Stock, load_stock
 from .base import FeatureProxy, add_properties, document_or_active
@@ -81,17 +83,19 @@ class StockFeature(FeatureProxy):
         """True when the stock comes from a solid (a Part object or a STEP / BREP / FCStd file)."""
         return obj.SourceObject is not None or not obj.SourceFile.lower().endswith(".json")
 
-    def load(self, obj, walls=None, y_window=None):
+    def load(self, obj, walls=None, y_window=None, frame=None):
         """The stock as a :class:`abm_workbench.jobs.Stock`, cached while its inputs stay the same
-        (the last few wall models and y windows asked for; y_window as in :meth:`staircase`)."""
+        (the last few wall models, y windows and frames asked for; y_window as in :meth:`staircase`;
+        frame: (R, t) from part coordinates to an operation's engine frame, or None)."""
         walls = walls or obj.WallModel
         window = None if y_window is None else tuple(float(y) for y in y_window)
+        frame_key = None if frame is None else (tuple(np.ravel(frame[0])), tuple(np.ravel(frame[1])))
         source = self._source_key(obj)
-        key = (source, walls, obj.WallPoints, window)
+        key = (source, walls, obj.WallPoints, window, frame_key)
         if key not in self._cache:
             kept = {old: stock for old, stock in self._cache.items() if old[0] == source}
             kept = dict(list(kept.items())[-(_CACHED - 1):])
-            self._cache = {**kept, key: self._load(obj, walls, window)}
+            self._cache = {**kept, key: self._load(obj, walls, window, frame)}
         return self._cache[key]
 
     def _source_key(self, obj):
@@ -105,19 +109,21 @@ class StockFeature(FeatureProxy):
             stamp = None
         return ("file", path, stamp)
 
-    def _load(self, obj, walls, y_window):
+    def _load(self, obj, walls, y_window, frame):
         source = obj.SourceObject
         if source is not None:
             from ..cad.recognise import recognise
+            from ..cad.solids import moved
             shape = getattr(source, "Shape", None)
             if shape is None or shape.isNull():
                 raise InputError(f"{source.Label}: the linked object has no shape")
+            shape = shape.copy() if frame is None else moved(shape, *frame)
             recognition = recognise(shape, walls=walls, wall_points=obj.WallPoints, y_window=y_window,
                                     source=source.Label)
-            return Stock(recognition.staircase, source.Label, shape.copy(), walls)
+            return Stock(recognition.staircase, source.Label, shape, walls, frame)
         if not obj.SourceFile:
             raise InputError(f"{obj.Label}: no stock source: set SourceObject or SourceFile")
-        return load_stock(obj.SourceFile, walls=walls, wall_points=obj.WallPoints, y_window=y_window)
+        return load_stock(obj.SourceFile, walls=walls, wall_points=obj.WallPoints, y_window=y_window, frame=frame)
 
 
 def create_stock(doc=None, source=None, name="Stock", *, walls="exact", wall_points="chebyshev"):

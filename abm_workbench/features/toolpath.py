@@ -2,9 +2,12 @@
 
 ``create_toolpath(doc, path)`` adds a ``Part::FeaturePython`` (proxy :class:`ToolpathFeature`):
 
-- group "Source": ``File``, a toolpath CSV (``.csv``) or APT / CL file (``.apt``, ``.cls``).
+- group "Source": ``File``, a CL file as CAM systems write it or a toolpath CSV (read by its
+  content, docs/CL_FILES.md); ``Operation``, the file's operation computed (1-based; 0: its one
+  milling operation).
 - group "Summary" (read-only, set by ``execute`` from the file): ``CLPoints``, and what an APT
-  file says about the tool and the cut, 0 where it says nothing: ``ToolDiameter`` and
+  file says about the tool and the cut, 0 where it says nothing: ``Operations`` (every
+  operation of the file: number, name, tool, CL points), ``ToolDiameter`` and
   ``FluteLength`` (CUTTER / TLDATA, mm), ``SpindleSpeed`` (SPINDL, rpm), ``Feed`` with
   ``FeedUnit`` (a FEDRAT constant along the pass); ``Warnings`` (records not understood,
   assumptions made).
@@ -34,8 +37,10 @@ class ToolpathFeature(FeatureProxy):
     def __init__(self, obj):
         super().__init__(obj)
         add_properties(obj, "Source", [
-            ("App::PropertyFile", "File", "toolpath: CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k) or APT / CL file"),
+            ("App::PropertyFile", "File", "toolpath: a CL file (APT, NX CLSF, CATIA, Creo, SOLIDWORKS CAM, ...) or a "
+                                          "toolpath CSV"),
         ])
+        add_operation_property(obj)
         add_properties(obj, "Summary", [
             ("App::PropertyInteger", "CLPoints", "number of CL points of the pass"),
             ("App::PropertyLength", "ToolDiameter", "tool diameter the file gives (CUTTER / TLDATA), 0 if none"),
@@ -51,9 +56,11 @@ class ToolpathFeature(FeatureProxy):
         self._cache = None  # ((path, mtime), (Toolpath, PathHints))
 
     def execute(self, obj):
-        """Read the file; set the Shape (polyline of CL points) and the summary properties."""
+        """Read the file; set the Shape (polyline of the operation's CL points, part coordinates) and the
+        summary properties."""
         toolpath, hints = self.load(obj)
-        obj.Shape = polyline(toolpath.cl)
+        obj.Shape = polyline(toolpath.cl if hints.operation is None else hints.operation.points_part)
+        obj.Operations = [operation.summary() for operation in hints.program.operations] if hints.program else []
         obj.CLPoints = len(toolpath)
         obj.ToolDiameter = hints.diameter or 0.0
         obj.FluteLength = hints.flute_length or 0.0
@@ -75,9 +82,40 @@ class ToolpathFeature(FeatureProxy):
             stamp = os.stat(path).st_mtime_ns
         except OSError:
             stamp = None
-        if self._cache is None or self._cache[0] != (path, stamp):
-            self._cache = ((path, stamp), load_path(path))
+        operation = getattr(obj, "Operation", 0) or None
+        if self._cache is None or self._cache[0] != (path, stamp, operation):
+            self._cache = ((path, stamp, operation), self._read(obj, path, operation))
         return self._cache[1]
+
+    def _read(self, obj, path, operation):
+        """load_path, a file of several operations told in the GUI's words."""
+        from ..errors import InputError
+        from ..formats.cl import OperationChoiceError
+
+        try:
+            return load_path(path, operation)
+        except OperationChoiceError as error:
+            listing = "; ".join(op.summary() for op in error.operations)
+            raise InputError(f"{obj.Label}: {path} holds several operations ({listing}): set the toolpath's "
+                             "Operation property to the number of the one to compute") from None
+
+    def migrate(self, obj, saved_version):
+        """Objects saved before the Operation property took the file's one milling operation."""
+        add_operation_property(obj)
+        super().migrate(obj, saved_version)
+
+
+def add_operation_property(obj):
+    """Add Operation (group "Source") and Operations (group "Summary", read-only) when missing."""
+    if "Operation" not in obj.PropertiesList:
+        add_properties(obj, "Source", [
+            ("App::PropertyInteger", "Operation", "the file's operation to compute (1-based; 0: its one milling "
+                                                  "operation; Operations lists them)", 0),
+        ])
+    if "Operations" not in obj.PropertiesList:
+        add_properties(obj, "Summary", [
+            ("App::PropertyStringList", "Operations", "every operation of the file: number, name, tool, CL points"),
+        ], read_only=True)
 
 
 def polyline(points):

@@ -34,7 +34,8 @@ ARRAYS = ("phi", "h", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_
           "segment", "area", "lep_xyz", "uep_xyz", "depth_of_cut")
 APT = """\
 MULTAX/ON
-CUTTER/12,0,6,0,0,0,30
+CUTTER/12,0,6,0,0,0,60
+CSI_SET_FLUTE_LENGTH/30
 SPINDL/RPM,4000,CLW
 FEDRAT/MMPM,800
 AUXFUN/3
@@ -255,7 +256,8 @@ def test_apt_toolpath_gives_the_tool_spindle_and_feed(doc, tmp_path):
     toolpath.recompute()
     assert toolpath.CLPoints == 53 and toolpath.ToolDiameter.Value == 12.0 and toolpath.FluteLength.Value == 30.0
     assert toolpath.SpindleSpeed == 4000.0 and (toolpath.Feed, toolpath.FeedUnit) == (800.0, "MMPM")
-    assert toolpath.Warnings == [f"{apt}:5: AUXFUN: record not understood, ignored"]
+    assert toolpath.Warnings == [f"{apt}: records that carry nothing the engine needs, ignored: AUXFUN (1), "
+                                 "END-OF-PATH (1)"]
     engagement = create_engagement(doc, stock, toolpath, flutes=2, inclination=10.0)
     engagement.ShowSurfaces = False
     assert (engagement.Diameter.Value, engagement.FluteLength.Value, engagement.SpindleSpeed) == (12.0, 30.0, 4000.0)
@@ -289,6 +291,10 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
                  "ForceFeedPerTooth"):  # as saved by version 1
         engagement.removeProperty(name)
     engagement.Version = 1
+    toolpath = doc.getObject("Toolpath")
+    for name in ("Operation", "Operations"):  # as saved by version 3
+        toolpath.removeProperty(name)
+    toolpath.Version = 3
     path = tmp_path / "old.FCStd"
     doc.saveAs(str(path))
     FreeCAD.closeDocument(doc.Name)
@@ -297,7 +303,9 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
-        assert engagement.Version == VERSION == 3
+        assert engagement.Version == VERSION == 4
+        toolpath = reopened.getObject("Toolpath")
+        assert toolpath.Version == 4 and toolpath.Operation == 0 and toolpath.Operations == []
         assert engagement.YWindow == "whole" and engagement.ValidationReport == ""  # what version 1 computed
         assert engagement.HelixAngle.Value == 0.0 and not engagement.Forces and engagement.PeakForce == 0.0
         assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
@@ -429,11 +437,11 @@ def test_bad_force_settings_fail_the_recompute_in_plain_words(doc):
     engagement.ImmersionStart, engagement.ImmersionEnd = 90.0, 30.0
     doc.recompute()
     assert engagement.getStatusString() == (
-        "Engagement: ImmersionStart, ImmersionEnd: immersion 90:30 must satisfy 0 <= start < end <= 180 degrees")
+        "Engagement: End of immersion must be above the start of immersion 90°, got 30° (property ImmersionEnd).")
     engagement.ImmersionStart = 0.0
     engagement.HelixAngle = 95.0
     doc.recompute()
-    assert engagement.getStatusString() == "Engagement: HelixAngle: helix must be within (-90, 90) degrees, got 95.0"
+    assert engagement.getStatusString() == "Engagement: Helix angle must be within (-90, 90)°, got 95° (property HelixAngle)."
     engagement.HelixAngle = 0.0
     doc.recompute()
     assert engagement.isValid() and engagement.PeakForce > 0.0
