@@ -25,11 +25,12 @@ INPUTS = ["job.json", "path.apt", "stock.json", "stock.step"]
 
 
 def apt_text():
-    """The pass as an APT file: CUTTER D 12, flute length 25, SPINDL 4000, and one record it does not know."""
+    """The pass as an APT file: CUTTER D 12, flute length 25 (CSI_SET_FLUTE_LENGTH: CUTTER's seventh number is the
+    tool's height), SPINDL 4000, and one record it does not know."""
     axes = angles_to_axis(THETA_A, THETA_B)
     gotos = "".join(f"GOTO/{x:.6f},{y:.6f},{z:.6f},{i:.9f},{j:.9f},{k:.9f}\nAUXFUN/7\n"
                     for (x, y, z), (i, j, k) in zip(CL, axes))
-    return f"MULTAX/ON\nCUTTER/12,0,6,0,0,0,25\nSPINDL/RPM,4000,CLW\n{gotos}END-OF-PATH\n"
+    return f"MULTAX/ON\nCUTTER/12,0,6,0,0,0,60\nCSI_SET_FLUTE_LENGTH/25\nSPINDL/RPM,4000,CLW\n{gotos}OPSKIP/OFF\n"
 
 
 @pytest.fixture
@@ -57,11 +58,12 @@ VALIDATE = ["validate", "--stock", "stock.step", "--toolpath", "path.apt", "--jo
 def test_engage_on_step_and_apt_matches_the_json_stock(case, capsys):
     status, out, err = run(ENGAGE + ["--stock", "stock.step", "--out", "step.csv"], capsys)
     assert status == 0, err
-    assert err == "abm: warning: path.apt:5: AUXFUN: record not understood, ignored (3 times)\n"
+    assert err == ("abm: warning: path.apt:11: OPSKIP: record not understood, ignored\n"
+                   "abm: warning: path.apt: records that carry nothing the engine needs, ignored: AUXFUN (3)\n")
     summary, sources = out.splitlines()
     assert summary.startswith("abm: 3 CL points x 19 angles = 57 instants in ")
     assert sources.startswith("abm: parameters: diameter 12 mm [path.apt CUTTER], 2 flutes [job.json], "
-                              "flute length 25 mm [path.apt CUTTER], feed 0.1 mm/tooth [job.json]")
+                              "flute length 25 mm [path.apt CSI_SET_FLUTE_LENGTH], feed 0.1 mm/tooth [job.json]")
     assert "spindle 4000 rpm [path.apt SPINDL]" in sources and "step 10° [job.json]" in sources
     assert sources.endswith("; stock: exact walls, y window -12..12 mm")
     status, _, _ = run(ENGAGE + ["--stock", "stock.json", "--out", "json.csv"], capsys)
@@ -92,8 +94,8 @@ def test_engage_solid_options(case, capsys, options):
 def test_validate_writes_report_and_fcstd(case, capsys):
     status, out, err = run(VALIDATE + ["--fcstd", "out/pass.FCStd", "--cl", "0,2"], capsys)
     assert status == 0, err
-    warning, *progress = err.splitlines()
-    assert warning.startswith("abm: warning: path.apt:5: AUXFUN: ")
+    unknown, ignored, *progress = err.splitlines()
+    assert unknown.startswith("abm: warning: path.apt:11: OPSKIP: ") and ignored.endswith("ignored: AUXFUN (3)")
     assert [line.split(",")[0] for line in progress] == [f"abm: boolean reference: CL point {k}/3" for k in (1, 2, 3)]
     assert all(" s elapsed, ETA " in line for line in progress)
     assert out.startswith("abm: 3 CL points x 19 angles: length of cut max |relative error| ")
@@ -164,7 +166,7 @@ def _nothing(folder):
     (_nothing, ["--fcstd", "pass.step"], "--fcstd: must end in .FCStd, got pass.step"),
     (_nothing, ["--fcstd", "report/pass.FCStd"], "report/pass.FCStd: lies inside the report folder report"),
     (_write("report", "a file"), [], "--report: must be a folder, and report is a file"),
-    (_write("path.apt", "GOTO/1,2\n"), [], "path.apt:1: GOTO: needs at least x, y, z"),
+    (_write("path.apt", "GOTO/1,2\n"), [], "path.apt:1: GOTO: takes x,y,z or x,y,z,i,j,k, got 2 number(s)"),
     (_write("path.apt", "MULTAX\nGOTO/10,0,40,0,0,1\n"), ["--diameter", "12", "--flute-length", "25"],
      "path.apt: the tool never touches the stock"),
     (_write("path.apt", "GOTO/20,0,1\n"), [], "missing --diameter (or 'diameter' in a --job file)"),
