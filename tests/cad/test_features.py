@@ -337,10 +337,10 @@ def test_the_documented_example_runs(tmp_path):
     assert (tmp_path / "out" / "model_test_1_abm" / "Engagement.csv").is_file()
 
 
-def test_the_readme_headless_example_runs(tmp_path):
-    with open(os.path.join(ROOT, "README.md"), encoding="utf-8") as file:
+def test_the_headless_example_of_the_usage_guide_runs(tmp_path):
+    with open(os.path.join(ROOT, "docs", "USAGE.md"), encoding="utf-8") as file:
         text = file.read()
-    section = text[text.index("## FreeCAD workbench (GUI)"):]
+    section = text[text.index("## Scripts: the document objects without the GUI"):]
     script = re.search(r"```python\n(.*?)```", section, re.S).group(1)
     (tmp_path / "script.py").write_text(script)
     done = subprocess.run([sys.executable, str(tmp_path / "script.py"), str(tmp_path / "out")], cwd=ROOT,
