@@ -1,0 +1,80 @@
+"""engage on a CL program of several operations: the choice, each operation's tool, and the toolpath CSV read back."""
+
+import os
+
+import numpy as np
+import pytest
+
+from abm_workbench import cli
+from abm_workbench.formats.results_csv import read_results
+
+from .test_cli import JOB, M, case, run  # noqa: F401 (case is a fixture)
+
+PROGRAM = """\
+$$ two operations, two tools: a rougher D12 and a finisher D8 (flute lengths by CSI_SET_FLUTE_LENGTH)
+PARTNO/TWO OPS
+UNITS/MM
+LOADTL/1
+CUTTER/12,0,0,0,0,0,60
+CSI_SET_FLUTE_LENGTH/30
+SPINDL/RPM,4000,CLW
+FEDRAT/MMPM,800
+RAPID
+GOTO/0,0,20
+{first}LOADTL/2
+CUTTER/8,0,0,0,0,0,50
+CSI_SET_FLUTE_LENGTH/20
+SPINDL/RPM,6000,CLW
+FEDRAT/MMPM,960
+RAPID
+GOTO/0,0,20
+{second}END
+"""
+
+
+def _moves(z_shift):
+    """GOTOs of the test pass (the case's toolpath.csv: upright tool tilted by θ_B = 10°), z shifted."""
+    axis = ",".join(f"{v:.12f}" for v in (np.sin(np.radians(10.0)), 0.0, np.cos(np.radians(10.0))))
+    return "".join(f"GOTO/{x:.6f},0,{x / 60 - 1 + z_shift:.6f},{axis}\n" for x in np.linspace(10, 120, M))
+
+
+@pytest.fixture
+def program(case):  # noqa: F811 (the fixture imported above)
+    (case / "two.cl").write_text(PROGRAM.format(first=_moves(0.0), second=_moves(0.5)))
+    return case
+
+
+BASE = ["engage", "--stock", "stock.json", "--toolpath", "two.cl", "--job", "job.json", "--out", "R.csv"]
+
+
+def test_several_operations_need_a_choice(program, capsys):
+    status, out, err = run(BASE, capsys)
+    assert status == 2 and out == ""
+    message = err.splitlines()[-1]
+    assert message.startswith("abm: error: two.cl: 2 milling operations; choose one with --operation N")
+    assert "1: -, flat-end mill D12, 12 CL points" in message and "2: -, flat-end mill D8, 12 CL points" in message
+    assert sorted(os.listdir(program)) == ["job.json", "stock.json", "toolpath.csv", "two.cl"]
+
+
+@pytest.mark.parametrize("number, diameter, flute_length, rpm", [(1, 12, 30, 4000), (2, 8, 20, 6000)])
+def test_each_operation_with_its_own_tool(program, capsys, number, diameter, flute_length, rpm):
+    status, out, err = run(BASE + ["--operation", str(number)], capsys)
+    assert status == 0, err
+    sources = out.splitlines()[1]
+    assert f"diameter {diameter} mm [two.cl CUTTER]" in sources
+    assert f"flute length {flute_length} mm [two.cl CSI_SET_FLUTE_LENGTH]" in sources
+    assert f"spindle {rpm} rpm [two.cl SPINDL]" in sources
+    assert len(read_results(program / "R.csv")["cl"]) == M * 37
+
+
+def test_the_toolpath_csv_of_an_operation_gives_the_same_results(program, capsys):
+    assert run(["toolpath", "two.cl", "--out", "ops.csv"], capsys)[0] == 0
+    assert run(BASE + ["--operation", "2"], capsys)[0] == 0
+    from_cl = read_results(program / "R.csv")
+    status, _, err = run(BASE[:4] + ["ops.csv", "--job", "job.json", "--out", "R2.csv", "--operation", "2",
+                                     "--flute-length", "20"], capsys)
+    assert status == 0, err
+    from_csv = read_results(program / "R2.csv")
+    for column in ("length", "lep_l", "uep_l"):
+        np.testing.assert_allclose(from_csv[column], from_cl[column], atol=1e-9, equal_nan=True)
+    assert JOB["diameter"] != 8  # the CSV's diameter column gave the tool, not the job
