@@ -219,7 +219,7 @@ def _merged(n, found):
     joins = np.zeros(rows.size, dtype=bool)
     joins[1:] = (rows[1:] == rows[:-1]) & (start[1:] - end[:-1] <= LENGTH_EPS)
     first = np.flatnonzero(~joins)
-    last = np.append(first[1:], rows.size) - 1
+    last = np.append(first[1:], rows.size)[: first.size] - 1
     keep = end[last] - start[first] > LENGTH_EPS
     first, last = first[keep], last[keep]
     return EdgeIntervals(
