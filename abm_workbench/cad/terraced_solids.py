@@ -3,8 +3,10 @@
 Each loop of a slab becomes a wire at the slab's bottom, of Part.LineSegment, Part.ArcOfCircle
 (a full circle: Part.Circle) and Part.BSplineCurve edges carrying the model's own geometry,
 and then a face; the slab's region is their even-odd combination (symmetric differences of
-the faces), extruded up to the slab's top. The slabs' prisms are fused and the splitting
-edges between faces of one surface removed.
+the faces), extruded up to the slab's top. The slabs' prisms are fused. The fused
+solid keeps the faces split where slabs meet (a wall running through two slabs is two faces):
+OpenCASCADE's removeSplitter, which would merge them, was seen to fail ("FuseEdges: Projection
+failed for closed curve") and to crash the process on such stocks.
 """
 
 import numpy as np
@@ -42,7 +44,6 @@ def terraced_solid(stock):
     falls apart into several solids); RuntimeError if OpenCASCADE gives an invalid shape."""
     prisms = [_region(slab).extrude(FreeCAD.Vector(0, 0, slab.z_top - slab.z_bottom)) for slab in stock.slabs]
     fused = prisms[0].multiFuse(prisms[1:]) if len(prisms) > 1 else prisms[0]
-    fused = fused.removeSplitter()
     solids = fused.Solids
     if not solids:
         raise RuntimeError("the terraced stock gave no solid")
