@@ -10,11 +10,14 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from abm_workbench.cad.boolean import edge_lengths_by_boolean
 from abm_workbench.cad.freecad_env import FreeCAD, Part
 from abm_workbench.cad.terraced_solids import terraced_solid
-from abm_workbench.engine.terraced import terraced_intervals
+from abm_workbench.engine import CutSettings, Tool, Toolpath, rotation_matrix
+from abm_workbench.engine.terraced import engage_terraced, terraced_intervals
 from abm_workbench.engine.terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
 from abm_workbench.formats.terraced_json import dump_terraced, load_terraced
+from abm_workbench.formats.toolpath_csv import load_toolpath
 
 EXAMPLES = int(os.environ.get("ABM_TERRACED_OCC_EXAMPLES", "6"))
 AGREE = 1e-6       # mm
@@ -176,3 +179,26 @@ def test_turned_spline_terraces_agree_with_occ(angle):
     stock = TerracedStock((Slab(0.0, 3.0, (outer,)), Slab(3.0, 5.0, (outer, inner))))
     origins, directions = random_lines(rng, stock, 80)
     compare(stock, origins, directions, 30.0)
+
+
+def test_model_test_4_agrees_with_the_boolean_on_its_step():
+    """Model test 4 (resources/models/model_test_4): its JSON stock through engage_terraced
+    against the project's boolean reference on its STEP solid (every 4th CL point, φ every 5°)."""
+    folder = "resources/models/model_test_4/"
+    stock = load_terraced(folder + "stock.json")
+    toolpath = load_toolpath(folder + "toolpath.csv")
+    toolpath = Toolpath.from_axes(toolpath.cl[::4], axis_of(toolpath)[::4])
+    tool, cut = Tool(10.0, 2, 25.0), CutSettings(0.1, 10.0, 0.0, 180.0, 5.0)
+    mine = engage_terraced(stock, tool, toolpath, cut)
+    reference = edge_lengths_by_boolean(Part.read(folder + "stock.step"), tool, toolpath, cut.phi)
+    assert mine.engaged.sum() > 100
+    assert np.abs(mine.length - reference["length"]).max() < AGREE
+    assert np.array_equal(mine.pieces, reference["pieces"])
+    both = mine.engaged
+    assert np.abs(mine.lep_l[both] - reference["lep_l"][both]).max() < AGREE
+    assert np.abs(mine.uep_l[both] - reference["uep_l"][both]).max() < AGREE
+
+
+def axis_of(toolpath):
+    """(m, 3) unit tool axes of a Toolpath."""
+    return rotation_matrix(toolpath.theta_a, toolpath.theta_b)[:, :, 2]
