@@ -49,7 +49,7 @@ from .tolerances import LENGTH_EPS, PARALLEL_EPS
 
 _CODE = {name: SURFACES.index(name) for name in ("none", "top", "straight_wall", "curved_wall", "flute_end",
                                                     "bottom", "flute_start")}
-#: Bound on lines × control points held at once when testing lines against a slab's pieces.
+#: Bound on lines × pieces held at once when testing lines against a slab's pieces.
 CHUNK_VALUES = 1 << 21
 
 
@@ -141,17 +141,27 @@ def _crossings(groups, ox, oy, ux, uy):
     rows, ts, walls = [], [], []
     for group in groups:
         d = group.degree
-        per = max(1, CHUNK_VALUES // max(1, group.control.shape[0] * (d + 1)))
+        per = max(1, CHUNK_VALUES // max(1, group.control.shape[0]))
+        # Rounding bound of a side value: a piece whose circle lies farther than this beyond
+        # the line has every control point on one side however the values round.
+        margin = 1e-9 + 1e-12 * (np.abs(group.centre).sum(axis=1) + group.radius)
         for first in range(0, ox.size, per):
             sl = slice(first, first + per)
-            qx, qy = group.control[None, :, :, 0], group.control[None, :, :, 1]
-            side = (ux[sl, None, None] * (qy - oy[sl, None, None]) - uy[sl, None, None] * (qx - ox[sl, None, None]))
-            left = side >= 0.0
-            count = left.sum(axis=2)
-            line, piece = np.nonzero((count > 0) & (count < d + 1))
+            near = np.abs(ux[sl, None] * (group.centre[:, 1] - oy[sl, None])
+                          - uy[sl, None] * (group.centre[:, 0] - ox[sl, None]))
+            near = near <= group.radius + margin + 1e-12 * (np.abs(ox[sl]) + np.abs(oy[sl]))[:, None]
+            line, piece = np.nonzero(near)
             if line.size == 0:
                 continue
-            r, u = _side_changes(d, side[line, piece] * group.weights[piece])
+            qx, qy = group.control[piece, :, 0], group.control[piece, :, 1]
+            lx, ly, lux, luy = ox[sl][line, None], oy[sl][line, None], ux[sl][line, None], uy[sl][line, None]
+            side = lux * (qy - ly) - luy * (qx - lx)
+            count = (side >= 0.0).sum(axis=1)
+            mixed = (count > 0) & (count < d + 1)
+            line, piece, side = line[mixed], piece[mixed], side[mixed]
+            if line.size == 0:
+                continue
+            r, u = _side_changes(d, side * group.weights[piece])
             point = horner(np.moveaxis(group.homogeneous[piece[r]], 1, -1), u[:, None])
             px, py = point[:, 0] / point[:, 2], point[:, 1] / point[:, 2]
             # Changes at a piece's ends are at its exact end control points.

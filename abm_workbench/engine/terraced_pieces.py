@@ -90,14 +90,17 @@ def bernstein_to_power(degree):
 @dataclass(frozen=True)
 class PieceGroup:
     """Pieces of one degree d of one slab: control (P, d+1, 2) mm, weights (P, d+1), wall (P,)
-    the flat curve index of each, and homogeneous (P, d+1, 3) power-basis coefficients on u ∈
-    [0, 1] of (w·x, w·y, w) to evaluate points."""
+    the flat curve index of each, homogeneous (P, d+1, 3) power-basis coefficients on u ∈
+    [0, 1] of (w·x, w·y, w) to evaluate points, and a circle holding each piece's control
+    points: centre (P, 2) mm, radius (P,) mm."""
 
     degree: int
     control: np.ndarray
     weights: np.ndarray
     wall: np.ndarray
     homogeneous: np.ndarray
+    centre: np.ndarray
+    radius: np.ndarray
 
 
 def slab_pieces(stock):
@@ -123,7 +126,10 @@ def slab_pieces(stock):
             weights = np.array([w for _, w, _ in by_degree[degree]])
             homogeneous = np.concatenate([control * weights[..., None], weights[..., None]], axis=-1)
             power = np.einsum("ki,pic->pkc", bernstein_to_power(degree), homogeneous)
+            centre = 0.5 * (control.min(axis=1) + control.max(axis=1))
+            radius = np.sqrt(((control - centre[:, None]) ** 2).sum(axis=2)).max(axis=1)
             slab_groups.append(PieceGroup(degree, control, weights,
-                                          np.array([i for _, _, i in by_degree[degree]], dtype=np.intp), power))
+                                          np.array([i for _, _, i in by_degree[degree]], dtype=np.intp), power,
+                                          centre, radius))
         groups.append(slab_groups)
     return groups, np.array(straight, dtype=bool)
