@@ -130,13 +130,11 @@ class PassAssembly:
         """Copy the rows of Engagement `chunk` (CL points start, … of the pass) into the pass."""
         n = chunk.shape[0]
         if self.fields is None:
-            self.fields = {f.name: (getattr(chunk, f.name) if f.name in ANGLE_FIELDS or getattr(chunk, f.name) is None
-                                    else np.empty((self.m,) + getattr(chunk, f.name).shape[1:],
-                                                  getattr(chunk, f.name).dtype))
+            self.fields = {f.name: (getattr(chunk, f.name) if f.name in ANGLE_FIELDS else
+                                    np.empty((self.m,) + getattr(chunk, f.name).shape[1:],
+                                             getattr(chunk, f.name).dtype))
                            for f in dataclasses.fields(Engagement)}
         for name, array in self.fields.items():
-            if array is None:  # an optional field the engine does not fill
-                continue
             if name not in ANGLE_FIELDS:
                 array[start:start + n] = getattr(chunk, name)
             elif not np.array_equal(array, getattr(chunk, name)):

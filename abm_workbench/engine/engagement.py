@@ -50,8 +50,9 @@ class Engagement:
     segment (engagement segment 0 = A, 1 = B, … per CL point, −1 without engagement),
     area (length·h, mm²); lep_xyz, uep_xyz: (m, p, 3) (mm, NaN without engagement).
     Per CL point, (m,): depth_of_cut (z span from lowest LEP to highest UEP, NaN if none).
-    Optional, (m, p) or None (engines that do not label the LEP): lep_surface, lep_section,
-    lep_wall, the LEP's labels as uep_surface, uep_section and uep_wall give the UEP's.
+    Optional, (m, p): lep_surface, lep_section, lep_wall, the LEP's labels as uep_surface,
+    uep_section and uep_wall give the UEP's; an engine that does not label the LEP leaves them
+    out (None), and they are then "none" (0) and −1 everywhere.
     """
 
     phi: np.ndarray
@@ -72,6 +73,12 @@ class Engagement:
     lep_surface: np.ndarray = None
     lep_section: np.ndarray = None
     lep_wall: np.ndarray = None
+
+    def __post_init__(self):
+        for name, fill, dtype in (("lep_surface", _NONE, np.int8), ("lep_section", -1, np.int32),
+                                  ("lep_wall", -1, np.int32)):
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, np.full(np.shape(self.length), fill, dtype=dtype))
 
     @property
     def shape(self):
