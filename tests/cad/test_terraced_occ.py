@@ -13,11 +13,13 @@ from hypothesis import strategies as st
 from abm_workbench.cad.boolean import edge_lengths_by_boolean
 from abm_workbench.cad.freecad_env import FreeCAD, Part
 from abm_workbench.cad.terraced_solids import terraced_solid
-from abm_workbench.engine import CutSettings, Tool, Toolpath, rotation_matrix
+from abm_workbench.engine import CutSettings, Tool, Toolpath, engage, rotation_matrix
 from abm_workbench.engine.terraced import engage_terraced, terraced_intervals
 from abm_workbench.engine.terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
+from abm_workbench.engine.terraced_staircase import staircase_as_terraced
 from abm_workbench.formats.terraced_json import dump_terraced, load_terraced
 from abm_workbench.formats.toolpath_csv import load_toolpath
+from abm_workbench.jobs import load_stock
 
 EXAMPLES = int(os.environ.get("ABM_TERRACED_OCC_EXAMPLES", "6"))
 AGREE = 1e-6       # mm
@@ -202,3 +204,19 @@ def test_model_test_4_agrees_with_the_boolean_on_its_step():
 def axis_of(toolpath):
     """(m, 3) unit tool axes of a Toolpath."""
     return rotation_matrix(toolpath.theta_a, toolpath.theta_b)[:, :, 2]
+
+
+@pytest.mark.parametrize("test", [1, 2])
+def test_recognised_staircase_as_terraced_matches_engage(test):
+    """The model tests' STEP solids recognised with their exact B-spline walls: the staircase
+    engine and engage_terraced on staircase_as_terraced of the same staircase agree."""
+    folder = f"resources/models/model_test_{test}/"
+    staircase = load_stock(folder + "stock.step", walls="exact").staircase
+    assert any(not w.is_straight for w in staircase.walls)
+    toolpath = load_toolpath(folder + "toolpath.csv")
+    tool, cut = Tool(12.0, 2, 30.0), CutSettings(0.1, 10.0, 0.0, 180.0, 3.0)
+    a = engage(staircase, tool, toolpath, cut)
+    b = engage_terraced(staircase_as_terraced(staircase), tool, toolpath, cut)
+    assert np.abs(a.length - b.length).max() < 1e-9
+    assert np.nanmax(np.abs(a.lep_l - b.lep_l)) < 1e-9 and np.nanmax(np.abs(a.uep_l - b.uep_l)) < 1e-9
+    assert np.array_equal(a.pieces, b.pieces)
