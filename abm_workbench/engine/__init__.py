@@ -13,9 +13,15 @@ from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import k_coefficients
 from .walls import Wall
 from .zmap import ZMap, tool_floor, zmap_engage
+from .intervals import EdgeIntervals, engagement_from_intervals
+from .terraced import engage_terraced, terraced_intervals
+from .terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
+from .terraced_staircase import staircase_as_terraced
 
 __all__ = [
     "CASES", "SURFACES", "CutSettings", "Engagement", "FluteEngagement", "Staircase", "Tool", "Toolpath", "Wall",
     "angles_to_axis", "axis_to_angles", "cut_thickness", "edge_lines", "engage", "flute_engagement", "k_coefficients",
     "rotation_matrix", "segment_letter", "ZMap", "tool_floor", "zmap_engage",
+    "EdgeIntervals", "engagement_from_intervals", "engage_terraced", "terraced_intervals", "Loop", "PlanArc",
+    "PlanLine", "PlanSpline", "Slab", "TerracedStock", "staircase_as_terraced",
 ]

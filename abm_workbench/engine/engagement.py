@@ -25,10 +25,14 @@ from .tolerances import LENGTH_EPS, PARALLEL_EPS
 from .walls import Wall
 
 #: Names of the surfaces that can hold the UEP; results store indices into this tuple.
-#: "immersion_end" only comes from helix.flute_engagement with an immersion range.
-SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side", "immersion_end")
+#: "immersion_end" only comes from helix.flute_engagement with an immersion range; "bottom" (a
+#: face facing down, or the base) and "flute_start" (the edge's start inside the material) only
+#: label LEPs, from terraced.terraced_intervals.
+SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side", "immersion_end", "bottom",
+            "flute_start")
 #: Names of the Table 1 cases; results store indices into this tuple.
-CASES = ("none", "A.1", "A.2", "A.3", "A.4", "B.1", "B.2", "B.3", "B.4", "B.5", "B.6", "multi")
+#: "2.5D": an engaged instant on a terraced stock (terraced.engage_terraced), where Table 1 does not apply.
+CASES = ("none", "A.1", "A.2", "A.3", "A.4", "B.1", "B.2", "B.3", "B.4", "B.5", "B.6", "multi", "2.5D")
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = range(6)
 _CASE = {name: i for i, name in enumerate(CASES)}
@@ -46,6 +50,9 @@ class Engagement:
     segment (engagement segment 0 = A, 1 = B, … per CL point, −1 without engagement),
     area (length·h, mm²); lep_xyz, uep_xyz: (m, p, 3) (mm, NaN without engagement).
     Per CL point, (m,): depth_of_cut (z span from lowest LEP to highest UEP, NaN if none).
+    Optional, (m, p): lep_surface, lep_section, lep_wall, the LEP's labels as uep_surface,
+    uep_section and uep_wall give the UEP's; an engine that does not label the LEP leaves them
+    out (None), and they are then "none" (0) and −1 everywhere.
     """
 
     phi: np.ndarray
@@ -63,6 +70,15 @@ class Engagement:
     lep_xyz: np.ndarray
     uep_xyz: np.ndarray
     depth_of_cut: np.ndarray
+    lep_surface: np.ndarray = None
+    lep_section: np.ndarray = None
+    lep_wall: np.ndarray = None
+
+    def __post_init__(self):
+        for name, fill, dtype in (("lep_surface", _NONE, np.int8), ("lep_section", -1, np.int32),
+                                  ("lep_wall", -1, np.int32)):
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, np.full(np.shape(self.length), fill, dtype=dtype))
 
     @property
     def shape(self):
