@@ -4,7 +4,7 @@ PYTHON := /usr/bin/python3
 DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth
 OUT := build
 
-.PHONY: deps model-test-1 model-test-2 validate-model-test-1 validate-model-test-2 test benchmark scaling models install screenshots
+.PHONY: deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 test benchmark scaling models install screenshots
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -16,14 +16,14 @@ deps:
 	fi
 
 # The main job: model test 1, headless, to a results CSV, its summary and a plot.
-model-test-1 model-test-2: model-test-%: deps
+model-test-1 model-test-2 model-test-4: model-test-%: deps
 	$(PYTHON) -m abm_workbench engage --job resources/models/model_test_$*/job.json \
 	  --stock resources/models/model_test_$*/stock.json --toolpath resources/models/model_test_$*/toolpath.csv \
 	  --out $(OUT)/model_test_$*/results.csv --plot $(OUT)/model_test_$*/results.png
 
 # Model test N against OpenCASCADE booleans on its STEP solid (true contour walls): HTML report
 # and annotated FreeCAD document. About a minute: the boolean costs ~1 s per CL point.
-validate-model-test-1 validate-model-test-2: validate-model-test-%: deps
+validate-model-test-1 validate-model-test-2 validate-model-test-4: validate-model-test-%: deps
 	$(PYTHON) -m abm_workbench validate --job resources/models/model_test_$*/job.json \
 	  --stock resources/models/model_test_$*/stock.step --toolpath resources/models/model_test_$*/toolpath.csv \
 	  --report $(OUT)/model_test_$*/validation --fcstd $(OUT)/model_test_$*/validation.FCStd --cl 0,22,40
@@ -43,6 +43,7 @@ scaling: deps
 models: deps
 	$(PYTHON) resources/models/make_model_tests.py
 	$(PYTHON) resources/models/make_model_solids.py
+	$(PYTHON) resources/models/make_model_test_4.py
 
 # Development install: link the checkout into FreeCAD's user Mod folder.
 install:

@@ -311,11 +311,8 @@ def _warn(message):
 def _parameters_line(prepared, stock):
     """The second output line: each parameter and where it came from, the helix, the stock's model."""
     helix = f", helix {prepared.tool.helix:g}° [--helix]" if prepared.tool.helix else ""
-    solid = ""
-    if stock.shape is not None:
-        y0, y1 = stock.y_window
-        solid = f"; stock: {stock.walls} walls, y window {y0:.6g}..{y1:.6g} mm"
-    return f"{PROG}: parameters: {prepared.parameters.describe()}{helix}{solid}"
+    model = "" if stock.shape is None and stock.staircase is not None else f"; stock: {stock.describe()}"
+    return f"{PROG}: parameters: {prepared.parameters.describe()}{helix}{model}"
 
 
 def _run_engage(args):

@@ -18,8 +18,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .engine import (SURFACES, Engagement, FluteEngagement, Tool, Toolpath, edge_lines, engage, flute_engagement,
+from .engine import (SURFACES, Engagement, FluteEngagement, Tool, Toolpath, edge_lines, flute_engagement,
                      rotation_matrix, segment_letter)
+from .engine.stocks import engage_stock
 
 #: Below this reference length (mm) the error is absolute, not relative.
 TINY_LENGTH = 1e-3
@@ -204,7 +205,8 @@ def letters(engagement: Engagement):
 def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None):
     """Run the engine and the boolean reference on one pass; a Validation.
 
-    solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's.
+    solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's (a Staircase or a
+    TerracedStock).
     progress(done, total) is called after each CL point of the reference. Raises
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
@@ -212,7 +214,7 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     from .cad.boolean import edge_lengths_by_boolean
 
     started = time.perf_counter()
-    engagement = engage(staircase, tool, toolpath, settings)
+    engagement = engage_stock(staircase, tool, toolpath, settings)
     abm_seconds = time.perf_counter() - started
     if not engagement.engaged.any():
         raise NoEngagementError("no CL point of the pass engages the stock")

@@ -336,7 +336,7 @@ def _curve_area(curve):
     lo, hi = breaks[:-1, None], breaks[1:, None]
     t = (0.5 * (lo + hi) + 0.5 * (hi - lo) * nodes).ravel()
     factor = (0.5 * (hi - lo) * gauss).ravel()
-    (X, Y, W), (dX, dY, dW) = homogeneous(t).T, slope(t).T
+    (X, Y, W), (dX, dY, _) = homogeneous(t).T, slope(t).T
     # x dy − y dx = (X dY − Y dX) / W² for x = X/W, y = Y/W
     return 0.5 * float(np.sum(factor * (X * dY - Y * dX) / (W * W)))
 

@@ -204,3 +204,19 @@ class TerracedStock:
     def levels(self):
         """(n + 1,) the slabs' boundaries in z, bottom up (mm)."""
         return np.array([self.slabs[0].z_bottom] + [slab.z_top for slab in self.slabs])
+
+    def translated(self, offset):
+        """The same stock moved by offset (3,) mm."""
+        dx, dy, dz = (float(v) for v in offset)
+        shift = np.array([dx, dy])
+
+        def moved(curve):
+            if isinstance(curve, PlanLine):
+                return PlanLine(curve.start + shift, curve.end + shift, curve.face)
+            if isinstance(curve, PlanArc):
+                return PlanArc(curve.center + shift, curve.radius, curve.start_angle, curve.sweep, curve.face)
+            return PlanSpline(curve.degree, curve.knots, curve.control + shift, curve.weights, curve.face)
+
+        return TerracedStock(tuple(
+            Slab(slab.z_bottom + dz, slab.z_top + dz, tuple(Loop(tuple(map(moved, loop.curves))) for loop in slab.loops))
+            for slab in self.slabs))

@@ -208,7 +208,7 @@ class EngagementFeature(FeatureProxy):
         self._result, self._written, self._forces = None, None, None
         model = force_model_of(obj)
         toolpath, hints, parameters, tool, settings, stock = self.inputs(obj)
-        staircase = stock.staircase
+        staircase = stock.model
         if obj.YWindow != "custom":
             obj.YWindowMin, obj.YWindowMax = staircase.y_min, staircase.y_max
 

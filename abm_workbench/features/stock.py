@@ -22,7 +22,9 @@ import os
 import numpy as np
 
 from ..errors import InputError
-from ..jobs import WALL_MODELS, WALL_POINTS, Stock, load_stock
+from ..engine import PlanLine
+from ..jobs import WALL_MODELS, WALL_POINTS, load_stock
+from ..jobs.inputs import recognised
 from .base import FeatureProxy, add_properties, document_or_active
 
 #: Recognised stocks kept per stock object (wall models × y windows asked for).
@@ -63,6 +65,13 @@ class StockFeature(FeatureProxy):
         stock = self.load(obj)
         obj.Shape = stock.solid()
         staircase = stock.staircase
+        if staircase is None:  # a general 2.5D stock: its slabs, and its boundary curves as walls
+            curves = [curve for slab in stock.terraced.slabs for loop in slab.loops for curve in loop.curves]
+            straight = sum(isinstance(curve, PlanLine) for curve in curves)
+            obj.Sections, obj.StraightWalls, obj.CurvedWalls = len(stock.terraced.slabs), straight, len(curves) - straight
+            box = obj.Shape.BoundBox
+            obj.YMin, obj.YMax = box.YMin, box.YMax
+            return
         straight = sum(bool(wall.is_straight) for wall in staircase.walls)
         obj.Sections = staircase.n_sections
         obj.StraightWalls, obj.CurvedWalls = straight, len(staircase.walls) - straight
@@ -112,15 +121,13 @@ class StockFeature(FeatureProxy):
     def _load(self, obj, walls, y_window, frame):
         source = obj.SourceObject
         if source is not None:
-            from ..cad.recognise import recognise
             from ..cad.solids import moved
             shape = getattr(source, "Shape", None)
             if shape is None or shape.isNull():
                 raise InputError(f"{source.Label}: the linked object has no shape")
             shape = shape.copy() if frame is None else moved(shape, *frame)
-            recognition = recognise(shape, walls=walls, wall_points=obj.WallPoints, y_window=y_window,
-                                    source=source.Label)
-            return Stock(recognition.staircase, source.Label, shape, walls, frame)
+            return recognised(shape, source.Label, walls=walls, wall_points=obj.WallPoints, y_window=y_window,
+                              frame=frame)
         if not obj.SourceFile:
             raise InputError(f"{obj.Label}: no stock source: set SourceObject or SourceFile")
         return load_stock(obj.SourceFile, walls=walls, wall_points=obj.WallPoints, y_window=y_window, frame=frame)

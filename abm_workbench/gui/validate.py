@@ -75,11 +75,11 @@ def validate_engagement(obj, cls, folder, progress=None):
     pass_ = Toolpath(toolpath.cl[index], toolpath.theta_a[index], toolpath.theta_b[index],
                      None if toolpath.cc is None else toolpath.cc[index])
     try:
-        validation, helix = checked_validation(solid, stock.staircase, tool, pass_, settings, progress=progress)
+        validation, helix = checked_validation(solid, stock.model, tool, pass_, settings, progress=progress)
     except NoEngagementError:
         raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock at CL points "
                          f"{_cl_list(chosen)}") from None
-    forces = None if model is None else pass_forces_of(stock.staircase, tool, pass_, settings, model,
+    forces = None if model is None else pass_forces_of(stock.model, tool, pass_, settings, model,
                                                          validation.engagement)
     subset = len(chosen) < len(toolpath)
     run = "ABM against booleans" if helix is None else (

@@ -23,10 +23,12 @@ from typing import Optional
 
 import numpy as np
 
-from ..engine import Staircase, Tool, Toolpath, rotation_matrix
+from ..engine import Staircase, TerracedStock, Tool, Toolpath, rotation_matrix
 from ..errors import InputError
 from ..formats import check_keys, load_json_object
 from ..formats.staircase_json import load_staircase
+from ..formats.terraced_json import FORMAT as TERRACED_FORMAT
+from ..formats.terraced_json import load_terraced
 from .parameters import BY_NAME
 
 SOLID_SUFFIXES = (".step", ".stp", ".brep", ".brp", ".fcstd")
@@ -36,30 +38,54 @@ WALL_POINTS = ("chebyshev", "even")
 SWEPT_MARGIN = 1.0
 @dataclass(frozen=True)
 class Stock:
-    """A loaded stock.
+    """A loaded stock, in the frame the engine works in.
 
-    staircase: the Staircase the engine works on. source: the file. shape: the Part.Shape read
-    from a solid file, or None for a JSON stock. walls: "quintic" (JSON, or a solid recognised
-    with the paper's quintics) or "exact" (a solid's own wall curves). frame: (R, t) from part
-    coordinates to the engine frame the stock was moved into, or None. y_window: (2,) mm, the
-    staircase's y range.
+    staircase: the Staircase the engine works on (the paper's model, its fast engine), or None
+    for a general 2.5D stock, then held by `terraced` (a TerracedStock; None for a staircase).
+    source: the file. shape: the Part.Shape read from a solid file (moved into the engine frame),
+    or None for a JSON stock. walls: "quintic" (JSON, or a solid recognised with the paper's
+    quintics) or "exact" (a solid's own wall curves). frame: (R, t) from part coordinates to the
+    engine frame the stock was moved into, or None. reason: why a solid is not a staircase
+    (for a terraced stock recognised from one).
     """
 
-    staircase: Staircase
+    staircase: Optional[Staircase]
     source: str
     shape: object = None
     walls: str = "quintic"
     frame: Optional[tuple] = None
+    terraced: Optional[TerracedStock] = None
+    reason: str = ""
+
+    @property
+    def model(self):
+        """What the engine works on: the Staircase, or the TerracedStock."""
+        return self.staircase if self.staircase is not None else self.terraced
+
+    @property
+    def kind(self):
+        """"staircase" or "terraced"."""
+        return "staircase" if self.staircase is not None else "terraced"
 
     @property
     def y_window(self):
-        """(y_min, y_max) of the staircase (mm)."""
-        return (self.staircase.y_min, self.staircase.y_max)
+        """(y_min, y_max) of the staircase (mm); None for a terraced stock (it has no y window)."""
+        return None if self.staircase is None else (self.staircase.y_min, self.staircase.y_max)
+
+    def describe(self):
+        """The stock's model in words: 'exact walls, y window -15..15 mm' or '2.5D terraced stock, 4 slabs'."""
+        if self.staircase is None:
+            return f"2.5D terraced stock, {len(self.terraced.slabs)} slabs"
+        y0, y1 = self.y_window
+        return f"{self.walls} walls, y window {y0:.6g}..{y1:.6g} mm"
 
     def solid(self):
-        """The stock as a Part.Shape: the solid read, or for JSON the staircase built as a solid."""
+        """The stock as a Part.Shape: the solid read, or for JSON the model built as a solid."""
         if self.shape is not None:
             return self.shape
+        if self.staircase is None:
+            from ..cad.terraced_solids import terraced_solid
+            return terraced_solid(self.terraced)
         from ..cad.solids import staircase_solid
         return staircase_solid(self.staircase)
 
@@ -109,8 +135,9 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
     """The stock in `path` as a :class:`Stock`, in the frame the engine works in.
 
     A ``.json`` file is read as an abm-staircase/1 staircase (its walls are the paper's
-    quintics; walls, wall_points and y_window do not apply). A solid is recognised as a
-    staircase (:func:`abm_workbench.cad.recognise.recognise`): walls "exact" keeps the solid's
+    quintics) or an abm-terraced/1 terraced stock; walls, wall_points and y_window do not apply.
+    A solid is recognised as a staircase (:func:`abm_workbench.cad.recognise.recognise`), else
+    as a general 2.5D terraced stock (``cad.terraced_recognise``): walls "exact" keeps the solid's
     own wall curves, "quintic" fits the paper's quintic through six points per wall placed by
     wall_points ("chebyshev" or "even") over y_window ((y0, y1) mm, cut to the stock's y range;
     None: the whole range; or a function of the solid's highest z giving (y0, y1), as
@@ -126,17 +153,10 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
     if wall_points not in WALL_POINTS:
         raise ValueError(f"wall_points must be one of {WALL_POINTS}, got {wall_points!r}")
     if suffix == ".json":
-        staircase = load_staircase(name)
-        if frame is not None:
-            rotation, translation = frame
-            if not np.allclose(rotation, np.eye(3), rtol=0.0, atol=1e-12):
-                raise InputError(f"{name}: the operation's frame is turned against the part's, and a staircase "
-                                 "JSON can only be moved, not turned: give the stock as a solid (STEP, BREP, FCStd)")
-            staircase = staircase.translated(translation)
-        return Stock(staircase, name, frame=frame)
+        return _json_stock(name, frame)
     if suffix not in SOLID_SUFFIXES:
         raise InputError(f"{name}: unknown stock file type; expected .json, .step, .stp, .brep, .brp or .FCStd")
-    from ..cad.recognise import load_solid, recognise  # FreeCAD only for solids
+    from ..cad.recognise import load_solid  # FreeCAD only for solids
     shape = load_solid(name, solid)
     if frame is not None:
         from ..cad.solids import moved
@@ -150,8 +170,41 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
             raise InputError(f"{name}: y window {y_window[0]:g}..{y_window[1]:g} mm misses the stock's y range "
                              f"{box.YMin:g}..{box.YMax:g} mm")
         y_window = (low, high)
-    recognition = recognise(shape, walls=walls, wall_points=wall_points, y_window=y_window, source=name)
+    return recognised(shape, name, walls=walls, wall_points=wall_points, y_window=y_window, frame=frame)
+
+
+def recognised(shape, name, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None):
+    """The Stock of a solid `shape` (already in the engine frame `frame`) named `name` in messages:
+    a staircase when it is one (cad.recognise.recognise, with walls, wall_points, y_window), else
+    a general 2.5D terraced stock (cad.terraced_recognise), the staircase's refusal kept as its
+    reason. InputError naming the face when the solid is not 2.5D at all."""
+    from ..cad.recognise import recognise
+    try:
+        recognition = recognise(shape, walls=walls, wall_points=wall_points, y_window=y_window, source=name)
+    except InputError as error:
+        from ..cad.terraced_recognise import recognise_terraced
+        if walls == "quintic":
+            raise InputError(f"{error} (the paper's quintic walls need a staircase stock)") from None
+        return Stock(None, name, shape, walls, frame, recognise_terraced(shape, source=name), str(error))
     return Stock(recognition.staircase, name, shape, walls, frame)
+
+
+def _json_stock(name, frame):
+    """The Stock of a staircase (abm-staircase/1) or terraced (abm-terraced/1) JSON file, moved by a
+    translation into `frame`'s engine frame (InputError when the frame turns)."""
+    kind = load_json_object(name).get("format")
+    if frame is not None and not np.allclose(frame[0], np.eye(3), rtol=0.0, atol=1e-12):
+        raise InputError(f"{name}: the operation's frame is turned against the part's, and a stock JSON can only "
+                         "be moved, not turned: give the stock as a solid (STEP, BREP, FCStd)")
+    if kind == TERRACED_FORMAT:
+        terraced = load_terraced(name)
+        if frame is not None:
+            terraced = terraced.translated(frame[1])
+        return Stock(None, name, terraced=terraced, frame=frame)
+    staircase = load_staircase(name)
+    if frame is not None:
+        staircase = staircase.translated(frame[1])
+    return Stock(staircase, name, frame=frame)
 
 
 def load_path(path, operation=None):

@@ -18,8 +18,8 @@ from typing import Optional
 
 import numpy as np
 
-from ..engine import engage as straight_engage
-from ..engine import flute_engagement, zmap_engage
+from ..engine import Staircase, flute_engagement, zmap_engage
+from ..engine.stocks import engage_stock
 from ..errors import InputError, ParameterError
 from ..formats import replacing
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
@@ -28,11 +28,33 @@ from ..parallel import PassAssembly, map_chunks, toolpath_part, worker_count
 from .job import Job, cl_indices, load_job_stock, prepare
 
 
-def flute_1(staircase, tool, toolpath, settings, progress=None):
-    """Engagement of flute 1: the straight engine, or flute 0 of the helix solver for a helical tool."""
+#: Why a helical tool is refused on a general 2.5D stock.
+HELIX_NEEDS_STAIRCASE = ("needs a staircase stock: the helix solver does not take a general 2.5D stock yet (use "
+                         "straight flutes, helix 0)")
+
+
+def flute_1(stock, tool, toolpath, settings, progress=None):
+    """Engagement of flute 1 over `stock` (a Staircase or a TerracedStock): the straight engine of its
+    model (engine.stocks.engage_stock), or flute 0 of the helix solver for a helical tool (staircase only)."""
     if tool.helix == 0.0:
-        return straight_engage(staircase, tool, toolpath, settings, progress=progress)
-    return flute_engagement(staircase, tool, toolpath, settings, progress=progress).as_engagement(0)
+        return engage_stock(stock, tool, toolpath, settings, progress=progress)
+    if not isinstance(stock, Staircase):
+        raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
+    return flute_engagement(stock, tool, toolpath, settings, progress=progress).as_engagement(0)
+
+
+def check_model(stock, forces=False, method="abm", helix=0.0):
+    """ParameterError where a run needs the staircase model and `stock` (a Stock) is a general 2.5D one."""
+    if stock.staircase is not None:
+        return
+    if helix:
+        raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
+    if forces:
+        raise ParameterError("forces", "need a staircase stock: the force model does not take a general 2.5D stock "
+                                       f"yet ({stock.source} is one: {stock.reason or 'not a staircase'})")
+    if method != "abm":
+        raise ParameterError("method", f"the Z-map baseline needs a staircase stock; {stock.source} is a general "
+                                       "2.5D stock")
 
 
 def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=None):
@@ -69,6 +91,8 @@ def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progr
 
     if tool.helix == 0.0 and flutes is None:
         return validate(solid, staircase, tool, toolpath, settings, progress=progress), None
+    if not isinstance(staircase, Staircase):
+        raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
     helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress)
     return helix.flute(helix.flutes[0]), helix
 
@@ -266,6 +290,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
         outputs.append(os.path.splitext(plot)[0] + ".forces.png")
     check_outputs(outputs, _inputs(job))
     stock, _ = load_job_stock(prepared)
+    check_model(stock, prepared.force_model is not None, method.name, tool.helix)
 
     started = time.perf_counter()
     whole = PassAssembly(len(toolpath)) if plot else None
@@ -275,12 +300,12 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
         if method.name == "abm":
             chunks = map_chunks(CsvChunk(keep=whole is not None, force_model=prepared.force_model,
                                          frame=prepared.hints.frame),
-                                [(stock.staircase, tool, toolpath, settings)],
+                                [(stock.model, tool, toolpath, settings)],
                                 workers=method.workers, scheduler=method.scheduler, progress=progress)
         else:
             grid, step = zmap_cells(method)
             try:
-                engagement = in_part_frame(zmap_engage(stock.staircase, tool, toolpath, settings, grid=grid,
+                engagement = in_part_frame(zmap_engage(stock.model, tool, toolpath, settings, grid=grid,
                                                    edge_step=step, progress=progress), prepared.hints.frame)
             except ValueError as error:
                 raise ParameterError("method", f"the Z-map method: {error}") from None
@@ -339,20 +364,22 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, warn=print, 
         flutes = [flute - 1]
     check_report_outputs(job, report, fcstd)
     stock, stock_seconds = load_job_stock(prepared)
+    check_model(stock, prepared.force_model is not None, helix=tool.helix)
     started = time.perf_counter()
     solid = stock.solid()
     stock_seconds += time.perf_counter() - started
 
     try:
-        checked, helix = validation(solid, stock.staircase, tool, toolpath, settings, flutes=flutes,
+        checked, helix = validation(solid, stock.model, tool, toolpath, settings, flutes=flutes,
                                     progress=progress)
     except NoEngagementError:
         raise no_engagement(job) from None
     engagement = checked.engagement
     forces = None if prepared.force_model is None else pass_forces_of(
-        stock.staircase, tool, toolpath, settings, prepared.force_model, engagement)
+        stock.model, tool, toolpath, settings, prepared.force_model, engagement)
     shown = report_cls(checked, chosen)
-    walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
+    walls = ("the paper's quintic walls (JSON)" if stock.shape is None and stock.staircase is not None else
+             stock.describe())
     run = "ABM against booleans" if helix is None else (
         f"Helical edges (β = {tool.helix:g}°), flute {helix.flutes[0] + 1} of {tool.flutes}, ABM against booleans")
     title = f"{run}: {os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}"
@@ -432,10 +459,11 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
         check_report_outputs(job, report)
     check_outputs([out] + ([report] if report else []), _inputs(job))
     stock, _ = load_job_stock(prepared)
-    engagement = flute_1(stock.staircase, tool, toolpath, settings)
+    check_model(stock, forces=True, helix=tool.helix)
+    engagement = flute_1(stock.model, tool, toolpath, settings)
     if not engagement.engaged.any():
         raise no_engagement(job)
-    forces = pass_forces_of(stock.staircase, tool, toolpath, settings, prepared.force_model, engagement,
+    forces = pass_forces_of(stock.model, tool, toolpath, settings, prepared.force_model, engagement,
                             feed=programmed)
     plan = feed_schedule(forces, limit, kind=kind, min_feed=min_feed)
     unit = "N" if kind == "force" else "mm²"

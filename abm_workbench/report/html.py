@@ -60,8 +60,8 @@ class ReportJob:
 
     title: heading. description: the job's description ('' if none). stock, path: the input
     files. toolpath, tool, settings: the pass as computed. parameters: one line of parameters
-    and their sources (jobs.Parameters.describe). walls: the wall model in words. y_window:
-    (2,) mm. stock_seconds: time to read or build the stock's solid and staircase (s).
+    and their sources (jobs.Parameters.describe). walls: the stock's model in words. y_window:
+    (2,) mm, or None for a terraced stock. stock_seconds: time to read or build the stock's solid and model (s).
     """
 
     title: str
@@ -185,7 +185,8 @@ def _job_table(validation, job):
     m, p = validation.engagement.shape
     settings = job.settings
     rows = [
-        ("stock", f"{job.stock} ({job.walls}; y window {job.y_window[0]:.6g}..{job.y_window[1]:.6g} mm)"),
+        ("stock", f"{job.stock} ({job.walls}" + ("" if job.y_window is None else
+                                                f"; y window {job.y_window[0]:.6g}..{job.y_window[1]:.6g} mm") + ")"),
         ("toolpath", f"{job.path}: {m} CL points"),
         ("rotation angles", f"φ {settings.phi_start:g}..{settings.phi_end:g}° step {settings.phi_step:g}°: "
                             f"{p} angles, {m * p} instants"),

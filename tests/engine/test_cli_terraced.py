@@ -1,0 +1,40 @@
+"""engage on a general 2.5D terraced stock (abm-terraced/1): the terraced engine's results, and what needs a staircase."""
+
+import os
+
+import numpy as np
+import pytest
+
+from abm_workbench import cli
+from abm_workbench.engine import CutSettings, Tool, engage_terraced
+from abm_workbench.formats.results_csv import read_results
+from abm_workbench.formats.terraced_json import load_terraced
+from abm_workbench.formats.toolpath_csv import load_toolpath
+from tests.conftest import ROOT
+
+MODEL = os.path.join(ROOT, "resources", "models", "model_test_4")
+BASE = ["engage", "--stock", os.path.join(MODEL, "stock.json"), "--toolpath", os.path.join(MODEL, "toolpath.csv"),
+        "--job", os.path.join(MODEL, "job.json"), "--phi-step", "5"]
+
+
+def test_engage_on_a_terraced_stock_writes_the_terraced_engine_results(tmp_path, capsys):
+    assert cli.main(BASE + ["--out", str(tmp_path / "R.csv")]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines()[1].endswith("; stock: 2.5D terraced stock, 6 slabs")
+    written = read_results(tmp_path / "R.csv")
+    want = engage_terraced(load_terraced(os.path.join(MODEL, "stock.json")), Tool(10, 2, 25),
+                           load_toolpath(os.path.join(MODEL, "toolpath.csv")), CutSettings(0.1, 10, 0, 180, 5, 4000))
+    np.testing.assert_allclose(written["length"], want.length.reshape(-1), atol=1e-9)
+    np.testing.assert_allclose(written["lep_l"], want.lep_l.reshape(-1), atol=1e-9, equal_nan=True)
+    assert (written["length"] > 0).sum() > 1000 and set(written["case"][written["length"] > 0]) == {"2.5D"}
+
+
+@pytest.mark.parametrize("options, message", [
+    (["--helix", "30"], "--helix: needs a staircase stock"),
+    (["--forces", "--material", "al7075-t6"], "--forces: need a staircase stock"),
+    (["--method", "zmap"], "--method: the Z-map baseline needs a staircase stock"),
+])
+def test_what_needs_a_staircase_is_refused_on_a_terraced_stock(tmp_path, capsys, options, message):
+    assert cli.main(BASE + ["--out", str(tmp_path / "R.csv")] + options) == 2
+    assert capsys.readouterr().err.startswith(f"abm: error: {message}")
+    assert os.listdir(tmp_path) == []
