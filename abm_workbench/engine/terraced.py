@@ -47,7 +47,7 @@ from .polynomials import horner, real_roots_unit
 from .terraced_pieces import bernstein_to_power, slab_pieces
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
 
-_CODE = {name: SURFACES.index(name) for name in ("none", "top", "straight_wall", "curved_wall", "flute_end",
+_CODE = {name: SURFACES.index(name) for name in ("top", "straight_wall", "curved_wall", "flute_end",
                                                     "bottom", "flute_start")}
 #: Bound on lines × pieces held at once when testing lines against a slab's pieces.
 CHUNK_VALUES = 1 << 21
@@ -77,6 +77,7 @@ def _intervals(pieces, stock, origins, directions, length):
     ux = np.where(vertical, 1.0, d[:, 0] / np.where(vertical, 1.0, plan))
     uy = np.where(vertical, 0.0, d[:, 1] / np.where(vertical, 1.0, plan))
     scale = np.where(vertical, 1.0, plan)
+    wall_code = np.where(straight, _CODE["straight_wall"], _CODE["curved_wall"])
     found = []
     top_slab = len(stock.slabs) - 1
     for k, slab in enumerate(stock.slabs):
@@ -86,10 +87,8 @@ def _intervals(pieces, stock, origins, directions, length):
             continue
         ev_row, ev_at, ev_wall = _crossings(groups[k], o[rows, 0], o[rows, 1], ux[rows], uy[rows])
         ev_l = ev_at / scale[rows][ev_row]
-        ev_row_global = rows[ev_row]
         order = np.lexsort((ev_l, ev_row))
         ev_row, ev_l, ev_wall = ev_row[order], ev_l[order], ev_wall[order]
-        ev_row_global = ev_row_global[order]
         # Vertical rows: inside when an odd number of crossings lie ahead on the +x ray.
         is_vertical = vertical[rows]
         ahead = np.bincount(ev_row[ev_l > 0.0], minlength=rows.size)
@@ -98,14 +97,13 @@ def _intervals(pieces, stock, origins, directions, length):
         runs = [(wr, lo[wr], hi[wr], lo_code[wr], np.full(wr.size, -1), hi_code[wr], np.full(wr.size, -1))]
         # Sloping rows: crossings pair up into inside runs of the plan line, clipped to the slab.
         keep = ~is_vertical[ev_row]
-        r, at, wall = ev_row_global[keep], ev_l[keep], ev_wall[keep]
+        r, at, wall = rows[ev_row[keep]], ev_l[keep], ev_wall[keep]
         r0, r1, a0, a1, w0, w1 = r[0::2], r[1::2], at[0::2], at[1::2], wall[0::2], wall[1::2]
         if not np.array_equal(r0, r1):
             raise ArithmeticError(f"slab {k}: an odd number of boundary crossings on a line")
         start, end = np.maximum(a0, lo[r0]), np.minimum(a1, hi[r0])
         real = end > start
         r0, start, end, a0, a1, w0, w1 = (v[real] for v in (r0, start, end, a0, a1, w0, w1))
-        wall_code = np.where(straight, _CODE["straight_wall"], _CODE["curved_wall"])
         from_wall0, from_wall1 = a0 >= lo[r0], a1 <= hi[r0]
         runs.append((r0, start, end,
                      np.where(from_wall0, wall_code[w0], lo_code[r0]), np.where(from_wall0, w0, -1),

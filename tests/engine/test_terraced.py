@@ -8,6 +8,7 @@ from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
 from abm_workbench.engine import CASES, SURFACES, CutSettings, Tool, Toolpath, engage
+from abm_workbench.engine.intervals import engagement_from_intervals
 from abm_workbench.engine.terraced import engage_terraced, terraced_intervals
 from abm_workbench.engine.terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
 from abm_workbench.engine.terraced_pieces import curve_list, spline_pieces
@@ -278,3 +279,19 @@ def test_bad_line_arrays():
     stock = to_stock([(0.0, 1.0, [square(0, 0, 1, 1)])])
     with pytest.raises(ValueError, match="origins and directions"):
         terraced_intervals(stock, np.zeros((3, 3)), np.ones((2, 3)), 1.0)
+
+
+def test_chunks_change_nothing_and_bad_interval_counts_are_refused():
+    slabs = [(0.0, 3.0, [square(0, 0, 20, 10), ("circle", (8.0, 5.0), 2.0, 0.0)]), (3.0, 6.0, [square(10, 0, 20, 10)])]
+    stock = to_stock(slabs)
+    cl = np.column_stack([np.linspace(2, 18, 7), np.full(7, 5.0), np.full(7, 1.0)])
+    axes = np.column_stack([np.full(7, 0.2), np.full(7, -0.1), np.ones(7)])
+    toolpath = Toolpath.from_axes(cl, axes)
+    tool, cut = Tool(4.0, 2, 10.0), CutSettings(0.1, 5.0, 0.0, 180.0, 10.0)
+    whole = engage_terraced(stock, tool, toolpath, cut)
+    pieces = engage_terraced(stock, tool, toolpath, cut, chunk_instants=20)
+    for name in ("length", "lep_l", "uep_l", "uep_surface", "lep_surface", "lep_wall", "segment", "depth_of_cut"):
+        assert np.array_equal(getattr(whole, name), getattr(pieces, name), equal_nan=name != "segment")
+    found = terraced_intervals(stock, np.zeros((3, 3)), np.tile([0.0, 0.0, 1.0], (3, 1)), 5.0)
+    with pytest.raises(ValueError, match="need 133 lines"):
+        engagement_from_intervals(found, toolpath, tool, cut, np.zeros((3, 3)), np.zeros((3, 3)))
