@@ -65,7 +65,7 @@ from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..formats.results_csv import write_results
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
 from ..jobs import tool_and_settings
-from ..jobs.run import flute_1, in_part_frame, pass_forces_of
+from ..jobs.run import check_model, flute_1, in_part_frame, pass_forces_of
 from .base import READ_ONLY, FeatureProxy, add_properties, document_or_active
 from .stored import PassForces, read_engagement, read_forces
 from .stock import StockFeature
@@ -201,6 +201,10 @@ class EngagementFeature(FeatureProxy):
                              f"{stock_proxy.source_name(stock_obj)}")
         window = y_window(obj, stock_obj, walls or stock_obj.WallModel, toolpath, tool)
         stock = stock_proxy.load(stock_obj, walls, window, hints.frame)
+        try:
+            check_model(stock, forces=obj.Forces, helix=tool.helix)
+        except ParameterError as error:
+            raise property_words(obj.Label, error) from None
         return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)
 
     def execute(self, obj):
@@ -209,8 +213,8 @@ class EngagementFeature(FeatureProxy):
         model = force_model_of(obj)
         toolpath, hints, parameters, tool, settings, stock = self.inputs(obj)
         staircase = stock.model
-        if obj.YWindow != "custom":
-            obj.YWindowMin, obj.YWindowMax = staircase.y_min, staircase.y_max
+        if obj.YWindow != "custom" and stock.y_window is not None:
+            obj.YWindowMin, obj.YWindowMax = stock.y_window
 
         started = time.perf_counter()
         result = in_part_frame(flute_1(staircase, tool, toolpath, settings), hints.frame)

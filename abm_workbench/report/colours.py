@@ -12,6 +12,9 @@ SURFACE_COLOURS = {
     "flute_end": (0.58, 0.4, 0.74),
     "stock_side": (0.55, 0.34, 0.29),
     "immersion_end": (0.17, 0.63, 0.17),
+    "bottom": (0.09, 0.75, 0.81),
+    "flute_start": (0.74, 0.74, 0.13),
+    "machined": (0.89, 0.47, 0.76),
 }
 
 #: Per engagement segment, by index (A, B, C, …), repeating after ten.
