@@ -1,0 +1,307 @@
+"""Engagement against the in-process stock: the stock minus what earlier cutting moves removed.
+
+A program is one row per CL point of all its operations, in program order (ProgramMoves).
+Move j goes from row j − 1 to row j; when it cuts it removes the volume swept by the tool's
+cutting part (radius and flute length of row j), position and axis interpolated linearly (the
+axis normalised). At CL point k the in-process stock is the stock minus the volumes of every
+cutting move j ≤ k − 1. A move with a constant axis sweeps the convex hull of its end cylinders,
+met by a line in closed form (swept.line_hull_interval); a move whose axis turns is replaced by
+sub-steps of constant axis, each turning the tool by little enough that no point of the cutting
+part moves more than the tolerance (docs/ENGINE.md gives the construction and the error).
+
+Each edge line's inside intervals in the stock (an EdgeIntervals, as the staircase engine's
+`inside_intervals` gives them) lose their parts inside those volumes. A KD tree over the
+pieces' bounding spheres gives each CL point the pieces near it, so the cost grows with the
+moves near a point, not with the program's length. Lengths in mm.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from .engagement import SURFACES
+from .intervals import EdgeIntervals
+from .swept import line_hull_interval
+from .tolerances import LENGTH_EPS
+
+_MACHINED = SURFACES.index("machined")
+#: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
+_OPPOSITE_EPS = 1e-12
+#: Pairs of (edge line, swept piece) solved per batch, to bound memory.
+_PAIR_BATCH = 1 << 16
+
+
+def _float_array(name, value, shape):
+    """A finite float array of `shape` (None matches any length); ValueError naming `name`."""
+    array = np.array(value, dtype=float)
+    if array.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, array.shape)):
+        raise ValueError(f"{name} must have shape {shape}, got {array.shape}")
+    bad = np.argwhere(~np.isfinite(array))
+    if bad.size:
+        raise ValueError(f"{name}{list(int(i) for i in bad[0])} is not a finite number")
+    return array
+
+
+@dataclass(frozen=True)
+class ProgramMoves:
+    """Every CL point of a program, in program order, in one frame (mm).
+
+    cl: (N, 3) bottom centre of the tool. axis: (N, 3) unit tool axis. cutting: (N,) bool, the
+    move from row j − 1 to row j removes material (a rapid does not; row 0 has no move).
+    radius, flute_length: (N,) the tool at row j (mm), which makes the move into row j.
+    line: (N,) int, the source line of the row (−1 unknown), named in errors and warnings.
+    """
+
+    cl: np.ndarray
+    axis: np.ndarray
+    cutting: np.ndarray
+    radius: np.ndarray
+    flute_length: np.ndarray
+    line: np.ndarray
+
+    def __post_init__(self):
+        cl = _float_array("cl", self.cl, (None, 3))
+        n = cl.shape[0]
+        axis = _float_array("axis", self.axis, (n, 3))
+        norm = np.linalg.norm(axis, axis=1)
+        bad = np.flatnonzero(np.abs(norm - 1.0) > 1e-6)
+        line = np.array(self.line).astype(int).reshape(-1)
+        if line.shape != (n,):
+            raise ValueError(f"line must have shape ({n},), got {line.shape}")
+        if bad.size:
+            j = int(bad[0])
+            raise ValueError(f"row {j} (line {line[j]}): tool axis {axis[j].tolist()} is not a unit vector")
+        cutting = np.array(self.cutting, dtype=bool).reshape(-1)
+        if cutting.shape != (n,):
+            raise ValueError(f"cutting must have shape ({n},), got {cutting.shape}")
+        for name in ("radius", "flute_length"):
+            values = _float_array(name, self.__dict__[name], (n,))
+            low = np.flatnonzero(values <= 0.0)
+            if low.size:
+                j = int(low[0])
+                raise ValueError(f"row {j} (line {line[j]}): {name} must be positive, got {values[j]}")
+            object.__setattr__(self, name, values)
+        opposite = np.flatnonzero(cutting[1:] & (np.einsum("ij,ij->i", axis[1:], axis[:-1]) < -1.0 + _OPPOSITE_EPS)) + 1
+        if opposite.size:
+            j = int(opposite[0])
+            raise ValueError(f"row {j} (line {line[j]}): the tool axis turns by 180° in one cutting move")
+        object.__setattr__(self, "cl", cl)
+        object.__setattr__(self, "axis", axis / norm[:, None])
+        object.__setattr__(self, "cutting", cutting)
+        object.__setattr__(self, "line", line)
+
+    def __len__(self):
+        return self.cl.shape[0]
+
+    def transformed(self, rotation, translation):
+        """The same program in another frame: p' = R·p + t for the points, R·a for the axes.
+
+        rotation: (3, 3) orthonormal; translation: (3,) mm.
+        """
+        rotation = _float_array("rotation", rotation, (3, 3))
+        if not np.allclose(rotation @ rotation.T, np.eye(3), atol=1e-9):
+            raise ValueError("rotation must be an orthonormal 3×3 matrix")
+        translation = _float_array("translation", translation, (3,))
+        return ProgramMoves(self.cl @ rotation.T + translation, self.axis @ rotation.T, self.cutting, self.radius,
+                            self.flute_length, self.line)
+
+
+@dataclass(frozen=True)
+class SweptPieces:
+    """The cutting moves of a program as P constant-axis pieces, with a KD tree over them.
+
+    c0, c1: (P, 3) bottom centres at the piece's ends; axis: (P, 3) unit; radius, height: (P,)
+    (mm). move: (P,) the program row j ending the move the piece belongs to. centre, bound:
+    (P, 3), (P,) bounding sphere of each piece (mm). tree: cKDTree over the centres.
+    tolerance: the largest distance (mm) any point of the tool moves within one piece by the
+    turning of its axis.
+    """
+
+    c0: np.ndarray
+    c1: np.ndarray
+    axis: np.ndarray
+    radius: np.ndarray
+    height: np.ndarray
+    move: np.ndarray
+    centre: np.ndarray
+    bound: np.ndarray
+    tree: cKDTree
+    tolerance: float
+
+
+def swept_pieces(moves: ProgramMoves, tolerance=0.05):
+    """The cutting moves of `moves` as constant-axis pieces (SweptPieces).
+
+    A move whose axis turns by Θ (rad) is cut into n ≥ Θ·ρ/tolerance sub-steps (ρ = the largest
+    distance from the bottom centre to a point of the cutting part, √(r² + H²)) at equal angles
+    of the interpolated axis; sub-step i keeps the axis at its middle angle and runs between the
+    interpolated positions at its ends. Long moves are also cut so that no piece is longer than
+    ρ (exact: the hulls of consecutive parts of a straight move make up the hull of the move).
+    """
+    tolerance = float(tolerance)
+    if not tolerance > 0.0:
+        raise ValueError(f"tolerance must be positive, got {tolerance}")
+    j = np.flatnonzero(moves.cutting[1:]) + 1
+    w0, w1 = moves.axis[j - 1], moves.axis[j]
+    p0, p1 = moves.cl[j - 1], moves.cl[j]
+    radius, height = moves.radius[j], moves.flute_length[j]
+    rho = np.hypot(radius, height)
+    turn = np.arccos(np.clip(np.einsum("ij,ij->i", w0, w1), -1.0, 1.0))
+    span = np.linalg.norm(p1 - p0, axis=1)
+    count = np.maximum(np.maximum(np.ceil(turn * rho / tolerance), np.ceil(span / rho)), 1).astype(np.intp)
+    move = np.repeat(np.arange(j.size), count)
+    step = np.arange(move.size) - np.repeat(np.cumsum(count) - count, count)
+    n, theta = count[move].astype(float), turn[move]
+
+    def at(fraction):
+        """Interpolation parameter t (along the move) where the axis has turned by fraction·Θ:
+        t = sin θ / (sin θ + sin(Θ − θ)) for the normalised linear interpolation of the axis."""
+        angle = fraction * theta
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.sin(angle) / (np.sin(angle) + np.sin(theta - angle))
+        return np.where(theta > 0.0, t, fraction)
+
+    t0, t1, tm = at(step / n), at((step + 1) / n), at((step + 0.5) / n)
+    c0 = p0[move] + t0[:, None] * (p1 - p0)[move]
+    c1 = p0[move] + t1[:, None] * (p1 - p0)[move]
+    axis = (1.0 - tm)[:, None] * w0[move] + tm[:, None] * w1[move]
+    axis /= np.linalg.norm(axis, axis=1)[:, None]
+    r, h = radius[move], height[move]
+    centre = 0.5 * (c0 + c1) + 0.5 * h[:, None] * axis
+    bound = 0.5 * np.linalg.norm(c1 - c0, axis=1) + np.hypot(r, 0.5 * h)
+    return SweptPieces(c0, c1, axis, r, h, j[move], centre, bound, cKDTree(centre if centre.size else np.zeros((0, 3))),
+                       tolerance)
+
+
+def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, origins, directions, p, *,
+                        tolerance=0.05):
+    """The edge lines' inside intervals in the in-process stock, and which CL points changed.
+
+    stock_intervals: the N = m·p lines' intervals inside the stock (row i·p + k: CL point i,
+    angle k). moves: ProgramMoves of the whole program, or its SweptPieces (build them once
+    with swept_pieces when calling chunk by chunk). program_index: (m,) int, the program row of
+    each CL point. origins, directions: (N, 3) the lines' points at l = 0 and unit directions
+    (mm). p: angles per CL point. tolerance: mm, for moves whose axis turns (ignored when
+    `moves` is already SweptPieces).
+    Returns (EdgeIntervals, changed (m,) bool): the stock intervals minus their parts inside
+    the volume swept by every cutting move ending at or before row program_index[i] − 1; an
+    end made by that removal has surface "machined", section and wall −1. changed[i]: some
+    line of CL point i lost material.
+    """
+    pieces = moves if isinstance(moves, SweptPieces) else swept_pieces(moves, tolerance)
+    p = int(p)
+    n = stock_intervals.n_rows
+    m = n // max(p, 1)
+    if p <= 0 or m * p != n:
+        raise ValueError(f"{n} edge lines are not a whole number of CL points of {p} angles")
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    if program_index.shape != (m,):
+        raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
+    origins = _float_array("origins", origins, (n, 3))
+    directions = _float_array("directions", directions, (n, 3))
+    rows, enter, leave = _removals(stock_intervals, pieces, program_index, origins, directions, p)
+    result = subtract(stock_intervals, rows, enter, leave)
+    lost = result.length != stock_intervals.length
+    return result, lost.reshape(m, p).any(axis=1)
+
+
+def _removals(stock, pieces, program_index, origins, directions, p):
+    """Intervals (rows, enter, leave) of the lines inside the pieces that precede their CL point."""
+    empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
+    if stock.rows.size == 0 or pieces.move.size == 0:
+        return empty
+    # Per line with stock material: the segment from its first start to its last end.
+    first = np.flatnonzero(np.r_[True, stock.rows[1:] != stock.rows[:-1]])
+    last = np.r_[first[1:], stock.rows.size] - 1
+    line = stock.rows[first]
+    lo, hi = stock.start[first], stock.end[last]
+    a = origins[line] + lo[:, None] * directions[line]
+    b = origins[line] + hi[:, None] * directions[line]
+    # Per CL point: a bounding sphere of its lines' segments.
+    cl = line // p
+    present = np.unique(cl)
+    group = np.searchsorted(present, cl)
+    low = np.full((present.size, 3), np.inf)
+    high = np.full((present.size, 3), -np.inf)
+    np.minimum.at(low, group, np.minimum(a, b))
+    np.maximum.at(high, group, np.maximum(a, b))
+    centre = 0.5 * (low + high)
+    reach = 0.5 * np.linalg.norm(high - low, axis=1)
+    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(reach.max() + pieces.bound.max()),
+                                                  output_type="ndarray")
+    g, k = near["i"].astype(np.intp), near["j"].astype(np.intp)
+    keep = (near["v"] <= reach[g] + pieces.bound[k]) & (pieces.move[k] <= program_index[present[g]] - 1)
+    g, k = g[keep], k[keep]
+    # Expand (CL point, piece) to (line, piece); keep the pairs whose line segment comes
+    # within the piece's bounding sphere.
+    order = np.argsort(group, kind="stable")
+    starts = np.searchsorted(group[order], np.arange(present.size))
+    sizes = np.bincount(group, minlength=present.size)
+    count = sizes[g]
+    pair = np.repeat(np.arange(g.size), count)
+    seg = order[np.repeat(starts[g], count) + (np.arange(pair.size) - np.repeat(np.cumsum(count) - count, count))]
+    piece = k[pair]
+    along = b[seg] - a[seg]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.clip(np.einsum("ij,ij->i", pieces.centre[piece] - a[seg], along) / np.einsum("ij,ij->i", along, along),
+                    0.0, 1.0)
+    t = np.nan_to_num(t)
+    gap = a[seg] + t[:, None] * along - pieces.centre[piece]
+    close = np.einsum("ij,ij->i", gap, gap) <= pieces.bound[piece] ** 2
+    seg, piece = seg[close], piece[close]
+    out_rows, out_enter, out_leave = [], [], []
+    for start in range(0, seg.size, _PAIR_BATCH):
+        s, q = seg[start:start + _PAIR_BATCH], piece[start:start + _PAIR_BATCH]
+        r = line[s]
+        enter, leave = line_hull_interval(origins[r], directions[r], pieces.c0[q], pieces.c1[q], pieces.axis[q],
+                                          pieces.radius[q], pieces.height[q])
+        with np.errstate(invalid="ignore"):
+            hit = (np.minimum(leave, hi[s]) - np.maximum(enter, lo[s])) > LENGTH_EPS
+        out_rows.append(r[hit])
+        out_enter.append(enter[hit])
+        out_leave.append(leave[hit])
+    if not out_rows:
+        return empty
+    return np.concatenate(out_rows), np.concatenate(out_enter), np.concatenate(out_leave)
+
+
+def subtract(stock: EdgeIntervals, rows, enter, leave):
+    """`stock` minus the removal intervals [enter, leave] (R,) of lines `rows` (R,).
+
+    Lines without a removal keep their intervals bit for bit. An end made by a removal gets
+    surface "machined", section and wall −1. Returns an EdgeIntervals.
+    """
+    rows = np.asarray(rows, dtype=np.intp)
+    touched = np.zeros(stock.n_rows, dtype=bool)
+    touched[rows] = True
+    labels = ("start_surface", "start_section", "start_wall", "end_surface", "end_section", "end_wall")
+    if not touched.any():
+        return stock
+    mine = touched[stock.rows]
+    keep = np.flatnonzero(~mine)
+    edit = np.flatnonzero(mine)
+    # Events along each touched line; at one position: stock ends, removal starts, removal
+    # ends, stock starts (so that touching removals never open a gap and stock labels win).
+    k, r = edit.size, rows.size
+    ev_row = np.concatenate([stock.rows[edit], stock.rows[edit], rows, rows])
+    ev_pos = np.concatenate([stock.start[edit], stock.end[edit], enter, leave])
+    ev_kind = np.concatenate([np.full(k, 3), np.zeros(k, dtype=int), np.ones(r, dtype=int), np.full(r, 2)])
+    ev_source = np.concatenate([edit, edit, np.full(2 * r, -1)])
+    order = np.lexsort((ev_kind, ev_pos, ev_row))
+    ev_row, ev_pos, ev_kind, ev_source = ev_row[order], ev_pos[order], ev_kind[order], ev_source[order]
+    in_stock = np.cumsum(np.select([ev_kind == 3, ev_kind == 0], [1, -1], 0))
+    in_removal = np.cumsum(np.select([ev_kind == 1, ev_kind == 2], [1, -1], 0))
+    inside = (in_stock > 0) & (in_removal == 0)
+    seg = np.flatnonzero(inside[:-1] & (ev_row[1:] == ev_row[:-1]) & (ev_pos[1:] - ev_pos[:-1] > LENGTH_EPS))
+    begin, finish = seg, seg + 1
+    out = {"rows": ev_row[begin], "start": ev_pos[begin], "end": ev_pos[finish]}
+    from_stock = ev_kind[begin] == 3
+    to_stock = ev_kind[finish] == 0
+    for name in labels:
+        at, own = (begin, from_stock) if name.startswith("start") else (finish, to_stock)
+        machined = _MACHINED if name.endswith("surface") else -1
+        out[name] = np.where(own, getattr(stock, name)[np.maximum(ev_source[at], 0)], machined)
+    merged = {name: np.concatenate([getattr(stock, name)[keep], out[name]]) for name in out}
+    order = np.lexsort((merged["start"], merged["rows"]))
+    return EdgeIntervals(stock.n_rows, **{name: values[order] for name, values in merged.items()})
