@@ -336,3 +336,38 @@ def test_transformed_moves_give_the_same_removal():
     moved_got, _ = inprocess_intervals(stock_iv, moved, rows, origins @ rotation.T + shift, directions @ rotation.T,
                                        PHI.size)
     np.testing.assert_allclose(moved_got.length, got.length, rtol=0, atol=1e-9)
+
+
+def test_line_against_one_hull_random():
+    """line_hull_interval on random lines, moves and axes (including lines along the axis and
+    moves along it) against the point-in-hull test, sampled and bisected."""
+    from abm_workbench.engine.swept import line_hull_interval
+    rng = np.random.default_rng(7)
+    count = 150
+    for trial in range(count):
+        w = rng.normal(size=3) if trial % 3 else np.array([0.0, 0.0, 1.0])
+        w /= np.linalg.norm(w)
+        c0 = rng.normal(size=3) * 3
+        d = rng.normal(size=3) * rng.choice([0.0, 0.5, 5.0]) if trial % 5 else 2.0 * w
+        r, h = rng.uniform(1, 5), rng.uniform(2, 10)
+        o = c0 + rng.normal(size=3) * 4
+        u = w.copy() if trial % 6 == 0 else rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        enter, leave = line_hull_interval(o[None], u[None], c0[None], (c0 + d)[None], w[None], np.array([r]),
+                                          np.array([h]))
+        l = np.linspace(-40, 40, 4001)
+        state = in_hull(o + l[:, None] * u, c0, c0 + d, w, r, h)
+        if not state.any():
+            assert np.isnan(enter[0]) or leave[0] - enter[0] < 1e-6
+            continue
+        ends = []
+        for i in (np.argmax(state) - 1, len(state) - 1 - np.argmax(state[::-1])):
+            low, high = l[i], l[i + 1]
+            for _ in range(60):
+                mid = 0.5 * (low + high)
+                if in_hull((o + mid * u)[None], c0, c0 + d, w, r, h)[0] == state[i]:
+                    low = mid
+                else:
+                    high = mid
+            ends.append(0.5 * (low + high))
+        np.testing.assert_allclose([enter[0], leave[0]], ends, rtol=0, atol=1e-9)
