@@ -53,7 +53,9 @@ def _pieces_near(pieces: SweptPieces, moves, upto, near):
     radius, height = moves.radius[upto], moves.flute_length[upto]
     centre = moves.cl[upto] + 0.5 * height * moves.axis[upto]
     reach = np.hypot(radius, 0.5 * height) if near is None else float(near)
-    gap = np.linalg.norm(pieces.centre - centre, axis=1) - pieces.bound
+    piece_centre = 0.5 * (pieces.c0 + pieces.c1) + 0.5 * pieces.height[:, None] * pieces.axis
+    piece_bound = 0.5 * np.linalg.norm(pieces.c1 - pieces.c0, axis=1) + np.hypot(pieces.radius, 0.5 * pieces.height)
+    gap = np.linalg.norm(piece_centre - centre, axis=1) - piece_bound
     return np.flatnonzero((pieces.move <= upto - 1) & (gap <= reach))
 
 

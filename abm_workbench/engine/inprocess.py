@@ -109,11 +109,16 @@ class ProgramMoves:
 
 @dataclass(frozen=True)
 class SweptPieces:
-    """The cutting moves of a program as P constant-axis pieces, with a KD tree over them.
+    """The cutting moves of a program as P constant-axis pieces grouped in S spans, with a KD
+    tree over the spans.
 
-    c0, c1: (P, 3) bottom centres at the piece's ends; axis: (P, 3) unit; radius, height: (P,)
-    (mm). move: (P,) the program row j ending the move the piece belongs to. centre, bound:
-    (P, 3), (P,) bounding sphere of each piece (mm). tree: cKDTree over the centres.
+    Pieces: c0, c1 (P, 3) bottom centres at the piece's ends; axis (P, 3) unit; radius, height
+    (P,) (mm); move (P,) the program row j ending the move the piece belongs to.
+    Spans (consecutive pieces of one move): first, count (S,) their pieces; move (S,) as above;
+    c0, c1 (S, 3), axis (S, 3), height (S,): the span as one constant-axis hull, and slack (S,)
+    (mm): every piece of the span lies within slack of that hull with its radius, the axes of
+    its pieces within turn/2 (S,) (rad) of the span's axis; centre (S, 3)
+    and bound (S,): a bounding sphere of it all; tree: cKDTree over the centres.
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
     """
@@ -124,20 +129,57 @@ class SweptPieces:
     radius: np.ndarray
     height: np.ndarray
     move: np.ndarray
-    centre: np.ndarray
-    bound: np.ndarray
+    span_first: np.ndarray
+    span_count: np.ndarray
+    span_move: np.ndarray
+    span_c0: np.ndarray
+    span_c1: np.ndarray
+    span_axis: np.ndarray
+    span_height: np.ndarray
+    span_radius: np.ndarray
+    span_slack: np.ndarray
+    span_turn: np.ndarray
+    span_centre: np.ndarray
+    span_bound: np.ndarray
     tree: cKDTree
     tolerance: float
 
 
+def _turned(theta, fraction):
+    """Interpolation parameter t along a move where the normalised linear interpolation of its
+    axis has turned by fraction·Θ: t = sin θ / (sin θ + sin(Θ − θ)) (t = fraction when Θ = 0)."""
+    angle = fraction * theta
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.sin(angle) / (np.sin(angle) + np.sin(theta - angle))
+    return np.where(theta > 0.0, t, fraction)
+
+
+def _steps(p0, p1, w0, w1, theta, index, count):
+    """Positions (K, 3) at the start and end of step `index` of `count` equal turning steps of
+    the moves (p0, p1, w0, w1, theta: per step), and the axis (K, 3) at its middle angle."""
+    n = count.astype(float)
+    t0, t1, tm = (_turned(theta, f) for f in (index / n, (index + 1) / n, (index + 0.5) / n))
+    c0 = p0 + t0[:, None] * (p1 - p0)
+    c1 = p0 + t1[:, None] * (p1 - p0)
+    axis = (1.0 - tm)[:, None] * w0 + tm[:, None] * w1
+    return c0, c1, axis / np.linalg.norm(axis, axis=1)[:, None]
+
+
+def _csr(count):
+    """For counts (n,): the owner (sum,) of each item and its rank within its owner."""
+    owner = np.repeat(np.arange(count.size), count)
+    return owner, np.arange(owner.size) - np.repeat(np.cumsum(count) - count, count)
+
+
 def swept_pieces(moves: ProgramMoves, tolerance=0.05):
-    """The cutting moves of `moves` as constant-axis pieces (SweptPieces).
+    """The cutting moves of `moves` as constant-axis pieces in spans (SweptPieces).
 
     A move whose axis turns by Θ (rad) is cut into n ≥ Θ·ρ/tolerance sub-steps (ρ = the largest
     distance from the bottom centre to a point of the cutting part, √(r² + H²)) at equal angles
     of the interpolated axis; sub-step i keeps the axis at its middle angle and runs between the
-    interpolated positions at its ends. Long moves are also cut so that no piece is longer than
-    ρ (exact: the hulls of consecutive parts of a straight move make up the hull of the move).
+    interpolated positions at its ends. Moves are also cut into spans no longer than about ρ
+    (exact: the hulls of consecutive parts of a straight move make up the hull of the move),
+    each span a whole number of sub-steps, so that bounding volumes stay small.
     """
     tolerance = float(tolerance)
     if not tolerance > 0.0:
@@ -148,30 +190,88 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     radius, height = moves.radius[j], moves.flute_length[j]
     rho = np.hypot(radius, height)
     turn = np.arccos(np.clip(np.einsum("ij,ij->i", w0, w1), -1.0, 1.0))
-    span = np.linalg.norm(p1 - p0, axis=1)
-    count = np.maximum(np.maximum(np.ceil(turn * rho / tolerance), np.ceil(span / rho)), 1).astype(np.intp)
-    move = np.repeat(np.arange(j.size), count)
-    step = np.arange(move.size) - np.repeat(np.cumsum(count) - count, count)
-    n, theta = count[move].astype(float), turn[move]
+    spans = np.maximum(np.ceil(np.linalg.norm(p1 - p0, axis=1) / rho), 1).astype(np.intp)
+    per_span = np.maximum(np.ceil(np.ceil(turn * rho / tolerance) / spans), 1).astype(np.intp)
+    # Spans: equal turning steps of their move.
+    span_of, span_index = _csr(spans)
+    s0, s1, s_axis = _steps(p0[span_of], p1[span_of], w0[span_of], w1[span_of], turn[span_of], span_index,
+                            spans[span_of])
+    s_radius, s_height = radius[span_of], height[span_of]
+    # Within a span the axis turns by Θ/spans: every point of the tool stays within
+    # ρ·Θ/(2·spans) of the same point turned to the span's middle axis.
+    slack = 0.5 * rho[span_of] * turn[span_of] / spans[span_of]
+    centre = 0.5 * (s0 + s1) + 0.5 * s_height[:, None] * s_axis
+    bound = np.hypot(s_radius + 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack, 0.5 * s_height + slack)
+    # Pieces: per_span equal turning steps of each span's move, in order.
+    count = per_span[span_of]
+    owner, rank = _csr(count)
+    move = span_of[owner]
+    c0, c1, axis = _steps(p0[move], p1[move], w0[move], w1[move], turn[move], span_index[owner] * count[owner] + rank,
+                          spans[move] * count[owner])
+    first = np.cumsum(count) - count
+    tree = cKDTree(centre if centre.size else np.zeros((0, 3)))
+    return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, tree, tolerance)
 
-    def at(fraction):
-        """Interpolation parameter t (along the move) where the axis has turned by fraction·Θ:
-        t = sin θ / (sin θ + sin(Θ − θ)) for the normalised linear interpolation of the axis."""
-        angle = fraction * theta
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = np.sin(angle) / (np.sin(angle) + np.sin(theta - angle))
-        return np.where(theta > 0.0, t, fraction)
 
-    t0, t1, tm = at(step / n), at((step + 1) / n), at((step + 0.5) / n)
-    c0 = p0[move] + t0[:, None] * (p1 - p0)[move]
-    c1 = p0[move] + t1[:, None] * (p1 - p0)[move]
-    axis = (1.0 - tm)[:, None] * w0[move] + tm[:, None] * w1[move]
-    axis /= np.linalg.norm(axis, axis=1)[:, None]
-    r, h = radius[move], height[move]
-    centre = 0.5 * (c0 + c1) + 0.5 * h[:, None] * axis
-    bound = 0.5 * np.linalg.norm(c1 - c0, axis=1) + np.hypot(r, 0.5 * h)
-    return SweptPieces(c0, c1, axis, r, h, j[move], centre, bound, cKDTree(centre if centre.size else np.zeros((0, 3))),
-                       tolerance)
+def _apart(a, b, c0, c1, axis, radius, height, slack, turn=None):
+    """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
+    slack: seen along the axis the segment stays farther than radius + slack from the move, or
+    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm.
+
+    turn (K,), rad: the slack comes from turning the tool by up to turn/2 about its bottom
+    centre; only the tool's part up to the segment's height can come near it, so a point there
+    moves by at most turn/2 · √(radius² + that height²), which replaces slack when smaller.
+    """
+    qa, qb, d = a - c0, b - c0, c1 - c0
+    aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
+    if turn is not None:
+        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack, 0.0, height)
+        slack = np.minimum(slack, 0.5 * turn * np.hypot(radius, reach))
+    pa, pb, pd = qa - aa[:, None] * axis, qb - ab[:, None] * axis, d - da[:, None] * axis
+    far = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius + slack
+    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack
+    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack
+    return far | below | above
+
+
+def _inside(x, c0, c1, axis, radius, low, high):
+    """(K,) bool: points x (K, 3) lie in the volume {c0 + s·(c1 − c0) + a·axis + b : 0 ≤ s ≤ 1,
+    low ≤ a ≤ high, b ⊥ axis, |b| ≤ radius} (mm): the s allowed by the axial bounds and the s
+    allowed by the radius are two intervals, which must meet within [0, 1]."""
+    q, d = x - c0, c1 - c0
+    a0, da = np.einsum("ij,ij->i", q, axis), np.einsum("ij,ij->i", d, axis)
+    b0, dp = q - a0[:, None] * axis, d - da[:, None] * axis
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s1, s2 = (a0 - low) / da, (a0 - high) / da
+    flat = np.abs(da) <= 1e-15
+    ok = (a0 >= low) & (a0 <= high)
+    lo = np.where(flat, np.where(ok, 0.0, np.inf), np.minimum(s1, s2))
+    hi = np.where(flat, np.where(ok, 1.0, -np.inf), np.maximum(s1, s2))
+    aa, bb = np.einsum("ij,ij->i", dp, dp), np.einsum("ij,ij->i", b0, dp)
+    cc = np.einsum("ij,ij->i", b0, b0) - radius * radius
+    disc = bb * bb - aa * cc
+    still = aa <= 1e-24
+    root = np.sqrt(np.maximum(disc, 0.0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r_lo = np.where(still, np.where(cc <= 0.0, 0.0, np.inf), np.where(disc >= 0.0, (bb - root) / aa, np.inf))
+        r_hi = np.where(still, np.where(cc <= 0.0, 1.0, -np.inf), np.where(disc >= 0.0, (bb + root) / aa, -np.inf))
+    return np.maximum(np.maximum(lo, r_lo), 0.0) <= np.minimum(np.minimum(hi, r_hi), 1.0)
+
+
+def _segment_distance(p1, d1, p2, d2):
+    """(K,) shortest distance between the segments p1 + s·d1 and p2 + t·d2, s, t ∈ [0, 1] ((K, 3) each)."""
+    r = p1 - p2
+    a, e = np.einsum("ij,ij->i", d1, d1), np.einsum("ij,ij->i", d2, d2)
+    b, c, f = np.einsum("ij,ij->i", d1, d2), np.einsum("ij,ij->i", d1, r), np.einsum("ij,ij->i", d2, r)
+    safe_a, safe_e = np.where(a > 0.0, a, 1.0), np.where(e > 0.0, e, 1.0)
+    denom = a * e - b * b
+    s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / np.where(denom > 0.0, denom, 1.0), 0.0, 1.0), 0.0)
+    t = (b * s + f) / safe_e
+    s = np.where(t < 0.0, np.clip(-c / safe_a, 0.0, 1.0), np.where(t > 1.0, np.clip((b - c) / safe_a, 0.0, 1.0), s))
+    t = np.clip(t, 0.0, 1.0)
+    gap = r + s[:, None] * d1 - t[:, None] * d2
+    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
 
 
 def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, origins, directions, p, *,
@@ -211,7 +311,7 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
     if stock.rows.size == 0 or pieces.move.size == 0:
         return empty
-    # Per line with stock material: the segment from its first start to its last end.
+    # Per line with stock material: the segment a … b from its first start to its last end.
     first = np.flatnonzero(np.r_[True, stock.rows[1:] != stock.rows[:-1]])
     last = np.r_[first[1:], stock.rows.size] - 1
     line = stock.rows[first]
@@ -227,32 +327,49 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     np.minimum.at(low, group, np.minimum(a, b))
     np.maximum.at(high, group, np.maximum(a, b))
     centre = 0.5 * (low + high)
-    reach = 0.5 * np.linalg.norm(high - low, axis=1)
-    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(reach.max() + pieces.bound.max()),
+    radius = 0.5 * np.linalg.norm(high - low, axis=1)
+    # (CL point, span) pairs: spheres that meet, the span's move ends before the point, and
+    # the point's sphere is not surely apart from the span.
+    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.span_bound.max()),
                                                   output_type="ndarray")
     g, k = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = (near["v"] <= reach[g] + pieces.bound[k]) & (pieces.move[k] <= program_index[present[g]] - 1)
+    keep = (near["v"] <= radius[g] + pieces.span_bound[k]) & (pieces.span_move[k] <= program_index[present[g]] - 1)
     g, k = g[keep], k[keep]
-    # Expand (CL point, piece) to (line, piece); keep the pairs whose line segment comes
-    # within the piece's bounding sphere.
+    keep = ~_apart(centre[g], centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
+                   pieces.span_radius[k], pieces.span_height[k], pieces.span_slack[k] + radius[g])
+    g, k = g[keep], k[keep]
+    # (line, span) pairs whose segment is not surely apart from the span.
     order = np.argsort(group, kind="stable")
     starts = np.searchsorted(group[order], np.arange(present.size))
-    sizes = np.bincount(group, minlength=present.size)
-    count = sizes[g]
-    pair = np.repeat(np.arange(g.size), count)
-    seg = order[np.repeat(starts[g], count) + (np.arange(pair.size) - np.repeat(np.cumsum(count) - count, count))]
-    piece = k[pair]
-    along = b[seg] - a[seg]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.clip(np.einsum("ij,ij->i", pieces.centre[piece] - a[seg], along) / np.einsum("ij,ij->i", along, along),
-                    0.0, 1.0)
-    t = np.nan_to_num(t)
-    gap = a[seg] + t[:, None] * along - pieces.centre[piece]
-    close = np.einsum("ij,ij->i", gap, gap) <= pieces.bound[piece] ** 2
-    seg, piece = seg[close], piece[close]
-    out_rows, out_enter, out_leave = [], [], []
-    for start in range(0, seg.size, _PAIR_BATCH):
-        s, q = seg[start:start + _PAIR_BATCH], piece[start:start + _PAIR_BATCH]
+    pair, rank = _csr(np.bincount(group, minlength=present.size)[g])
+    seg = order[starts[g][pair] + rank]
+    span = k[pair]
+    keep = ~_apart(a[seg], b[seg], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                   pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
+    seg, span = seg[keep], span[keep]
+    # A line whose segment lies deep enough inside a span (both ends at least the span's slack
+    # inside its hull, which is convex) is removed whole: its other pairs need no solving.
+    slack, h = pieces.span_slack[span], pieces.span_height[span]
+    hull = (pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span] - slack,
+            slack, h - slack)
+    inside = _inside(a[seg], *hull) & _inside(b[seg], *hull)
+    whole = np.zeros(a.shape[0], dtype=bool)
+    whole[seg[inside]] = True
+    dead = np.flatnonzero(whole)
+    seg, span = seg[~whole[seg]], span[~whole[seg]]
+    # (line, piece) pairs; pieces of spans that turn are culled one by one the same way.
+    owner, rank = _csr(pieces.span_count[span])
+    seg, piece = seg[owner], pieces.span_first[span][owner] + rank
+    several = np.flatnonzero(pieces.span_count[span][owner] > 1)
+    if several.size:
+        q, s = piece[several], seg[several]
+        far = _apart(a[s], b[s], pieces.c0[q], pieces.c1[q], pieces.axis[q], pieces.radius[q], pieces.height[q], 0.0)
+        drop = np.zeros(seg.size, dtype=bool)
+        drop[several[far]] = True
+        seg, piece = seg[~drop], piece[~drop]
+    out_rows, out_enter, out_leave = [line[dead]], [lo[dead]], [hi[dead]]
+    for begin in range(0, seg.size, _PAIR_BATCH):
+        s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
         r = line[s]
         enter, leave = line_hull_interval(origins[r], directions[r], pieces.c0[q], pieces.c1[q], pieces.axis[q],
                                           pieces.radius[q], pieces.height[q])
@@ -261,8 +378,6 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         out_rows.append(r[hit])
         out_enter.append(enter[hit])
         out_leave.append(leave[hit])
-    if not out_rows:
-        return empty
     return np.concatenate(out_rows), np.concatenate(out_enter), np.concatenate(out_leave)
 
 
