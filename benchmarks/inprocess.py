@@ -7,7 +7,9 @@ Cases (engine time only; files are loaded before the clock starts; one core):
   own program (its swept pieces built once, included in the time);
 - a program of `--passes` adjacent five-axis passes over the model test 1 stock (the pass's
   heights and tool axes, each pass shifted by `--stepover` in y) with `--points` CL points in
-  all, at 1°, in chunks of `--chunk` instants: `engage` against the in-process path.
+  all, at 1°, in chunks of `--chunk` instants: `engage` against the in-process path, over
+  `--evaluate` CL points from the middle of the middle pass (the whole program is swept and
+  indexed; only those points are evaluated, to keep the run short).
 Prints a table: case, instants, seconds, instants/s.
 """
 
@@ -72,6 +74,7 @@ def main():
     parser.add_argument("--passes", type=int, default=16, help="passes of the program")
     parser.add_argument("--stepover", type=float, default=1.5, help="mm between passes")
     parser.add_argument("--chunk", type=int, default=1 << 15, help="instants per chunk")
+    parser.add_argument("--evaluate", type=int, default=1000, help="CL points of the program evaluated")
     parser.add_argument("--tolerance", type=float, default=0.05, help="five-axis sub-step tolerance (mm)")
     args = parser.parse_args()
     stock, tool, path, settings = load_model(MODEL)
@@ -96,12 +99,16 @@ def main():
     offsets = (np.arange(args.passes) - 0.5 * (args.passes - 1)) * args.stepover
     passes = [Toolpath(base.cl + [0.0, y, 0.0], base.theta_a, base.theta_b) for y in offsets]
     program = program_of(passes, tool)
-    whole = Toolpath(program.cl, np.concatenate([t.theta_a for t in passes]),
-                     np.concatenate([t.theta_b for t in passes]))
-    n = len(whole) * p
-    (initial,) = timed_engage(whole)
-    inproc, changed = in_process(stock, tool, whole, settings, program, 0, args.chunk, args.tolerance)
-    name = f"{args.passes} passes x {per_pass} CL, stepover {args.stepover} mm, x {p} phi"
+    first = (args.passes // 2) * per_pass + max(0, (per_pass - args.evaluate) // 2)
+    last = min(first + args.evaluate, len(program))
+    theta_a = np.concatenate([t.theta_a for t in passes])
+    theta_b = np.concatenate([t.theta_b for t in passes])
+    chosen = Toolpath(program.cl[first:last], theta_a[first:last], theta_b[first:last])
+    n = len(chosen) * p
+    (initial,) = timed_engage(chosen)
+    inproc, changed = in_process(stock, tool, chosen, settings, program, first, args.chunk, args.tolerance)
+    name = (f"{args.passes * per_pass}-point program ({args.passes} passes, stepover {args.stepover} mm), "
+            f"{len(chosen)} CL x {p} phi")
     rows.append((f"{name}, initial (engage)", n, initial, ""))
     rows.append((f"{name}, in-process", n, inproc, f"{changed} CL changed"))
 

@@ -420,3 +420,50 @@ def subtract(stock: EdgeIntervals, rows, enter, leave):
     merged = {name: np.concatenate([getattr(stock, name)[keep], out[name]]) for name in out}
     order = np.lexsort((merged["start"], merged["rows"]))
     return EdgeIntervals(stock.n_rows, **{name: values[order] for name, values in merged.items()})
+
+
+def rapid_collisions(stock, moves: ProgramMoves, *, spacing=0.5, chunk_lines=1 << 16):
+    """Rapids whose swept tool enters the staircase `stock` (for a collision warning).
+
+    Each rapid (a move into row j with cutting[j] False, j ≥ 1) is probed by the lines of its
+    tool's side at positions along the move no farther apart than `spacing` (mm) and at angles
+    no farther apart than `spacing` along the rim, position and axis interpolated as for a
+    cutting move; their inside length in the stock is exact (inside_intervals). A probe finds
+    any material the tool's side passes through, and material under its bottom face that
+    reaches its rim; a spike thinner than `spacing` that only touches the face between probes
+    can be missed. Returns (rows (R,) int, lines (R,) int, depth (R,) mm): the rapids that cut,
+    their source lines and the longest probe length inside the stock.
+    """
+    from .engagement import inside_intervals
+
+    spacing = float(spacing)
+    if not spacing > 0.0:
+        raise ValueError(f"spacing must be positive, got {spacing}")
+    j = np.flatnonzero(~moves.cutting[1:]) + 1
+    found_rows, found_depth = [], []
+    for row in j:
+        p0, p1, w0, w1 = moves.cl[row - 1], moves.cl[row], moves.axis[row - 1], moves.axis[row]
+        r, h = moves.radius[row], moves.flute_length[row]
+        steps = max(1, int(np.ceil(np.linalg.norm(p1 - p0) / spacing)))
+        t = np.linspace(0.0, 1.0, steps + 1)
+        centre = p0 + t[:, None] * (p1 - p0)
+        axis = (1.0 - t)[:, None] * w0 + t[:, None] * w1
+        axis /= np.linalg.norm(axis, axis=1)[:, None]
+        helper = np.where(np.abs(axis[:, :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])
+        u = np.cross(helper, axis)
+        u /= np.linalg.norm(u, axis=1)[:, None]
+        v = np.cross(axis, u)
+        angle = np.linspace(0.0, 2.0 * np.pi, max(8, int(np.ceil(2.0 * np.pi * r / spacing))), endpoint=False)
+        radial = np.cos(angle)[None, :, None] * u[:, None, :] + np.sin(angle)[None, :, None] * v[:, None, :]
+        origins = (centre[:, None, :] + r * radial).reshape(-1, 3)
+        directions = np.repeat(axis, angle.size, axis=0)
+        depth = 0.0
+        for begin in range(0, origins.shape[0], chunk_lines):
+            part = inside_intervals(stock, origins[begin:begin + chunk_lines], directions[begin:begin + chunk_lines], h)
+            if part.rows.size:
+                depth = max(depth, float(part.length.max()))
+        if depth > LENGTH_EPS:
+            found_rows.append(row)
+            found_depth.append(depth)
+    rows = np.array(found_rows, dtype=np.intp)
+    return rows, moves.line[rows], np.array(found_depth, dtype=float)

@@ -371,3 +371,17 @@ def test_line_against_one_hull_random():
                     high = mid
             ends.append(0.5 * (low + high))
         np.testing.assert_allclose([enter[0], leave[0]], ends, rtol=0, atol=1e-9)
+
+
+def test_rapid_collisions_name_the_rapid_and_its_line():
+    """A rapid that ends 1 mm below the stock's top is reported with its source line; rapids
+    above the stock and beside it are not."""
+    from abm_workbench.engine.inprocess import rapid_collisions
+    program = Program()
+    program.add_pass(straight(5, 15, 0.0, 12.0, 2), 5.0, 12.0)          # above the stock (top 9)
+    program.add_pass(straight(5, 15, -40.0, 12.0, 2), 5.0, 12.0)        # beside it (y < −30)
+    program.add_pass(straight(5, 15, 0.0, 8.0, 2), 5.0, 12.0)           # rapid down into it
+    rows, lines, depth = rapid_collisions(staircase(), program.moves())
+    assert rows.tolist() == [4] and lines.tolist() == [5]
+    # A probe line at the rim from z = 8 up to the top at 9 (section 0).
+    np.testing.assert_allclose(depth, [1.0], atol=1e-9)
