@@ -30,6 +30,8 @@ _MACHINED = SURFACES.index("machined")
 _OPPOSITE_EPS = 1e-12
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
 _PAIR_BATCH = 1 << 16
+#: (edge line, span) pairs examined per batch, to bound memory.
+_EXPAND_BATCH = 1 << 17
 
 
 def _float_array(name, value, shape):
@@ -338,12 +340,30 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     keep = ~_apart(centre[g], centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
                    pieces.span_radius[k], pieces.span_height[k], pieces.span_slack[k] + radius[g])
     g, k = g[keep], k[keep]
-    # (line, span) pairs whose segment is not surely apart from the span.
+    # (line, span) pairs, in batches of (CL point, span) pairs that expand to at most
+    # _EXPAND_BATCH of them, so that memory stays bounded.
     order = np.argsort(group, kind="stable")
     starts = np.searchsorted(group[order], np.arange(present.size))
-    pair, rank = _csr(np.bincount(group, minlength=present.size)[g])
-    seg = order[starts[g][pair] + rank]
-    span = k[pair]
+    sizes = np.bincount(group, minlength=present.size)[g]
+    cuts = np.unique(np.r_[0, np.searchsorted(np.cumsum(sizes), np.arange(_EXPAND_BATCH, int(sizes.sum()),
+                                                                          _EXPAND_BATCH), side="right"), g.size])
+    whole = np.zeros(a.shape[0], dtype=bool)
+    found = []
+    for first, stop in zip(cuts[:-1], cuts[1:]):
+        pair, rank = _csr(sizes[first:stop])
+        seg = order[starts[g[first:stop]][pair] + rank]
+        found.append(_line_span_pairs(seg[~whole[seg]], k[first:stop][pair][~whole[seg]], a, b, lo, hi, line, whole,
+                                      pieces, origins, directions))
+    dead = np.flatnonzero(whole)
+    return tuple(np.concatenate([ends[dead]] + [f[i] for f in found]) for i, ends in enumerate((line, lo, hi)))
+
+
+def _line_span_pairs(seg, span, a, b, lo, hi, line, whole, pieces, origins, directions):
+    """Removal intervals (rows, enter, leave) from the pairs (segment seg[i], span span[i]).
+
+    Segments a … b (L, 3) run from lo to hi (L,) along lines `line` (L,). Lines found removed
+    whole are marked in `whole` (L,) and give no intervals here.
+    """
     keep = ~_apart(a[seg], b[seg], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
@@ -353,9 +373,7 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     hull = (pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span] - slack,
             slack, h - slack)
     inside = _inside(a[seg], *hull) & _inside(b[seg], *hull)
-    whole = np.zeros(a.shape[0], dtype=bool)
     whole[seg[inside]] = True
-    dead = np.flatnonzero(whole)
     seg, span = seg[~whole[seg]], span[~whole[seg]]
     # (line, piece) pairs; pieces of spans that turn are culled one by one the same way.
     owner, rank = _csr(pieces.span_count[span])
@@ -367,7 +385,7 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         drop = np.zeros(seg.size, dtype=bool)
         drop[several[far]] = True
         seg, piece = seg[~drop], piece[~drop]
-    out_rows, out_enter, out_leave = [line[dead]], [lo[dead]], [hi[dead]]
+    out_rows, out_enter, out_leave = [np.zeros(0, dtype=line.dtype)], [np.zeros(0)], [np.zeros(0)]
     for begin in range(0, seg.size, _PAIR_BATCH):
         s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
         r = line[s]
