@@ -30,6 +30,8 @@ _MACHINED = SURFACES.index("machined")
 _OPPOSITE_EPS = 1e-12
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
 _PAIR_BATCH = 1 << 16
+#: Runs of angles per CL point, each with its own bounding sphere for the spatial index.
+_GROUPS = 12
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
 
@@ -320,8 +322,9 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     lo, hi = stock.start[first], stock.end[last]
     a = origins[line] + lo[:, None] * directions[line]
     b = origins[line] + hi[:, None] * directions[line]
-    # Per CL point: a bounding sphere of its lines' segments.
-    cl = line // p
+    # Per group of a CL point's lines (its angles in _GROUPS runs): a bounding sphere of their
+    # segments (smaller than one sphere for the whole point, so fewer spans meet it).
+    cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
     present = np.unique(cl)
     group = np.searchsorted(present, cl)
     low = np.full((present.size, 3), np.inf)
@@ -330,12 +333,12 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     np.maximum.at(high, group, np.maximum(a, b))
     centre = 0.5 * (low + high)
     radius = 0.5 * np.linalg.norm(high - low, axis=1)
-    # (CL point, span) pairs: spheres that meet, the span's move ends before the point, and
-    # the point's sphere is not surely apart from the span.
+    # (group, span) pairs: spheres that meet, the span's move ends before the CL point, and
+    # the group's sphere is not surely apart from the span.
     near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.span_bound.max()),
                                                   output_type="ndarray")
     g, k = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = (near["v"] <= radius[g] + pieces.span_bound[k]) & (pieces.span_move[k] <= program_index[present[g]] - 1)
+    keep = (near["v"] <= radius[g] + pieces.span_bound[k]) & (pieces.span_move[k] <= program_index[present[g] // _GROUPS] - 1)
     g, k = g[keep], k[keep]
     keep = ~_apart(centre[g], centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
                    pieces.span_radius[k], pieces.span_height[k], pieces.span_slack[k] + radius[g])
