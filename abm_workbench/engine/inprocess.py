@@ -488,3 +488,28 @@ def rapid_collisions(stock, moves: ProgramMoves, *, spacing=0.5, chunk_lines=1 <
             found_depth.append(depth)
     rows = np.array(found_rows, dtype=np.intp)
     return rows, moves.line[rows], np.array(found_depth, dtype=float)
+
+
+def pass_inprocess(stock, tool, toolpath, phi_deg, pieces: SweptPieces, program_index, *, chunk_instants=1 << 15):
+    """The in-process intervals of a whole pass, chunk by chunk (bounded memory).
+
+    stock: Staircase; tool: Tool; toolpath: Toolpath of m CL points in the stock's frame (the
+    program's pieces moved into it, e.g. swept_pieces(moves.transformed(R, t))); phi_deg: (p,)
+    angles (deg); program_index: (m,) the program row of each CL point. Yields (start, stop,
+    EdgeIntervals of the (stop − start)·p lines, row (i − start)·p + k, changed (stop − start,)).
+    """
+    from .engagement import _slice, edge_lines, inside_intervals
+
+    phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    m, p = len(toolpath), phi.size
+    if program_index.shape != (m,):
+        raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
+    step = max(1, int(chunk_instants) // max(p, 1))
+    for start in range(0, m, step):
+        stop = min(m, start + step)
+        base, direction = edge_lines(_slice(toolpath, start, stop), tool, phi)
+        origins, directions = base.reshape(-1, 3), np.repeat(direction, p, axis=0)
+        stock_intervals = inside_intervals(stock, origins, directions, tool.flute_length)
+        result, changed = inprocess_intervals(stock_intervals, pieces, program_index[start:stop], origins, directions, p)
+        yield start, stop, result, changed

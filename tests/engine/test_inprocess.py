@@ -385,3 +385,31 @@ def test_rapid_collisions_name_the_rapid_and_its_line():
     assert rows.tolist() == [4] and lines.tolist() == [5]
     # A probe line at the rim from z = 8 up to the top at 9 (section 0).
     np.testing.assert_allclose(depth, [1.0], atol=1e-9)
+
+
+def test_pass_inprocess_chunks_agree_with_one_call():
+    """pass_inprocess in small chunks gives the lengths of one call on the whole pass, and its
+    single-pass result without earlier passes equals engage's lengths wherever nothing changed."""
+    from abm_workbench.engine import CutSettings, Tool, Toolpath, engage
+    from abm_workbench.engine.inprocess import pass_inprocess
+    tool = Tool(10.0, 2, 12.0)
+    first = Toolpath(straight(5, 55, -3.0, 3.0, 14), np.zeros(14), np.zeros(14))
+    second = Toolpath(straight(5, 55, 4.0, 2.5, 14), np.full(14, 3.0), np.full(14, 5.0))
+    axes = np.concatenate([np.tile([0, 0, 1.0], (14, 1)), np.tile(
+        [np.sin(np.radians(5.0)), -np.sin(np.radians(3.0)) * np.cos(np.radians(5.0)),
+         np.cos(np.radians(3.0)) * np.cos(np.radians(5.0))], (14, 1))])
+    cl = np.concatenate([first.cl, second.cl])
+    moves = ProgramMoves(cl, axes, np.r_[False, np.ones(13, bool), False, np.ones(13, bool)], np.full(28, 5.0),
+                         np.full(28, 12.0), np.arange(28))
+    pieces = swept_pieces(moves)
+    phi = np.arange(0.0, 181.0, 3.0)
+    chunks = list(pass_inprocess(staircase(), tool, second, phi, pieces, np.arange(14, 28), chunk_instants=200))
+    whole = list(pass_inprocess(staircase(), tool, second, phi, pieces, np.arange(14, 28)))
+    assert len(chunks) > 1 and len(whole) == 1
+    np.testing.assert_array_equal(np.concatenate([c[2].length for c in chunks]), whole[0][2].length)
+    np.testing.assert_array_equal(np.concatenate([c[3] for c in chunks]), whole[0][3])
+    assert whole[0][3].any()
+    alone = next(pass_inprocess(staircase(), tool, first, phi, pieces, np.arange(14)))
+    initial = engage(staircase(), tool, first, CutSettings(0.1, 0.0, 0.0, 180.0, 3.0)).length.reshape(-1)
+    same = np.repeat(~alone[3], phi.size)
+    np.testing.assert_array_equal(alone[2].length[same], initial[same])
