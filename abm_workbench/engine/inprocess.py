@@ -10,9 +10,10 @@ sub-steps of constant axis, each turning the tool by little enough that no point
 part moves more than the tolerance (docs/ENGINE.md gives the construction and the error).
 
 Each edge line's inside intervals in the stock (an EdgeIntervals, as the staircase engine's
-`inside_intervals` gives them) lose their parts inside those volumes. A KD tree over the
-pieces' bounding spheres gives each CL point the pieces near it, so the cost grows with the
-moves near a point, not with the program's length. Lengths in mm.
+`inside_intervals` gives them) lose their parts inside those volumes. The pieces are grouped
+in spans; a KD tree over the spans' bounding spheres gives each CL point the spans near it, and
+tests that prove a miss drop most pairs before the closed form, so the cost grows with the
+moves near a point, not with the program's length (docs/ENGINE.md). Lengths in mm.
 """
 
 from dataclasses import dataclass
