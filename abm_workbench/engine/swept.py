@@ -109,10 +109,13 @@ def line_hull_interval(origin, direction, c0, c1, axis, radius, height):
     s = np.concatenate(ss, axis=1)
     eps = FEASIBLE_EPS
     a = a0[:, None] + l * ua[:, None] - s * da[:, None]
-    b = b0[:, None, :] + l[..., None] * up[:, None, :] - s[..., None] * dp[:, None, :]
+    # |b0 + l·up − s·dp|² expanded in the pair's dot products.
+    bu, bd, ud = _dot(b0, up)[:, None], _dot(b0, dp)[:, None], _dot(up, dp)[:, None]
     with np.errstate(invalid="ignore"):
+        across = (_dot(b0, b0)[:, None] + l * (l * _dot(up, up)[:, None] + 2.0 * (bu - s * ud))
+                  + s * (s * dd[:, None] - 2.0 * bd))
         feasible = ((s >= -eps) & (s <= 1.0 + eps) & (a >= -eps) & (a <= h[:, None] + eps)
-                    & (np.einsum("ijk,ijk->ij", b, b) <= (r[:, None] + eps) ** 2))
+                    & (across <= (r[:, None] + eps) ** 2))
     hit = feasible.any(axis=1)
     enter = np.where(hit, np.where(feasible, l, np.inf).min(axis=1), np.nan)
     leave = np.where(hit, np.where(feasible, l, -np.inf).max(axis=1), np.nan)
