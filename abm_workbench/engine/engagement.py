@@ -21,15 +21,17 @@ from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
 from .rows import row_any, row_count, row_sum
+from .intervals import EdgeIntervals
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
 from .walls import Wall
 
 #: Names of the surfaces that can hold the UEP; results store indices into this tuple.
 #: "immersion_end" only comes from helix.flute_engagement with an immersion range; "bottom" (a
 #: face facing down, or the base) and "flute_start" (the edge's start inside the material) only
-#: label LEPs, from terraced.terraced_intervals.
+#: label LEPs, from terraced.terraced_intervals; "machined" only comes from
+#: inprocess.inprocess_intervals (an end cut by an earlier move).
 SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side", "immersion_end", "bottom",
-            "flute_start")
+            "flute_start", "machined")
 #: Names of the Table 1 cases; results store indices into this tuple.
 #: "2.5D": an engaged instant on a terraced stock (terraced.engage_terraced), where Table 1 does not apply.
 CASES = ("none", "A.1", "A.2", "A.3", "A.4", "B.1", "B.2", "B.3", "B.4", "B.5", "B.6", "multi", "2.5D")
@@ -235,23 +237,26 @@ def _slice(toolpath, start, stop):
     return part
 
 
-def _clip(stock, length, x0, y0, z0, dx, dy, dz):
+def _clip(stock, length, x0, y0, z0, dx, dy, dz, start_labels=False):
     """Part [lo, hi] of each edge line inside the stock's bounding box, and what bounds it at hi.
 
     Returns lo, hi (N,) in mm along the edge, and at hi the surface (index into SURFACES:
     flute end, x-limit wall, y-limit side, top) and wall index (0 or n at the x limits, −1
-    otherwise). The edge rises (dz > 0), so the base can only bound it at lo.
+    otherwise). The edge rises (dz > 0), so the base can only bound it at lo. With
+    `start_labels`, also the surface and wall at lo: flute end (the bottom of the edge, l = 0),
+    x-limit wall, or stock side (a y limit or the base).
     """
     n = x0.size
     lo, hi = np.zeros(n), np.full(n, float(length))
     hi_surface = np.full(n, _FLUTE_END)
     hi_wall = np.full(n, -1)
+    lo_surface, lo_wall = np.full(n, _FLUTE_END), np.full(n, -1)
     limits = (
-        (x0, dx, stock.x_min, stock.x_max, _STRAIGHT, (0, stock.n_sections)),
-        (y0, dy, stock.y_min, stock.y_max, _SIDE, (-1, -1)),
-        (z0, dz, stock.base_z, float(stock.z_top.max()), _TOP, (-1, -1)),
+        (x0, dx, stock.x_min, stock.x_max, _STRAIGHT, (0, stock.n_sections), _STRAIGHT),
+        (y0, dy, stock.y_min, stock.y_max, _SIDE, (-1, -1), _SIDE),
+        (z0, dz, stock.base_z, float(stock.z_top.max()), _TOP, (-1, -1), _SIDE),
     )
-    for start, slope, low, high, surface, (wall_low, wall_high) in limits:
+    for start, slope, low, high, surface, (wall_low, wall_high), enter_surface in limits:
         flat = np.abs(slope) <= PARALLEL_EPS
         with np.errstate(divide="ignore", invalid="ignore"):
             at_low, at_high = (low - start) / slope, (high - start) / slope
@@ -259,11 +264,17 @@ def _clip(stock, length, x0, y0, z0, dx, dy, dz):
         enter = np.where(flat, np.where((start >= low) & (start <= high), -np.inf, np.inf),
                          np.where(rising, at_low, at_high))
         leave = np.where(flat, np.inf, np.where(rising, at_high, at_low))
+        if start_labels:
+            later = enter > lo
+            lo_surface = np.where(later, enter_surface, lo_surface)
+            lo_wall = np.where(later, np.where(rising, wall_low, wall_high), lo_wall)
         lo = np.maximum(lo, enter)
         sooner = leave < hi
         hi = np.where(sooner, leave, hi)
         hi_surface = np.where(sooner, surface, hi_surface)
         hi_wall = np.where(sooner, np.where(rising, wall_high, wall_low), hi_wall)
+    if start_labels:
+        return lo, hi, hi_surface, hi_wall, lo_surface, lo_wall
     return lo, hi, hi_surface, hi_wall
 
 
@@ -343,16 +354,20 @@ def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
     return lo[:, None] + u * span[:, None], monotone, k[0] <= 0.0, row_sum(k.T) <= 0.0
 
 
-def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
+def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz, intervals=False):
     """Engagement of N edge lines S(l) = (x0, y0, z0) + l·(dx, dy, dz), 0 ≤ l ≤ length.
 
     Returns a dict of (N,) arrays: lep_l, uep_l, length, pieces, uep_surface, uep_section,
     uep_wall, case. Lines that can reach no wall stay in one section, and lines whose
     candidate walls are each crossed at most once pass from section to section at the
     crossings: both are solved in closed form. The others go through the breakpoints.
+    With `intervals`, also "intervals": the inside pieces the length sums, as an EdgeIntervals.
     """
     n = x0.size
-    lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
+    if intervals:
+        lo, hi, hi_surface, hi_wall, lo_surface, lo_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz, True)
+    else:
+        lo, hi, hi_surface, hi_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz)
     live = hi > lo
     lo, hi = np.where(live, lo, 0.0), np.where(live, hi, 0.0)
     seg_x = np.stack([x0 + dx * lo, x0 + dx * hi])
@@ -376,7 +391,7 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
     simple = (reach > 0) & (np.bincount(pair_rows[~single], minlength=n) == 0)
     rank = np.arange(pair_rows.size) - np.searchsorted(pair_rows, pair_rows)  # pairs come grouped by row
     lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
-    result = {}
+    result, found = {}, []
     # (One wall and several apart: a line with one wall needs no sorting.)
     for subset, solve in ((reach == 0, _single_section), (simple & (reach == 1), _single_crossings),
                           (simple & (reach > 1), _single_crossings), ((reach > 0) & ~simple, _broken_lines)):
@@ -385,16 +400,49 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz):
             continue
         renumber = np.cumsum(subset) - 1
         pairs = subset[pair_rows]
+        starts = (lo_surface[rows], lo_wall[rows]) if intervals else None
         if solve is _single_crossings:
             part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], rank[pairs], pair_walls[pairs] + 1,
-                         root[pairs], at_lo[pairs], at_hi[pairs])
+                         root[pairs], at_lo[pairs], at_hi[pairs], starts=starts)
         else:
             on = pairs[quintic]
             part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], pair_walls[pairs],
-                         quintic[pairs], tuple(c[on] for c in crossings))
+                         quintic[pairs], tuple(c[on] for c in crossings), starts=starts)
+        if intervals:
+            piece_rows, *values = part.pop("intervals")
+            found.append((rows[piece_rows], *values))
         for name, values in part.items():
             result.setdefault(name, np.empty(n, dtype=values.dtype))[rows] = values
+    if intervals:
+        result["intervals"] = _gathered_intervals(n, found)
     return result
+
+
+def _gathered_intervals(n, found):
+    """One EdgeIntervals of n lines from the solvers' pieces: a list of (rows, start, end,
+    start_surface, start_section, start_wall, end_surface, end_section, end_wall) (K_s,) each,
+    every list sorted by row then along the line."""
+    columns = [np.concatenate([part[c] for part in found]) if found else np.zeros(0, dtype=int if c != 1 and c != 2 else float)
+               for c in range(9)]
+    order = np.argsort(columns[0], kind="stable")
+    return EdgeIntervals(n, *(column[order] for column in columns))
+
+
+def inside_intervals(stock: Staircase, origins, directions, length):
+    """Where N edge lines o + l·u, 0 ≤ l ≤ length, lie inside the staircase: the inside pieces
+    the engine sums into the length of cut (so `.length` equals engage's length bit for bit).
+
+    origins, directions: (N, 3) points at l = 0 and unit directions (the edge rises: u_z > 0);
+    length: flute length (mm). Pieces of one line that touch share a breakpoint (a wall
+    crossing or the height of another section's top); the labels there name that breakpoint.
+    The start of a piece at l = 0 is labelled flute_end; at the base or a y limit, stock_side.
+    Returns an EdgeIntervals.
+    """
+    origins = np.asarray(origins, dtype=float).reshape(-1, 3)
+    directions = np.asarray(directions, dtype=float).reshape(-1, 3)
+    if origins.shape != directions.shape:
+        raise ValueError(f"origins {origins.shape} and directions {directions.shape} must have the same shape (N, 3)")
+    return _solve_lines(stock, float(length), *origins.T, *directions.T, intervals=True)["intervals"]
 
 
 def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
@@ -412,7 +460,7 @@ def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
     return found, count <= 1, at[:, 0], at[:, 1]
 
 
-def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, *_):
+def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, *_, starts=None):
     """Engagement of lines whose clipped segment [lo, hi] stays in section left_of: inside from
     lo up to that section's top or hi, whichever comes first (same dict as _solve_lines)."""
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -425,16 +473,21 @@ def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, 
     section = np.where(engaged, left_of, -1)
     bottom = np.where((hi > lo) & (lo == 0.0), left_of, -1)  # else _table1_case looks it up
     pieces = engaged.astype(np.intp)
-    return {
+    result = {
         "lep_l": np.where(engaged, lo, np.nan), "uep_l": np.where(engaged, end, np.nan),
         "length": np.where(engaged, end - lo, 0.0), "pieces": pieces, "uep_surface": surface,
         "uep_section": section, "uep_wall": wall_index,
         "case": _table1_case(stock, x0, y0, dx, bottom, section[:, None], engaged, pieces, wall_index),
     }
+    if starts is not None:
+        e = np.flatnonzero(engaged)
+        result["intervals"] = (e, lo[e], end[e], starts[0][e], section[e], starts[1][e], surface[e], section[e],
+                               wall_index[e])
+    return result
 
 
 def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, pair_rows, pair_rank,
-                      pair_walls, roots, at_lo, at_hi):
+                      pair_walls, roots, at_lo, at_hi, starts=None):
     """Engagement of lines whose candidate walls are each crossed at most once (same dict as
     _solve_lines), in closed form.
 
@@ -443,7 +496,8 @@ def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall
     at or beyond that wall at lo and at hi. The crossings, sorted, cut [lo, hi] into pieces; in
     each piece the line is beyond the walls it has crossed (side at hi) and on its side at lo
     of the others, which gives the piece's section. Each piece is inside from its start up to
-    its section's top or its end, whichever comes first.
+    its section's top or its end, whichever comes first. With `starts` (the surface and wall at
+    lo), also "intervals": the inside pieces.
     """
     n, k = x0.size, int(pair_rank.max()) + 1
     # Per line, its walls as columns: crossing, side at lo, side at hi, wall index (a line
@@ -475,8 +529,9 @@ def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall
     lep, uep, length = np.full(n, np.nan), np.full(n, np.nan), np.zeros(n)
     surface, wall_index, uep_section = np.full(n, _NONE), np.full(n, -1), np.full(n, -1)
     bottom, bottom_found = np.zeros(n, dtype=np.intp), np.zeros(n, dtype=bool)
-    inside_sections = []
+    inside_sections, found = [], []
     start = lo
+    start_surface, start_wall = starts if starts is not None else (None, None)
     for j in range(k + 1):
         if j < k:
             end = np.where(crossed[j], cuts[j], hi)
@@ -504,24 +559,43 @@ def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall
         wall_index = np.where(inside, np.where(to_end, end_wall, -1), wall_index)
         uep_section = np.where(inside, section, uep_section)
         inside_sections.append(np.where(inside, section, -1))
+        if starts is not None:
+            found.append((inside, start, inside_end, start_surface, section, start_wall,
+                          np.where(to_end, end_surface, _TOP), section, np.where(to_end, end_wall, -1)))
+            if j < k:
+                start_surface = end_surface
+                start_wall = end_wall
         bottom = np.where(bottom_found, bottom, section)
         bottom_found |= real
         start = end
     engaged = ~np.isnan(uep)
     bottom = np.where(lo == 0.0, bottom, -1)
     inside_section = np.stack(inside_sections, axis=1)
-    return {
+    result = {
         "lep_l": lep, "uep_l": uep, "length": length, "pieces": pieces, "uep_surface": surface,
         "uep_section": uep_section, "uep_wall": wall_index,
         "case": _table1_case(stock, x0, y0, dx, bottom, inside_section, engaged, pieces, wall_index),
     }
+    if starts is not None:
+        result["intervals"] = _stacked_pieces(found)
+    return result
+
+
+def _stacked_pieces(columns):
+    """The inside pieces of per-column tuples (inside, start, end, 6 labels), each (N,) or a
+    scalar, as (rows, start, end, labels…) (K,), ordered by row then column."""
+    inside = np.stack([c[0] for c in columns], axis=1)
+    rows, at = np.nonzero(inside)
+    n = inside.shape[0]
+    return (rows,) + tuple(np.stack([np.broadcast_to(c[f], (n,)) for c in columns], axis=1)[rows, at]
+                           for f in range(1, 9))
 
 
 def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, pair_rows, pair_walls,
-                  is_quintic, crossings):
+                  is_quintic, crossings, starts=None):
     """Engagement of lines that may cross walls (pairs pair_rows, pair_walls; the crossings of
     the quintic ones, is_quintic, as _wall_crossings found them), cut at every breakpoint (same
-    dict as _solve_lines)."""
+    dict as _solve_lines; with `starts`, the surface and wall at lo, also "intervals")."""
     n = x0.size
     live = hi > lo
     # Breakpoints: the clipped ends, the section tops, the wall crossings. Only the tops of
@@ -584,10 +658,22 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
     inside_section = np.where(inside, section, -1)
     bottom = np.where((lo == 0.0) & real[:, 0], section[:, 0], -1)
     case = _table1_case(stock, x0, y0, dx, bottom, inside_section, any_inside, pieces, wall_index)
-    return {
+    result = {
         "lep_l": lep, "uep_l": uep, "length": row_sum(np.where(inside, end - start, 0.0)),
         "pieces": pieces, "uep_surface": surface, "uep_section": uep_section, "uep_wall": wall_index, "case": case,
     }
+    if starts is not None:
+        found = []
+        for c in range(inside.shape[1]):
+            begin_surface, begin_wall = _uep_surface(stock, order[rows, c], hi_surface, hi_wall, blocks)
+            first_column = order[rows, c] == 0
+            begin_surface = np.where(first_column, starts[0], begin_surface)
+            begin_wall = np.where(first_column, starts[1], begin_wall)
+            end_surface, end_wall = _uep_surface(stock, order[rows, c + 1], hi_surface, hi_wall, blocks)
+            found.append((inside[:, c], start[:, c], end[:, c], begin_surface, section[:, c], begin_wall,
+                          end_surface, section[:, c], end_wall))
+        result["intervals"] = _stacked_pieces(found)
+    return result
 
 
 def _add_crossings(n, rows, walls, found, columns, blocks):

@@ -1,0 +1,516 @@
+"""Engagement against the in-process stock: the stock minus what earlier cutting moves removed.
+
+A program is one row per CL point of all its operations, in program order (ProgramMoves).
+Move j goes from row j − 1 to row j; when it cuts it removes the volume swept by the tool's
+cutting part (radius and flute length of row j), position and axis interpolated linearly (the
+axis normalised). At CL point k the in-process stock is the stock minus the volumes of every
+cutting move j ≤ k − 1. A move with a constant axis sweeps the convex hull of its end cylinders,
+met by a line in closed form (swept.line_hull_interval); a move whose axis turns is replaced by
+sub-steps of constant axis, each turning the tool by little enough that no point of the cutting
+part moves more than the tolerance (docs/ENGINE.md gives the construction and the error).
+
+Each edge line's inside intervals in the stock (an EdgeIntervals, as the staircase engine's
+`inside_intervals` gives them) lose their parts inside those volumes. The pieces are grouped
+in spans; a KD tree over the spans' bounding spheres gives each CL point the spans near it, and
+tests that prove a miss drop most pairs before the closed form, so the cost grows with the
+moves near a point, not with the program's length (docs/ENGINE.md). Lengths in mm.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from .engagement import SURFACES
+from .intervals import EdgeIntervals
+from .swept import line_hull_interval
+from .tolerances import LENGTH_EPS
+
+_MACHINED = SURFACES.index("machined")
+#: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
+_OPPOSITE_EPS = 1e-12
+#: Pairs of (edge line, swept piece) solved per batch, to bound memory.
+_PAIR_BATCH = 1 << 16
+#: Runs of angles per CL point, each with its own bounding sphere for the spatial index.
+_GROUPS = 12
+#: (edge line, span) pairs examined per batch, to bound memory.
+_EXPAND_BATCH = 1 << 17
+
+
+def _float_array(name, value, shape):
+    """A finite float array of `shape` (None matches any length); ValueError naming `name`."""
+    array = np.array(value, dtype=float)
+    if array.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, array.shape)):
+        raise ValueError(f"{name} must have shape {shape}, got {array.shape}")
+    bad = np.argwhere(~np.isfinite(array))
+    if bad.size:
+        raise ValueError(f"{name}{list(int(i) for i in bad[0])} is not a finite number")
+    return array
+
+
+@dataclass(frozen=True)
+class ProgramMoves:
+    """Every CL point of a program, in program order, in one frame (mm).
+
+    cl: (N, 3) bottom centre of the tool. axis: (N, 3) unit tool axis. cutting: (N,) bool, the
+    move from row j − 1 to row j removes material (a rapid does not; row 0 has no move).
+    radius, flute_length: (N,) the tool at row j (mm), which makes the move into row j.
+    line: (N,) int, the source line of the row (−1 unknown), named in errors and warnings.
+    """
+
+    cl: np.ndarray
+    axis: np.ndarray
+    cutting: np.ndarray
+    radius: np.ndarray
+    flute_length: np.ndarray
+    line: np.ndarray
+
+    def __post_init__(self):
+        cl = _float_array("cl", self.cl, (None, 3))
+        n = cl.shape[0]
+        axis = _float_array("axis", self.axis, (n, 3))
+        norm = np.linalg.norm(axis, axis=1)
+        bad = np.flatnonzero(np.abs(norm - 1.0) > 1e-6)
+        line = np.array(self.line).astype(int).reshape(-1)
+        if line.shape != (n,):
+            raise ValueError(f"line must have shape ({n},), got {line.shape}")
+        if bad.size:
+            j = int(bad[0])
+            raise ValueError(f"row {j} (line {line[j]}): tool axis {axis[j].tolist()} is not a unit vector")
+        cutting = np.array(self.cutting, dtype=bool).reshape(-1)
+        if cutting.shape != (n,):
+            raise ValueError(f"cutting must have shape ({n},), got {cutting.shape}")
+        for name in ("radius", "flute_length"):
+            values = _float_array(name, self.__dict__[name], (n,))
+            low = np.flatnonzero(values <= 0.0)
+            if low.size:
+                j = int(low[0])
+                raise ValueError(f"row {j} (line {line[j]}): {name} must be positive, got {values[j]}")
+            object.__setattr__(self, name, values)
+        opposite = np.flatnonzero(cutting[1:] & (np.einsum("ij,ij->i", axis[1:], axis[:-1]) < -1.0 + _OPPOSITE_EPS)) + 1
+        if opposite.size:
+            j = int(opposite[0])
+            raise ValueError(f"row {j} (line {line[j]}): the tool axis turns by 180° in one cutting move")
+        object.__setattr__(self, "cl", cl)
+        object.__setattr__(self, "axis", axis / norm[:, None])
+        object.__setattr__(self, "cutting", cutting)
+        object.__setattr__(self, "line", line)
+
+    def __len__(self):
+        return self.cl.shape[0]
+
+    def transformed(self, rotation, translation):
+        """The same program in another frame: p' = R·p + t for the points, R·a for the axes.
+
+        rotation: (3, 3) orthonormal; translation: (3,) mm.
+        """
+        rotation = _float_array("rotation", rotation, (3, 3))
+        if not np.allclose(rotation @ rotation.T, np.eye(3), atol=1e-9):
+            raise ValueError("rotation must be an orthonormal 3×3 matrix")
+        translation = _float_array("translation", translation, (3,))
+        return ProgramMoves(self.cl @ rotation.T + translation, self.axis @ rotation.T, self.cutting, self.radius,
+                            self.flute_length, self.line)
+
+
+@dataclass(frozen=True)
+class SweptPieces:
+    """The cutting moves of a program as P constant-axis pieces grouped in S spans, with a KD
+    tree over the spans.
+
+    Pieces: c0, c1 (P, 3) bottom centres at the piece's ends; axis (P, 3) unit; radius, height
+    (P,) (mm); move (P,) the program row j ending the move the piece belongs to.
+    Spans (consecutive pieces of one move): first, count (S,) their pieces; move (S,) as above;
+    c0, c1 (S, 3), axis (S, 3), height (S,): the span as one constant-axis hull, and slack (S,)
+    (mm): every piece of the span lies within slack of that hull with its radius, the axes of
+    its pieces within turn/2 (S,) (rad) of the span's axis; centre (S, 3)
+    and bound (S,): a bounding sphere of it all; tree: cKDTree over the centres.
+    tolerance: the largest distance (mm) any point of the tool moves within one piece by the
+    turning of its axis.
+    """
+
+    c0: np.ndarray
+    c1: np.ndarray
+    axis: np.ndarray
+    radius: np.ndarray
+    height: np.ndarray
+    move: np.ndarray
+    span_first: np.ndarray
+    span_count: np.ndarray
+    span_move: np.ndarray
+    span_c0: np.ndarray
+    span_c1: np.ndarray
+    span_axis: np.ndarray
+    span_height: np.ndarray
+    span_radius: np.ndarray
+    span_slack: np.ndarray
+    span_turn: np.ndarray
+    span_centre: np.ndarray
+    span_bound: np.ndarray
+    tree: cKDTree
+    tolerance: float
+
+
+def _turned(theta, fraction):
+    """Interpolation parameter t along a move where the normalised linear interpolation of its
+    axis has turned by fraction·Θ: t = sin θ / (sin θ + sin(Θ − θ)) (t = fraction when Θ = 0)."""
+    angle = fraction * theta
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.sin(angle) / (np.sin(angle) + np.sin(theta - angle))
+    return np.where(theta > 0.0, t, fraction)
+
+
+def _steps(p0, p1, w0, w1, theta, index, count):
+    """Positions (K, 3) at the start and end of step `index` of `count` equal turning steps of
+    the moves (p0, p1, w0, w1, theta: per step), and the axis (K, 3) at its middle angle."""
+    n = count.astype(float)
+    t0, t1, tm = (_turned(theta, f) for f in (index / n, (index + 1) / n, (index + 0.5) / n))
+    c0 = p0 + t0[:, None] * (p1 - p0)
+    c1 = p0 + t1[:, None] * (p1 - p0)
+    axis = (1.0 - tm)[:, None] * w0 + tm[:, None] * w1
+    return c0, c1, axis / np.linalg.norm(axis, axis=1)[:, None]
+
+
+def _csr(count):
+    """For counts (n,): the owner (sum,) of each item and its rank within its owner."""
+    owner = np.repeat(np.arange(count.size), count)
+    return owner, np.arange(owner.size) - np.repeat(np.cumsum(count) - count, count)
+
+
+def swept_pieces(moves: ProgramMoves, tolerance=0.05):
+    """The cutting moves of `moves` as constant-axis pieces in spans (SweptPieces).
+
+    A move whose axis turns by Θ (rad) is cut into n ≥ Θ·ρ/tolerance sub-steps (ρ = the largest
+    distance from the bottom centre to a point of the cutting part, √(r² + H²)) at equal angles
+    of the interpolated axis; sub-step i keeps the axis at its middle angle and runs between the
+    interpolated positions at its ends. Moves are also cut into spans no longer than about ρ
+    (exact: the hulls of consecutive parts of a straight move make up the hull of the move),
+    each span a whole number of sub-steps, so that bounding volumes stay small.
+    """
+    tolerance = float(tolerance)
+    if not tolerance > 0.0:
+        raise ValueError(f"tolerance must be positive, got {tolerance}")
+    j = np.flatnonzero(moves.cutting[1:]) + 1
+    w0, w1 = moves.axis[j - 1], moves.axis[j]
+    p0, p1 = moves.cl[j - 1], moves.cl[j]
+    radius, height = moves.radius[j], moves.flute_length[j]
+    rho = np.hypot(radius, height)
+    turn = np.arccos(np.clip(np.einsum("ij,ij->i", w0, w1), -1.0, 1.0))
+    spans = np.maximum(np.ceil(np.linalg.norm(p1 - p0, axis=1) / rho), 1).astype(np.intp)
+    per_span = np.maximum(np.ceil(np.ceil(turn * rho / tolerance) / spans), 1).astype(np.intp)
+    # Spans: equal turning steps of their move.
+    span_of, span_index = _csr(spans)
+    s0, s1, s_axis = _steps(p0[span_of], p1[span_of], w0[span_of], w1[span_of], turn[span_of], span_index,
+                            spans[span_of])
+    s_radius, s_height = radius[span_of], height[span_of]
+    # Within a span the axis turns by Θ/spans: every point of the tool stays within
+    # ρ·Θ/(2·spans) of the same point turned to the span's middle axis.
+    slack = 0.5 * rho[span_of] * turn[span_of] / spans[span_of]
+    centre = 0.5 * (s0 + s1) + 0.5 * s_height[:, None] * s_axis
+    bound = np.hypot(s_radius + 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack, 0.5 * s_height + slack)
+    # Pieces: per_span equal turning steps of each span's move, in order.
+    count = per_span[span_of]
+    owner, rank = _csr(count)
+    move = span_of[owner]
+    c0, c1, axis = _steps(p0[move], p1[move], w0[move], w1[move], turn[move], span_index[owner] * count[owner] + rank,
+                          spans[move] * count[owner])
+    first = np.cumsum(count) - count
+    tree = cKDTree(centre if centre.size else np.zeros((0, 3)))
+    return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, tree, tolerance)
+
+
+def _apart(a, b, c0, c1, axis, radius, height, slack, turn=None):
+    """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
+    slack: seen along the axis the segment stays farther than radius + slack from the move, or
+    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm.
+
+    turn (K,), rad: the slack comes from turning the tool by up to turn/2 about its bottom
+    centre; only the tool's part up to the segment's height can come near it, so a point there
+    moves by at most turn/2 · √(radius² + that height²), which replaces slack when smaller.
+    """
+    qa, qb, d = a - c0, b - c0, c1 - c0
+    aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
+    if turn is not None:
+        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack, 0.0, height)
+        slack = np.minimum(slack, 0.5 * turn * np.hypot(radius, reach))
+    pa, pb, pd = qa - aa[:, None] * axis, qb - ab[:, None] * axis, d - da[:, None] * axis
+    far = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius + slack
+    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack
+    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack
+    return far | below | above
+
+
+def _inside(x, c0, c1, axis, radius, low, high):
+    """(K,) bool: points x (K, 3) lie in the volume {c0 + s·(c1 − c0) + a·axis + b : 0 ≤ s ≤ 1,
+    low ≤ a ≤ high, b ⊥ axis, |b| ≤ radius} (mm): the s allowed by the axial bounds and the s
+    allowed by the radius are two intervals, which must meet within [0, 1]."""
+    q, d = x - c0, c1 - c0
+    a0, da = np.einsum("ij,ij->i", q, axis), np.einsum("ij,ij->i", d, axis)
+    b0, dp = q - a0[:, None] * axis, d - da[:, None] * axis
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s1, s2 = (a0 - low) / da, (a0 - high) / da
+    flat = np.abs(da) <= 1e-15
+    ok = (a0 >= low) & (a0 <= high)
+    lo = np.where(flat, np.where(ok, 0.0, np.inf), np.minimum(s1, s2))
+    hi = np.where(flat, np.where(ok, 1.0, -np.inf), np.maximum(s1, s2))
+    aa, bb = np.einsum("ij,ij->i", dp, dp), np.einsum("ij,ij->i", b0, dp)
+    cc = np.einsum("ij,ij->i", b0, b0) - radius * radius
+    disc = bb * bb - aa * cc
+    still = aa <= 1e-24
+    root = np.sqrt(np.maximum(disc, 0.0))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r_lo = np.where(still, np.where(cc <= 0.0, 0.0, np.inf), np.where(disc >= 0.0, (bb - root) / aa, np.inf))
+        r_hi = np.where(still, np.where(cc <= 0.0, 1.0, -np.inf), np.where(disc >= 0.0, (bb + root) / aa, -np.inf))
+    return np.maximum(np.maximum(lo, r_lo), 0.0) <= np.minimum(np.minimum(hi, r_hi), 1.0)
+
+
+def _segment_distance(p1, d1, p2, d2):
+    """(K,) shortest distance between the segments p1 + s·d1 and p2 + t·d2, s, t ∈ [0, 1] ((K, 3) each)."""
+    r = p1 - p2
+    a, e = np.einsum("ij,ij->i", d1, d1), np.einsum("ij,ij->i", d2, d2)
+    b, c, f = np.einsum("ij,ij->i", d1, d2), np.einsum("ij,ij->i", d1, r), np.einsum("ij,ij->i", d2, r)
+    safe_a, safe_e = np.where(a > 0.0, a, 1.0), np.where(e > 0.0, e, 1.0)
+    denom = a * e - b * b
+    s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / np.where(denom > 0.0, denom, 1.0), 0.0, 1.0), 0.0)
+    t = (b * s + f) / safe_e
+    s = np.where(t < 0.0, np.clip(-c / safe_a, 0.0, 1.0), np.where(t > 1.0, np.clip((b - c) / safe_a, 0.0, 1.0), s))
+    t = np.clip(t, 0.0, 1.0)
+    gap = r + s[:, None] * d1 - t[:, None] * d2
+    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+
+
+def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, origins, directions, p, *,
+                        tolerance=0.05):
+    """The edge lines' inside intervals in the in-process stock, and which CL points changed.
+
+    stock_intervals: the N = m·p lines' intervals inside the stock (row i·p + k: CL point i,
+    angle k). moves: ProgramMoves of the whole program, or its SweptPieces (build them once
+    with swept_pieces when calling chunk by chunk). program_index: (m,) int, the program row of
+    each CL point. origins, directions: (N, 3) the lines' points at l = 0 and unit directions
+    (mm). p: angles per CL point. tolerance: mm, for moves whose axis turns (ignored when
+    `moves` is already SweptPieces).
+    Returns (EdgeIntervals, changed (m,) bool): the stock intervals minus their parts inside
+    the volume swept by every cutting move ending at or before row program_index[i] − 1; an
+    end made by that removal has surface "machined", section and wall −1. changed[i]: some
+    line of CL point i lost material.
+    """
+    pieces = moves if isinstance(moves, SweptPieces) else swept_pieces(moves, tolerance)
+    p = int(p)
+    n = stock_intervals.n_rows
+    m = n // max(p, 1)
+    if p <= 0 or m * p != n:
+        raise ValueError(f"{n} edge lines are not a whole number of CL points of {p} angles")
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    if program_index.shape != (m,):
+        raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
+    origins = _float_array("origins", origins, (n, 3))
+    directions = _float_array("directions", directions, (n, 3))
+    rows, enter, leave = _removals(stock_intervals, pieces, program_index, origins, directions, p)
+    result = subtract(stock_intervals, rows, enter, leave)
+    lost = result.length != stock_intervals.length
+    return result, lost.reshape(m, p).any(axis=1)
+
+
+def _removals(stock, pieces, program_index, origins, directions, p):
+    """Intervals (rows, enter, leave) of the lines inside the pieces that precede their CL point."""
+    empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
+    if stock.rows.size == 0 or pieces.move.size == 0:
+        return empty
+    # Per line with stock material: the segment a … b from its first start to its last end.
+    first = np.flatnonzero(np.r_[True, stock.rows[1:] != stock.rows[:-1]])
+    last = np.r_[first[1:], stock.rows.size] - 1
+    line = stock.rows[first]
+    lo, hi = stock.start[first], stock.end[last]
+    a = origins[line] + lo[:, None] * directions[line]
+    b = origins[line] + hi[:, None] * directions[line]
+    # Per group of a CL point's lines (its angles in _GROUPS runs): a bounding sphere of their
+    # segments (smaller than one sphere for the whole point, so fewer spans meet it).
+    cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
+    present = np.unique(cl)
+    group = np.searchsorted(present, cl)
+    low = np.full((present.size, 3), np.inf)
+    high = np.full((present.size, 3), -np.inf)
+    np.minimum.at(low, group, np.minimum(a, b))
+    np.maximum.at(high, group, np.maximum(a, b))
+    centre = 0.5 * (low + high)
+    radius = 0.5 * np.linalg.norm(high - low, axis=1)
+    # (group, span) pairs: spheres that meet, the span's move ends before the CL point, and
+    # the group's sphere is not surely apart from the span.
+    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.span_bound.max()),
+                                                  output_type="ndarray")
+    g, k = near["i"].astype(np.intp), near["j"].astype(np.intp)
+    keep = (near["v"] <= radius[g] + pieces.span_bound[k]) & (pieces.span_move[k] <= program_index[present[g] // _GROUPS] - 1)
+    g, k = g[keep], k[keep]
+    keep = ~_apart(centre[g], centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
+                   pieces.span_radius[k], pieces.span_height[k], pieces.span_slack[k] + radius[g])
+    g, k = g[keep], k[keep]
+    # (line, span) pairs, in batches of (CL point, span) pairs that expand to at most
+    # _EXPAND_BATCH of them, so that memory stays bounded.
+    order = np.argsort(group, kind="stable")
+    starts = np.searchsorted(group[order], np.arange(present.size))
+    sizes = np.bincount(group, minlength=present.size)[g]
+    cuts = np.unique(np.r_[0, np.searchsorted(np.cumsum(sizes), np.arange(_EXPAND_BATCH, int(sizes.sum()),
+                                                                          _EXPAND_BATCH), side="right"), g.size])
+    whole = np.zeros(a.shape[0], dtype=bool)
+    found = []
+    for first, stop in zip(cuts[:-1], cuts[1:]):
+        pair, rank = _csr(sizes[first:stop])
+        seg = order[starts[g[first:stop]][pair] + rank]
+        found.append(_line_span_pairs(seg[~whole[seg]], k[first:stop][pair][~whole[seg]], a, b, lo, hi, line, whole,
+                                      pieces, origins, directions))
+    dead = np.flatnonzero(whole)
+    return tuple(np.concatenate([ends[dead]] + [f[i] for f in found]) for i, ends in enumerate((line, lo, hi)))
+
+
+def _line_span_pairs(seg, span, a, b, lo, hi, line, whole, pieces, origins, directions):
+    """Removal intervals (rows, enter, leave) from the pairs (segment seg[i], span span[i]).
+
+    Segments a … b (L, 3) run from lo to hi (L,) along lines `line` (L,). Lines found removed
+    whole are marked in `whole` (L,) and give no intervals here.
+    """
+    keep = ~_apart(a[seg], b[seg], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                   pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
+    seg, span = seg[keep], span[keep]
+    # A line whose segment lies deep enough inside a span (both ends at least the span's slack
+    # inside its hull, which is convex) is removed whole: its other pairs need no solving.
+    slack, h = pieces.span_slack[span], pieces.span_height[span]
+    hull = (pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span] - slack,
+            slack, h - slack)
+    inside = _inside(a[seg], *hull) & _inside(b[seg], *hull)
+    whole[seg[inside]] = True
+    seg, span = seg[~whole[seg]], span[~whole[seg]]
+    # (line, piece) pairs; pieces of spans that turn are culled one by one the same way.
+    owner, rank = _csr(pieces.span_count[span])
+    seg, piece = seg[owner], pieces.span_first[span][owner] + rank
+    several = np.flatnonzero(pieces.span_count[span][owner] > 1)
+    if several.size:
+        q, s = piece[several], seg[several]
+        far = _apart(a[s], b[s], pieces.c0[q], pieces.c1[q], pieces.axis[q], pieces.radius[q], pieces.height[q], 0.0)
+        drop = np.zeros(seg.size, dtype=bool)
+        drop[several[far]] = True
+        seg, piece = seg[~drop], piece[~drop]
+    out_rows, out_enter, out_leave = [np.zeros(0, dtype=line.dtype)], [np.zeros(0)], [np.zeros(0)]
+    for begin in range(0, seg.size, _PAIR_BATCH):
+        s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
+        r = line[s]
+        enter, leave = line_hull_interval(origins[r], directions[r], pieces.c0[q], pieces.c1[q], pieces.axis[q],
+                                          pieces.radius[q], pieces.height[q])
+        with np.errstate(invalid="ignore"):
+            hit = (np.minimum(leave, hi[s]) - np.maximum(enter, lo[s])) > LENGTH_EPS
+        out_rows.append(r[hit])
+        out_enter.append(enter[hit])
+        out_leave.append(leave[hit])
+    return np.concatenate(out_rows), np.concatenate(out_enter), np.concatenate(out_leave)
+
+
+def subtract(stock: EdgeIntervals, rows, enter, leave):
+    """`stock` minus the removal intervals [enter, leave] (R,) of lines `rows` (R,).
+
+    Lines without a removal keep their intervals bit for bit. An end made by a removal gets
+    surface "machined", section and wall −1. Returns an EdgeIntervals.
+    """
+    rows = np.asarray(rows, dtype=np.intp)
+    touched = np.zeros(stock.n_rows, dtype=bool)
+    touched[rows] = True
+    labels = ("start_surface", "start_section", "start_wall", "end_surface", "end_section", "end_wall")
+    if not touched.any():
+        return stock
+    mine = touched[stock.rows]
+    keep = np.flatnonzero(~mine)
+    edit = np.flatnonzero(mine)
+    # Events along each touched line; at one position: stock ends, removal starts, removal
+    # ends, stock starts (so that touching removals never open a gap and stock labels win).
+    k, r = edit.size, rows.size
+    ev_row = np.concatenate([stock.rows[edit], stock.rows[edit], rows, rows])
+    ev_pos = np.concatenate([stock.start[edit], stock.end[edit], enter, leave])
+    ev_kind = np.concatenate([np.full(k, 3), np.zeros(k, dtype=int), np.ones(r, dtype=int), np.full(r, 2)])
+    ev_source = np.concatenate([edit, edit, np.full(2 * r, -1)])
+    order = np.lexsort((ev_kind, ev_pos, ev_row))
+    ev_row, ev_pos, ev_kind, ev_source = ev_row[order], ev_pos[order], ev_kind[order], ev_source[order]
+    in_stock = np.cumsum(np.select([ev_kind == 3, ev_kind == 0], [1, -1], 0))
+    in_removal = np.cumsum(np.select([ev_kind == 1, ev_kind == 2], [1, -1], 0))
+    inside = (in_stock > 0) & (in_removal == 0)
+    seg = np.flatnonzero(inside[:-1] & (ev_row[1:] == ev_row[:-1]) & (ev_pos[1:] - ev_pos[:-1] > LENGTH_EPS))
+    begin, finish = seg, seg + 1
+    out = {"rows": ev_row[begin], "start": ev_pos[begin], "end": ev_pos[finish]}
+    from_stock = ev_kind[begin] == 3
+    to_stock = ev_kind[finish] == 0
+    for name in labels:
+        at, own = (begin, from_stock) if name.startswith("start") else (finish, to_stock)
+        machined = _MACHINED if name.endswith("surface") else -1
+        out[name] = np.where(own, getattr(stock, name)[np.maximum(ev_source[at], 0)], machined)
+    merged = {name: np.concatenate([getattr(stock, name)[keep], out[name]]) for name in out}
+    order = np.lexsort((merged["start"], merged["rows"]))
+    return EdgeIntervals(stock.n_rows, **{name: values[order] for name, values in merged.items()})
+
+
+def rapid_collisions(stock, moves: ProgramMoves, *, spacing=0.5, chunk_lines=1 << 16):
+    """Rapids whose swept tool enters the staircase `stock` (for a collision warning).
+
+    Each rapid (a move into row j with cutting[j] False, j ≥ 1) is probed by the lines of its
+    tool's side at positions along the move no farther apart than `spacing` (mm) and at angles
+    no farther apart than `spacing` along the rim, position and axis interpolated as for a
+    cutting move; their inside length in the stock is exact (inside_intervals). A probe finds
+    any material the tool's side passes through, and material under its bottom face that
+    reaches its rim; a spike thinner than `spacing` that only touches the face between probes
+    can be missed. Returns (rows (R,) int, lines (R,) int, depth (R,) mm): the rapids that cut,
+    their source lines and the longest probe length inside the stock.
+    """
+    from .engagement import inside_intervals
+
+    spacing = float(spacing)
+    if not spacing > 0.0:
+        raise ValueError(f"spacing must be positive, got {spacing}")
+    j = np.flatnonzero(~moves.cutting[1:]) + 1
+    found_rows, found_depth = [], []
+    for row in j:
+        p0, p1, w0, w1 = moves.cl[row - 1], moves.cl[row], moves.axis[row - 1], moves.axis[row]
+        r, h = moves.radius[row], moves.flute_length[row]
+        steps = max(1, int(np.ceil(np.linalg.norm(p1 - p0) / spacing)))
+        t = np.linspace(0.0, 1.0, steps + 1)
+        centre = p0 + t[:, None] * (p1 - p0)
+        axis = (1.0 - t)[:, None] * w0 + t[:, None] * w1
+        axis /= np.linalg.norm(axis, axis=1)[:, None]
+        helper = np.where(np.abs(axis[:, :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]])
+        u = np.cross(helper, axis)
+        u /= np.linalg.norm(u, axis=1)[:, None]
+        v = np.cross(axis, u)
+        angle = np.linspace(0.0, 2.0 * np.pi, max(8, int(np.ceil(2.0 * np.pi * r / spacing))), endpoint=False)
+        radial = np.cos(angle)[None, :, None] * u[:, None, :] + np.sin(angle)[None, :, None] * v[:, None, :]
+        origins = (centre[:, None, :] + r * radial).reshape(-1, 3)
+        directions = np.repeat(axis, angle.size, axis=0)
+        depth = 0.0
+        for begin in range(0, origins.shape[0], chunk_lines):
+            part = inside_intervals(stock, origins[begin:begin + chunk_lines], directions[begin:begin + chunk_lines], h)
+            if part.rows.size:
+                depth = max(depth, float(part.length.max()))
+        if depth > LENGTH_EPS:
+            found_rows.append(row)
+            found_depth.append(depth)
+    rows = np.array(found_rows, dtype=np.intp)
+    return rows, moves.line[rows], np.array(found_depth, dtype=float)
+
+
+def pass_inprocess(stock, tool, toolpath, phi_deg, pieces: SweptPieces, program_index, *, chunk_instants=1 << 15):
+    """The in-process intervals of a whole pass, chunk by chunk (bounded memory).
+
+    stock: Staircase; tool: Tool; toolpath: Toolpath of m CL points in the stock's frame (the
+    program's pieces moved into it, e.g. swept_pieces(moves.transformed(R, t))); phi_deg: (p,)
+    angles (deg); program_index: (m,) the program row of each CL point. Yields (start, stop,
+    EdgeIntervals of the (stop − start)·p lines, row (i − start)·p + k, changed (stop − start,)).
+    """
+    from .engagement import _slice, edge_lines, inside_intervals
+
+    phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    m, p = len(toolpath), phi.size
+    if program_index.shape != (m,):
+        raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
+    step = max(1, int(chunk_instants) // max(p, 1))
+    for start in range(0, m, step):
+        stop = min(m, start + step)
+        base, direction = edge_lines(_slice(toolpath, start, stop), tool, phi)
+        origins, directions = base.reshape(-1, 3), np.repeat(direction, p, axis=0)
+        stock_intervals = inside_intervals(stock, origins, directions, tool.flute_length)
+        result, changed = inprocess_intervals(stock_intervals, pieces, program_index[start:stop], origins, directions, p)
+        yield start, stop, result, changed

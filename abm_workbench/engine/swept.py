@@ -1,0 +1,122 @@
+"""Where a line meets the volume swept by a flat-end mill moving with a constant axis.
+
+The tool's cutting part is the cylinder of radius r around the unit axis w from its bottom
+centre c up to height H (the flute length). Moving c linearly from c0 to c1 with w fixed, it
+sweeps the convex hull of its two end cylinders: the points
+
+    c0 + s·d + a·w + b,   d = c1 − c0,  0 ≤ s ≤ 1,  0 ≤ a ≤ H,  b ⊥ w,  |b| ≤ r.
+
+A line o + l·u meets this convex set in one interval of l. Writing q = o − c0 and splitting
+every vector into its part along w and its part across it (q = a0·w + b0, u = ua·w + up,
+d = da·w + dp), the point at l is in the volume when some s satisfies
+
+    0 ≤ s ≤ 1,   0 ≤ a0 + l·ua − s·da ≤ H,   |b0 + l·up − s·dp| ≤ r.
+
+These are four half-planes and one convex quadratic region in the (l, s) plane; their
+intersection F is convex and bounded, and the interval is [min l, max l] over F. A linear
+function on such a set takes its extremes at a corner (two boundaries meeting: two lines, or a
+line and the quadratic's boundary) or where the quadratic's boundary is tangent to the
+direction of s (∂/∂s |b|² = 0). All these candidates are closed-form roots of quadratics, at
+most 14 per pair; the extremes over the feasible ones are the interval. See docs/ENGINE.md.
+Lengths in mm.
+"""
+
+import numpy as np
+
+#: Slack (mm, and the same number for the dimensionless s) with which a candidate point that
+#: lies on the boundaries up to rounding still counts as inside the volume.
+FEASIBLE_EPS = 1e-9
+#: A squared norm (mm²) below this is zero: the quadratic has no term in that variable.
+SQUARED_EPS = 1e-24
+
+
+def _dot(a, b):
+    """Row-wise dot product of (P, 3) arrays: (P,)."""
+    return np.einsum("ij,ij->i", a, b)
+
+
+def _quadratic_roots(a, b, c):
+    """Real roots t of a·t² + 2b·t + c = 0 for (P,) coefficients: (P, 2), NaN where none
+    (or where a is zero: the quadratic then does not depend on t)."""
+    disc = b * b - a * c
+    ok = (a > SQUARED_EPS) & (disc >= 0.0)
+    root = np.sqrt(np.where(ok, disc, 0.0))
+    big = -b - np.copysign(root, b)  # no cancellation: |big| = |b| + root
+    with np.errstate(divide="ignore", invalid="ignore"):
+        first = np.where(big != 0.0, big / np.where(ok, a, 1.0), 0.0)
+        second = np.where(big != 0.0, c / big, 0.0)
+    return np.where(ok[:, None], np.stack([first, second], axis=1), np.nan)
+
+
+def line_hull_interval(origin, direction, c0, c1, axis, radius, height):
+    """The interval of each line inside the convex hull of two end cylinders (one pair per row).
+
+    origin, direction: (P, 3) points and unit directions of the lines (mm).
+    c0, c1: (P, 3) bottom centres of the tool at the move's ends; axis: (P, 3) unit tool axis
+    (the same at both ends); radius, height: (P,) tool radius and cutting height (mm).
+    Returns enter, leave (P,) in mm along each line (enter ≤ leave), NaN where the line misses
+    the volume.
+    """
+    o, u = np.asarray(origin, dtype=float), np.asarray(direction, dtype=float)
+    w = np.asarray(axis, dtype=float)
+    c0 = np.asarray(c0, dtype=float)
+    d = np.asarray(c1, dtype=float) - c0
+    r, h = np.asarray(radius, dtype=float), np.asarray(height, dtype=float)
+    q = o - c0
+    a0, ua, da = _dot(q, w), _dot(u, w), _dot(d, w)
+    b0, up, dp = q - a0[:, None] * w, u - ua[:, None] * w, d - da[:, None] * w
+    rr = r * r
+    ls, ss = [], []
+
+    def add(l_values, s_values):
+        ls.append(l_values)
+        ss.append(s_values)
+
+    # The lines s = 0 and s = 1 against the quadratic: |b0 − s0·dp + l·up|² = r².
+    for s0 in (0.0, 1.0):
+        base = b0 - s0 * dp
+        roots = _quadratic_roots(_dot(up, up), _dot(up, base), _dot(base, base) - rr)
+        add(roots, np.full_like(roots, s0))
+    # The lines a = 0 and a = H, (l, s) = P0 + t·(da, ua), against the quadratic.
+    norm = ua * ua + da * da
+    has_line = norm > SQUARED_EPS
+    g = da[:, None] * up - ua[:, None] * dp
+    for c in (np.zeros_like(h), h):
+        scale = np.where(has_line, (c - a0) / np.where(has_line, norm, 1.0), np.nan)
+        p_l, p_s = scale * ua, -scale * da
+        base = b0 + p_l[:, None] * up - p_s[:, None] * dp
+        t = _quadratic_roots(_dot(g, g), _dot(g, base), _dot(base, base) - rr)
+        add(p_l[:, None] + t * da[:, None], p_s[:, None] + t * ua[:, None])
+    # The four corners of the strip 0 ≤ s ≤ 1 with 0 ≤ a ≤ H.
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for c in (np.zeros_like(h), h):
+            for s0 in (0.0, 1.0):
+                l_corner = np.where(np.abs(ua) > 0.0, (c - a0 + s0 * da) / ua, np.nan)
+                add(l_corner[:, None], np.full((l_corner.size, 1), s0))
+    # Where the quadratic's boundary runs along s: s = dp·(b0 + l·up)/|dp|², and the part of
+    # b0 + l·up across dp has length r.
+    dd = _dot(dp, dp)
+    moving = dd > SQUARED_EPS
+    unit = dp / np.sqrt(np.where(moving, dd, 1.0))[:, None]
+    e0 = b0 - _dot(b0, unit)[:, None] * unit
+    e1 = up - _dot(up, unit)[:, None] * unit
+    roots = _quadratic_roots(np.where(moving, _dot(e1, e1), 0.0), _dot(e1, e0), _dot(e0, e0) - rr)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s_tangent = (_dot(b0, dp)[:, None] + roots * _dot(up, dp)[:, None]) / np.where(moving, dd, 1.0)[:, None]
+    add(roots, s_tangent)
+
+    l = np.concatenate(ls, axis=1)
+    s = np.concatenate(ss, axis=1)
+    eps = FEASIBLE_EPS
+    a = a0[:, None] + l * ua[:, None] - s * da[:, None]
+    # |b0 + l·up − s·dp|² expanded in the pair's dot products.
+    bu, bd, ud = _dot(b0, up)[:, None], _dot(b0, dp)[:, None], _dot(up, dp)[:, None]
+    with np.errstate(invalid="ignore"):
+        across = (_dot(b0, b0)[:, None] + l * (l * _dot(up, up)[:, None] + 2.0 * (bu - s * ud))
+                  + s * (s * dd[:, None] - 2.0 * bd))
+        feasible = ((s >= -eps) & (s <= 1.0 + eps) & (a >= -eps) & (a <= h[:, None] + eps)
+                    & (across <= (r[:, None] + eps) ** 2))
+    hit = feasible.any(axis=1)
+    enter = np.where(hit, np.where(feasible, l, np.inf).min(axis=1), np.nan)
+    leave = np.where(hit, np.where(feasible, l, -np.inf).max(axis=1), np.nan)
+    return enter, leave
