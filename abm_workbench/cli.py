@@ -239,6 +239,11 @@ def _input_arguments(parser):
     files.add_argument("--operation", type=int, metavar="N",
                        help="the toolpath file's operation N (1-based; the toolpath command lists them); default "
                             "its one milling operation")
+    files.add_argument("--stock-model", choices=("in-process", "initial"),
+                       help="in-process: the stock minus what the program's earlier cutting moves removed (default "
+                            "where available: straight flutes, no forces, ABM); initial: the stock as given")
+    files.add_argument("--sweep-tolerance", type=float, default=0.05, metavar="MM",
+                       help="sub-step of five-axis moves at the tool's rim for the in-process stock (mm), default 0.05")
     files.add_argument("--job", metavar="JOB.json",
                        help="JSON of default cutting parameters (keys as the options below, with _ for -; "
                             "phi_range as [start, end]; description); options and the APT file override it")
@@ -289,7 +294,7 @@ def _job(args):
         window = _pair(window, "y_window", "whole, swept or Y0:Y1 in mm such as -10:10")
     return Job(args.stock, args.toolpath, args.job, given, forces=forces, material=getattr(args, "material", None),
                walls=args.walls, wall_points=args.wall_points, y_window=window, operation=args.operation,
-               solid=args.solid)
+               solid=args.solid, stock_model=args.stock_model, sweep_tolerance=args.sweep_tolerance)
 
 
 def _pair(text, field, expected):
@@ -334,7 +339,9 @@ def _run_engage(args):
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
           + ("" if peak is None else f"; peak force {np.nanmax(peak):.4g} N at CL {int(np.nanargmax(peak))}")
           + f"; wrote {', '.join(result.written)}")
-    print(_parameters_line(prepared, result.stock))
+    model = ("initial stock" if result.changed is None else
+             f"in-process stock ({int(result.changed.sum())} of {m} CL points changed by earlier moves)")
+    print(_parameters_line(prepared, result.stock) + f"; {model}")
     return 0
 
 

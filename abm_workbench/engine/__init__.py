@@ -13,7 +13,8 @@ from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import k_coefficients
 from .walls import Wall
 from .zmap import ZMap, tool_floor, zmap_engage
-from .intervals import EdgeIntervals, engagement_from_intervals
+from .interval_engagement import engagement_from_intervals
+from .intervals import EdgeIntervals
 from .terraced import engage_terraced, terraced_intervals
 from .terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
 from .terraced_staircase import staircase_as_terraced

@@ -3,11 +3,18 @@
 :func:`engage_stock` is ``engagement.engage`` for a :class:`~.model.Staircase` and
 ``terraced.engage_terraced`` for a :class:`~.terraced_model.TerracedStock`; both give an
 :class:`~.engagement.Engagement` of m CL points × p angles (mm, degrees).
+:func:`stock_intervals` gives either model's inside intervals of edge lines, and
+:func:`engage_in_process` a pass against the in-process stock (the stock minus what earlier
+moves of the program removed, :mod:`.inprocess`).
 """
 
-from .engagement import engage
+import numpy as np
+
+from .engagement import edge_lines, engage, inside_intervals
+from .inprocess import inprocess_intervals
+from .interval_engagement import engagement_from_intervals
 from .model import Staircase
-from .terraced import engage_terraced
+from .terraced import engage_terraced, terraced_intervals
 from .terraced_model import TerracedStock
 
 
@@ -18,3 +25,31 @@ def engage_stock(stock, tool, toolpath, settings, *, progress=None):
     if isinstance(stock, TerracedStock):
         return engage_terraced(stock, tool, toolpath, settings, progress=progress)
     raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
+
+
+def stock_intervals(stock, origins, directions, length):
+    """EdgeIntervals of N edge lines (origins, directions (N, 3), 0 ≤ l ≤ length mm) inside `stock`,
+    a Staircase (engagement.inside_intervals) or a TerracedStock (terraced.terraced_intervals)."""
+    if isinstance(stock, Staircase):
+        return inside_intervals(stock, origins, directions, length)
+    if isinstance(stock, TerracedStock):
+        return terraced_intervals(stock, origins, directions, length)
+    raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
+
+
+def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
+    """(Engagement against the in-process stock, initial length (m, p) mm, changed (m,) bool) of a pass.
+
+    pieces: the SweptPieces of the whole program (inprocess.swept_pieces), in the stock's frame;
+    program_index: (m,) the program row of each CL point of `toolpath`. The Engagement's lengths,
+    LEP and UEP are those of the stock minus what every cutting move ending before a CL point
+    removed (docs/ENGINE.md); `initial` is the length of cut in the stock itself; `changed[i]`
+    says whether earlier moves removed material from any edge line of CL point i.
+    """
+    p = settings.phi.size
+    base, direction = edge_lines(toolpath, tool, settings.phi)
+    origins, directions = base.reshape(-1, 3), np.repeat(direction, p, axis=0)
+    initial = stock_intervals(stock, origins, directions, tool.flute_length)
+    remaining, changed = inprocess_intervals(initial, pieces, program_index, origins, directions, p)
+    engagement = engagement_from_intervals(remaining, toolpath, tool, settings, origins, directions)
+    return engagement, initial.length.reshape(len(toolpath), p), changed

@@ -42,7 +42,8 @@ import dataclasses
 import numpy as np
 
 from .engagement import SURFACES, edge_lines
-from .intervals import EdgeIntervals, engagement_from_intervals
+from .interval_engagement import engagement_from_intervals
+from .intervals import EdgeIntervals
 from .polynomials import horner, real_roots_unit
 from .terraced_pieces import bernstein_to_power, slab_pieces
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
@@ -244,7 +245,7 @@ def engage_terraced(stock, tool, toolpath, settings, *, chunk_instants=1 << 15, 
     The edge lines are those of engagement.edge_lines (the staircase engine's); work goes in
     chunks of CL points of about `chunk_instants` instants; `progress(done, total)` is called
     after each chunk, if given. Returns an Engagement with the LEP labels filled (see
-    intervals.engagement_from_intervals and this module's labels). A helical tool is refused.
+    interval_engagement.engagement_from_intervals and this module's labels). A helical tool is refused.
     """
     if tool.helix != 0.0:
         raise ValueError(f"engage_terraced is for straight edges; the tool has a helix angle of {tool.helix} deg")

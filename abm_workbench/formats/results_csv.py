@@ -31,6 +31,7 @@ from .decimal_text import WORD, integer_field, number_field, text_field
 RESULT_COLUMNS = (
     "cl", "phi_deg", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall",
     "case", "segment", "h", "area", "lep_x", "lep_y", "lep_z", "uep_x", "uep_y", "uep_z",
+    "lep_surface", "lep_section", "lep_wall",
 )
 SUMMARY_COLUMNS = (
     "cl", "depth_of_cut", "segment", "phi_start", "phi_end", "uep_surface", "uep_section", "uep_wall",
@@ -39,14 +40,17 @@ SUMMARY_COLUMNS = (
 #: Results columns added with forces (power only with a spindle speed), and summary columns.
 FORCE_COLUMNS = ("fx", "fy", "fz", "torque", "power")
 FORCE_SUMMARY_COLUMNS = ("peak_force", "mean_force", "peak_torque")
+#: Columns added against the in-process stock: per instant the length of cut in the stock itself, per CL
+#: point whether earlier moves of the program removed material its edges would meet (1) or not (0).
+INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS = ("length_initial",), ("changed",)
 #: Summary columns added when the toolpath is given.
 TOOLPATH_COLUMNS = ("cl_x", "cl_y", "cl_z", "theta_a", "theta_b")
 #: Rows formatted at a time (formats.decimal_text): a text matrix of about 6 MB.
 BLOCK_ROWS = 2**14
 #: A comma and a line end in the last byte of a word (decimal_text.WORD).
 _COMMA, _NEWLINE = np.uint64(ord(",") << 56), np.uint64(ord("\n") << 56)
-_TEXT_COLUMNS = {"uep_surface", "case", "segment"}
-_INT_COLUMNS = {"cl", "pieces", "uep_section", "uep_wall"}
+_TEXT_COLUMNS = {"uep_surface", "lep_surface", "case", "segment"}
+_INT_COLUMNS = {"cl", "pieces", "uep_section", "uep_wall", "lep_section", "lep_wall", "changed"}
 
 
 def summary_path(path):
@@ -76,20 +80,25 @@ def write_text(path, text):
         file.write(text)
 
 
-def results_text(engagement, *, first_cl=0, forces=None):
+def results_text(engagement, *, first_cl=0, forces=None, initial=None):
     """The results CSV of an Engagement (m CL points × p angles: m·p rows) as one string;
-    with `forces` (a Forces of the same CL points) the force columns too.
+    with `forces` (a Forces of the same CL points) the force columns too, with `initial` ((m, p) mm,
+    the length of cut in the stock itself, for an engagement against the in-process stock) its column.
 
     first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass).
     Formatted BLOCK_ROWS rows at a time (formats.decimal_text), so its working memory is bounded.
     """
     m, p = engagement.shape
     flat = {name: getattr(engagement, name).reshape(-1) for name in (
-        "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall", "case", "segment", "area")}
+        "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall", "case", "segment", "area",
+        "lep_surface", "lep_section", "lep_wall")}
     for point in ("lep", "uep"):
         xyz = getattr(engagement, f"{point}_xyz").reshape(-1, 3)
         flat.update({f"{point}_{name}": xyz[:, axis] for axis, name in enumerate("xyz")})
     names = RESULT_COLUMNS
+    if initial is not None:
+        names += INPROCESS_COLUMNS
+        flat["length_initial"] = np.asarray(initial, dtype=float).reshape(-1)
     if forces is not None:
         names += FORCE_COLUMNS[:4] if forces.power is None else FORCE_COLUMNS
         xyz = forces.xyz.reshape(-1, 3)
@@ -97,7 +106,8 @@ def results_text(engagement, *, first_cl=0, forces=None):
         if forces.power is not None:
             flat["power"] = forces.power.reshape(-1)
     letters = [segment_letter(s) for s in range(int(flat["segment"].max(initial=-1)) + 1)]
-    labels = {"uep_surface": text_field(SURFACES), "case": text_field(CASES), "segment": text_field(letters + [""])}
+    labels = {"uep_surface": text_field(SURFACES), "lep_surface": text_field(SURFACES), "case": text_field(CASES),
+              "segment": text_field(letters + [""])}
 
     def block(start):
         rows = slice(start, min(start + BLOCK_ROWS, m * p))
@@ -110,11 +120,12 @@ def results_text(engagement, *, first_cl=0, forces=None):
     return _csv(names, map(block, range(0, m * p, BLOCK_ROWS)))
 
 
-def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None):
+def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None, changed=None):
     """The summary CSV of an Engagement as one string (see the module docstring).
 
     first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass;
-    toolpath and forces are then the chunk's).
+    toolpath, forces and changed are then the chunk's). changed: (m,) bool, against the
+    in-process stock: earlier moves removed material the CL point's edges would meet.
     """
     table = engagement.segment_table()
     # One row per segment, and one for each CL point without any, in CL order.
@@ -144,18 +155,22 @@ def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None):
     if forces is not None:
         names += FORCE_SUMMARY_COLUMNS
         columns += [_numbers(forces.peak[cl]), _numbers(forces.mean[cl]), _numbers(forces.torque.max(axis=1)[cl])]
+    if changed is not None:
+        names += INPROCESS_SUMMARY_COLUMNS
+        columns += [integer_field(np.asarray(changed, dtype=np.int64)[cl])]
     return _csv(names, [columns])
 
 
-def chunk_texts(engagement, first_cl, *, toolpath=None, forces=None):
+def chunk_texts(engagement, first_cl, *, toolpath=None, forces=None, initial=None, changed=None):
     """(results, summary) CSV text of a chunk of a pass: the Engagement of CL points first_cl, ….
 
-    toolpath, forces: the chunk's Toolpath and Forces, or None. Header lines only in the first chunk (first_cl = 0),
+    toolpath, forces, initial, changed: the chunk's Toolpath, Forces, initial length of cut and
+    changed flags (results_text, summary_text), or None. Header lines only in the first chunk (first_cl = 0),
     so the texts of a pass's chunks, concatenated in order, are write_results' two files byte
     for byte (each CL point's rows depend on that CL point alone).
     """
-    texts = (results_text(engagement, first_cl=first_cl, forces=forces),
-             summary_text(engagement, toolpath=toolpath, first_cl=first_cl, forces=forces))
+    texts = (results_text(engagement, first_cl=first_cl, forces=forces, initial=initial),
+             summary_text(engagement, toolpath=toolpath, first_cl=first_cl, forces=forces, changed=changed))
     return texts if first_cl == 0 else tuple(text.split("\n", 1)[1] for text in texts)
 
 

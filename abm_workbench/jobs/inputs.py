@@ -285,3 +285,37 @@ def load_job(path):
         else:
             job[key] = BY_NAME[key].check(value, name)
     return job
+
+
+def program_moves(program, chosen, tool):
+    """(ProgramMoves of every CL point of `program` in program order, in part coordinates; (m,) the rows
+    of the cutting CL points of operation `chosen`).
+
+    Each operation's cutting moves and rapids are merged by their source line (a rapid removes
+    nothing). An operation's tool is its own (diameter, flute length) where the file gives it,
+    else `tool`'s (the resolved Tool of the job) for the chosen operation; another operation
+    whose file gives no size is left out (it cannot be swept). Canned-cycle hole positions are not
+    swept. Every tool is swept as a flat-end cylinder of its diameter and flute length.
+    """
+    from ..engine.inprocess import ProgramMoves
+
+    parts, rows, start = [], None, 0
+    for operation in program.operations:
+        diameter = operation.tool.diameter or (tool.diameter if operation is chosen else None)
+        length = operation.tool.flute_length or (tool.flute_length if operation is chosen else None)
+        if diameter is None or length is None or operation.tool.kind == "turning":
+            continue
+        rotation, translation = operation.to_part
+        rapids = operation.rapids
+        points = np.concatenate([operation.points_file, rapids.points]) @ rotation.T + translation
+        axes = np.concatenate([operation.axes_file, rapids.axes]) @ rotation.T
+        lines = np.concatenate([operation.lines, rapids.lines])
+        cutting = np.arange(lines.size) < operation.lines.size
+        order = np.argsort(lines, kind="stable")
+        parts.append((points[order], axes[order], cutting[order], np.full(lines.size, 0.5 * diameter),
+                      np.full(lines.size, length), lines[order]))
+        if operation is chosen:
+            rows = start + np.flatnonzero(cutting[order])
+        start += lines.size
+    columns = [np.concatenate(column) for column in zip(*parts)]
+    return ProgramMoves(*columns), rows

@@ -37,7 +37,10 @@ class Job:
     given). walls ("exact" / "quintic"), wall_points ("chebyshev" / "even"), y_window ("whole",
     "swept" or (y0, y1) mm): a solid stock's recognition, None for the default. operation: the
     toolpath file's operation (1-based), None for its one milling operation. solid: the solid's
-    name in a stock file holding several, or None.
+    name in a stock file holding several, or None. stock_model: "in-process" (the stock minus what
+    earlier cutting moves of the program removed) or "initial" (the stock as given, the paper's
+    assumption); None: in-process where the engine has it (straight flutes, no forces, ABM), else
+    initial. sweep_tolerance: mm, the sub-step of five-axis moves at the tool's rim.
     """
 
     stock: str
@@ -51,6 +54,8 @@ class Job:
     y_window: object = None
     operation: Optional[int] = None
     solid: Optional[str] = None
+    stock_model: Optional[str] = None
+    sweep_tolerance: float = 0.05
 
 
 @dataclass(frozen=True)

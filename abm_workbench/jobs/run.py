@@ -19,7 +19,7 @@ from typing import Optional
 import numpy as np
 
 from ..engine import Staircase, flute_engagement, zmap_engage
-from ..engine.stocks import engage_stock
+from ..engine.stocks import engage_in_process, engage_stock
 from ..errors import InputError, ParameterError
 from ..formats import replacing
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
@@ -41,6 +41,43 @@ def flute_1(stock, tool, toolpath, settings, progress=None):
     if not isinstance(stock, Staircase):
         raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
     return flute_engagement(stock, tool, toolpath, settings, progress=progress).as_engagement(0)
+
+
+#: Choices of the stock model.
+STOCK_MODELS = ("in-process", "initial")
+
+
+def in_process_sweep(prepared, method="abm", warn=print):
+    """(SweptPieces of the prepared job's whole program in its engine frame, (m,) program rows of its CL
+    points) for a run against the in-process stock, or None for the stock as given.
+
+    The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM
+    without forces), else the stock as given with a warning saying why. ParameterError when in-process
+    is asked for where it is not available, or the stock model is unknown.
+    """
+    from ..engine.inprocess import swept_pieces
+    from .inputs import program_moves
+
+    job, tool = prepared.job, prepared.tool
+    if job.stock_model not in (None, *STOCK_MODELS):
+        raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
+    if job.stock_model == "initial":
+        return None
+    missing = ("a helical tool" if tool.helix else "the forces" if prepared.force_model is not None else
+               "the Z-map method" if method != "abm" else None)
+    if missing is not None:
+        if job.stock_model == "in-process":
+            raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
+        warn(f"the stock is taken as given (the initial stock): the in-process stock is not available with "
+             f"{missing} yet")
+        return None
+    if not (np.isfinite(job.sweep_tolerance) and job.sweep_tolerance > 0.0):
+        raise ParameterError("sweep_tolerance", f"must be a positive number of mm, got {job.sweep_tolerance:g}")
+    hints = prepared.hints
+    moves, rows = program_moves(hints.program, hints.operation, tool)
+    if hints.frame is not None:
+        moves = moves.transformed(*hints.frame)
+    return swept_pieces(moves, job.sweep_tolerance), rows
 
 
 def check_model(stock, forces=False, method="abm", helix=0.0):
@@ -177,13 +214,15 @@ class Method:
 @dataclasses.dataclass(frozen=True)
 class EngageResult:
     """What engage found: the Prepared job, the Stock, the outputs written, the depth of cut (m,) (NaN
-    where a CL point does not engage), the peak force (m,) or None, the seconds it took."""
+    where a CL point does not engage), the peak force (m,) or None, which CL points earlier moves
+    changed (m,) against the in-process stock or None against the stock as given, the seconds it took."""
 
     prepared: object
     stock: object
     written: list
     depth: np.ndarray
     peak: Optional[np.ndarray]
+    changed: Optional[np.ndarray]
     seconds: float
 
 
@@ -191,13 +230,15 @@ class EngageResult:
 class ChunkResult:
     """What a chunk task of engage gives back: (results, summary) CSV text and the depth of cut
     (n,); the chunk's Engagement and Forces when kept for the plots; the peak resultant force
-    (n,) when forces are computed."""
+    (n,) when forces are computed; against the in-process stock, which CL points earlier moves
+    changed (n,)."""
 
     texts: tuple
     depth: np.ndarray
     engagement: object = None
     forces: object = None
     peak: object = None
+    changed: object = None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -205,35 +246,47 @@ class CsvChunk:
     """Task of a parallel engage: a chunk of CL points engaged (flute 1, straight or helical) and,
     when force_model = (Coefficients, immersion) is given, its forces, as a ChunkResult; the
     Engagement and Forces are kept for the plots when `keep`. frame: the operation's (R, t) from
-    part to engine coordinates, or None: LEP and UEP points are written in part coordinates."""
+    part to engine coordinates, or None: LEP and UEP points are written in part coordinates.
+    in_process: (SweptPieces of the program in the engine frame, (m,) program row of each CL
+    point) to engage against the in-process stock, or None for the stock as given."""
 
     keep: bool
     force_model: object = None
     frame: object = None
+    in_process: object = None
 
     def __call__(self, job, start, stop):
         stock, tool, toolpath, settings = job
         part = toolpath_part(toolpath, start, stop)
-        engagement = flute_1(stock, tool, part, settings)
+        initial = changed = None
+        if self.in_process is None:
+            engagement = flute_1(stock, tool, part, settings)
+        else:
+            pieces, rows = self.in_process
+            engagement, initial, changed = engage_in_process(stock, tool, part, settings, pieces, rows[start:stop])
         forces = None
         if self.force_model is not None:
             coefficients, immersion = self.force_model
             forces = pass_forces(stock, tool, part, settings, coefficients, immersion=immersion,
                                  first=engagement.length if tool.helix == 0.0 else None)
         engagement = in_part_frame(engagement, self.frame)
-        return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces), engagement.depth_of_cut,
+        return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces, initial=initial,
+                                       changed=changed), engagement.depth_of_cut,
                            engagement if self.keep else None, forces if self.keep else None,
-                           None if forces is None else forces.peak)
+                           None if forces is None else forces.peak, changed)
 
 
-def _kept(chunks, depth, peak, whole, force_parts):
+def _kept(chunks, depth, peak, changed, whole, force_parts):
     """The CSV texts of (job, start, stop, ChunkResult) `chunks`, in order; each chunk's depth of
-    cut and peak force stored into `depth` and `peak` (m,), its Engagement added to `whole` (a
-    PassAssembly) and its Forces appended to `force_parts`, when these are given."""
+    cut, peak force and changed flags stored into `depth`, `peak` and `changed` (m,), its
+    Engagement added to `whole` (a PassAssembly) and its Forces appended to `force_parts`, when
+    these are given."""
     for _, start, stop, result in chunks:
         depth[start:stop] = result.depth
         if result.peak is not None:
             peak[start:stop] = result.peak
+        if result.changed is not None:
+            changed[start:stop] = result.changed
         if whole is not None:
             whole.add(result.engagement, start)
         if force_parts is not None:
@@ -291,15 +344,17 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     check_outputs(outputs, _inputs(job))
     stock, _ = load_job_stock(prepared)
     check_model(stock, prepared.force_model is not None, method.name, tool.helix)
+    in_process = in_process_sweep(prepared, method.name, warn)
 
     started = time.perf_counter()
     whole = PassAssembly(len(toolpath)) if plot else None
     force_parts = [] if plot and prepared.force_model is not None else None
     depth, peak = np.full(len(toolpath), np.nan), np.full(len(toolpath), np.nan)
+    changed = np.zeros(len(toolpath), dtype=bool)
     with output_folders(outputs), replacing(*outputs) as temporaries:
         if method.name == "abm":
             chunks = map_chunks(CsvChunk(keep=whole is not None, force_model=prepared.force_model,
-                                         frame=prepared.hints.frame),
+                                         frame=prepared.hints.frame, in_process=in_process),
                                 [(stock.model, tool, toolpath, settings)],
                                 workers=method.workers, scheduler=method.scheduler, progress=progress)
         else:
@@ -311,7 +366,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
                 raise ParameterError("method", f"the Z-map method: {error}") from None
             chunks = [(0, 0, len(toolpath), ChunkResult(chunk_texts(engagement, 0, toolpath=toolpath),
                                                         engagement.depth_of_cut, engagement))]
-        write_chunks(_kept(chunks, depth, peak, whole, force_parts), temporaries[0], temporaries[1])
+        write_chunks(_kept(chunks, depth, peak, changed, whole, force_parts), temporaries[0], temporaries[1])
         if np.isnan(depth).all():
             raise no_engagement(job)
         if whole is not None:
@@ -325,7 +380,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
             forces = joined_forces(force_parts)
             force_over_phi_figure(forces, chosen_cl(forces), along=True).savefig(temporaries[3], format="png")
     return EngageResult(prepared, stock, outputs, depth, None if prepared.force_model is None else peak,
-                        time.perf_counter() - started)
+                        None if in_process is None else changed, time.perf_counter() - started)
 
 
 # ---- validate ------------------------------------------------------------------------------------

@@ -225,7 +225,7 @@ def test_interrupt_in_the_engine(case, capsys, monkeypatch):
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(runs, "straight_engage", interrupted)
+    monkeypatch.setattr(runs, "engage_stock", interrupted)
     status, _, _ = run(BASE, capsys)
     assert status == 130 and sorted(os.listdir(case)) == INPUTS
 

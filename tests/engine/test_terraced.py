@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 from scipy.interpolate import BSpline
 
 from abm_workbench.engine import CASES, SURFACES, CutSettings, Tool, Toolpath, engage
-from abm_workbench.engine.intervals import engagement_from_intervals
+from abm_workbench.engine.interval_engagement import engagement_from_intervals
 from abm_workbench.engine.terraced import engage_terraced, terraced_intervals
 from abm_workbench.engine.terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
 from abm_workbench.engine.terraced_pieces import curve_list, spline_pieces
