@@ -34,9 +34,9 @@ _AXIS = ("i", "j", "k")
 _CONTACT = ("xc", "yc", "zc")
 _FEEDS = ("feed_per_tooth", "feed_mm_min")
 #: Columns of the toolpath command's CSV: numbers (empty allowed where marked) and texts.
-OPERATION_NUMBERS = ("operation", "diameter", "corner_radius", "feed_rate", "line")
+OPERATION_NUMBERS = ("operation", "diameter", "corner_radius", "flute_length", "feed_rate", "line")
 OPERATION_TEXTS = ("name", "tool", "feed_unit")
-_MAY_BE_EMPTY = ("diameter", "corner_radius", "feed_rate")
+_MAY_BE_EMPTY = ("diameter", "corner_radius", "flute_length", "feed_rate")
 _EXAMPLE = "x,y,z,theta_a,theta_b"
 
 

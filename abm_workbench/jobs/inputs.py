@@ -292,7 +292,8 @@ def program_moves(program, chosen, tool):
     of the cutting CL points of operation `chosen`).
 
     Each operation's cutting moves and rapids are merged by their source line (a rapid removes
-    nothing). An operation's tool is its own (diameter, flute length) where the file gives it,
+    nothing; nor does the move into an operation's first CL point, which follows a tool change or
+    a retract). An operation's tool is its own (diameter, flute length) where the file gives it,
     else `tool`'s (the resolved Tool of the job) for the chosen operation; another operation
     whose file gives no size is left out (it cannot be swept). Canned-cycle hole positions are not
     swept. Every tool is swept as a flat-end cylinder of its diameter and flute length.
@@ -310,12 +311,14 @@ def program_moves(program, chosen, tool):
         points = np.concatenate([operation.points_file, rapids.points]) @ rotation.T + translation
         axes = np.concatenate([operation.axes_file, rapids.axes]) @ rotation.T
         lines = np.concatenate([operation.lines, rapids.lines])
-        cutting = np.arange(lines.size) < operation.lines.size
         order = np.argsort(lines, kind="stable")
-        parts.append((points[order], axes[order], cutting[order], np.full(lines.size, 0.5 * diameter),
+        cut = (np.arange(lines.size) < operation.lines.size)[order]  # the operation's cutting CL points
+        cutting = cut.copy()
+        cutting[0] = False
+        parts.append((points[order], axes[order], cutting, np.full(lines.size, 0.5 * diameter),
                       np.full(lines.size, length), lines[order]))
         if operation is chosen:
-            rows = start + np.flatnonzero(cutting[order])
+            rows = start + np.flatnonzero(cut)
         start += lines.size
     columns = [np.concatenate(column) for column in zip(*parts)]
     return ProgramMoves(*columns), rows

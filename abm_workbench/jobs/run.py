@@ -368,6 +368,10 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
                                                         engagement.depth_of_cut, engagement))]
         write_chunks(_kept(chunks, depth, peak, changed, whole, force_parts), temporaries[0], temporaries[1])
         if np.isnan(depth).all():
+            if in_process is not None and engage_stock(stock.model, tool, toolpath, settings).engaged.any():
+                raise InputError(f"{job.toolpath}: earlier moves of the program already removed all the material "
+                                 "this operation's tool would meet (--stock-model initial computes it against the "
+                                 "stock as given)")
             raise no_engagement(job)
         if whole is not None:
             from ..report.plots import pass_figure  # here: matplotlib takes a while to import
@@ -407,6 +411,9 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, warn=print, 
     from ..report.tables import write_flutes_csv
     from ..validation import NoEngagementError
 
+    if job.stock_model == "in-process":
+        raise ParameterError("stock_model", "validation against the in-process stock is not available yet: it "
+                                            "checks the stock as given (initial)")
     prepared = prepare(job)
     for message in prepared.warnings():
         warn(message)

@@ -42,7 +42,7 @@ def test_csv_out_is_read_back(tmp_path, capsys, frame):
     assert status == 0 and text.splitlines()[-1] == f"abm: wrote {out}"
     source = read_program(FIXTURES / "catia_setups.aptsource")
     header = out.read_text().splitlines()[0]
-    assert header == "operation,name,tool,diameter,corner_radius,x,y,z,i,j,k,feed_rate,feed_unit,line"
+    assert header == "operation,name,tool,diameter,corner_radius,flute_length,x,y,z,i,j,k,feed_rate,feed_unit,line"
     back = read_program(out)
     assert [op.name for op in back.operations] == [op.name for op in source.operations]
     for mine, theirs in zip(back.operations, source.operations):

@@ -11,7 +11,8 @@ import pytest
 
 from abm_workbench import cli
 from abm_workbench.jobs import run as runs
-from abm_workbench.formats.results_csv import RESULT_COLUMNS, SUMMARY_COLUMNS, TOOLPATH_COLUMNS, read_results
+from abm_workbench.formats.results_csv import (INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS,
+                                                TOOLPATH_COLUMNS, read_results)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 PYTHON = "/usr/bin/python3"
@@ -64,12 +65,13 @@ def test_engage_with_every_option(case, capsys):
     assert "depth of cut " in summary and summary.endswith("wrote R.csv, R.summary.csv, R.png")
     assert sources == ("abm: parameters: diameter 12 mm [--diameter], 2 flutes [--flutes], flute length 30 mm "
                        "[--flute-length], feed 0.1 mm/tooth [--feed-per-tooth], inclination 10° [--inclination], "
-                       "spindle 4000 rpm [--spindle-rpm], φ 0..180° [--phi-range], step 5° [--phi-step]")
+                       "spindle 4000 rpm [--spindle-rpm], φ 0..180° [--phi-range], step 5° [--phi-step]; in-process stock "
+                       "(0 of 12 CL points changed by earlier moves)")
     results = read_results(case / "R.csv")
-    assert list(results) == list(RESULT_COLUMNS) and len(results["cl"]) == M * P
+    assert list(results) == [*RESULT_COLUMNS, *INPROCESS_COLUMNS] and len(results["cl"]) == M * P
     np.testing.assert_array_equal(results["phi_deg"][:P], np.arange(0, 181, 5))
     summary = read_results(case / "R.summary.csv")
-    assert list(summary) == [*SUMMARY_COLUMNS, *TOOLPATH_COLUMNS]
+    assert list(summary) == [*SUMMARY_COLUMNS, *TOOLPATH_COLUMNS, *INPROCESS_SUMMARY_COLUMNS]
     assert sorted(set(summary["cl"])) == list(range(M))
     assert (case / "R.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
@@ -226,6 +228,7 @@ def test_interrupt_in_the_engine(case, capsys, monkeypatch):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(runs, "engage_stock", interrupted)
+    monkeypatch.setattr(runs, "engage_in_process", interrupted)
     status, _, _ = run(BASE, capsys)
     assert status == 130 and sorted(os.listdir(case)) == INPUTS
 

@@ -33,14 +33,15 @@ GOTO/0,0,20
 
 
 def _moves(z_shift):
-    """GOTOs of the test pass (the case's toolpath.csv: upright tool tilted by θ_B = 10°), z shifted."""
+    """GOTOs of the test pass (the case's toolpath.csv: upright tool tilted by θ_B = 10°), z shifted (the second
+    operation goes 0.5 mm deeper, so it still meets material the first left)."""
     axis = ",".join(f"{v:.12f}" for v in (np.sin(np.radians(10.0)), 0.0, np.cos(np.radians(10.0))))
     return "".join(f"GOTO/{x:.6f},0,{x / 60 - 1 + z_shift:.6f},{axis}\n" for x in np.linspace(10, 120, M))
 
 
 @pytest.fixture
 def program(case):  # noqa: F811 (the fixture imported above)
-    (case / "two.cl").write_text(PROGRAM.format(first=_moves(0.0), second=_moves(0.5)))
+    (case / "two.cl").write_text(PROGRAM.format(first=_moves(0.0), second=_moves(-0.5)))
     return case
 
 
@@ -73,8 +74,20 @@ def test_the_toolpath_csv_of_an_operation_gives_the_same_results(program, capsys
     from_cl = read_results(program / "R.csv")
     status, _, err = run(BASE[:4] + ["ops.csv", "--job", "job.json", "--out", "R2.csv", "--operation", "2",
                                      "--flute-length", "20"], capsys)
+    # (both against the in-process stock: the CSV holds the cutting moves of both operations, not the rapids
+    # between them, which here pass above the stock)
     assert status == 0, err
     from_csv = read_results(program / "R2.csv")
     for column in ("length", "lep_l", "uep_l"):
         np.testing.assert_allclose(from_csv[column], from_cl[column], atol=1e-9, equal_nan=True)
     assert JOB["diameter"] != 8  # the CSV's diameter column gave the tool, not the job
+
+
+def test_an_operation_whose_material_is_gone_says_so(case, capsys):  # noqa: F811 (the fixture imported above)
+    (case / "two.cl").write_text(PROGRAM.format(first=_moves(0.0), second=_moves(0.5)))
+    status, _, err = run(BASE + ["--operation", "2"], capsys)
+    assert status == 2 and err.splitlines()[-1] == (
+        "abm: error: two.cl: earlier moves of the program already removed all the material this operation's tool "
+        "would meet (--stock-model initial computes it against the stock as given)")
+    status, _, err = run(BASE + ["--operation", "2", "--stock-model", "initial"], capsys)
+    assert status == 0, err

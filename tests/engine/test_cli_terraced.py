@@ -18,9 +18,9 @@ BASE = ["engage", "--stock", os.path.join(MODEL, "stock.json"), "--toolpath", os
 
 
 def test_engage_on_a_terraced_stock_writes_the_terraced_engine_results(tmp_path, capsys):
-    assert cli.main(BASE + ["--out", str(tmp_path / "R.csv")]) == 0
+    assert cli.main(BASE + ["--out", str(tmp_path / "R.csv"), "--stock-model", "initial"]) == 0
     out = capsys.readouterr().out
-    assert out.splitlines()[1].endswith("; stock: 2.5D terraced stock, 6 slabs")
+    assert out.splitlines()[1].endswith("; stock: 2.5D terraced stock, 6 slabs; initial stock")
     written = read_results(tmp_path / "R.csv")
     want = engage_terraced(load_terraced(os.path.join(MODEL, "stock.json")), Tool(10, 2, 25),
                            load_toolpath(os.path.join(MODEL, "toolpath.csv")), CutSettings(0.1, 10, 0, 180, 5, 4000))

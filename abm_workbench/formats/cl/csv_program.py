@@ -46,7 +46,8 @@ def _operation(table, rows, number, points, axes):
         raise InputError(f"{table.source}:{table.lines[first]}: tool {kind!r} is none of {', '.join(KINDS)}")
     diameter = _value(data, "diameter", first)
     radius = _value(data, "corner_radius", first)
-    tool = ToolSpec(kind, diameter, radius, None, (f"CSV line {table.lines[first]}",) if diameter else ())
+    flute_length = _value(data, "flute_length", first)
+    tool = ToolSpec(kind, diameter, radius, flute_length, (f"CSV line {table.lines[first]}",) if diameter else ())
     feed = data["feed_rate"][rows] if "feed_rate" in data else np.full(len(rows), np.nan)
     units = {texts["feed_unit"][row] for row in rows if texts["feed_unit"][row]} if "feed_unit" in texts else set()
     feed_unit = units.pop() if len(units) == 1 else None

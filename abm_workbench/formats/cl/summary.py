@@ -16,8 +16,8 @@ import numpy as np
 from .. import replacing
 
 FRAMES = ("part", "file")
-COLUMNS = ("operation", "name", "tool", "diameter", "corner_radius", "x", "y", "z", "i", "j", "k", "feed_rate",
-           "feed_unit", "line")
+COLUMNS = ("operation", "name", "tool", "diameter", "corner_radius", "flute_length", "x", "y", "z", "i", "j", "k",
+           "feed_rate", "feed_unit", "line")
 
 
 def _number(value):
@@ -83,7 +83,8 @@ def toolpath_csv_text(program, frame="part"):
     writer.writerow(COLUMNS)
     for op in program.operations:
         points, axes = _coordinates(op, frame)
-        head = [str(op.number), op.name, op.tool.kind, _number(op.tool.diameter), _number(op.tool.corner_radius)]
+        head = [str(op.number), op.name, op.tool.kind, _number(op.tool.diameter), _number(op.tool.corner_radius),
+                _number(op.tool.flute_length)]
         unit = op.feed_unit or ""
         for point, axis, feed, line in zip(points, axes, op.feed, op.lines):
             rate = _number(feed)
