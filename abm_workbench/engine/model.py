@@ -46,10 +46,15 @@ def _array(name, value, shape):
     return array
 
 
+#: Largest helix angle |β| of a flat-end mill (deg): steeper edges are not end mills, and the
+#: helical engine's time and memory per CL point grow without bound as |β| nears 90°.
+MAX_HELIX = 60.0
+
+
 @dataclass(frozen=True)
 class Tool:
     """Flat-end mill: diameter and flute length in mm, number of flutes, helix angle β in deg
-    (0: straight edges; −90 < β < 90)."""
+    (0: straight edges; |β| ≤ MAX_HELIX)."""
 
     diameter: float
     flutes: int
@@ -64,8 +69,9 @@ class Tool:
             raise ValueError(f"flutes must be a whole number, got {self.flutes!r}")
         object.__setattr__(self, "flutes", int(flutes))
         helix = finite_number("helix", self.helix)
-        if not -90.0 < helix < 90.0:
-            raise ValueError(f"helix must be within (-90, 90) degrees, got {helix}")
+        if not -MAX_HELIX <= helix <= MAX_HELIX:
+            raise ValueError(f"helix must be within [-{MAX_HELIX:g}, {MAX_HELIX:g}] degrees (flat-end mills have "
+                             f"helix angles up to about {MAX_HELIX:g}°), got {helix:g}")
         object.__setattr__(self, "helix", helix)
 
     @property
