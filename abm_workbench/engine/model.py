@@ -230,7 +230,20 @@ class Toolpath:
 
     @classmethod
     def from_axes(cls, cl, axes, cc=None):
-        """Toolpath from tool-axis vectors (m, 3) (normalised; k must be > 0)."""
+        """Toolpath from tool-axis vectors (m, 3) of any nonzero finite length (normalised; k must be > 0).
+
+        A row whose largest component lies outside [1e-150, 1e150] (where its squared length would
+        underflow or overflow) is first scaled exactly by a power of two to a largest component in
+        [0.5, 1), so vectors such as (0, 0, 1e-200) or (1e200, 0, 1e200) are read, not refused as
+        zero or not finite.
+        """
+        axes = np.asarray(axes, dtype=float)
+        if axes.ndim == 2 and axes.shape[1] == 3:
+            largest = np.max(np.abs(axes), axis=1, initial=0.0)
+            with np.errstate(invalid="ignore"):
+                extreme = np.isfinite(largest) & (largest > 0.0) & ((largest < 1e-150) | (largest > 1e150))
+            _, exponent = np.frexp(np.where(extreme, largest, 1.0))
+            axes = np.where(extreme[:, None], np.ldexp(axes, -exponent[:, None]), axes)
         theta_a, theta_b = axis_to_angles(axes)
         return cls(cl, theta_a, theta_b, cc)
 
