@@ -104,7 +104,7 @@ def read_text(path):
 def load_json_object(path):
     """The JSON object in file `path` as a dict; InputError with line:column for bad JSON.
 
-    Also refused, naming the file: nesting deeper than :data:`MAX_JSON_DEPTH`, and a key given
+    Also refused, naming the file: nesting deeper than :data:`MAX_JSON_DEPTH`, a key given
     twice in one object (naming the key and its second line). Integers longer than 18 digits
     are read as floats, so that a huge one is refused as too large by :func:`json_number`.
     """
@@ -141,9 +141,19 @@ def _unique_keys(pairs):
     return data
 
 
+class _LongInteger(float):
+    """A JSON integer longer than _JSON_INTEGER_DIGITS digits: its float value (±inf beyond the
+    doubles) and its number of characters, `length`."""
+
+    def __new__(cls, text):
+        number = super().__new__(cls, text)
+        number.length = len(text)
+        return number
+
+
 def _json_integer(text):
-    """A JSON integer's `text` as int, or as float when longer than _JSON_INTEGER_DIGITS digits."""
-    return int(text) if len(text) <= _JSON_INTEGER_DIGITS else float(text)
+    """A JSON integer's `text` as int, or as a _LongInteger when longer than _JSON_INTEGER_DIGITS."""
+    return int(text) if len(text) <= _JSON_INTEGER_DIGITS else _LongInteger(text)
 
 
 _JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
@@ -175,6 +185,9 @@ def json_number(value, where):
     """
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise InputError(f"{where}: must be a number, got {json.dumps(value)}")
+    if isinstance(value, _LongInteger) and not abs(value) <= MAX_MAGNITUDE:
+        raise InputError(f"{where}: an integer of {value.length:,} characters is too large "
+                         f"(at most {MAX_MAGNITUDE:g} in magnitude)")
     try:
         number = float(value)
     except OverflowError:
