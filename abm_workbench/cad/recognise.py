@@ -38,6 +38,7 @@ A staircase recognised over a y window describes the stock only inside that wind
 A wall's faces, edges and exact curve stay available in :class:`RecognisedWall`.
 """
 
+import faulthandler
 import multiprocessing
 import os
 from dataclasses import dataclass
@@ -166,6 +167,7 @@ def _read_in_child(path, kind, timeout=READ_TIMEOUT):
 
 def _child_read(path, connection):
     """In the child: send ("ok", BREP text) of the shape in `path`, or ("error", message)."""
+    faulthandler.disable()  # an inherited fault handler would dump this child's end on the shared stderr
     try:
         shape = Part.read(path)
         if not shape.isNull():
