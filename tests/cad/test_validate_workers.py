@@ -16,7 +16,7 @@ import pytest
 from abm_workbench.cad.recognise import load_solid, recognise
 from abm_workbench.engine import CutSettings, Tool, Toolpath
 from abm_workbench.formats.toolpath_csv import load_toolpath
-from abm_workbench.validation import validate, validate_helix
+from abm_workbench.validation import reference_by_workers, validate, validate_helix
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
@@ -51,6 +51,20 @@ def test_two_workers_give_the_reference_of_one_process(model):
     assert (one.reference["length"] > 0).any()
     assert calls == [(k, len(ROWS)) for k in range(1, len(ROWS) + 1)]
     assert multiprocessing.active_children() == []
+
+
+def slow_first(solid, tool, toolpath, phi, progress):
+    """A stand-in reference (in the workers): the CL points' x, the first CL point of the model
+    pass the slowest by far, so that the CL points finish out of order."""
+    time.sleep(1.5 if toolpath.cl[0, 0] < 15.0 else 0.05)
+    return {"x": toolpath.cl[:, 0] + 0.0 * solid.Volume, "phi": np.tile(phi, (len(toolpath), 1))}
+
+
+def test_results_go_back_to_their_cl_points(model):
+    solid, _, tool, path, settings = model
+    assert path.cl[0, 0] < 15.0 <= path.cl[1:, 0].min()
+    out = reference_by_workers(slow_first, solid, tool, path, settings.phi, workers=2)
+    assert np.array_equal(out["x"], path.cl[:, 0]) and out["phi"].shape == (len(ROWS), settings.phi.size)
 
 
 def test_two_workers_give_the_helix_reference_of_one_process(model):
