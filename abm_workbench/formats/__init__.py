@@ -55,6 +55,33 @@ def checked_magnitude(number, where):
     return number
 
 
+#: Characters a staged output's hidden name adds to its target's name (:func:`_new_temporary`:
+#: ".NAME.<12 hex>.tmp"; report.staging's folders add fewer).
+STAGING_EXTRA = 18
+
+
+def check_output_path(path):
+    """InputError unless `path` can name an output file: not empty, not an existing folder, not
+    ending in a folder separator, and a name short enough for its staged hidden twin (at most
+    the folder's NAME_MAX − :data:`STAGING_EXTRA` bytes, 237 on most file systems). Meant to run
+    before any computation, so that a bad --out fails at once."""
+    text = os.fspath(path)
+    if not text.strip():
+        raise InputError("an output path is empty; give a file name")
+    if text.endswith(os.sep) or os.path.isdir(text):
+        raise InputError(f"{text}: is a folder; give a file name for the output")
+    folder, name = os.path.split(os.path.abspath(text))
+    while not os.path.isdir(folder):
+        folder = os.path.dirname(folder)
+    try:
+        longest = os.pathconf(folder, "PC_NAME_MAX") - STAGING_EXTRA
+    except (OSError, ValueError):
+        longest = 255 - STAGING_EXTRA
+    if len(name.encode("utf-8", "surrogateescape")) > longest:
+        raise InputError(f"{text}: the file name is {len(name.encode('utf-8', 'surrogateescape'))} bytes long; "
+                         f"at most {longest} are allowed here")
+
+
 @contextlib.contextmanager
 def replacing(*paths):
     """Stage new versions of `paths`: yield a list of temporary paths, one per target.

@@ -6,6 +6,7 @@ numbers, and the text of the files before and after a refused run.
 
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -15,7 +16,8 @@ import pytest
 from abm_workbench import cli
 from abm_workbench.engine import Tool, Toolpath
 from abm_workbench.errors import InputError
-from abm_workbench.formats import MAX_JSON_DEPTH, load_json_object, parse_number
+from abm_workbench.formats import (MAX_JSON_DEPTH, STAGING_EXTRA, check_output_path, load_json_object, parse_number,
+                                   replacing)
 from abm_workbench.formats.cl import read_program
 from abm_workbench.formats.decimal_text import number_field
 from abm_workbench.formats.staircase_json import load_staircase
@@ -227,3 +229,28 @@ def test_numpy_warnings_do_not_reach_stderr(model):
         f"sys.exit(cli.main({engage()!r}))\n")
     done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
     assert (done.returncode, done.stderr) == (0, "")
+
+
+# Output paths that cannot be written, refused before any computation (formats.check_output_path).
+
+@pytest.mark.parametrize("path, message", [("", "an output path is empty"), ("  ", "an output path is empty"),
+                                           (".", ": is a folder"), ("sub/", ": is a folder")])
+def test_output_paths_that_name_no_file_are_refused(tmp_path, monkeypatch, path, message):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "sub").mkdir()
+    with pytest.raises(InputError, match=re.escape(message)):
+        check_output_path(path)
+
+
+def test_the_longest_output_name_is_what_staging_can_write(tmp_path):
+    """The longest name allowed works with formats.replacing (its hidden twin fits); one more
+    byte is refused, by check_output_path, with the lengths."""
+    longest = os.pathconf(tmp_path, "PC_NAME_MAX") - STAGING_EXTRA
+    fits = tmp_path / ("a" * (longest - 4) + ".csv")
+    check_output_path(fits)
+    with replacing(fits) as (temporary,):
+        open(temporary, "w").write("x")
+    assert fits.read_text() == "x" and os.listdir(tmp_path) == [fits.name]
+    too_long = tmp_path / ("é" + "a" * (longest - 5) + ".csv")
+    with pytest.raises(InputError, match=rf"the file name is {longest + 1} bytes long; at most {longest}"):
+        check_output_path(too_long)
