@@ -9,7 +9,9 @@ Bad input raises :class:`abm_workbench.errors.InputError` naming the file and th
 item. Every reader takes numbers in one grammar (:data:`NUMBER`: ASCII digits, an optional
 sign, a decimal point, an exponent; no words such as ``nan``, no ``_``, no other scripts'
 digits) and refuses magnitudes above :data:`MAX_MAGNITUDE`; JSON is read with limits on
-nesting, integer length and duplicate keys (:func:`load_json_object`). Files are never left half written: :func:`replacing` stages every output beside its
+nesting, integer length and duplicate keys (:func:`load_json_object`).
+
+Files are never left half written: :func:`replacing` stages every output beside its
 target and swaps it in only when all of them are complete.
 """
 

@@ -31,7 +31,8 @@ def model():
     solid = load_solid(os.path.join(MODEL, "stock.step"))
     path = Toolpath(full.cl[ROWS], full.theta_a[ROWS], full.theta_b[ROWS])
     tool = Tool(job["diameter"], job["flutes"], job["flute_length"])
-    return solid, recognise(solid).staircase, tool, path, CutSettings(job["feed_per_tooth"], job["inclination"], 0, 180, 20)
+    settings = CutSettings(job["feed_per_tooth"], job["inclination"], 0, 180, 20)
+    return solid, recognise(solid).staircase, tool, path, settings
 
 
 def same(a, b):
@@ -46,7 +47,8 @@ def test_two_workers_give_the_reference_of_one_process(model):
     solid, stock, tool, path, settings = model
     calls = []
     one = validate(solid, stock, tool, path, settings)
-    two = validate(solid, stock, tool, path, settings, workers=2, progress=lambda done, total: calls.append((done, total)))
+    two = validate(solid, stock, tool, path, settings, workers=2,
+                   progress=lambda done, total: calls.append((done, total)))
     same(one.reference, two.reference)
     assert (one.reference["length"] > 0).any()
     assert calls == [(k, len(ROWS)) for k in range(1, len(ROWS) + 1)]

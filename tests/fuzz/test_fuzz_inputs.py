@@ -139,7 +139,8 @@ def test_mutated_inputs_in_process(case):
 
 
 FIXED = {
-    "arabic digits in the toolpath": ("toolpath.csv", ORIGINALS["toolpath.csv"].replace(b"13.0,", "١٣.٠,".encode(), 1)),
+    "arabic digits in the toolpath": ("toolpath.csv",
+                                      ORIGINALS["toolpath.csv"].replace(b"13.0,", "١٣.٠,".encode(), 1)),
     "a stock nested 100,000 deep": ("stock.json", ORIGINALS["stock.json"].replace(
         b'"units"', b'"deep": ' + b"[" * 100_000 + b"]" * 100_000 + b', "units"', 1)),
     "a job key given twice": ("job.json", ORIGINALS["job.json"].replace(b'"flutes": 2,', b'"flutes": 2, "flutes": 3,')),
@@ -154,7 +155,8 @@ def test_mutated_inputs_as_subprocess(label, tmp_path):
     assert data != ORIGINALS[name]
     paths = prepare(str(tmp_path), name, data)
     toolpath = "program.apt" if name == "program.apt" else "toolpath.csv"
-    done = subprocess.run([sys.executable, "-m", "abm_workbench", *argv(paths, toolpath, str(tmp_path / "out" / "R.csv"))],
+    out = str(tmp_path / "out" / "R.csv")
+    done = subprocess.run([sys.executable, "-m", "abm_workbench", *argv(paths, toolpath, out)],
                           cwd=ROOT, capture_output=True, text=True, timeout=300)
     check(str(tmp_path), paths, name, data, done.returncode, done.stderr)
     assert done.returncode == 2
