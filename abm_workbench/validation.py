@@ -13,7 +13,7 @@ per instant and flute the axial length of cut, LEP and UEP (axial positions l) o
 flute_engagement against the helix boolean.
 
 Both take ``workers=N``: the reference of each CL point is then computed in one of N local
-processes (spawned, each with its own FreeCAD and its own copy of the solid, sent once as BREP
+processes (spawned, a Python interpreter even under the GUI, each with its own FreeCAD and its own copy of the solid, sent once as BREP
 text), CL points handed out one at a time as processes become free. Each CL point's reference
 depends on that CL point alone, so the result is the same, bit for bit, as in one process.
 progress(done, total) is still called once per CL point, as they finish; an interrupt
@@ -21,7 +21,6 @@ progress(done, total) is still called once per CL point, as they finish; an inte
 """
 
 import concurrent.futures
-import multiprocessing
 import signal
 import time
 from dataclasses import dataclass
@@ -339,13 +338,14 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
     per core. progress(done, total) after each CL point. On any exception (KeyboardInterrupt
     too) every worker is stopped before it propagates.
     """
+    from .cad.recognise import spawn_context
     from .parallel import toolpath_part, worker_count
 
     count = min(worker_count(workers), len(toolpath))
     if count <= 1:
         return reference(solid, tool, toolpath, phi, *extra, progress)
     executor = concurrent.futures.ProcessPoolExecutor(
-        count, mp_context=multiprocessing.get_context("spawn"), initializer=_start_worker,
+        count, mp_context=spawn_context(), initializer=_start_worker,
         initargs=(solid.exportBrepToString(),))
     try:
         futures = {executor.submit(_reference_task, reference, tool, toolpath_part(toolpath, i, i + 1), phi, extra): i

@@ -41,6 +41,7 @@ A wall's faces, edges and exact curve stay available in :class:`RecognisedWall`.
 import faulthandler
 import multiprocessing
 import os
+import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -141,7 +142,7 @@ def _read_in_child(path, kind, timeout=READ_TIMEOUT):
     ~0.4 s). InputError ``FILE: damaged or unreadable STEP (...)`` when the child raises, ends
     without a shape or takes over `timeout` s.
     """
-    context = multiprocessing.get_context("spawn" if FreeCAD.GuiUp else "fork")
+    context = spawn_context() if FreeCAD.GuiUp else multiprocessing.get_context("fork")
     receiver, sender = context.Pipe(duplex=False)
     child = context.Process(target=_child_read, args=(path, sender), daemon=True)
     child.start()
@@ -163,6 +164,20 @@ def _read_in_child(path, kind, timeout=READ_TIMEOUT):
     detail = {"error": f"cannot read as {kind}: {value}", "timeout": f"no shape after {timeout:g} s",
               "ended": f"the reader ended with exit status {child.exitcode} and no shape"}[status]
     raise InputError(f"{path}: damaged or unreadable {kind} ({detail})")
+
+
+def spawn_context():
+    """The multiprocessing spawn context, set to start a Python interpreter: under the GUI
+    sys.executable is FreeCAD's own program, which cannot run a spawned child, so the
+    interpreter of the running Python's own installation (``<sys.base_exec_prefix>/bin/
+    pythonX.Y``, /usr/bin/python3.11 for Debian's FreeCAD) is used instead; not one found on
+    PATH, which may be another Python without FreeCAD's numpy."""
+    context = multiprocessing.get_context("spawn")
+    if not os.path.basename(sys.executable).lower().startswith("python"):
+        version = f"python{sys.version_info.major}.{sys.version_info.minor}"
+        interpreter = os.path.join(sys.base_exec_prefix, "bin", version)
+        context.set_executable(interpreter if os.path.isfile(interpreter) else sys.executable)
+    return context
 
 
 def _child_read(path, connection):

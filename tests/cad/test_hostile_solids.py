@@ -69,3 +69,18 @@ def test_a_sound_file_reads_as_before():
     shape = recognise.load_solid(os.path.join(MODEL, "stock.step"))
     assert len(shape.Faces) == len(direct.Faces) and shape.isValid()
     assert abs(shape.Volume - direct.Volume) <= 1e-9 * direct.Volume
+
+
+def test_under_the_gui_the_child_is_a_python_interpreter(monkeypatch):
+    """With FreeCAD's GUI up, the child is spawned (no fork of a Qt process), and sys.executable is
+    FreeCAD's program, which cannot run it: the Python interpreter on PATH runs it instead."""
+    import multiprocessing.spawn
+
+    from abm_workbench.cad.freecad_env import FreeCAD
+
+    monkeypatch.setattr(multiprocessing.spawn, "_python_exe", "/usr/bin/freecad")  # as set on import under the GUI
+    monkeypatch.setattr(FreeCAD, "GuiUp", 1, raising=False)
+    monkeypatch.setattr(sys, "executable", "/usr/bin/freecad")
+    shape = recognise.load_solid(os.path.join(MODEL, "stock.step"))
+    assert len(shape.Faces) == len(Part.read(os.path.join(MODEL, "stock.step")).Faces)
+    assert os.path.basename(os.fsdecode(multiprocessing.spawn.get_executable())).startswith("python")
