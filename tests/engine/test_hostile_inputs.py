@@ -254,3 +254,12 @@ def test_the_longest_output_name_is_what_staging_can_write(tmp_path):
     too_long = tmp_path / ("é" + "a" * (longest - 5) + ".csv")
     with pytest.raises(InputError, match=rf"the file name is {longest + 1} bytes long; at most {longest}"):
         check_output_path(too_long)
+
+
+@pytest.mark.parametrize("value", ["1e400", "-2e13"])
+def test_a_huge_nurbs_number_is_refused_naming_the_line(tmp_path, value):
+    path = tmp_path / "p.cls"
+    path.write_text(f"MULTAX\nGOTO/0,0,0,0,0,1\nNURBS/3\nKNOT/0,0,0,1,1,1\nCNTRL/0,0,0\nCNTRL/1,{value},0\n"
+                    "CNTRL/2,0,0\nGOTO/2,0,0,0,0,1\n")
+    with pytest.raises(InputError, match=rf"^{path}:6: .*CNTRL: a number above 1e\+12 in magnitude"):
+        read_program(path)

@@ -364,6 +364,8 @@ class _Reader:
         parts = _NURBS_PART.split(text)
         for word, values in zip(parts[1::2], parts[2::2]):
             numbers = [float(v) for v in _NUMBER_TEXT.findall(values)]
+            if not max(map(abs, numbers), default=0.0) <= MAX_MAGNITUDE:
+                raise self.error(record, f"{word.upper()}: a number above {MAX_MAGNITUDE:g} in magnitude")
             if word.upper() == "KNOT":
                 self.nurbs["knots"].extend(numbers)
             elif len(numbers) in (3, 4):
