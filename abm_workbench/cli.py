@@ -29,8 +29,12 @@ made before the results are streamed into them, and removed again when the comma
 """
 
 import argparse
+import contextlib
+import signal
 import sys
+import threading
 import time
+import warnings
 
 import numpy as np
 
@@ -54,27 +58,62 @@ class _Parser(argparse.ArgumentParser):
 
 
 def main(argv=None):
-    """Run the command line with `argv` (default sys.argv[1:]); return the exit status."""
+    """Run the command line with `argv` (default sys.argv[1:]); return the exit status.
+
+    SIGTERM and SIGHUP stop a run as Ctrl-C does (the same clean-up: no temporary file, staging
+    folder or newly made folder left), exit status 128 + the signal's number. numpy's
+    floating-point warnings are not printed.
+    """
     parser = _build_parser()
     try:
         args = parser.parse_args(argv)
     except SystemExit as exit_:  # usage errors (2) and --help (0)
         return exit_.code
+    with _stopping_signals(), np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        try:
+            return args.run(args)
+        except ParameterError as error:
+            print(f"{PROG}: error: {option_words(error)}", file=sys.stderr)
+            return 2
+        except InputError as error:
+            print(f"{PROG}: error: {error}", file=sys.stderr)
+            return 2
+        except (OSError, ChunkError) as error:
+            print(f"{PROG}: error: {error}", file=sys.stderr)
+            return 1
+        except KeyboardInterrupt as interrupt:
+            # On a terminal, end the line a progress bar (or the ^C echo) may have left open.
+            stop = interrupt.args[0] if isinstance(interrupt, _Stopped) else signal.SIGINT
+            words = "interrupted" if stop == signal.SIGINT else f"stopped by {signal.Signals(stop).name}"
+            print(("\n" if sys.stderr.isatty() else "") + f"{PROG}: {words}", file=sys.stderr)
+            return 128 + stop
+
+
+class _Stopped(KeyboardInterrupt):
+    """SIGTERM or SIGHUP received (args[0] the signal's number): unwound like Ctrl-C."""
+
+
+@contextlib.contextmanager
+def _stopping_signals():
+    """While the block runs (in the main thread), SIGTERM and SIGHUP raise _Stopped; after the
+    first, both are ignored so that the clean-up runs to its end. The old handlers come back after."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    stops = (signal.SIGTERM, signal.SIGHUP)
+
+    def stop(number, frame):
+        for each in stops:
+            signal.signal(each, signal.SIG_IGN)
+        raise _Stopped(number)
+
+    previous = {number: signal.signal(number, stop) for number in stops}
     try:
-        return args.run(args)
-    except ParameterError as error:
-        print(f"{PROG}: error: {option_words(error)}", file=sys.stderr)
-        return 2
-    except InputError as error:
-        print(f"{PROG}: error: {error}", file=sys.stderr)
-        return 2
-    except (OSError, ChunkError) as error:
-        print(f"{PROG}: error: {error}", file=sys.stderr)
-        return 1
-    except KeyboardInterrupt:
-        # On a terminal, end the line a progress bar (or the ^C echo) may have left open.
-        print(("\n" if sys.stderr.isatty() else "") + f"{PROG}: interrupted", file=sys.stderr)
-        return 130
+        yield
+    finally:
+        for number, handler in previous.items():
+            signal.signal(number, handler)
 
 
 def _build_parser():

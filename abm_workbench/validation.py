@@ -11,8 +11,17 @@ which runs the boolean reference through :mod:`abm_workbench.cad.boolean` (FreeC
 :func:`validate_helix`, its counterpart for helical edges (:mod:`abm_workbench.cad.helix_boolean`):
 per instant and flute the axial length of cut, LEP and UEP (axial positions l) of
 flute_engagement against the helix boolean.
+
+Both take ``workers=N``: the reference of each CL point is then computed in one of N local
+processes (spawned, a Python interpreter even under the GUI, each with its own FreeCAD and its own copy of the solid, sent once as BREP
+text), CL points handed out one at a time as processes become free. Each CL point's reference
+depends on that CL point alone, so the result is the same, bit for bit, as in one process.
+progress(done, total) is still called once per CL point, as they finish; an interrupt
+(KeyboardInterrupt, or the command line's SIGTERM) stops every worker at once.
 """
 
+import concurrent.futures
+import signal
 import time
 from dataclasses import dataclass
 
@@ -202,12 +211,12 @@ def letters(engagement: Engagement):
     return names[engagement.segment]
 
 
-def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None):
+def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None, workers=1):
     """Run the engine and the boolean reference on one pass; a Validation.
 
     solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's (a Staircase or a
-    TerracedStock).
-    progress(done, total) is called after each CL point of the reference. Raises
+    TerracedStock). progress(done, total) is called after each CL point of the reference. workers:
+    processes computing the reference (1: this one; 0: one per core; see the module docstring). Raises
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
     """
@@ -219,7 +228,8 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     if not engagement.engaged.any():
         raise NoEngagementError("no CL point of the pass engages the stock")
     started = time.perf_counter()
-    reference = edge_lengths_by_boolean(solid, tool, toolpath, engagement.phi, progress)
+    reference = reference_by_workers(edge_lengths_by_boolean, solid, tool, toolpath, engagement.phi, (),
+                                     workers=workers, progress=progress)
     boolean_seconds = time.perf_counter() - started
     comparison = compare(engagement, reference, toolpath, tool)
     return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds})
@@ -292,12 +302,13 @@ def _largest(values):
     return float(finite.max()) if finite.size else np.nan
 
 
-def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, flutes=None, progress=None):
+def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, flutes=None, progress=None,
+                   workers=1):
     """Run the helix solver and the helix boolean reference on one pass; a HelixValidation.
 
     solid: the stock as a Part.Shape; staircase: the engine's. tool.helix may be any allowed β
     (0 too: the boolean then uses straight segments). flutes: 0-based flutes to check (default
-    all). progress(done, total) after each CL point of the reference. Raises
+    all). progress(done, total) after each CL point of the reference. workers: as validate. Raises
     NoEngagementError, before the reference runs, when no checked flute engages anywhere.
     Needs FreeCAD.
     """
@@ -312,7 +323,70 @@ def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *
     if not (engagement.axial_length[..., list(chosen)] > 0.0).any():
         raise NoEngagementError("no CL point of the pass engages the stock with the checked flutes")
     started = time.perf_counter()
-    reference = flute_lengths_by_boolean(solid, tool, toolpath, engagement.phi, chosen, progress)
+    reference = reference_by_workers(flute_lengths_by_boolean, solid, tool, toolpath, engagement.phi, (chosen,),
+                                     workers=workers, progress=progress)
     boolean_seconds = time.perf_counter() - started
     return HelixValidation(engagement, reference, chosen, toolpath, tool,
                            {"abm": abm_seconds, "boolean": boolean_seconds})
+
+
+def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, workers=1, progress=None):
+    """reference(solid, tool, toolpath, phi, *extra, progress): a boolean reference (a dict of
+    arrays over CL points first), computed in `workers` processes, one CL point per task.
+
+    reference: a module-level function of cad (edge_lengths_by_boolean, flute_lengths_by_boolean).
+    workers: 1 (or a pass of one CL point) runs it here; N > 1 in N spawned processes; 0 one
+    per core. progress(done, total) after each CL point. On any exception (KeyboardInterrupt
+    too) every worker is stopped before it propagates.
+    """
+    from .cad.recognise import spawn_context
+    from .parallel import toolpath_part, worker_count
+
+    count = min(worker_count(workers), len(toolpath))
+    if count <= 1:
+        return reference(solid, tool, toolpath, phi, *extra, progress)
+    executor = concurrent.futures.ProcessPoolExecutor(
+        count, mp_context=spawn_context(), initializer=_start_worker,
+        initargs=(solid.exportBrepToString(),))
+    try:
+        futures = {executor.submit(_reference_task, reference, tool, toolpath_part(toolpath, i, i + 1), phi, extra): i
+                   for i in range(len(toolpath))}
+        parts = [None] * len(toolpath)
+        for done, future in enumerate(concurrent.futures.as_completed(futures), start=1):
+            parts[futures[future]] = future.result()
+            if progress is not None:
+                progress(done, len(toolpath))
+    except BaseException:
+        _stop(executor)
+        raise
+    executor.shutdown(wait=True)
+    return {name: np.concatenate([part[name] for part in parts]) for name in parts[0]}
+
+
+_SOLID = None  # a worker's stock (Part.Shape), set once by _start_worker
+
+
+def _start_worker(brep):
+    """In a worker: read the stock from BREP text; leave Ctrl-C to the parent, which stops the workers."""
+    global _SOLID
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    from .cad.freecad_env import Part
+
+    _SOLID = Part.Shape()
+    _SOLID.importBrepFromString(brep)
+
+
+def _reference_task(reference, tool, toolpath, phi, extra):
+    """In a worker: the reference of `toolpath` (one CL point) against the worker's stock."""
+    return reference(_SOLID, tool, toolpath, phi, *extra, None)
+
+
+def _stop(executor):
+    """Cancel what has not started and end the workers now (a boolean can take seconds)."""
+    # ProcessPoolExecutor has no public way to end running tasks (Python < 3.14): end its processes.
+    processes = list((getattr(executor, "_processes", None) or {}).values())
+    executor.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        process.terminate()
+    for process in processes:
+        process.join()

@@ -38,7 +38,10 @@ A staircase recognised over a y window describes the stock only inside that wind
 A wall's faces, edges and exact curve stay available in :class:`RecognisedWall`.
 """
 
+import faulthandler
+import multiprocessing
 import os
+import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -109,10 +112,7 @@ def load_solid(path, name=None):
         raise InputError(f"{path}: no such file")
     if kind == "FCStd":
         return _load_document_solid(path, name)
-    try:
-        shape = Part.read(path)
-    except Exception as error:  # FreeCAD raises RuntimeError or Part.OCCError
-        raise InputError(f"{path}: cannot read as {kind}: {error}") from None
+    shape = _read_in_child(path, kind)
     if shape.isNull() or not shape.Faces:
         raise InputError(f"{path}: the {kind} file holds no shape")
     solids = shape.Solids
@@ -125,6 +125,73 @@ def load_solid(path, name=None):
         listed = ", ".join(names) or "none"
         raise InputError(f"{path}: no solid named {name!r} in the {kind} file (its solids: {listed})")
     return solids[names.index(name)]
+
+
+#: Longest a child process may take to read a STEP or BREP file (s) before it is taken as damaged.
+READ_TIMEOUT = 300.0
+
+
+def _read_in_child(path, kind, timeout=READ_TIMEOUT):
+    """The Part.Shape in STEP or BREP file `path`, read by a child process.
+
+    A damaged file can make OpenCASCADE end the process that reads or checks it (exit status 1,
+    no message: a BREP with one line deleted does so in ``isValid()``) or read forever; the
+    child takes that risk: it reads the file, runs the validity check once, and hands the
+    shape back as BREP text. The child is forked (no second FreeCAD import; a few ms) except
+    under the GUI, whose threads make forking unsafe: there it is spawned (a FreeCAD import,
+    ~0.4 s). InputError ``FILE: damaged or unreadable STEP (...)`` when the child raises, ends
+    without a shape or takes over `timeout` s.
+    """
+    context = spawn_context() if FreeCAD.GuiUp else multiprocessing.get_context("fork")
+    receiver, sender = context.Pipe(duplex=False)
+    child = context.Process(target=_child_read, args=(path, sender), daemon=True)
+    child.start()
+    sender.close()
+    try:
+        answer = receiver.recv() if receiver.poll(timeout) else ("timeout", None)
+    except EOFError:
+        answer = ("ended", None)
+    finally:
+        receiver.close()
+        if child.is_alive():
+            child.kill()
+        child.join()
+    status, value = answer
+    if status == "ok":
+        shape = Part.Shape()
+        shape.importBrepFromString(value)
+        return shape
+    detail = {"error": f"cannot read as {kind}: {value}", "timeout": f"no shape after {timeout:g} s",
+              "ended": f"the reader ended with exit status {child.exitcode} and no shape"}[status]
+    raise InputError(f"{path}: damaged or unreadable {kind} ({detail})")
+
+
+def spawn_context():
+    """The multiprocessing spawn context, set to start a Python interpreter: under the GUI
+    sys.executable is FreeCAD's own program, which cannot run a spawned child, so the
+    interpreter of the running Python's own installation (``<sys.base_exec_prefix>/bin/
+    pythonX.Y``, /usr/bin/python3.11 for Debian's FreeCAD) is used instead; not one found on
+    PATH, which may be another Python without FreeCAD's numpy."""
+    context = multiprocessing.get_context("spawn")
+    if not os.path.basename(sys.executable).lower().startswith("python"):
+        version = f"python{sys.version_info.major}.{sys.version_info.minor}"
+        interpreter = os.path.join(sys.base_exec_prefix, "bin", version)
+        context.set_executable(interpreter if os.path.isfile(interpreter) else sys.executable)
+    return context
+
+
+def _child_read(path, connection):
+    """In the child: send ("ok", BREP text) of the shape in `path`, or ("error", message)."""
+    faulthandler.disable()  # an inherited fault handler would dump this child's end on the shared stderr
+    try:
+        shape = Part.read(path)
+        if not shape.isNull():
+            shape.isValid()  # the check that can end the process on a damaged file
+        answer = ("ok", shape.exportBrepToString())
+    except Exception as error:  # FreeCAD raises RuntimeError or Part.OCCError
+        answer = ("error", str(error))
+    connection.send(answer)
+    connection.close()
 
 
 def check_window(y_window, swept, *, source=""):

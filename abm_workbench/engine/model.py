@@ -46,10 +46,15 @@ def _array(name, value, shape):
     return array
 
 
+#: Largest helix angle |β| of a flat-end mill (deg): steeper edges are not end mills, and the
+#: helical engine's time and memory per CL point grow without bound as |β| nears 90°.
+MAX_HELIX = 60.0
+
+
 @dataclass(frozen=True)
 class Tool:
     """Flat-end mill: diameter and flute length in mm, number of flutes, helix angle β in deg
-    (0: straight edges; −90 < β < 90)."""
+    (0: straight edges; |β| ≤ MAX_HELIX)."""
 
     diameter: float
     flutes: int
@@ -64,8 +69,9 @@ class Tool:
             raise ValueError(f"flutes must be a whole number, got {self.flutes!r}")
         object.__setattr__(self, "flutes", int(flutes))
         helix = finite_number("helix", self.helix)
-        if not -90.0 < helix < 90.0:
-            raise ValueError(f"helix must be within (-90, 90) degrees, got {helix}")
+        if not -MAX_HELIX <= helix <= MAX_HELIX:
+            raise ValueError(f"helix must be within [-{MAX_HELIX:g}, {MAX_HELIX:g}] degrees (flat-end mills have "
+                             f"helix angles up to about {MAX_HELIX:g}°), got {helix:g}")
         object.__setattr__(self, "helix", helix)
 
     @property
@@ -224,7 +230,20 @@ class Toolpath:
 
     @classmethod
     def from_axes(cls, cl, axes, cc=None):
-        """Toolpath from tool-axis vectors (m, 3) (normalised; k must be > 0)."""
+        """Toolpath from tool-axis vectors (m, 3) of any nonzero finite length (normalised; k must be > 0).
+
+        A row whose largest component lies outside [1e-150, 1e150] (where its squared length would
+        underflow or overflow) is first scaled exactly by a power of two to a largest component in
+        [0.5, 1), so vectors such as (0, 0, 1e-200) or (1e200, 0, 1e200) are read, not refused as
+        zero or not finite.
+        """
+        axes = np.asarray(axes, dtype=float)
+        if axes.ndim == 2 and axes.shape[1] == 3:
+            largest = np.max(np.abs(axes), axis=1, initial=0.0)
+            with np.errstate(invalid="ignore"):
+                extreme = np.isfinite(largest) & (largest > 0.0) & ((largest < 1e-150) | (largest > 1e150))
+            _, exponent = np.frexp(np.where(extreme, largest, 1.0))
+            axes = np.where(extreme[:, None], np.ldexp(axes, -exponent[:, None]), axes)
         theta_a, theta_b = axis_to_angles(axes)
         return cls(cl, theta_a, theta_b, cc)
 

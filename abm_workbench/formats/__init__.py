@@ -6,7 +6,12 @@
 - :mod:`.results_csv`: an Engagement as CSV, one row per (CL point, φ), plus a summary.
 
 Bad input raises :class:`abm_workbench.errors.InputError` naming the file and the line or
-item. Files are never left half written: :func:`replacing` stages every output beside its
+item. Every reader takes numbers in one grammar (:data:`NUMBER`: ASCII digits, an optional
+sign, a decimal point, an exponent; no words such as ``nan``, no ``_``, no other scripts'
+digits) and refuses magnitudes above :data:`MAX_MAGNITUDE`; JSON is read with limits on
+nesting, integer length and duplicate keys (:func:`load_json_object`).
+
+Files are never left half written: :func:`replacing` stages every output beside its
 target and swaps it in only when all of them are complete.
 """
 
@@ -14,9 +19,69 @@ import contextlib
 import json
 import math
 import os
+import re
 import secrets
 
 from ..errors import InputError
+
+
+#: The number grammar of every reader: optional sign, ASCII digits with an optional decimal point, optional exponent.
+NUMBER = r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
+_NUMBER = re.compile(NUMBER)
+#: Largest magnitude of a number read (1e12: mm, degrees, feeds and counts are all far below).
+MAX_MAGNITUDE = 1e12
+#: Deepest nesting of JSON arrays and objects read.
+MAX_JSON_DEPTH = 64
+#: Most digits of a JSON integer kept as an int (longer ones are read as float, then refused as too large).
+_JSON_INTEGER_DIGITS = 18
+
+
+def parse_number(text, where):
+    """The float written as `text` (blanks around it dropped) in the :data:`NUMBER` grammar.
+
+    InputError naming `where` (e.g. ``"toolpath.csv:7: column 'x'"``) for any other text and
+    for a magnitude above :data:`MAX_MAGNITUDE`.
+    """
+    stripped = text.strip()
+    if not _NUMBER.fullmatch(stripped):
+        infinite = stripped.lower().lstrip("+-") in ("nan", "inf", "infinity")
+        raise InputError(f"{where}: {stripped!r} is not a {'finite ' if infinite else ''}number "
+                         "(digits 0-9, optional sign, '.' and exponent)")
+    return checked_magnitude(float(stripped), where)
+
+
+def checked_magnitude(number, where):
+    """`number` (a finite float) if |number| ≤ :data:`MAX_MAGNITUDE`; InputError naming `where` otherwise."""
+    if not abs(number) <= MAX_MAGNITUDE:
+        raise InputError(f"{where}: {number:g} is too large (at most {MAX_MAGNITUDE:g} in magnitude)")
+    return number
+
+
+#: Characters a staged output's hidden name adds to its target's name (:func:`_new_temporary`:
+#: ".NAME.<12 hex>.tmp"; report.staging's folders add fewer).
+STAGING_EXTRA = 18
+
+
+def check_output_path(path):
+    """InputError unless `path` can name an output file: not empty, not an existing folder, not
+    ending in a folder separator, and a name short enough for its staged hidden twin (at most
+    the folder's NAME_MAX − :data:`STAGING_EXTRA` bytes, 237 on most file systems). Meant to run
+    before any computation, so that a bad --out fails at once."""
+    text = os.fspath(path)
+    if not text.strip():
+        raise InputError("an output path is empty; give a file name")
+    if text.endswith(os.sep) or os.path.isdir(text):
+        raise InputError(f"{text}: is a folder; give a file name for the output")
+    folder, name = os.path.split(os.path.abspath(text))
+    while not os.path.isdir(folder):
+        folder = os.path.dirname(folder)
+    try:
+        longest = os.pathconf(folder, "PC_NAME_MAX") - STAGING_EXTRA
+    except (OSError, ValueError):
+        longest = 255 - STAGING_EXTRA
+    if len(name.encode("utf-8", "surrogateescape")) > longest:
+        raise InputError(f"{text}: the file name is {len(name.encode('utf-8', 'surrogateescape'))} bytes long; "
+                         f"at most {longest} are allowed here")
 
 
 @contextlib.contextmanager
@@ -66,31 +131,99 @@ def read_text(path):
 
 
 def load_json_object(path):
-    """The JSON object in file `path` as a dict; InputError with line:column for bad JSON."""
+    """The JSON object in file `path` as a dict; InputError with line:column for bad JSON.
+
+    Also refused, naming the file: nesting deeper than :data:`MAX_JSON_DEPTH`, a key given
+    twice in one object (naming the key and its second line). Integers longer than 18 digits
+    are read as floats, so that a huge one is refused as too large by :func:`json_number`.
+    """
+    name = os.fspath(path)
     text = read_text(path)
+    depth = _json_depth(text)
+    if depth > MAX_JSON_DEPTH:
+        raise InputError(f"{name}: JSON nested {depth} deep; at most {MAX_JSON_DEPTH} levels are read")
     try:
-        data = json.loads(text)
+        data = json.loads(text, object_pairs_hook=_unique_keys, parse_int=_json_integer)
     except json.JSONDecodeError as error:
-        raise InputError(f"{os.fspath(path)}:{error.lineno}:{error.colno}: invalid JSON: {error.msg}") from None
+        raise InputError(f"{name}:{error.lineno}:{error.colno}: invalid JSON: {error.msg}") from None
+    except _DuplicateKey as duplicate:
+        key = duplicate.args[0]
+        raise InputError(f"{name}:{_second_key_line(text, key)}: duplicate key {key!r} in one object") from None
     if not isinstance(data, dict):
-        raise InputError(f"{os.fspath(path)}: expected a JSON object {{...}}, got {type(data).__name__}")
+        raise InputError(f"{name}: expected a JSON object {{...}}, got {type(data).__name__}")
     return data
 
 
+class _DuplicateKey(Exception):
+    """A key given twice in one JSON object (args[0] the key)."""
+
+
+def _unique_keys(pairs):
+    """dict of the (key, value) `pairs` of one JSON object; _DuplicateKey if a key repeats."""
+    data = dict(pairs)
+    if len(data) != len(pairs):
+        seen = set()
+        for key, _ in pairs:
+            if key in seen:
+                raise _DuplicateKey(key)
+            seen.add(key)
+    return data
+
+
+class _LongInteger(float):
+    """A JSON integer longer than _JSON_INTEGER_DIGITS digits: its float value (±inf beyond the
+    doubles) and its number of characters, `length`."""
+
+    def __new__(cls, text):
+        number = super().__new__(cls, text)
+        number.length = len(text)
+        return number
+
+
+def _json_integer(text):
+    """A JSON integer's `text` as int, or as a _LongInteger when longer than _JSON_INTEGER_DIGITS."""
+    return int(text) if len(text) <= _JSON_INTEGER_DIGITS else _LongInteger(text)
+
+
+_JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
+
+
+def _json_depth(text):
+    """Deepest nesting of [ ] and { } in JSON `text`, brackets inside strings not counted."""
+    depth = deepest = 0
+    for token in _JSON_TOKENS.findall(text):
+        if token in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif token in "]}":
+            depth -= 1
+    return deepest
+
+
+def _second_key_line(text, key):
+    """1-based line of the second ``"key":`` in JSON `text` (the first line if it is not found)."""
+    found = [match.start() for match in re.finditer(re.escape(json.dumps(key)) + r"\s*:", text)]
+    return text.count("\n", 0, found[1]) + 1 if len(found) > 1 else 1
+
+
 def json_number(value, where):
-    """`value` as float if it is a finite JSON number (not a boolean, string or NaN).
+    """`value` as float if it is a finite JSON number (not a boolean, string or NaN) of magnitude
+    at most :data:`MAX_MAGNITUDE`.
 
     `where` names the item for the error, e.g. ``"stock.json: base_z"``.
     """
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise InputError(f"{where}: must be a number, got {json.dumps(value)}")
+    if isinstance(value, _LongInteger) and not abs(value) <= MAX_MAGNITUDE:
+        raise InputError(f"{where}: an integer of {value.length:,} characters is too large "
+                         f"(at most {MAX_MAGNITUDE:g} in magnitude)")
     try:
         number = float(value)
     except OverflowError:
         number = math.inf
     if not math.isfinite(number):
         raise InputError(f"{where}: must be a finite number, got {value}")
-    return number
+    return checked_magnitude(number, where)
 
 
 def check_keys(data, required, optional, where):

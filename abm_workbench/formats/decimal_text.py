@@ -71,7 +71,8 @@ _WHOLE, _NEGATIVE_WHOLE, _FULL, _FIRST_DECIMALS, _TRIMMED, _STRIPPED, _UNITS = r
 
 def number_field(values):
     """Field (w, n) of float `values` (n,): each rounded to DECIMALS places, in the shortest text
-    that reads back as the rounded value (Python's repr), '0.0' for −0.0, NaN empty.
+    that reads back as the rounded value (Python's repr), '0.0' for −0.0, NaN empty; a finite
+    value always as a finite number, even where v·10^DECIMALS overflows.
 
     Byte for byte ``repr(float(np.round(v, DECIMALS) + 0.0))``; w is 3, or more when an element
     needs a repr of 24 characters (see the module docstring).
@@ -79,6 +80,9 @@ def number_field(values):
     values = _vector(values, float, "values")
     with np.errstate(over="ignore", invalid="ignore"):
         rounded = np.round(values, DECIMALS)
+        # Above ~1.8e298, v·10^DECIMALS overflows and np.round gives inf; such doubles are whole
+        # numbers already, their own rounding.
+        rounded = np.where(np.isinf(rounded) & np.isfinite(values), values, rounded)
         k = np.rint(values * _SCALE)
         magnitude = np.abs(k)
         fast = (k / _SCALE == rounded) & (magnitude < 10.0**SIGNIFICANT) & (

@@ -13,6 +13,8 @@ The header names the columns, in any order, case-insensitive, whitespace trimmed
   (MMPM mm/min or MMPR mm/rev, empty before any feed), ``line`` (the CL file's line).
 
 One row per CL point in pass order. Blank lines and lines starting with ``#`` are skipped.
+Numbers in the grammar of :func:`abm_workbench.formats.parse_number`; a field holds at most
+:data:`MAX_FIELD` characters.
 A file with an ``operation`` column holds several passes: :func:`load_toolpath` takes the one
 asked for, or the only one.
 """
@@ -26,7 +28,7 @@ import numpy as np
 
 from ..engine import Toolpath
 from ..errors import CLPointError, InputError
-from . import read_text
+from . import parse_number, read_text
 
 _POSITION = ("x", "y", "z")
 _ANGLES = ("theta_a", "theta_b")
@@ -38,6 +40,8 @@ OPERATION_NUMBERS = ("operation", "diameter", "corner_radius", "flute_length", "
 OPERATION_TEXTS = ("name", "tool", "feed_unit")
 _MAY_BE_EMPTY = ("diameter", "corner_radius", "flute_length", "feed_rate")
 _EXAMPLE = "x,y,z,theta_a,theta_b"
+#: Longest field and line read (characters): far beyond any number, operation name or row.
+MAX_FIELD, MAX_LINE = 1000, 64000
 
 
 @dataclass(frozen=True, eq=False)
@@ -55,7 +59,7 @@ class Table:
 def load_table(path):
     """The :class:`Table` of a toolpath CSV; InputError naming the file and line."""
     name = os.fspath(path)
-    rows = _rows(read_text(path))
+    rows = _rows(read_text(path), name)
     if not rows:
         raise InputError(f"{name}: empty file; expected a header such as {_EXAMPLE!r}")
     header_line, fields = rows[0]
@@ -134,13 +138,24 @@ def _describe(table, number):
     return f"{number:g}: {name}, {tool}{size}, {rows.size} CL points"
 
 
-def _rows(text):
-    """(line number, fields) of every line that is not blank or a # comment."""
+def _rows(text, name):
+    """(line number, fields) of every line of file `name` that is not blank or a # comment;
+    InputError naming the line for a line longer than MAX_LINE, a field longer than MAX_FIELD or
+    a line csv cannot split."""
     rows = []
     for number, line in enumerate(text.splitlines(), start=1):
         stripped = line.strip()
         if stripped and not stripped.startswith("#"):
-            rows.append((number, next(csv.reader([line]))))
+            if len(line) > MAX_LINE:
+                raise InputError(f"{name}:{number}: a line of {len(line):,} characters; at most {MAX_LINE:,} are read")
+            try:
+                fields = next(csv.reader([line]))
+            except csv.Error as error:
+                raise InputError(f"{name}:{number}: not a CSV line: {error}") from None
+            longest = max(map(len, fields))
+            if longest > MAX_FIELD:
+                raise InputError(f"{name}:{number}: a field of {longest:,} characters; at most {MAX_FIELD:,} are read")
+            rows.append((number, fields))
     return rows
 
 
@@ -180,11 +195,5 @@ def _numbers(fields, header, where):
         if column in _MAY_BE_EMPTY and not field.strip():
             values.append(math.nan)
             continue
-        try:
-            value = float(field)
-        except ValueError:
-            raise InputError(f"{where}: column {column!r}: {field.strip()!r} is not a number") from None
-        if not math.isfinite(value):
-            raise InputError(f"{where}: column {column!r}: {field.strip()!r} is not a finite number")
-        values.append(value)
+        values.append(parse_number(field, f"{where}: column {column!r}"))
     return values

@@ -195,7 +195,7 @@ def test_refuses_a_document_without_solids(tmp_path):
 @pytest.mark.parametrize("name, content, match", [
     ("missing.step", None, r"missing\.step: no such file"),
     ("stock.iges", "", r"stock\.iges: unknown file type"),
-    ("bad.step", "garbage", r"bad\.step: cannot read as STEP"),
+    ("bad.step", "garbage", r"bad\.step: damaged or unreadable STEP \(cannot read as STEP"),
     ("bad.brep", "garbage", r"bad\.brep: the BREP file holds no shape"),
 ])
 def test_load_errors_name_the_file(tmp_path, name, content, match):

@@ -32,9 +32,13 @@ def texts(field):
 
 
 def number_text(value):
-    """The reference text of a float: repr of the value rounded to 10 places, '' for NaN."""
-    with np.errstate(over="ignore"):  # |value| > 1.8e298: value·10^10 overflows, np.round gives inf
-        return "" if math.isnan(value) else repr(float(np.round(value, 10) + 0.0))
+    """The reference text of a float: repr of the value rounded to 10 places, '' for NaN.
+
+    Above 1e290, where value·10^10 would overflow in np.round, Python's round (exact decimal
+    rounding; such doubles are whole numbers): a finite value is never written as inf."""
+    if math.isnan(value):
+        return ""
+    return repr((round(value, 10) if abs(value) > 1e290 else float(np.round(value, 10))) + 0.0)
 
 
 # Floats of every kind, and the ones near each edge of the fast path.

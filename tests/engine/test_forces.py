@@ -361,7 +361,7 @@ def test_engage_helical_forces_from_the_command_line(case, capsys):
                          CutSettings(0.1, 10, 0, 180, 5, 4000), Coefficients(700, 210, 120))
     np.testing.assert_allclose(results["fz"], forces.xyz[..., 2].reshape(-1), atol=1e-9)
     status, _, err = run(BASE + ["--helix", "95"], capsys)
-    assert status == 2 and err.startswith("abm: error: --helix: must be within (-90, 90)°, got 95°")
+    assert status == 2 and err.startswith("abm: error: --helix: must be within [-60, 60]°, got 95°")
     status, _, err = run(BASE + ["--helix", "20", "--method", "zmap"], capsys)
     assert status == 2 and err.startswith("abm: error: --helix: needs the abm method")
 

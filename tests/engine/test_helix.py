@@ -165,10 +165,10 @@ def test_vertical_tool_in_flat_stock_cuts_up_to_the_top(helix):
 
 
 def test_immersion_keeps_the_half_turn_in_range():
-    """β chosen so the edge turns 180° over the 7.5 mm in cut: starting at ψ = 90°, the part with
-    ψ in [0°, 180°] is l in [0, 3.75]; starting at 270°, [3.75, 7.5]; 0° and 180° keep all of it
+    """β chosen so the edge turns 180° over the 10 mm in cut: starting at ψ = 90°, the part with
+    ψ in [0°, 180°] is l in [0, 5]; starting at 270°, [5, 10]; 0° and 180° keep all of it
     (ψ runs over [−180°, 0°] touching 0 and over [0°, 180°])."""
-    radius, height = 5.0, 7.5
+    radius, height = 5.0, 10.0
     helix = np.degrees(np.arctan(np.pi * radius / height))
     stock = engine_stock(_flat_stock())
     path = Toolpath([[0.0, 0.0, 20.0 - height]], [0.0], [0.0])

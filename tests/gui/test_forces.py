@@ -95,7 +95,7 @@ def test_forces_in_the_task_panel_the_dock_and_the_validation_report(tmp_path, r
     assert verdict["off"] == [False, False, False]
     # plain words and the field of the bad value marked (the end of immersion, not its start)
     assert verdict["bad"] == [False, "End of immersion must be within (0, 180]°, got 200°.", True, 767.01, False]
-    assert verdict["bad_helix"][:2] == [False, "Helix angle must be within (-90, 90)°, got 95°."]
+    assert verdict["bad_helix"][:2] == [False, "Helix angle must be within [-60, 60]°, got 95°."]
     assert verdict["bad_helix"][2]
     assert verdict["bad_ktc"] == [False, "Ktc (tangential cutting coefficient) must be positive, got -5 N/mm².", True]
     assert verdict["good"] == [True, ""] and verdict["accepted"] is True

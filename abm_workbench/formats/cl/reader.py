@@ -22,6 +22,7 @@ import re
 import numpy as np
 
 from ...errors import InputError
+from .. import MAX_MAGNITUDE, NUMBER
 from . import units as unit_words
 from .arcs import arc_points
 from .frames import IDENTITY, compose, csys_frame, msys_frame, table_frame
@@ -30,8 +31,7 @@ from .nurbs import bspline_points
 from .program import Moves, Operation, Program
 from .tools import KIND_WORDS, ToolSpec, mill
 
-_NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
-_NUMBER_TEXT = re.compile(_NUMBER)
+_NUMBER_TEXT = re.compile(NUMBER)
 #: A record whose text after '/' holds only these characters is read by float() at once.
 _NUMBER_CHARACTERS = "0123456789+-.eE ,\t"
 _WORD = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
@@ -185,12 +185,15 @@ class _Reader:
                 values = [float(arg) for arg in record.args]
             except ValueError:
                 values = [math.inf]
-            if all(map(math.isfinite, values)):
+            if max(map(abs, values), default=0.0) <= MAX_MAGNITUDE:
                 return values
         for position, arg in enumerate(record.args, start=1):
-            if not _NUMBER_TEXT.fullmatch(arg) or not math.isfinite(float(arg)):
+            if not _NUMBER_TEXT.fullmatch(arg):
                 raise self.error(record, f"argument {position} {arg!r} is not a number"
                                  if arg else f"argument {position} is empty")
+            if not abs(float(arg)) <= MAX_MAGNITUDE:
+                raise self.error(record, f"argument {position} {arg!r} is not a number of at most "
+                                         f"{MAX_MAGNITUDE:g} in magnitude")
         return [float(arg) for arg in record.args]
 
     def numbers_and_words(self, record):
@@ -199,7 +202,7 @@ class _Reader:
         for position, arg in enumerate(record.args, start=1):
             if not arg:
                 continue
-            if _NUMBER_TEXT.fullmatch(arg) and math.isfinite(float(arg)):
+            if _NUMBER_TEXT.fullmatch(arg) and abs(float(arg)) <= MAX_MAGNITUDE:
                 numbers.append(float(arg))
             elif _WORD.fullmatch(arg):
                 words.append(arg.upper())
@@ -361,6 +364,8 @@ class _Reader:
         parts = _NURBS_PART.split(text)
         for word, values in zip(parts[1::2], parts[2::2]):
             numbers = [float(v) for v in _NUMBER_TEXT.findall(values)]
+            if not max(map(abs, numbers), default=0.0) <= MAX_MAGNITUDE:
+                raise self.error(record, f"{word.upper()}: a number above {MAX_MAGNITUDE:g} in magnitude")
             if word.upper() == "KNOT":
                 self.nurbs["knots"].extend(numbers)
             elif len(numbers) in (3, 4):
