@@ -173,6 +173,9 @@ def _build_parser():
                               "helix against booleans of the exact helices; the report shows the first checked "
                               "flute, flutes.csv all of them per instant")
     helical.add_argument("--flute", type=int, metavar="K", help="check only flute K (1..Z), default all; with --helix")
+    validate_parser.add_argument("--workers", type=int, default=1, metavar="N",
+                                 help="processes computing the boolean reference: 1 (default) this process only, 0 "
+                                      "all cores (each its own FreeCAD); the results are identical")
     _force_arguments(validate_parser, helix=False)
     validate_parser.set_defaults(run=_run_validate)
 
@@ -389,8 +392,10 @@ def _run_validate(args):
     from .validation import overall
 
     label = "boolean reference" if not args.helix and args.flute is None else "helix boolean reference"
-    result = runs.validate(_job(args), args.report, fcstd=args.fcstd, cls=args.cl, flute=args.flute, warn=_warn,
-                           progress=_Progress(label, sys.stderr))
+    if args.workers < 0:
+        raise ParameterError("workers", f"must be 0 (all cores) or a positive number of processes, got {args.workers}")
+    result = runs.validate(_job(args), args.report, fcstd=args.fcstd, cls=args.cl, flute=args.flute,
+                           workers=args.workers, warn=_warn, progress=_Progress(label, sys.stderr))
     validation, forces = result.validation, result.forces
     total = overall(validation.comparison)
     m, p = validation.engagement.shape

@@ -20,12 +20,13 @@ that reads back as the rounded value; NaN is an empty field.
 """
 
 import os
+import re
 
 import numpy as np
 
 from ..engine import CASES, SURFACES, segment_letter
 from ..errors import InputError
-from . import read_text, replacing
+from . import parse_number, read_text, replacing
 from .decimal_text import WORD, integer_field, number_field, text_field
 
 RESULT_COLUMNS = (
@@ -49,6 +50,8 @@ TOOLPATH_COLUMNS = ("cl_x", "cl_y", "cl_z", "theta_a", "theta_b")
 BLOCK_ROWS = 2**14
 #: A comma and a line end in the last byte of a word (decimal_text.WORD).
 _COMMA, _NEWLINE = np.uint64(ord(",") << 56), np.uint64(ord("\n") << 56)
+#: An integer field: ASCII digits with an optional minus sign.
+_INTEGER = re.compile(r"-?[0-9]+")
 _TEXT_COLUMNS = {"uep_surface", "lep_surface", "case", "segment"}
 _INT_COLUMNS = {"cl", "pieces", "uep_section", "uep_wall", "lep_section", "lep_wall", "changed"}
 
@@ -249,11 +252,12 @@ def _parse(column, text, name):
     """One column's text (rows,) as str, int or float array (see read_results)."""
     if column in _TEXT_COLUMNS:
         return text
-    kind = int if column in _INT_COLUMNS else float
+    if column not in _INT_COLUMNS:
+        return np.array([parse_number(field, f"{name}:{row}: column {column!r}") if field else np.nan
+                         for row, field in enumerate(text.tolist(), start=2)], dtype=float)
     values = []
     for row, field in enumerate(text.tolist(), start=2):
-        try:
-            values.append(kind(field) if field or kind is int else np.nan)
-        except ValueError:
-            raise InputError(f"{name}:{row}: column {column!r}: {field!r} is not a valid {kind.__name__}") from None
-    return np.array(values, dtype=kind)
+        if not _INTEGER.fullmatch(field):
+            raise InputError(f"{name}:{row}: column {column!r}: {field!r} is not a valid int")
+        values.append(int(field))
+    return np.array(values, dtype=int)

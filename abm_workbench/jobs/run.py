@@ -21,7 +21,7 @@ import numpy as np
 from ..engine import Staircase, flute_engagement, zmap_engage
 from ..engine.stocks import engage_in_process, engage_stock
 from ..errors import InputError, ParameterError
-from ..formats import replacing
+from ..formats import check_output_path, replacing
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
 from ..forces import joined_forces, pass_forces
 from ..parallel import PassAssembly, map_chunks, toolpath_part, worker_count
@@ -119,7 +119,7 @@ def no_engagement(job: Job):
                       f"(are the toolpath and {job.stock} in the same frame?)")
 
 
-def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None):
+def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None, workers=1):
     """(Validation of flute 1 or the first checked flute, HelixValidation or None) of the engine against
     OpenCASCADE booleans: straight edges by ``validation.validate``, a helical tool (or chosen `flutes`,
     0-based) by ``validation.validate_helix``. validation.NoEngagementError when the tool never touches
@@ -127,16 +127,21 @@ def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progr
     from ..validation import validate, validate_helix
 
     if tool.helix == 0.0 and flutes is None:
-        return validate(solid, staircase, tool, toolpath, settings, progress=progress), None
+        return validate(solid, staircase, tool, toolpath, settings, progress=progress, workers=workers), None
     if not isinstance(staircase, Staircase):
         raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
-    helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress)
+    helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress,
+                           workers=workers)
     return helix.flute(helix.flutes[0]), helix
 
 
-def check_outputs(outputs, inputs):
+def check_outputs(outputs, inputs, files=None):
     """Output paths checked before any work: InputError if an output's folder cannot be made, or
-    outputs clash with each other or with an input (links resolved)."""
+    outputs clash with each other or with an input (links resolved); `files` (default all of
+    `outputs`) must also be usable file names (formats.check_output_path: not empty, no folder,
+    not too long)."""
+    for path in outputs if files is None else files:
+        check_output_path(path)
     seen = {}
     for path in outputs:
         folder = os.path.dirname(os.path.abspath(path))
@@ -161,7 +166,7 @@ def _inputs(job):
 def check_report_outputs(job, report, fcstd=None):
     """The report folder and FCStd can be written, replace nothing but an older report, hold no input."""
     inputs = _inputs(job)
-    check_outputs([report] + ([fcstd] if fcstd else []), inputs)
+    check_outputs([report] + ([fcstd] if fcstd else []), inputs, files=[fcstd] if fcstd else [])
     folder = os.path.realpath(report)
     if os.path.exists(folder) and not os.path.isdir(folder):
         raise ParameterError("report", f"must be a folder, and {report} is a file")
@@ -402,10 +407,11 @@ class ValidateResult:
     written: list
 
 
-def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, warn=print, progress=None):
+def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, warn=print, progress=None):
     """Validate a job against OpenCASCADE booleans: the HTML report folder `report` and, with `fcstd`, an
     annotated FreeCAD document. cls: CL indices shown in detail ('0,22,40'), None: chosen. flute: check
-    only this flute (1-based) of a helical tool. Returns a ValidateResult."""
+    only this flute (1-based) of a helical tool. workers: processes computing the boolean reference
+    (1 this one, 0 one per core). Returns a ValidateResult."""
     from ..report.html import ReportJob, report_cls, write_report
     from ..report.staging import staged
     from ..report.tables import write_flutes_csv
@@ -433,7 +439,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, warn=print, 
 
     try:
         checked, helix = validation(solid, stock.model, tool, toolpath, settings, flutes=flutes,
-                                    progress=progress)
+                                    progress=progress, workers=workers)
     except NoEngagementError:
         raise no_engagement(job) from None
     engagement = checked.engagement
@@ -519,7 +525,7 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
         raise InputError(f"{job.toolpath}: {error}") from None
     if report:
         check_report_outputs(job, report)
-    check_outputs([out] + ([report] if report else []), _inputs(job))
+    check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
     stock, _ = load_job_stock(prepared)
     check_model(stock, forces=True, helix=tool.helix)
     engagement = flute_1(stock.model, tool, toolpath, settings)
