@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Optional
 
 from ..errors import MissingParameter, ParameterError
+from ..formats import MAX_MAGNITUDE
 from ..forces import COEFFICIENT_NAMES, FULL_SLOT, MATERIALS
 
 #: Marks a parameter without a default: it must be given.
@@ -65,6 +66,8 @@ class Parameter:
             raise ParameterError(self.name, f"must be a number, got {value!r}", where) from None
         if not math.isfinite(number):
             raise ParameterError(self.name, f"must be a finite number, got {number!r}", where)
+        if abs(number) > MAX_MAGNITUDE:
+            raise ParameterError(self.name, f"must be at most {MAX_MAGNITUDE:g} in size, got {number:g}", where)
         if self.whole and number != int(number):
             raise ParameterError(self.name, f"must be a whole number, got {number:g}", where)
         below = self.low is not None and (number <= self.low if self.low_open else number < self.low)

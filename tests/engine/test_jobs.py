@@ -184,3 +184,10 @@ def test_json_jobs_never_import_freecad(files):
     run = subprocess.run([sys.executable, "-c", script], cwd=ROOT, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     assert run.stdout.strip() == "ok"
+
+
+def test_job_file_values_too_large_are_refused(files):
+    (files / "job.json").write_text('{"diameter": 1e300}')
+    with pytest.raises(ParameterError) as caught:
+        load_job(files / "job.json")
+    assert option_words(caught.value) == f"{files / 'job.json'}: diameter: must be at most 1e+12 in size, got 1e+300"
