@@ -381,8 +381,8 @@ def _run_engage(args):
           f"({int(np.count_nonzero(~np.isnan(depth)))} CL points engage)"
           + ("" if peak is None else f"; peak force {np.nanmax(peak):.4g} N at CL {int(np.nanargmax(peak))}")
           + f"; wrote {', '.join(result.written)}")
-    model = ("initial stock" if result.changed is None else
-             f"in-process stock ({int(result.changed.sum())} of {m} CL points changed by earlier moves)")
+    model = (f"initial stock{f' ({result.model_note})' if result.model_note else ''}" if result.changed is None
+             else f"in-process stock ({int(result.changed.sum())} of {m} CL points changed by earlier moves)")
     print(_parameters_line(prepared, result.stock) + f"; {model}")
     return 0
 

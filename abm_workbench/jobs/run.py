@@ -47,13 +47,13 @@ def flute_1(stock, tool, toolpath, settings, progress=None):
 STOCK_MODELS = ("in-process", "initial")
 
 
-def in_process_sweep(prepared, method="abm", warn=print):
-    """(SweptPieces of the prepared job's whole program in its engine frame, (m,) program rows of its CL
-    points) for a run against the in-process stock, or None for the stock as given.
+def in_process_sweep(prepared, method="abm"):
+    """((SweptPieces of the prepared job's whole program in its engine frame, (m,) program rows of its CL
+    points) for a run against the in-process stock, or None for the stock as given; why not, or '').
 
     The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM
-    without forces), else the stock as given with a warning saying why. ParameterError when in-process
-    is asked for where it is not available, or the stock model is unknown.
+    without forces), else the stock as given, the reason said. ParameterError when in-process is asked
+    for where it is not available, or the stock model is unknown.
     """
     from ..engine.inprocess import swept_pieces
     from .inputs import program_moves
@@ -62,22 +62,20 @@ def in_process_sweep(prepared, method="abm", warn=print):
     if job.stock_model not in (None, *STOCK_MODELS):
         raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
     if job.stock_model == "initial":
-        return None
+        return None, ""
     missing = ("a helical tool" if tool.helix else "the forces" if prepared.force_model is not None else
                "the Z-map method" if method != "abm" else None)
     if missing is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
-        warn(f"the stock is taken as given (the initial stock): the in-process stock is not available with "
-             f"{missing} yet")
-        return None
+        return None, f"the in-process stock is not available with {missing} yet"
     if not (np.isfinite(job.sweep_tolerance) and job.sweep_tolerance > 0.0):
         raise ParameterError("sweep_tolerance", f"must be a positive number of mm, got {job.sweep_tolerance:g}")
     hints = prepared.hints
     moves, rows = program_moves(hints.program, hints.operation, tool)
     if hints.frame is not None:
         moves = moves.transformed(*hints.frame)
-    return swept_pieces(moves, job.sweep_tolerance), rows
+    return (swept_pieces(moves, job.sweep_tolerance), rows), ""
 
 
 def check_model(stock, forces=False, method="abm", helix=0.0):
@@ -220,7 +218,8 @@ class Method:
 class EngageResult:
     """What engage found: the Prepared job, the Stock, the outputs written, the depth of cut (m,) (NaN
     where a CL point does not engage), the peak force (m,) or None, which CL points earlier moves
-    changed (m,) against the in-process stock or None against the stock as given, the seconds it took."""
+    changed (m,) against the in-process stock or None against the stock as given (model_note: why, when
+    it was not asked for), the seconds it took."""
 
     prepared: object
     stock: object
@@ -228,6 +227,7 @@ class EngageResult:
     depth: np.ndarray
     peak: Optional[np.ndarray]
     changed: Optional[np.ndarray]
+    model_note: str
     seconds: float
 
 
@@ -349,7 +349,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     check_outputs(outputs, _inputs(job))
     stock, _ = load_job_stock(prepared)
     check_model(stock, prepared.force_model is not None, method.name, tool.helix)
-    in_process = in_process_sweep(prepared, method.name, warn)
+    in_process, model_note = in_process_sweep(prepared, method.name)
 
     started = time.perf_counter()
     whole = PassAssembly(len(toolpath)) if plot else None
@@ -389,7 +389,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
             forces = joined_forces(force_parts)
             force_over_phi_figure(forces, chosen_cl(forces), along=True).savefig(temporaries[3], format="png")
     return EngageResult(prepared, stock, outputs, depth, None if prepared.force_model is None else peak,
-                        None if in_process is None else changed, time.perf_counter() - started)
+                        None if in_process is None else changed, model_note, time.perf_counter() - started)
 
 
 # ---- validate ------------------------------------------------------------------------------------

@@ -355,7 +355,8 @@ def test_engage_helical_forces_from_the_command_line(case, capsys):
     status, out, err = run(BASE + ["--forces", "--ktc", "700", "--krc", "210", "--kac", "120", "--helix", "30"],
                            capsys)
     assert (status, err) == (0, "")
-    assert out.splitlines()[1].endswith("step 5° [job.json], helix 30° [--helix]")
+    assert out.splitlines()[1].endswith("step 5° [job.json], helix 30° [--helix]; initial stock (the in-process stock "
+                                        "is not available with a helical tool yet)")
     results = read_results(case / "R.csv")
     forces = pass_forces(load_staircase("stock.json"), Tool(12, 2, 30, 30), load_toolpath("toolpath.csv"),
                          CutSettings(0.1, 10, 0, 180, 5, 4000), Coefficients(700, 210, 120))

@@ -381,7 +381,7 @@ def test_replacing_swaps_in_only_on_success(tmp_path):
     [
         ("", ": empty file"),
         ("cl,length\n0,1.5\n1\n", ":3: expected 2 fields, got 1"),
-        ("cl,length\n0,1.5\n1,x\n", ":3: column 'length': 'x' is not a valid float"),
+        ("cl,length\n0,1.5\n1,x\n", ":3: column 'length': 'x' is not a number (digits 0-9"),
         ("cl,length\n0.5,1.5\n", ":2: column 'cl': '0.5' is not a valid int"),
     ],
 )

@@ -214,6 +214,7 @@ def test_cli_engine_failure_names_the_cl_range_and_leaves_nothing(tmp_path, caps
         raise FloatingPointError("overflow")
 
     monkeypatch.setattr(runs, "engage_stock", broken)
+    monkeypatch.setattr(runs, "engage_in_process", broken)
     assert cli.main(engage_argv(tmp_path / "new" / "R.csv")) == 1
     assert capsys.readouterr().err == "abm: error: CL points 0..52: FloatingPointError: overflow\n"
     assert os.listdir(tmp_path) == []
