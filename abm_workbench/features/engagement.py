@@ -90,6 +90,13 @@ SETTINGS = {
 #: Property type flag: changing it does not touch the object (FreeCAD's Prop_Output).
 _PROP_OUTPUT = 8
 _TEMP_FOLDERS = {}  # document Name -> temporary results folder of an unsaved document
+#: Results kept per engagement object (for undo, redo and Cancel), and the groups of the properties
+#: they depend on.
+KEPT = 8
+INPUT_GROUPS = ("Inputs", "Tool", "Cut", "Forces", "Display")
+#: Properties execute sets from the results (restored with kept results).
+KEPT_PROPERTIES = ("DepthOfCutMin", "DepthOfCutMax", "MaxLengthOfCut", "Instants", "EngagedInstants",
+                   "EngagedCLPoints", "EngineTime", "Parameters", "Warnings", "PeakForce", "ForceFeedPerTooth")
 
 
 class EngagementInputs(NamedTuple):
@@ -180,6 +187,7 @@ class EngagementFeature(FeatureProxy):
         self._stale = False  # restored without results: touched once the document is restored
         self._toolpath = None  # the Toolpath of the results (for the summary's CL point columns)
         self._forces = None  # the PassForces of the results, with forces on
+        self._kept = {}  # ResultsDigest -> Kept: the last KEPT results, for undo, redo and Cancel
 
     # ---- computing -------------------------------------------------------------------------
     def inputs(self, obj):
@@ -204,13 +212,18 @@ class EngagementFeature(FeatureProxy):
         return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)
 
     def execute(self, obj):
-        """Run the engine; store the results (CSV, read-only properties, Shape)."""
+        """Run the engine; store the results (CSV, read-only properties, Shape). Inputs the results of
+        which are kept (:meth:`result`) take them back instead of running the engine again."""
         self._result, self._written, self._forces = None, None, None
+        obj.ResultsDigest = ""  # no results while this fails
         model = force_model_of(obj)
         toolpath, hints, parameters, tool, settings, stock = self.inputs(obj)
         staircase = stock.staircase
         if obj.YWindow != "custom":
             obj.YWindowMin, obj.YWindowMax = staircase.y_min, staircase.y_max
+        key = inputs_key(obj, toolpath, stock)
+        if self._take_back(obj, key):
+            return
 
         started = time.perf_counter()
         result = in_part_frame(flute_1(staircase, tool, toolpath, settings), hints.frame)
@@ -236,6 +249,31 @@ class EngagementFeature(FeatureProxy):
         obj.Parameters = parameters.describe(lambda parameter: parameter.prop)
         obj.Warnings = warnings
         obj.Shape = engaged_surfaces(result) if obj.ShowSurfaces else Part.Shape()
+        self._keep(obj, key, (toolpath, stock))
+
+    def _keep(self, obj, key, sources):
+        """Keep the results just made under their ResultsDigest (the last KEPT of them)."""
+        kept = Kept(key, self._result, self._forces, self._toolpath, obj.Shape, sources,
+                    {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+        self._kept.pop(obj.ResultsDigest, None)
+        self._kept[obj.ResultsDigest] = kept
+        while len(self._kept) > KEPT:
+            self._kept.pop(next(iter(self._kept)))
+
+    def _take_back(self, obj, key):
+        """Make kept results of the inputs `key` the object's again (CSV, properties, Shape); False if none."""
+        found = [(digest, kept) for digest, kept in self._kept.items() if kept.key == key]
+        if not found:
+            return False
+        digest, kept = found[-1]
+        self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
+        self._write(obj, results_path(obj))
+        for name, value in kept.properties.items():
+            setattr(obj, name, value)
+        obj.Shape = kept.shape
+        if obj.ResultsDigest != digest:  # the CSV says otherwise (another writer): keep under its digest
+            self._kept[obj.ResultsDigest] = self._kept.pop(digest)
+        return True
 
     def migrate(self, obj, saved_version):
         """Version 2 added the y window and the validation report; objects saved before were computed
@@ -277,20 +315,29 @@ class EngagementFeature(FeatureProxy):
 
     # ---- results --------------------------------------------------------------------------
     def result(self, obj):
-        """The Engagement (arrays over CL points × φ), or None before a successful recompute."""
-        return self._result
+        """The Engagement (arrays over CL points × φ) the object's properties stand for, or None before a
+        successful recompute.
+
+        Results are keyed by their CSV's digest (``ResultsDigest``), a property that undo, redo and an
+        aborted transaction restore with the others: the results come back with them.
+        """
+        kept = self._kept.get(obj.ResultsDigest)
+        return kept.result if kept is not None else None
 
     def forces(self, obj):
         """The PassForces of the results (fx, fy, fz, torque, power per instant), or None: forces off,
         or before a successful recompute."""
-        return self._forces
+        kept = self._kept.get(obj.ResultsDigest)
+        return kept.forces if kept is not None else None
 
     def save_results(self, obj):
-        """Write the results in memory beside the document, unless they are there already."""
-        if self._result is None:
+        """Write the results the object stands for beside the document, unless they are there already."""
+        kept = self._kept.get(obj.ResultsDigest)
+        if kept is None:
             return
         path = results_path(obj)
-        if self._written != path or not os.path.isfile(path):
+        if not os.path.isfile(path) or _digest(path) != obj.ResultsDigest:
+            self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
             self._write(obj, path)
 
     def restored(self, obj):
@@ -316,6 +363,37 @@ class EngagementFeature(FeatureProxy):
             self._stale = True
             return
         self._result, self._written, self._forces = result, path, forces
+        self._kept[obj.ResultsDigest] = Kept(None, result, forces, None, obj.Shape, (),
+                                             {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+
+
+class Kept(NamedTuple):
+    """Results an engagement object keeps for undo, redo and Cancel: the inputs_key they were computed
+    for (None: read back), the Engagement, PassForces (or None), Toolpath (or None), the Shape, the
+    (Toolpath, Stock) they came from (kept alive, so their ids in the key stay theirs) and the
+    values of KEPT_PROPERTIES."""
+
+    key: object
+    result: object
+    forces: object
+    toolpath: object
+    shape: object
+    sources: tuple
+    properties: dict
+
+
+def inputs_key(obj, toolpath, stock):
+    """What the results of the engagement `obj` depend on: its input properties (groups INPUT_GROUPS,
+    the y window's ends only when it is custom) and the Toolpath and Stock its links load (the
+    loaders keep one object while their files are unchanged)."""
+    values = []
+    for name in sorted(obj.PropertiesList):
+        if obj.getGroupOfProperty(name) not in INPUT_GROUPS or (name.startswith("YWindowM")
+                                                                and obj.YWindow != "custom"):
+            continue
+        value = getattr(obj, name)
+        values.append((name, value.Name if hasattr(value, "Document") else str(value)))
+    return tuple(values), id(toolpath), id(stock)
 
 
 def _proxy(linked, kind, role, obj):

@@ -17,7 +17,13 @@ What each shows (colours RGB 0..1, from :mod:`abm_workbench.report.colours`):
 - Engagement: the engaged cutter surface, lit on both sides, shaded without edges, each face
   coloured (``DiffuseColor``) by the view property ``ColourBy`` (:mod:`.colouring`): the UEP
   surface of its engagement segment, the length of cut or the cut area; the CL point chosen in
-  the dock (:mod:`.dock`) drawn on top in yellow. Double-click: the task panel.
+  the dock (:mod:`.dock`) drawn on top in yellow. Double-click: the task panel. Selected, it
+  keeps its colours: FreeCAD draws its bounding box in the selection colour (``SelectionStyle``
+  BoundBox) instead of painting its faces.
+
+After undo and redo (the observer's ``slotUndoDocument`` / ``slotRedoDocument``) the engagements
+of the document are recoloured and the dock told (``gui.state`` "refresh"): the results follow
+the restored properties (``EngagementFeature.result``).
 
 Nothing of the view provider is saved but its class (``__getstate__`` returns None).
 """
@@ -116,6 +122,7 @@ class EngagementViewProvider(ViewProvider):
         if "Lighting" in vobj.PropertiesList:
             vobj.Lighting = "Two side"
         vobj.DisplayMode = "Shaded"  # no edges: 9000 faces' boundaries would hide the colours
+        vobj.SelectionStyle = "BoundBox"  # selected: the box, not selection-green faces over the colours
         add_colour_by(vobj)
         colour(vobj)
 
@@ -123,10 +130,7 @@ class EngagementViewProvider(ViewProvider):
         # FreeCAD calls this before its own view provider has the new Shape's faces, and
         # per-face colours set now would not match them: colour once the event loop runs again.
         if prop == "Shape":
-            from PySide2 import QtCore
-
-            vobj = obj.ViewObject
-            QtCore.QTimer.singleShot(0, lambda: _colour_later(vobj))
+            colour_soon(obj)
 
     def onChanged(self, vobj, prop):
         if prop == "ColourBy":
@@ -220,6 +224,14 @@ def add_colour_by(vobj):
         vobj.ColourBy = value
 
 
+def colour_soon(obj):
+    """Recolour the engagement `obj` and refresh the dock once the event loop runs again."""
+    from PySide import QtCore
+
+    vobj = obj.ViewObject
+    QtCore.QTimer.singleShot(0, lambda: _colour_later(vobj))
+
+
 def _colour_later(vobj):
     try:
         colour(vobj)
@@ -292,6 +304,20 @@ class _Observer:
 
     def slotDeletedDocument(self, doc):
         state.tell("forget", doc)
+
+    def slotUndoDocument(self, doc):
+        self._restyle(doc)
+
+    def slotRedoDocument(self, doc):
+        self._restyle(doc)
+
+    @staticmethod
+    def _restyle(doc):
+        """Recolour the engagements of `doc` and refresh the dock: their results follow the restored
+        properties."""
+        for obj in doc.Objects:
+            if kind(obj) == "ABM::Engagement" and isinstance(getattr(obj.ViewObject, "Proxy", None), ViewProvider):
+                colour_soon(obj)
 
 
 _OBSERVER = None
