@@ -37,29 +37,31 @@ from ..errors import InputError, ParameterError
 from ..features.engagement import COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings
 from ..forces import MATERIALS
 from ..jobs import BY_NAME, label_words, resolve, tool_and_settings
-from . import state, view_providers
+from . import preferences, state, view_providers
+from .i18n import noop, translate
 from .progress import busy
 from .reporting import CommandError, message_of, recompute_checked, report_error
 
 #: Fields: (property, label, unit or None for a plain number, minimum, maximum, step).
 FIELDS = (
-    ("Diameter", "Diameter", "mm", -1e6, 1e6, 1.0),
-    ("Flutes", "Flutes", None, 0, 100, 1),
-    ("FluteLength", "Flute length", "mm", -1e6, 1e6, 1.0),
-    ("HelixAngle", "Helix angle β", "deg", -1e6, 1e6, 5.0),
-    ("FeedPerTooth", "Feed per tooth", "mm", -1e6, 1e6, 0.01),
-    ("SpindleSpeed", "Spindle speed (rpm)", None, 0.0, 1e6, 100.0),
-    ("Inclination", "Inclination α", "deg", -1e6, 1e6, 1.0),
-    ("PhiStart", "φ start", "deg", -1e6, 1e6, 1.0),
-    ("PhiEnd", "φ end", "deg", -1e6, 1e6, 1.0),
-    ("PhiStep", "φ step", "deg", -1e6, 1e6, 0.5),
-    ("YWindowMin", "y window from", "mm", -1e6, 1e6, 1.0),
-    ("YWindowMax", "y window to", "mm", -1e6, 1e6, 1.0),
+    ("Diameter", noop("Diameter"), "mm", -1e6, 1e6, 1.0),
+    ("Flutes", noop("Flutes"), None, 0, 100, 1),
+    ("FluteLength", noop("Flute length"), "mm", -1e6, 1e6, 1.0),
+    ("HelixAngle", noop("Helix angle β"), "deg", -1e6, 1e6, 5.0),
+    ("FeedPerTooth", noop("Feed per tooth"), "mm", -1e6, 1e6, 0.01),
+    ("SpindleSpeed", noop("Spindle speed (rpm)"), None, 0.0, 1e6, 100.0),
+    ("Inclination", noop("Inclination α"), "deg", -1e6, 1e6, 1.0),
+    ("PhiStart", noop("φ start"), "deg", -1e6, 1e6, 1.0),
+    ("PhiEnd", noop("φ end"), "deg", -1e6, 1e6, 1.0),
+    ("PhiStep", noop("φ step"), "deg", -1e6, 1e6, 0.5),
+    ("YWindowMin", noop("y window from"), "mm", -1e6, 1e6, 1.0),
+    ("YWindowMax", noop("y window to"), "mm", -1e6, 1e6, 1.0),
 )
 #: Force fields after the Forces check box and the Material combo: (property, label, unit, minimum, maximum, step).
 FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm'})", None, -1e6, 1e6, 10.0)
                      for prop in COEFFICIENT_PROPERTIES.values()) + (
-    ("ImmersionStart", "Immersion from", "deg", -1e6, 1e6, 5.0), ("ImmersionEnd", "Immersion to", "deg", -1e6, 1e6, 5.0))
+    ("ImmersionStart", noop("Immersion from"), "deg", -1e6, 1e6, 5.0),
+    ("ImmersionEnd", noop("Immersion to"), "deg", -1e6, 1e6, 5.0))
 #: Quantity kinds of the units of FIELDS: (FreeCAD unit, the kind in words, examples).
 KINDS = {"mm": ("Length", "length", "12 mm, 0.5 in"), "deg": ("Angle", "angle", "10°, 0.2 rad")}
 #: Cutting parameters a toolpath file can fix, with their fields.
@@ -85,11 +87,12 @@ class EngagementPanel:
         self.closed = False
         self.form = QtGui.QWidget()
         self.form.setObjectName("ABM_EngagementPanel")
-        self.form.setWindowTitle("Engagement: tool and cut")
+        self.form.setWindowTitle(translate("Engagement: tool and cut"))
         layout = QtGui.QFormLayout(self.form)
         layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
         layout.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
-        self.source = QtGui.QLabel(f"Stock: {_label(obj.Stock)}<br>Toolpath: {_label(obj.Toolpath)}")
+        self.source = QtGui.QLabel(f"{translate('Stock')}: {_label(obj.Stock)}<br>"
+                                   f"{translate('Toolpath')}: {_label(obj.Toolpath)}")
         self.source.setWordWrap(True)
         layout.addRow(self.source)
         self.message = QtGui.QLabel()  # at the top: seen whatever the panel is scrolled to
@@ -108,9 +111,9 @@ class EngagementPanel:
             widget.setToolTip(obj.getDocumentationOfProperty(name))
             self.names.append(name)
             if name == "YWindowMin":
-                layout.addRow("Wall model", self._combo("WallModel", WALL_CHOICES))
-                layout.addRow("y window", self._combo("YWindow", Y_WINDOWS))
-            layout.addRow(label, widget)
+                layout.addRow(translate("Wall model"), self._combo("WallModel", WALL_CHOICES))
+                layout.addRow(translate("y window"), self._combo("YWindow", Y_WINDOWS))
+            layout.addRow(translate(label), widget)
             _set_value(widget, _property_value(obj, name))
             _connect(widget, self.check)
         self.field("SpindleSpeed").setSpecialValueText("none")
@@ -121,7 +124,7 @@ class EngagementPanel:
     def _force_fields(self, layout):
         """The Forces check box beside the Material combo, then the coefficients and the immersion."""
         obj = self.obj
-        forces = QtGui.QCheckBox("Cutting forces")
+        forces = QtGui.QCheckBox(translate("Cutting forces"))
         forces.setObjectName("ABM_Forces")
         forces.setChecked(bool(obj.Forces))
         forces.setToolTip(obj.getDocumentationOfProperty("Forces"))
@@ -206,8 +209,8 @@ class EngagementPanel:
             if not readable:
                 parameter = next((p for p in BY_NAME.values() if p.prop == name), None)
                 words = parameter.label if parameter is not None else label
-                return (f"{words[:1].upper()}{words[1:]}: “{text}” is not a {kind}: type a number, with a unit if you like "
-                        f"({examples}).", name)
+                return (f"{words[:1].upper()}{words[1:]}: “{text}” is not a {kind}: type a number, with a unit "
+                        f"if you like ({examples}).", name)
         return None, None
 
     def problem(self, values):
@@ -252,8 +255,8 @@ class EngagementPanel:
                 widget.blockSignals(False)
                 notes.append(f"{BY_NAME[key].label} {parameters.values[key]:g} ({parameters.sources[key][1]})")
             widget.setEnabled(not fixed)
-        self.fixed.setText("Fixed by the toolpath file, the values it was made for: " + ", ".join(notes)
-                           if notes else "")
+        self.fixed.setText(translate("Fixed by the toolpath file, the values it was made for:") + " "
+                           + ", ".join(notes) if notes else "")
 
     def show_material(self, values):
         """Force fields: enabled with Forces on; the coefficients show a material's values, read-only,
@@ -355,11 +358,17 @@ class EngagementPanel:
 
 def compute(doc, stock, toolpath):
     """Open a transaction, add an engagement of `stock` and `toolpath` (what the toolpath file gives
-    filled in) and open its task panel; the panel."""
+    filled in, the rest from the preferences, :func:`.preferences.engagement_defaults`) and open its
+    task panel; the panel."""
     from ..features import create_engagement
+    from ..features.engagement import SETTINGS
     doc.openTransaction("Compute engagement")
     try:
         obj = create_engagement(doc, stock, toolpath)
+        for key, value in preferences.engagement_defaults().items():
+            prop = SETTINGS[key][0]
+            if key not in preferences.REQUIRED or not _property_value(obj, prop):
+                setattr(obj, prop, value)
         view_providers.attach(obj)
     except BaseException:
         doc.abortTransaction()

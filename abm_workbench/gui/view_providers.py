@@ -255,7 +255,9 @@ def colour(vobj):
     add_colour_by(vobj)
     forces = obj.Proxy.forces(obj)
     colour_by = "segment" if vobj.ColourBy == "force" and forces is None else vobj.ColourBy
-    colours, legend = face_colours(result, faces, colour_by, forces)
+    from .preferences import colour_map
+
+    colours, legend = face_colours(result, faces, colour_by, forces, colour_map())
     vobj.DiffuseColor = [(*map(float, rgb), 0.0) for rgb in colours]
     provider.legend = legend
     return legend
