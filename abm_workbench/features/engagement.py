@@ -67,7 +67,7 @@ from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, lab
 from ..jobs import tool_and_settings
 from ..jobs.run import flute_1, in_part_frame, pass_forces_of
 from .base import READ_ONLY, FeatureProxy, add_properties, document_or_active
-from .stored import PassForces, read_engagement, read_forces
+from .stored import PassForces, read_archive, read_engagement, read_forces, write_archive
 from .stock import StockFeature
 from .toolpath import ToolpathFeature, polyline
 
@@ -180,6 +180,7 @@ class EngagementFeature(FeatureProxy):
             if name not in obj.PropertiesList:
                 obj.addProperty("App::PropertyString", name, "Results", tip, _PROP_OUTPUT)
             obj.setEditorMode(name, 1)
+        add_results_data(obj)
 
     def _reset(self):
         self._result = None  # the Engagement, computed or read back
@@ -331,17 +332,41 @@ class EngagementFeature(FeatureProxy):
         return kept.forces if kept is not None else None
 
     def save_results(self, obj):
-        """Write the results the object stands for beside the document, unless they are there already."""
+        """Put the results the object stands for into the document (ResultsData) and write their CSV
+        beside it, unless they are there already."""
         kept = self._kept.get(obj.ResultsDigest)
         if kept is None:
             return
+        embed(obj, kept.result, kept.forces)
         path = results_path(obj)
         if not os.path.isfile(path) or _digest(path) != obj.ResultsDigest:
             self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
             self._write(obj, path)
 
+    def restored_from_document(self, obj):
+        """Take the results back from ResultsData (the document's own copy); True if they are the ones
+        the object stands for (its ResultsDigest and Instants)."""
+        add_results_data(obj)
+        path = obj.ResultsData
+        if not path or not os.path.isfile(path):
+            return False
+        try:
+            digest, result, forces = read_archive(path)
+        except InputError as error:
+            FreeCAD.Console.PrintWarning(f"{obj.Label}: results in the document not read ({error})\n")
+            return False
+        if digest != obj.ResultsDigest or result.length.size != obj.Instants:
+            return False
+        self._result, self._forces = result, forces
+        self._kept[digest] = Kept(None, result, forces, None, obj.Shape, (),
+                                  {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+        return True
+
     def restored(self, obj):
-        """Read the results CSV back (no recompute); mark the object touched when it is not there."""
+        """Take the results back from the document (ResultsData), else read the results CSV (no
+        recompute); mark the object touched when neither holds them."""
+        if self.restored_from_document(obj):
+            return
         path = _absolute(obj.Document, obj.ResultsFile) if obj.ResultsFile else results_path(obj)
         if not os.path.isfile(path):
             path = results_path(obj)
@@ -402,6 +427,28 @@ def _proxy(linked, kind, role, obj):
     if not isinstance(proxy, kind):
         raise InputError(f"{obj.Label}: {role} must link an ABM {role} object")
     return proxy
+
+
+def add_results_data(obj):
+    """Add ResultsData (group "Results", read-only, not touching the object) if missing."""
+    if "ResultsData" not in obj.PropertiesList:
+        obj.addProperty("App::PropertyFileIncluded", "ResultsData", "Results",
+                        "the results inside the document: a compressed NumPy archive of every array of the "
+                        "engagement (and forces), written as the document is saved", _PROP_OUTPUT)
+    obj.setEditorMode("ResultsData", READ_ONLY)
+
+
+def embed(obj, result, forces):
+    """Put the results of the engagement `obj` (its ResultsDigest's) into ResultsData: FreeCAD keeps a
+    copy of the file and saves it inside the .FCStd."""
+    handle, path = tempfile.mkstemp(prefix=f"{obj.Name}_", suffix=".npz")
+    os.close(handle)
+    try:
+        write_archive(path, obj.ResultsDigest, result, forces)
+        obj.ResultsData = path
+    finally:
+        if os.path.exists(path):
+            os.remove(path)
 
 
 def add_version_2_properties(obj, mode):

@@ -463,3 +463,36 @@ def test_helix_30_changes_the_length_of_cut_as_flute_engagement_does(doc):
     assert not np.allclose(result.length, straight.length)
     assert engagement.MaxLengthOfCut.Value == pytest.approx(expected.length.max(), abs=1e-12)
     assert_same_forces(engagement.Proxy.forces(engagement), model_test_forces(helix=30.0), 1e-9)
+
+
+def test_a_copied_fcstd_alone_reopens_with_its_results_and_forces_without_recompute(doc, tmp_path, monkeypatch):
+    import shutil
+
+    _, _, engagement = model_test(doc, forces=True, material="al7075-t6", immersion=(0.0, 120.0))
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert engagement.isValid() and engagement.getEditorMode("ResultsData") == ["ReadOnly"]
+    saved = tmp_path / "project" / "job.FCStd"
+    saved.parent.mkdir()
+    doc.saveAs(str(saved))
+    FreeCAD.closeDocument(doc.Name)
+    # only the .FCStd travels: the folder it was saved in, results CSV and all, is gone
+    copy = tmp_path / "elsewhere" / "copy.FCStd"
+    copy.parent.mkdir()
+    shutil.copyfile(saved, copy)
+    shutil.rmtree(saved.parent)
+
+    def no_engine(*args, **kwargs):
+        raise AssertionError("the engine ran on restore")
+
+    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
+    monkeypatch.setattr(engagement_module, "pass_forces_of", no_engine)
+    reopened = FreeCAD.openDocument(str(copy))
+    try:
+        engagement = reopened.getObject("Engagement")
+        assert "Touched" not in engagement.State and engagement.isValid()
+        assert_same(engagement.Proxy.result(engagement), reference())  # bit for bit: the arrays themselves
+        assert_same_forces(engagement.Proxy.forces(engagement), model_test_forces(), 1e-9)  # as computed
+        assert os.listdir(copy.parent) == ["copy.FCStd"]
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
