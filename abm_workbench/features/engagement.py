@@ -333,15 +333,17 @@ class EngagementFeature(FeatureProxy):
 
     def save_results(self, obj):
         """Put the results the object stands for into the document (ResultsData) and write their CSV
-        beside it, unless they are there already."""
+        beside it, unless they are there already (an object restored from an older file gains
+        ResultsData as it is restored)."""
         kept = self._kept.get(obj.ResultsDigest)
         if kept is None:
             return
-        embed(obj, kept.result, kept.forces)
         path = results_path(obj)
         if not os.path.isfile(path) or _digest(path) != obj.ResultsDigest:
             self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
             self._write(obj, path)
+        if "ResultsData" in obj.PropertiesList:
+            embed(obj, kept.result, kept.forces)
 
     def restored_from_document(self, obj):
         """Take the results back from ResultsData (the document's own copy); True if they are the ones

@@ -288,7 +288,7 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     doc.recompute()
     for name in ("YWindow", "YWindowMin", "YWindowMax", "ValidationReport", "HelixAngle", "Forces", "Material",
                  "Ktc", "Krc", "Kac", "Kte", "Kre", "Kae", "ImmersionStart", "ImmersionEnd", "PeakForce",
-                 "ForceFeedPerTooth"):  # as saved by version 1
+                 "ForceFeedPerTooth", "ResultsData"):  # as saved by version 1
         engagement.removeProperty(name)
     engagement.Version = 1
     toolpath = doc.getObject("Toolpath")
@@ -316,11 +316,13 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
         reopened.recompute()
     finally:
         FreeCAD.closeDocument(reopened.Name)
+    # the document holds the results it was saved with (ResultsData): those of inclination 10°
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
         assert engagement.Inclination.Value == 10.0
-        assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
+        assert "Touched" not in engagement.State
+        assert_same(engagement.Proxy.result(engagement), reference())
     finally:
         FreeCAD.closeDocument(reopened.Name)
 
