@@ -66,7 +66,8 @@ from ..formats.results_csv import write_results
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
 from ..jobs import tool_and_settings
 from ..jobs.run import flute_1, in_part_frame, pass_forces_of
-from .base import READ_ONLY, FeatureProxy, add_properties, document_or_active
+from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_properties, document_or_active
+from .base import remember_relative
 from .stored import PassForces, read_archive, read_engagement, read_forces, write_archive
 from .stock import StockFeature
 from .toolpath import ToolpathFeature, polyline
@@ -87,8 +88,6 @@ SETTINGS = {
     **{name: (COEFFICIENT_PROPERTIES[name], getattr(MATERIALS[MATERIAL_CHOICES[0]][0], name))
        for name in COEFFICIENT_NAMES},
 }
-#: Property type flag: changing it does not touch the object (FreeCAD's Prop_Output).
-_PROP_OUTPUT = 8
 _TEMP_FOLDERS = {}  # document Name -> temporary results folder of an unsaved document
 #: Results kept per engagement object (for undo, redo and Cancel), and the groups of the properties
 #: they depend on.
@@ -652,11 +651,14 @@ def engaged_surface_parts(result):
 
 
 class _SaveObserver:
-    """Writes the results of every engagement object beside a document as it is saved; removes an
-    unsaved document's temporary results folder when it is closed."""
+    """As a document is saved: remembers the input files of its ABM objects relative to it and writes
+    the results of every engagement object into it and beside it; removes an unsaved document's
+    temporary results folder when it is closed."""
 
     def slotStartSaveDocument(self, doc, filename):
         for obj in doc.Objects:
+            if isinstance(getattr(obj, "Proxy", None), FeatureProxy):
+                remember_relative(obj, filename)
             if isinstance(getattr(obj, "Proxy", None), EngagementFeature):
                 try:
                     obj.Proxy.save_results(obj)

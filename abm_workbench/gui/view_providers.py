@@ -21,6 +21,11 @@ What each shows (colours RGB 0..1, from :mod:`abm_workbench.report.colours`):
   keeps its colours: FreeCAD draws its bounding box in the selection colour (``SelectionStyle``
   BoundBox) instead of painting its faces.
 
+A document opened with input files that are neither where they were nor where they were
+relative to the document (``features.base.missing_files``) gets one dialog (:func:`ask_repoint`):
+it names them and asks for the folder that holds them now; they are re-pointed there by name
+and the document recomputed.
+
 After undo and redo (the observer's ``slotUndoDocument`` / ``slotRedoDocument``) the engagements
 of the document are recoloured and the dock told (``gui.state`` "refresh"): the results follow
 the restored properties (``EngagementFeature.result``).
@@ -300,11 +305,19 @@ class _Observer:
 
     def slotActivateDocument(self, doc):
         attach_all(doc)
+        if doc.Name not in _ASKED:  # once per document: as it is opened
+            from PySide import QtCore
+
+            name = doc.Name
+            _ASKED.add(name)
+            QtCore.QTimer.singleShot(0, lambda: name in FreeCAD.listDocuments()
+                                     and ask_repoint(FreeCAD.getDocument(name)))
 
     def slotRecomputedObject(self, obj):
         attach(obj)
 
     def slotDeletedDocument(self, doc):
+        _ASKED.discard(doc.Name)
         state.tell("forget", doc)
 
     def slotUndoDocument(self, doc):
@@ -322,7 +335,42 @@ class _Observer:
                 colour_soon(obj)
 
 
+def ask_repoint(doc):
+    """When input files of `doc` are missing: one dialog naming them that asks for the folder holding
+    them now; those found there by name are re-pointed and the document recomputed. The objects
+    re-pointed."""
+    import FreeCADGui
+    from PySide import QtGui
+
+    from ..features.base import missing_files, repoint
+    from .i18n import translate
+
+    missing = missing_files(doc)
+    if not missing:
+        return []
+    names = "\n".join(f"{obj.Label}: {path}" for obj, _, path in missing)
+    dialog = QtGui.QFileDialog(FreeCADGui.getMainWindow(),
+                               translate("Input files missing: choose the folder that holds them")
+                               + f" ({len(missing)})", os.path.dirname(doc.FileName))
+    dialog.setObjectName("ABM_Repoint")
+    dialog.setFileMode(QtGui.QFileDialog.Directory)
+    dialog.setOptions(QtGui.QFileDialog.ShowDirsOnly | QtGui.QFileDialog.DontUseNativeDialog)
+    dialog.setLabelText(QtGui.QFileDialog.LookIn, translate("Missing:") + " " + names.replace("\n", "; "))
+    folder = dialog.selectedFiles()[0] if dialog.exec_() else ""
+    dialog.deleteLater()
+    if not folder:
+        FreeCAD.Console.PrintWarning(f"ABM: {doc.Label}: input files missing, not re-pointed:\n{names}\n")
+        return []
+    moved = repoint(doc, folder)
+    for obj, _, path in missing_files(doc):
+        FreeCAD.Console.PrintWarning(f"ABM: {obj.Label}: {os.path.basename(path)} is not in {folder}\n")
+    if moved:
+        doc.recompute()
+    return moved
+
+
 _OBSERVER = None
+_ASKED = set()  # names of the documents checked for missing input files
 
 
 def install_observer():

@@ -498,3 +498,54 @@ def test_a_copied_fcstd_alone_reopens_with_its_results_and_forces_without_recomp
         assert os.listdir(copy.parent) == ["copy.FCStd"]
     finally:
         FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_moved_project_reopens_with_its_input_files_and_missing_ones_are_repointed(doc, tmp_path):
+    import shutil
+
+    from abm_workbench.features.base import missing_files, repoint
+
+    project = tmp_path / "project"
+    (project / "inputs").mkdir(parents=True)
+    for name in ("stock.json", "toolpath.csv"):
+        shutil.copyfile(os.path.join(MODEL, name), project / "inputs" / name)
+    stock = create_stock(doc, str(project / "inputs" / "stock.json"))
+    toolpath = create_toolpath(doc, str(project / "inputs" / "toolpath.csv"))
+    create_engagement(doc, stock, toolpath, **SETTINGS)
+    doc.recompute()
+    doc.saveAs(str(project / "job.FCStd"))
+    assert (stock.SourceFileRelative, toolpath.FileRelative) == (os.path.join("inputs", "stock.json"),
+                                                                 os.path.join("inputs", "toolpath.csv"))
+    FreeCAD.closeDocument(doc.Name)
+    # the project folder moved whole: the input files found beside the document, and the results
+    # recomputed from them equal the engine's
+    moved = tmp_path / "moved"
+    shutil.move(str(project), str(moved))
+    reopened = FreeCAD.openDocument(str(moved / "job.FCStd"))
+    try:
+        stock, toolpath = reopened.getObject("Stock"), reopened.getObject("Toolpath")
+        assert (stock.SourceFile, toolpath.File) == (str(moved / "inputs" / "stock.json"),
+                                                    str(moved / "inputs" / "toolpath.csv"))
+        assert missing_files(reopened) == []
+        engagement = reopened.getObject("Engagement")
+        for obj in reopened.Objects:
+            obj.touch()
+        reopened.recompute()
+        assert all(obj.isValid() for obj in reopened.Objects)
+        assert_same(engagement.Proxy.result(engagement), reference())
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+    # the FCStd alone: both files missing, re-pointed to a folder that holds them by name
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    shutil.copyfile(moved / "job.FCStd", alone / "job.FCStd")
+    shutil.rmtree(moved)
+    reopened = FreeCAD.openDocument(str(alone / "job.FCStd"))
+    try:
+        missing = missing_files(reopened)
+        assert sorted((obj.Name, prop) for obj, prop, _ in missing) == [("Stock", "SourceFile"), ("Toolpath", "File")]
+        assert [obj.Name for obj in repoint(reopened, MODEL)] == ["Stock", "Toolpath"]
+        assert missing_files(reopened) == []
+        assert reopened.getObject("Toolpath").File == os.path.join(MODEL, "toolpath.csv")
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
