@@ -306,12 +306,8 @@ class _Observer:
     def slotActivateDocument(self, doc):
         attach_all(doc)
         if doc.Name not in _ASKED:  # once per document: as it is opened
-            from PySide import QtCore
-
-            name = doc.Name
-            _ASKED.add(name)
-            QtCore.QTimer.singleShot(0, lambda: name in FreeCAD.listDocuments()
-                                     and ask_repoint(FreeCAD.getDocument(name)))
+            _ASKED.add(doc.Name)
+            _ask_when_restored(doc.Name)
 
     def slotRecomputedObject(self, obj):
         attach(obj)
@@ -333,6 +329,26 @@ class _Observer:
         for obj in doc.Objects:
             if kind(obj) == "ABM::Engagement" and isinstance(getattr(obj.ViewObject, "Proxy", None), ViewProvider):
                 colour_soon(obj)
+
+
+#: Waiting for an opened document's objects: RESTORE_TRIES times RESTORE_WAIT ms at most.
+RESTORE_TRIES, RESTORE_WAIT = 100, 50
+
+
+def _ask_when_restored(name, tries=RESTORE_TRIES):
+    """ask_repoint for the document `name` once it is restored: FreeCAD activates a document it opens
+    before it reads its objects, and runs the event loop meanwhile; an empty document is waited for
+    `tries` times RESTORE_WAIT ms at most."""
+    from PySide import QtCore
+
+    doc = FreeCAD.listDocuments().get(name)
+    if doc is None:
+        return
+    if doc.Restoring or not doc.Objects:
+        if tries:
+            QtCore.QTimer.singleShot(RESTORE_WAIT, lambda: _ask_when_restored(name, tries - 1))
+        return
+    ask_repoint(doc)
 
 
 def ask_repoint(doc):
