@@ -115,6 +115,14 @@
         <source>Fixed by the toolpath file, the values it was made for:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Input files missing: choose the folder that holds them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Missing:</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ABM_ComputeEngagement</name>

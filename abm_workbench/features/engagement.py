@@ -337,10 +337,11 @@ class EngagementFeature(FeatureProxy):
         kept = self._kept.get(obj.ResultsDigest)
         if kept is None:
             return
-        path = results_path(obj)
-        if not os.path.isfile(path) or _digest(path) != obj.ResultsDigest:
+        path, digest = results_path(obj), obj.ResultsDigest
+        if not os.path.isfile(path) or _digest(path) != digest:
             self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
             self._write(obj, path)
+            self._kept[obj.ResultsDigest] = self._kept.pop(digest)  # the same results, written anew
         if "ResultsData" in obj.PropertiesList:
             embed(obj, kept.result, kept.forces)
 

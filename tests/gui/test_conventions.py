@@ -9,7 +9,6 @@ import glob
 import os
 import xml.etree.ElementTree as ElementTree
 
-import pytest
 
 from tests.conftest import ROOT
 

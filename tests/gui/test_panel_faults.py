@@ -245,7 +245,8 @@ def test_typed_keys_cancel_undo_letters_width_and_selection(verdict):
     assert clean(verdict["report_undo"]), verdict["report_undo"]
     # (d) letters: the value is refused in plain words, the field marked, OK and Enter do nothing
     raw, message, ok, marked = verdict["letters"]
-    assert message == "Tool diameter: “1x2” is not a length: type a number, with a unit if you like (12 mm, 0.5 in)."
+    assert message == ("Tool diameter: “1x2” is not a length: type a number, with a unit if you like "
+                       "(12 mm, 0.5 in).")
     assert not ok and marked
     assert verdict["letters_enter"] == [True, 10.0]
     assert verdict["letters_fixed"] == ["", True, False]
