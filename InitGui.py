@@ -1,4 +1,5 @@
-"""Registers the ABM workbench with FreeCAD's GUI; its commands are imported on activation.
+"""Registers the ABM workbench with FreeCAD's GUI (its commands are imported on activation), its
+preferences page and its translations folder.
 
 FreeCAD executes this file with separate globals and locals: the class and its methods cannot
 see names imported at the top, so each method imports what it uses.
@@ -39,3 +40,10 @@ FreeCADGui.addWorkbench(ABMWorkbench())
 from abm_workbench.gui.view_providers import install_observer  # noqa: E402
 
 install_observer()
+
+# Edit -> Preferences -> ABM, and the translations (translations/ABM_<language>.qm).
+from abm_workbench.gui import i18n, preferences  # noqa: E402
+
+FreeCADGui.addPreferencePage(preferences.PreferencesPage, "ABM")
+FreeCADGui.addLanguagePath(i18n.FOLDER)
+FreeCADGui.updateLocale()

@@ -7,11 +7,22 @@ proxy's kind and the format version, so nothing of the engine is pickled into th
 What a feature computes either is its Shape (saved by FreeCAD as BREP), a read-only property,
 or, for the engagement, a results CSV beside the document (see :mod:`.engagement`).
 
+Input files: the stock's ``SourceFile`` and the toolpath's ``File`` (:data:`FILE_PROPERTIES`) are
+absolute paths; as the document is saved (:func:`remember_relative`, called by the engagement
+module's save observer) each is also remembered relative to the document's folder, in
+``SourceFileRelative`` / ``FileRelative``. On restore, an input file that is not where its
+absolute path says but is where its relative one says (the project folder moved or copied
+whole) is re-pointed there (:func:`repoint_relative`). What is still missing,
+:func:`missing_files` lists and :func:`repoint` re-points to one folder holding the files by
+name (the GUI asks for that folder in one dialog).
+
 Migration: every object carries a read-only ``Version`` property (group "Base"), set to
 :data:`VERSION` when it is created. On restore, :meth:`FeatureProxy.onDocumentRestored` calls
 :meth:`FeatureProxy.migrate` with the version the file was saved with; a later version of the
 workbench adds missing properties, renames old ones, etc. there, then sets ``Version``.
 """
+
+import os
 
 from ..cad.freecad_env import FreeCAD
 
@@ -19,6 +30,73 @@ from ..cad.freecad_env import FreeCAD
 VERSION = 4
 #: Editor modes of FreeCAD properties.
 READ_ONLY, HIDDEN = 1, 2
+#: The property holding the input file of each kind of object; its relative twin adds RELATIVE.
+FILE_PROPERTIES = {"ABM::Stock": "SourceFile", "ABM::Toolpath": "File"}
+RELATIVE = "Relative"
+#: Property type flag: changing it does not touch the object (FreeCAD's Prop_Output).
+PROP_OUTPUT = 8
+
+
+def file_property(obj):
+    """The name of the input-file property of the ABM object `obj`, or None (no file, not ABM)."""
+    return FILE_PROPERTIES.get(getattr(getattr(obj, "Proxy", None), "KIND", None))
+
+
+def remember_relative(obj, filename):
+    """Remember the input file of `obj` relative to the folder of `filename` (the document being saved)."""
+    prop = file_property(obj)
+    path = getattr(obj, prop, "") if prop else ""
+    if not path:
+        return
+    name = prop + RELATIVE
+    if name not in obj.PropertiesList:
+        obj.addProperty("App::PropertyString", name, obj.getGroupOfProperty(prop),
+                        f"{prop} relative to the folder of the document (used on opening when {prop} is missing)",
+                        PROP_OUTPUT)
+        obj.setEditorMode(name, READ_ONLY)
+    relative = os.path.relpath(os.path.abspath(path), os.path.dirname(os.path.abspath(filename)))
+    if getattr(obj, name) != relative:
+        setattr(obj, name, relative)
+
+
+def repoint_relative(obj):
+    """Re-point the input file of `obj` to its relative path from the document's folder when the absolute
+    one is missing and the relative one exists; True if re-pointed."""
+    prop = file_property(obj)
+    if prop is None or prop + RELATIVE not in obj.PropertiesList or not obj.Document.FileName:
+        return False
+    path, relative = getattr(obj, prop), getattr(obj, prop + RELATIVE)
+    if not relative or os.path.isfile(path):
+        return False
+    moved = os.path.normpath(os.path.join(os.path.dirname(obj.Document.FileName), relative))
+    if not os.path.isfile(moved):
+        return False
+    setattr(obj, prop, moved)
+    FreeCAD.Console.PrintMessage(f"{obj.Label}: {prop} {path} is missing; using {moved}\n")
+    return True
+
+
+def missing_files(doc):
+    """[(object, property, path)] of the ABM objects of `doc` whose input file is missing."""
+    missing = []
+    for obj in doc.Objects:
+        prop = file_property(obj)
+        path = getattr(obj, prop, "") if prop else ""
+        if path and not os.path.isfile(path):
+            missing.append((obj, prop, path))
+    return missing
+
+
+def repoint(doc, folder):
+    """Re-point the missing input files of `doc` to the files of the same name in `folder`; the objects
+    re-pointed (touched: the next recompute reads the files)."""
+    moved = []
+    for obj, prop, path in missing_files(doc):
+        candidate = os.path.join(folder, os.path.basename(path))
+        if os.path.isfile(candidate):
+            setattr(obj, prop, candidate)
+            moved.append(obj)
+    return moved
 
 
 def document_or_active(doc):
@@ -77,6 +155,7 @@ class FeatureProxy:
 
     def onDocumentRestored(self, obj):
         """Migrate an object saved by an older version, then let the subclass restore itself."""
+        repoint_relative(obj)
         saved = int(getattr(obj, "Version", 0)) if "Version" in obj.PropertiesList else 0
         if saved < VERSION:
             self.migrate(obj, saved)

@@ -66,8 +66,9 @@ from ..formats.results_csv import write_results
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
 from ..jobs import tool_and_settings
 from ..jobs.run import check_model, flute_1, in_part_frame, pass_forces_of
-from .base import READ_ONLY, FeatureProxy, add_properties, document_or_active
-from .stored import PassForces, read_engagement, read_forces
+from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_properties, document_or_active
+from .base import remember_relative
+from .stored import PassForces, read_archive, read_engagement, read_forces, write_archive
 from .stock import StockFeature
 from .toolpath import ToolpathFeature, polyline
 
@@ -87,9 +88,14 @@ SETTINGS = {
     **{name: (COEFFICIENT_PROPERTIES[name], getattr(MATERIALS[MATERIAL_CHOICES[0]][0], name))
        for name in COEFFICIENT_NAMES},
 }
-#: Property type flag: changing it does not touch the object (FreeCAD's Prop_Output).
-_PROP_OUTPUT = 8
 _TEMP_FOLDERS = {}  # document Name -> temporary results folder of an unsaved document
+#: Results kept per engagement object (for undo, redo and Cancel), and the groups of the properties
+#: they depend on.
+KEPT = 8
+INPUT_GROUPS = ("Inputs", "Tool", "Cut", "Forces", "Display")
+#: Properties execute sets from the results (restored with kept results).
+KEPT_PROPERTIES = ("DepthOfCutMin", "DepthOfCutMax", "MaxLengthOfCut", "Instants", "EngagedInstants",
+                   "EngagedCLPoints", "EngineTime", "Parameters", "Warnings", "PeakForce", "ForceFeedPerTooth")
 
 
 class EngagementInputs(NamedTuple):
@@ -173,6 +179,7 @@ class EngagementFeature(FeatureProxy):
             if name not in obj.PropertiesList:
                 obj.addProperty("App::PropertyString", name, "Results", tip, _PROP_OUTPUT)
             obj.setEditorMode(name, 1)
+        add_results_data(obj)
 
     def _reset(self):
         self._result = None  # the Engagement, computed or read back
@@ -180,6 +187,7 @@ class EngagementFeature(FeatureProxy):
         self._stale = False  # restored without results: touched once the document is restored
         self._toolpath = None  # the Toolpath of the results (for the summary's CL point columns)
         self._forces = None  # the PassForces of the results, with forces on
+        self._kept = {}  # ResultsDigest -> Kept: the last KEPT results, for undo, redo and Cancel
 
     # ---- computing -------------------------------------------------------------------------
     def inputs(self, obj):
@@ -208,13 +216,18 @@ class EngagementFeature(FeatureProxy):
         return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)
 
     def execute(self, obj):
-        """Run the engine; store the results (CSV, read-only properties, Shape)."""
+        """Run the engine; store the results (CSV, read-only properties, Shape). Inputs the results of
+        which are kept (:meth:`result`) take them back instead of running the engine again."""
         self._result, self._written, self._forces = None, None, None
+        obj.ResultsDigest = ""  # no results while this fails
         model = force_model_of(obj)
         toolpath, hints, parameters, tool, settings, stock = self.inputs(obj)
         staircase = stock.model
         if obj.YWindow != "custom" and stock.y_window is not None:
             obj.YWindowMin, obj.YWindowMax = stock.y_window
+        key = inputs_key(obj, toolpath, stock)
+        if self._take_back(obj, key):
+            return
 
         started = time.perf_counter()
         result = in_part_frame(flute_1(staircase, tool, toolpath, settings), hints.frame)
@@ -240,6 +253,31 @@ class EngagementFeature(FeatureProxy):
         obj.Parameters = parameters.describe(lambda parameter: parameter.prop)
         obj.Warnings = warnings
         obj.Shape = engaged_surfaces(result) if obj.ShowSurfaces else Part.Shape()
+        self._keep(obj, key, (toolpath, stock))
+
+    def _keep(self, obj, key, sources):
+        """Keep the results just made under their ResultsDigest (the last KEPT of them)."""
+        kept = Kept(key, self._result, self._forces, self._toolpath, obj.Shape, sources,
+                    {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+        self._kept.pop(obj.ResultsDigest, None)
+        self._kept[obj.ResultsDigest] = kept
+        while len(self._kept) > KEPT:
+            self._kept.pop(next(iter(self._kept)))
+
+    def _take_back(self, obj, key):
+        """Make kept results of the inputs `key` the object's again (CSV, properties, Shape); False if none."""
+        found = [(digest, kept) for digest, kept in self._kept.items() if kept.key == key]
+        if not found:
+            return False
+        digest, kept = found[-1]
+        self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
+        self._write(obj, results_path(obj))
+        for name, value in kept.properties.items():
+            setattr(obj, name, value)
+        obj.Shape = kept.shape
+        if obj.ResultsDigest != digest:  # the CSV says otherwise (another writer): keep under its digest
+            self._kept[obj.ResultsDigest] = self._kept.pop(digest)
+        return True
 
     def migrate(self, obj, saved_version):
         """Version 2 added the y window and the validation report; objects saved before were computed
@@ -281,24 +319,60 @@ class EngagementFeature(FeatureProxy):
 
     # ---- results --------------------------------------------------------------------------
     def result(self, obj):
-        """The Engagement (arrays over CL points × φ), or None before a successful recompute."""
-        return self._result
+        """The Engagement (arrays over CL points × φ) the object's properties stand for, or None before a
+        successful recompute.
+
+        Results are keyed by their CSV's digest (``ResultsDigest``), a property that undo, redo and an
+        aborted transaction restore with the others: the results come back with them.
+        """
+        kept = self._kept.get(obj.ResultsDigest)
+        return kept.result if kept is not None else None
 
     def forces(self, obj):
         """The PassForces of the results (fx, fy, fz, torque, power per instant), or None: forces off,
         or before a successful recompute."""
-        return self._forces
+        kept = self._kept.get(obj.ResultsDigest)
+        return kept.forces if kept is not None else None
 
     def save_results(self, obj):
-        """Write the results in memory beside the document, unless they are there already."""
-        if self._result is None:
+        """Put the results the object stands for into the document (ResultsData) and write their CSV
+        beside it, unless they are there already (an object restored from an older file gains
+        ResultsData as it is restored)."""
+        kept = self._kept.get(obj.ResultsDigest)
+        if kept is None:
             return
-        path = results_path(obj)
-        if self._written != path or not os.path.isfile(path):
+        path, digest = results_path(obj), obj.ResultsDigest
+        if not os.path.isfile(path) or _digest(path) != digest:
+            self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
             self._write(obj, path)
+            self._kept[obj.ResultsDigest] = self._kept.pop(digest)  # the same results, written anew
+        if "ResultsData" in obj.PropertiesList:
+            embed(obj, kept.result, kept.forces)
+
+    def restored_from_document(self, obj):
+        """Take the results back from ResultsData (the document's own copy); True if they are the ones
+        the object stands for (its ResultsDigest and Instants)."""
+        add_results_data(obj)
+        path = obj.ResultsData
+        if not path or not os.path.isfile(path):
+            return False
+        try:
+            digest, result, forces = read_archive(path)
+        except InputError as error:
+            FreeCAD.Console.PrintWarning(f"{obj.Label}: results in the document not read ({error})\n")
+            return False
+        if digest != obj.ResultsDigest or result.length.size != obj.Instants:
+            return False
+        self._result, self._forces = result, forces
+        self._kept[digest] = Kept(None, result, forces, None, obj.Shape, (),
+                                  {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+        return True
 
     def restored(self, obj):
-        """Read the results CSV back (no recompute); mark the object touched when it is not there."""
+        """Take the results back from the document (ResultsData), else read the results CSV (no
+        recompute); mark the object touched when neither holds them."""
+        if self.restored_from_document(obj):
+            return
         path = _absolute(obj.Document, obj.ResultsFile) if obj.ResultsFile else results_path(obj)
         if not os.path.isfile(path):
             path = results_path(obj)
@@ -320,6 +394,37 @@ class EngagementFeature(FeatureProxy):
             self._stale = True
             return
         self._result, self._written, self._forces = result, path, forces
+        self._kept[obj.ResultsDigest] = Kept(None, result, forces, None, obj.Shape, (),
+                                             {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+
+
+class Kept(NamedTuple):
+    """Results an engagement object keeps for undo, redo and Cancel: the inputs_key they were computed
+    for (None: read back), the Engagement, PassForces (or None), Toolpath (or None), the Shape, the
+    (Toolpath, Stock) they came from (kept alive, so their ids in the key stay theirs) and the
+    values of KEPT_PROPERTIES."""
+
+    key: object
+    result: object
+    forces: object
+    toolpath: object
+    shape: object
+    sources: tuple
+    properties: dict
+
+
+def inputs_key(obj, toolpath, stock):
+    """What the results of the engagement `obj` depend on: its input properties (groups INPUT_GROUPS,
+    the y window's ends only when it is custom) and the Toolpath and Stock its links load (the
+    loaders keep one object while their files are unchanged)."""
+    values = []
+    for name in sorted(obj.PropertiesList):
+        if obj.getGroupOfProperty(name) not in INPUT_GROUPS or (name.startswith("YWindowM")
+                                                                and obj.YWindow != "custom"):
+            continue
+        value = getattr(obj, name)
+        values.append((name, value.Name if hasattr(value, "Document") else str(value)))
+    return tuple(values), id(toolpath), id(stock)
 
 
 def _proxy(linked, kind, role, obj):
@@ -328,6 +433,28 @@ def _proxy(linked, kind, role, obj):
     if not isinstance(proxy, kind):
         raise InputError(f"{obj.Label}: {role} must link an ABM {role} object")
     return proxy
+
+
+def add_results_data(obj):
+    """Add ResultsData (group "Results", read-only, not touching the object) if missing."""
+    if "ResultsData" not in obj.PropertiesList:
+        obj.addProperty("App::PropertyFileIncluded", "ResultsData", "Results",
+                        "the results inside the document: a compressed NumPy archive of every array of the "
+                        "engagement (and forces), written as the document is saved", _PROP_OUTPUT)
+    obj.setEditorMode("ResultsData", READ_ONLY)
+
+
+def embed(obj, result, forces):
+    """Put the results of the engagement `obj` (its ResultsDigest's) into ResultsData: FreeCAD keeps a
+    copy of the file and saves it inside the .FCStd."""
+    handle, path = tempfile.mkstemp(prefix=f"{obj.Name}_", suffix=".npz")
+    os.close(handle)
+    try:
+        write_archive(path, obj.ResultsDigest, result, forces)
+        obj.ResultsData = path
+    finally:
+        if os.path.exists(path):
+            os.remove(path)
 
 
 def add_version_2_properties(obj, mode):
@@ -529,11 +656,14 @@ def engaged_surface_parts(result):
 
 
 class _SaveObserver:
-    """Writes the results of every engagement object beside a document as it is saved; removes an
-    unsaved document's temporary results folder when it is closed."""
+    """As a document is saved: remembers the input files of its ABM objects relative to it and writes
+    the results of every engagement object into it and beside it; removes an unsaved document's
+    temporary results folder when it is closed."""
 
     def slotStartSaveDocument(self, doc, filename):
         for obj in doc.Objects:
+            if isinstance(getattr(obj, "Proxy", None), FeatureProxy):
+                remember_relative(obj, filename)
             if isinstance(getattr(obj, "Proxy", None), EngagementFeature):
                 try:
                     obj.Proxy.save_results(obj)

@@ -5,10 +5,14 @@ the file into the same :class:`~abm_workbench.engine.Engagement` the engine retu
 every number within 5e-11 of the computed one (the CSV keeps 10 decimals). The depth of cut
 per CL point is recomputed from the LEP / UEP z, as the engine computes it. With cutting
 forces, :func:`read_forces` gives them back as a :class:`PassForces` (forces within 5e-11 N).
+
+The document keeps its results itself, in a compressed NumPy archive (:func:`write_archive`,
+:func:`read_archive`): every array of the Engagement and of the PassForces as computed, bit for
+bit, and the ResultsDigest of the object they belong to.
 """
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Optional
 
 import numpy as np
@@ -139,3 +143,38 @@ def read_forces(path, feed):
     power = columns["power"].reshape(m, p) if "power" in columns else None
     return PassForces(columns["phi_deg"][:p].astype(float), xyz, columns["torque"].reshape(m, p), power,
                       np.broadcast_to(np.asarray(feed, dtype=float), (m,)).copy())
+
+
+#: Key prefixes of the arrays in an embedded results archive (write_archive).
+_ENGAGEMENT, _FORCES = "engagement.", "forces."
+
+
+def write_archive(path, digest, result, forces=None):
+    """Write the Engagement `result` (and the PassForces `forces`, if any) to `path` as a compressed
+    NumPy archive (.npz), with `digest`: the ResultsDigest of the object they belong to (text)."""
+    arrays = {"digest": np.array(digest)}
+    arrays.update({_ENGAGEMENT + field.name: getattr(result, field.name) for field in fields(Engagement)})
+    if forces is not None:
+        arrays.update({_FORCES + field.name: getattr(forces, field.name) for field in fields(PassForces)
+                       if getattr(forces, field.name) is not None})
+    with open(path, "wb") as handle:
+        np.savez_compressed(handle, **arrays)
+
+
+def read_archive(path):
+    """(digest, Engagement, PassForces or None) of an archive written by write_archive; InputError
+    naming the file when it is not one."""
+    name = os.fspath(path)
+    try:
+        with np.load(path, allow_pickle=False) as archive:
+            arrays = {key: archive[key] for key in archive.files}
+    except (OSError, ValueError) as error:
+        raise InputError(f"{name}: not a results archive ({error})") from None
+    missing = [field.name for field in fields(Engagement) if _ENGAGEMENT + field.name not in arrays]
+    if "digest" not in arrays or missing:
+        raise InputError(f"{name}: not a results archive: no {missing[0] if missing else 'digest'}")
+    result = Engagement(**{field.name: arrays[_ENGAGEMENT + field.name] for field in fields(Engagement)})
+    forces = None
+    if _FORCES + "xyz" in arrays:
+        forces = PassForces(**{field.name: arrays.get(_FORCES + field.name) for field in fields(PassForces)})
+    return str(arrays["digest"]), result, forces

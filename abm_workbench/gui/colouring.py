@@ -24,7 +24,7 @@ import numpy as np
 COLOUR_BY = ("segment", "length", "area", "force")
 QUANTITIES = {"length": ("length", "length of cut", "mm"), "area": ("area", "cut area", "mm²"),
               "force": ("resultant", "resultant cutting force", "N")}
-#: matplotlib colour map of the quantities.
+#: matplotlib colour map of the quantities, unless told another (the preferences' ColourMap).
 COLOUR_MAP = "viridis"
 #: Colour of the chosen CL point, in the 3D view and on the dock's plots.
 HIGHLIGHT_COLOUR = (1.0, 0.85, 0.0)
@@ -43,7 +43,8 @@ class FaceMap:
 @dataclass(frozen=True)
 class Legend:
     """What the colours mean. kind: a COLOUR_BY value. entries: [(name, rgb)] for segments.
-    label, unit, low, high: the quantity's name, unit and range of the colour map."""
+    label, unit, low, high: the quantity's name, unit and range of the colour map. colour_map: its
+    matplotlib name."""
 
     kind: str
     entries: tuple = ()
@@ -51,6 +52,7 @@ class Legend:
     unit: str = ""
     low: float = 0.0
     high: float = 0.0
+    colour_map: str = COLOUR_MAP
 
 
 def face_map(result, shape):
@@ -81,10 +83,11 @@ def face_map(result, shape):
     return FaceMap(np.array(cls, dtype=int), rows.astype(int), np.array(surfaces, dtype=object))
 
 
-def face_colours(result, faces: FaceMap, colour_by, forces=None):
+def face_colours(result, faces: FaceMap, colour_by, forces=None, colour_map=COLOUR_MAP):
     """(colours (n, 3) RGB 0..1, Legend) of the faces for `colour_by` (a COLOUR_BY value).
 
     forces: the engagement's forces (PassForces or Forces), needed for ``force``; ValueError without.
+    colour_map: the matplotlib colour map of the quantities.
     """
     from ..report.colours import SURFACE_COLOURS
 
@@ -100,7 +103,7 @@ def face_colours(result, faces: FaceMap, colour_by, forces=None):
         raise ValueError("colour by force needs the engagement's forces: turn Forces on and recompute")
     values = face_values(getattr(forces if colour_by == "force" else result, attribute), faces)
     low, high = (float(values.min()), float(values.max())) if values.size else (0.0, 0.0)
-    return quantity_colours(values, low, high), Legend(colour_by, (), label, unit, low, high)
+    return quantity_colours(values, low, high, colour_map), Legend(colour_by, (), label, unit, low, high, colour_map)
 
 
 def face_values(quantity, faces: FaceMap):
@@ -109,10 +112,10 @@ def face_values(quantity, faces: FaceMap):
     return 0.5 * (quantity[faces.cl, faces.rows[:, 0]] + quantity[faces.cl, faces.rows[:, 1]])
 
 
-def quantity_colours(values, low, high):
-    """(n, 3) RGB of `values` on COLOUR_MAP, low..high mapped to its two ends."""
+def quantity_colours(values, low, high, colour_map=COLOUR_MAP):
+    """(n, 3) RGB of `values` on the matplotlib colour map `colour_map`, low..high mapped to its two ends."""
     from matplotlib import colormaps
 
     span = high - low
     fraction = (np.asarray(values, dtype=float) - low) / span if span > 0 else np.zeros(np.shape(values))
-    return colormaps[COLOUR_MAP](np.clip(fraction, 0.0, 1.0))[..., :3]
+    return colormaps[colour_map](np.clip(fraction, 0.0, 1.0))[..., :3]

@@ -18,6 +18,8 @@ import FreeCAD
 import FreeCADGui
 
 from . import dock, task_panel, view_providers  # noqa: F401 (the dock and task panel listen to gui.state)
+from . import preferences
+from .i18n import QT_TRANSLATE_NOOP
 from .progress import ProgressDialog, busy
 from .reporting import PROG, CommandError, recompute_checked, report_error
 
@@ -57,10 +59,12 @@ class Command:
     Name = "ABM"
     MenuText = ""
     ToolTip = ""
+    Accel = ""
     needs_document = True
 
     def GetResources(self):
-        return {"Pixmap": view_providers.icon(self.Name + ".svg"), "MenuText": self.MenuText, "ToolTip": self.ToolTip}
+        return {"Pixmap": view_providers.icon(self.Name + ".svg"), "MenuText": self.MenuText, "ToolTip": self.ToolTip,
+                "Accel": self.Accel}
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None or not self.needs_document
@@ -98,9 +102,11 @@ class OpenModelTest(Command):
     """Model test 1 in one click: STEP stock (exact walls), toolpath, engagement with job.json."""
 
     Name = "ABM_OpenModelTest"
-    MenuText = "Open model test 1"
-    ToolTip = ("New document with model test 1 (after Hendriko 2020): the STEP stock with exact walls, the "
-               "toolpath and the engagement with job.json's tool and cut, computed")
+    MenuText = QT_TRANSLATE_NOOP("ABM_OpenModelTest", "Open model test 1")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_OpenModelTest",
+                                "New document with model test 1 (after Hendriko 2020): the STEP stock with exact "
+                                "walls, the toolpath and the engagement with job.json's tool and cut, computed")
+    Accel = "A, O"
     needs_document = False
 
     def document(self):
@@ -132,9 +138,9 @@ class _ImportFile(Command):
     needs_document = False
 
     def Activated(self):
-        from PySide2 import QtWidgets
+        from PySide import QtGui
 
-        path, _ = QtWidgets.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), self.TITLE, "", self.FILTER)
+        path, _ = QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), self.TITLE, "", self.FILTER)
         if path:
             self.execute(path)
 
@@ -151,9 +157,11 @@ class ImportStock(_ImportFile):
     staircase JSON chosen in a file dialog."""
 
     Name = "ABM_ImportStock"
-    MenuText = "Import stock…"
-    ToolTip = ("Add a staircase stock from the selected solid, or from a STEP, BREP or FCStd solid (recognised, "
-               "exact walls) or a staircase JSON")
+    MenuText = QT_TRANSLATE_NOOP("ABM_ImportStock", "Import stock…")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_ImportStock",
+                                "Add a staircase stock from the selected solid, or from a STEP, BREP or FCStd solid "
+                                "(recognised, exact walls) or a staircase JSON")
+    Accel = "A, S"
     TITLE = "Import stock"
     FILTER = STOCK_FILTER
 
@@ -183,8 +191,10 @@ class ImportToolpath(_ImportFile):
     """A toolpath from a CSV or APT / CL file."""
 
     Name = "ABM_ImportToolpath"
-    MenuText = "Import toolpath…"
-    ToolTip = "Add a toolpath from a CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k) or an APT / CL file"
+    MenuText = QT_TRANSLATE_NOOP("ABM_ImportToolpath", "Import toolpath…")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_ImportToolpath",
+                                "Add a toolpath from a CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k) or an APT / CL file")
+    Accel = "A, T"
     TITLE = "Import toolpath"
     FILTER = TOOLPATH_FILTER
 
@@ -215,9 +225,11 @@ class ComputeEngagement(Command):
     """The engagement of the selected stock and toolpath (or the document's only ones): task panel."""
 
     Name = "ABM_ComputeEngagement"
-    MenuText = "Compute engagement"
-    ToolTip = ("Compute where the cutter engages the stock along the toolpath: select a stock and a toolpath (or "
-               "have only one of each), then set the tool and cut in the task panel")
+    MenuText = QT_TRANSLATE_NOOP("ABM_ComputeEngagement", "Compute engagement")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_ComputeEngagement",
+                                "Compute where the cutter engages the stock along the toolpath: select a stock and a "
+                                "toolpath (or have only one of each), then set the tool and cut in the task panel")
+    Accel = "A, E"
 
     def Activated(self):
         """Interactive: the task panel (:mod:`.task_panel`) for a new engagement; it owns the transaction."""
@@ -252,9 +264,11 @@ class InspectEngagement(Command):
     """The dock of the selected engagement: CL point slider, colours and legend, plots."""
 
     Name = "ABM_InspectEngagement"
-    MenuText = "Inspect engagement"
-    ToolTip = ("Open the engagement dock for the selected engagement: choose a CL point (highlighted on the model), "
-               "colour by segment, length of cut or cut area, and see the plots")
+    MenuText = QT_TRANSLATE_NOOP("ABM_InspectEngagement", "Inspect engagement")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_InspectEngagement",
+                                "Open the engagement dock for the selected engagement: choose a CL point (highlighted "
+                                "on the model), colour by segment, length of cut or cut area, and see the plots")
+    Accel = "A, I"
 
     def Activated(self):
         try:
@@ -272,12 +286,14 @@ class ValidateEngagement(Command):
     """The selected engagement against OpenCASCADE booleans: the HTML report, opened."""
 
     Name = "ABM_ValidateEngagement"
-    MenuText = "Validate engagement…"
-    ToolTip = ("Check the selected engagement's length of cut against OpenCASCADE booleans at all or chosen CL "
-               "points (about 1 s per CL point; cancellable) and open the HTML report")
+    MenuText = QT_TRANSLATE_NOOP("ABM_ValidateEngagement", "Validate engagement…")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_ValidateEngagement",
+                                "Check the selected engagement's length of cut against OpenCASCADE booleans at all or "
+                                "chosen CL points (about 1 s per CL point; cancellable) and open the HTML report")
+    Accel = "A, V"
 
     def Activated(self):
-        from PySide2 import QtWidgets
+        from PySide import QtGui
 
         from .validate import report_folder
 
@@ -287,14 +303,17 @@ class ValidateEngagement(Command):
             shown = dock.find()
             current = shown.spin.value() if shown is not None and shown.obj is engagement else None
             window = FreeCADGui.getMainWindow()
-            text, ok = QtWidgets.QInputDialog.getText(
+            text, ok = QtGui.QInputDialog.getText(
                 window, "Validate engagement", "CL points to check (all, or e.g. 0,22,40; about 1 s each):",
                 text="all" if current is None else str(current))
             if not ok:
                 return
             folder = report_folder(engagement)
-            if not doc.FileName:
-                chosen = QtWidgets.QFileDialog.getExistingDirectory(window, "Folder for the validation report")
+            root = preferences.report_root()
+            if root:
+                folder = os.path.join(root, f"{doc.Name}_{engagement.Name}_validation")
+            elif not doc.FileName:
+                chosen = QtGui.QFileDialog.getExistingDirectory(window, "Folder for the validation report")
                 if not chosen:
                     return
                 folder = os.path.join(chosen, f"{engagement.Name}_validation")
@@ -333,7 +352,7 @@ class ValidateEngagement(Command):
         engagement.ValidationReport = page
         FreeCAD.Console.PrintMessage(f"{PROG}: {engagement.Label}: validation report {page}\n")
         if open_report:
-            from PySide2 import QtCore, QtGui
+            from PySide import QtCore, QtGui
 
             QtGui.QDesktopServices.openUrl(QtCore.QUrl.fromLocalFile(page))
         return page

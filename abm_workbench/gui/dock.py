@@ -20,12 +20,12 @@ FreeCAD's main window, showing one engagement object at a time (:func:`show`):
 """
 
 import numpy as np
-from PySide2 import QtCore, QtGui, QtWidgets
+from PySide import QtCore, QtGui
 
 import FreeCAD
 import FreeCADGui
 
-from .colouring import COLOUR_BY, COLOUR_MAP, QUANTITIES
+from .colouring import COLOUR_BY, QUANTITIES
 from . import state
 from .colouring import HIGHLIGHT_COLOUR
 
@@ -38,24 +38,24 @@ LEGEND_HEADROOM = 1.7
 FORCES_TAB = 1
 
 
-class EngagementDock(QtWidgets.QDockWidget):
+class EngagementDock(QtGui.QDockWidget):
     """The dock (see the module docstring); ``show_object(obj, cl)`` fills it."""
 
     def __init__(self, parent):
         super().__init__("ABM engagement", parent)
         self.setObjectName(OBJECT_NAME)
         self.obj = None
-        body = QtWidgets.QWidget()
-        layout = QtWidgets.QVBoxLayout(body)
-        self.title = QtWidgets.QLabel()
+        body = QtGui.QWidget()
+        layout = QtGui.QVBoxLayout(body)
+        self.title = QtGui.QLabel()
         self.title.setWordWrap(True)
         layout.addWidget(self.title)
 
-        row = QtWidgets.QHBoxLayout()
-        row.addWidget(QtWidgets.QLabel("CL point"))
-        self.slider = QtWidgets.QSlider(QtCore.Qt.Horizontal)
+        row = QtGui.QHBoxLayout()
+        row.addWidget(QtGui.QLabel("CL point"))
+        self.slider = QtGui.QSlider(QtCore.Qt.Horizontal)
         self.slider.setObjectName("ABM_CLSlider")
-        self.spin = QtWidgets.QSpinBox()
+        self.spin = QtGui.QSpinBox()
         self.spin.setObjectName("ABM_CLSpin")
         row.addWidget(self.slider, 1)
         row.addWidget(self.spin)
@@ -63,13 +63,13 @@ class EngagementDock(QtWidgets.QDockWidget):
         self.slider.valueChanged.connect(self.spin.setValue)
         self.spin.valueChanged.connect(self.slider.setValue)
         self.spin.valueChanged.connect(self.choose)
-        self.about = QtWidgets.QLabel()
+        self.about = QtGui.QLabel()
         self.about.setWordWrap(True)
         layout.addWidget(self.about)
 
-        row = QtWidgets.QHBoxLayout()
-        row.addWidget(QtWidgets.QLabel("Colour by"))
-        self.colour_by = QtWidgets.QComboBox()
+        row = QtGui.QHBoxLayout()
+        row.addWidget(QtGui.QLabel("Colour by"))
+        self.colour_by = QtGui.QComboBox()
         self.colour_by.setObjectName("ABM_ColourBy")
         for value in COLOUR_BY:
             self.colour_by.addItem(QUANTITIES[value][1] if value in QUANTITIES else "engagement segment (UEP surface)",
@@ -77,7 +77,7 @@ class EngagementDock(QtWidgets.QDockWidget):
         self.colour_by.currentIndexChanged.connect(self._colour_by_changed)
         row.addWidget(self.colour_by, 1)
         layout.addLayout(row)
-        self.legend = QtWidgets.QLabel()
+        self.legend = QtGui.QLabel()
         self.legend.setObjectName("ABM_Legend")
         layout.addWidget(self.legend)
 
@@ -90,7 +90,7 @@ class EngagementDock(QtWidgets.QDockWidget):
         self.force_figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
         self.force_canvas = FigureCanvasQTAgg(self.force_figure)
         self.force_canvas.setMinimumHeight(420)
-        self.tabs = QtWidgets.QTabWidget()
+        self.tabs = QtGui.QTabWidget()
         self.tabs.setObjectName("ABM_PlotTabs")
         self.tabs.addTab(self.canvas, "Engagement")
         self.tabs.addTab(self.force_canvas, "Forces")
@@ -262,7 +262,7 @@ def colour_bar(legend):
     pixmap = QtGui.QPixmap(BAR_WIDTH + 2, height + text + 4)
     pixmap.fill(QtGui.QColor("white"))
     painter = QtGui.QPainter(pixmap)
-    colours = colormaps[COLOUR_MAP](np.linspace(0.0, 1.0, BAR_WIDTH))
+    colours = colormaps[legend.colour_map](np.linspace(0.0, 1.0, BAR_WIDTH))
     for x, rgba in enumerate(colours):
         painter.setPen(QtGui.QColor.fromRgbF(*rgba[:3]))
         painter.drawLine(x + 1, 1, x + 1, height)
@@ -310,7 +310,7 @@ def _highlight(obj, cl):
 
 def find():
     """The dock, or None when it was never opened."""
-    return FreeCADGui.getMainWindow().findChild(QtWidgets.QDockWidget, OBJECT_NAME)
+    return FreeCADGui.getMainWindow().findChild(QtGui.QDockWidget, OBJECT_NAME)
 
 
 def show(obj, cl=None):

@@ -8,7 +8,7 @@
   so the caller's atomic output (``report.staging.staged``) leaves nothing half-written.
 """
 
-from PySide2 import QtCore, QtWidgets
+from PySide import QtCore, QtGui
 
 import FreeCAD
 import FreeCADGui
@@ -21,15 +21,15 @@ class busy:
         self.text = text
 
     def __enter__(self):
-        QtWidgets.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
         self.progress = FreeCAD.Base.ProgressIndicator()
         self.progress.start(self.text, 0)
-        QtWidgets.QApplication.processEvents()
+        QtGui.QApplication.processEvents()
         return self
 
     def __exit__(self, *exc):
         self.progress.stop()
-        QtWidgets.QApplication.restoreOverrideCursor()
+        QtGui.QApplication.restoreOverrideCursor()
         return False
 
 
@@ -38,20 +38,20 @@ class ProgressDialog:
     at the next CL point."""
 
     def __init__(self, text):
-        self.dialog = QtWidgets.QProgressDialog(text, "Cancel", 0, 1, FreeCADGui.getMainWindow())
+        self.dialog = QtGui.QProgressDialog(text, "Cancel", 0, 1, FreeCADGui.getMainWindow())
         self.dialog.setObjectName("ABM_Progress")
         self.dialog.setWindowTitle("ABM")
         self.dialog.setWindowModality(QtCore.Qt.WindowModal)
         self.dialog.setMinimumDuration(0)
         self.dialog.setValue(0)
-        QtWidgets.QApplication.processEvents()
+        QtGui.QApplication.processEvents()
 
     def __call__(self, done, total):
         from .validate import Cancelled
 
         self.dialog.setMaximum(total)
         self.dialog.setValue(done)
-        QtWidgets.QApplication.processEvents()
+        QtGui.QApplication.processEvents()
         if self.dialog.wasCanceled():
             raise Cancelled("validation cancelled: nothing written")
 

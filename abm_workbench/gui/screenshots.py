@@ -54,10 +54,10 @@ def zoom_on(view, result, cl, height=ZOOM_HEIGHT):
 
 def grab_screen(path):
     """Save the whole X screen (3D view included, unlike QWidget.grab) as a PNG."""
-    from PySide2 import QtWidgets
+    from PySide import QtGui
 
-    QtWidgets.QApplication.processEvents()
-    QtWidgets.QApplication.primaryScreen().grabWindow(0).save(path)
+    QtGui.QApplication.processEvents()
+    QtGui.QApplication.primaryScreen().grabWindow(0).save(path)
 
 
 def take_screenshots(folder):
@@ -114,7 +114,7 @@ def _macro():
     """Run inside FreeCAD's GUI: the screenshots into $ABM_SCREENSHOTS, then quit (status 0 or 1)."""
     import traceback
 
-    from PySide2 import QtCore
+    from PySide import QtCore
 
     def run():
         status = 1

@@ -15,41 +15,55 @@ checks it. A problem is a ParameterError naming its parameter: the parameter's f
 read-only, unless the material is custom. Fields the toolpath file fixes show its value, are
 read-only and say so.
 
+A quantity field whose text is not a quantity of its kind (letters typed into a length) is refused
+in the same way: its field marked, the problem in plain words, OK disabled.
+
 The whole edit is one document transaction: OK commits it (after a recompute that succeeds),
-Cancel aborts it, which for a new engagement removes the object.
+Cancel aborts it, which for a new engagement removes the object; for an existing one it gives
+back its properties and, with them, the results it had (kept by the feature, so the recompute
+after Cancel does not run the engine again) and its view.
+
+The panel fits FreeCAD's combo view: rows too long for a label and a field side by side wrap
+the field under its label, and the text wraps.
 """
 
-from PySide2 import QtWidgets
+import shiboken2
+from PySide import QtGui
 
+import FreeCAD
 import FreeCADGui
 
 from ..errors import InputError, ParameterError
 from ..features.engagement import COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings
 from ..forces import MATERIALS
 from ..jobs import BY_NAME, label_words, resolve, tool_and_settings
-from . import state, view_providers
+from . import preferences, state, view_providers
+from .i18n import noop, translate
 from .progress import busy
 from .reporting import CommandError, message_of, recompute_checked, report_error
 
 #: Fields: (property, label, unit or None for a plain number, minimum, maximum, step).
 FIELDS = (
-    ("Diameter", "Diameter", "mm", -1e6, 1e6, 1.0),
-    ("Flutes", "Flutes", None, 0, 100, 1),
-    ("FluteLength", "Flute length", "mm", -1e6, 1e6, 1.0),
-    ("HelixAngle", "Helix angle β", "deg", -1e6, 1e6, 5.0),
-    ("FeedPerTooth", "Feed per tooth", "mm", -1e6, 1e6, 0.01),
-    ("SpindleSpeed", "Spindle speed (rpm)", None, 0.0, 1e6, 100.0),
-    ("Inclination", "Inclination α", "deg", -1e6, 1e6, 1.0),
-    ("PhiStart", "φ start", "deg", -1e6, 1e6, 1.0),
-    ("PhiEnd", "φ end", "deg", -1e6, 1e6, 1.0),
-    ("PhiStep", "φ step", "deg", -1e6, 1e6, 0.5),
-    ("YWindowMin", "y window from", "mm", -1e6, 1e6, 1.0),
-    ("YWindowMax", "y window to", "mm", -1e6, 1e6, 1.0),
+    ("Diameter", noop("Diameter"), "mm", -1e6, 1e6, 1.0),
+    ("Flutes", noop("Flutes"), None, 0, 100, 1),
+    ("FluteLength", noop("Flute length"), "mm", -1e6, 1e6, 1.0),
+    ("HelixAngle", noop("Helix angle β"), "deg", -1e6, 1e6, 5.0),
+    ("FeedPerTooth", noop("Feed per tooth"), "mm", -1e6, 1e6, 0.01),
+    ("SpindleSpeed", noop("Spindle speed (rpm)"), None, 0.0, 1e6, 100.0),
+    ("Inclination", noop("Inclination α"), "deg", -1e6, 1e6, 1.0),
+    ("PhiStart", noop("φ start"), "deg", -1e6, 1e6, 1.0),
+    ("PhiEnd", noop("φ end"), "deg", -1e6, 1e6, 1.0),
+    ("PhiStep", noop("φ step"), "deg", -1e6, 1e6, 0.5),
+    ("YWindowMin", noop("y window from"), "mm", -1e6, 1e6, 1.0),
+    ("YWindowMax", noop("y window to"), "mm", -1e6, 1e6, 1.0),
 )
 #: Force fields after the Forces check box and the Material combo: (property, label, unit, minimum, maximum, step).
 FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm'})", None, -1e6, 1e6, 10.0)
                      for prop in COEFFICIENT_PROPERTIES.values()) + (
-    ("ImmersionStart", "Immersion from", "deg", -1e6, 1e6, 5.0), ("ImmersionEnd", "Immersion to", "deg", -1e6, 1e6, 5.0))
+    ("ImmersionStart", noop("Immersion from"), "deg", -1e6, 1e6, 5.0),
+    ("ImmersionEnd", noop("Immersion to"), "deg", -1e6, 1e6, 5.0))
+#: Quantity kinds of the units of FIELDS: (FreeCAD unit, the kind in words, examples).
+KINDS = {"mm": ("Length", "length", "12 mm, 0.5 in"), "deg": ("Angle", "angle", "10°, 0.2 rad")}
 #: Cutting parameters a toolpath file can fix, with their fields.
 FILE_FIELDS = ("diameter", "flute_length", "spindle_rpm", "feed_per_tooth")
 INVALID_STYLE = "background-color: #ffc8c8;"
@@ -68,19 +82,25 @@ class EngagementPanel:
 
     def __init__(self, obj, *, new):
         self.obj, self.new = obj, new
-        self.buttons = None  # the task dialog's QDialogButtonBox, once FreeCAD has made it
-        self.form = QtWidgets.QWidget()
+        self.doc_name = obj.Document.Name
+        self.buttons = None  # the task dialog's QDialogButtonBox, while FreeCAD shows it (ok_button)
+        self.closed = False
+        self.form = QtGui.QWidget()
         self.form.setObjectName("ABM_EngagementPanel")
-        self.form.setWindowTitle("Engagement: tool and cut")
-        layout = QtWidgets.QFormLayout(self.form)
-        self.source = QtWidgets.QLabel(f"Stock: {_label(obj.Stock)}<br>Toolpath: {_label(obj.Toolpath)}")
+        self.form.setWindowTitle(translate("Engagement: tool and cut"))
+        layout = QtGui.QFormLayout(self.form)
+        layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
+        layout.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
+        self.source = QtGui.QLabel(f"{translate('Stock')}: {_label(obj.Stock)}<br>"
+                                   f"{translate('Toolpath')}: {_label(obj.Toolpath)}")
+        self.source.setWordWrap(True)
         layout.addRow(self.source)
-        self.message = QtWidgets.QLabel()  # at the top: seen whatever the panel is scrolled to
+        self.message = QtGui.QLabel()  # at the top: seen whatever the panel is scrolled to
         self.message.setObjectName("ABM_Message")
         self.message.setWordWrap(True)
         self.message.setStyleSheet("color: #b00000;")
         layout.addRow(self.message)
-        self.fixed = QtWidgets.QLabel()
+        self.fixed = QtGui.QLabel()
         self.fixed.setObjectName("ABM_Fixed")
         self.fixed.setWordWrap(True)
         layout.addRow(self.fixed)
@@ -91,11 +111,11 @@ class EngagementPanel:
             widget.setToolTip(obj.getDocumentationOfProperty(name))
             self.names.append(name)
             if name == "YWindowMin":
-                layout.addRow("Wall model", self._combo("WallModel", WALL_CHOICES))
-                layout.addRow("y window", self._combo("YWindow", Y_WINDOWS))
-            layout.addRow(label, widget)
+                layout.addRow(translate("Wall model"), self._combo("WallModel", WALL_CHOICES))
+                layout.addRow(translate("y window"), self._combo("YWindow", Y_WINDOWS))
+            layout.addRow(translate(label), widget)
             _set_value(widget, _property_value(obj, name))
-            widget.valueChanged.connect(self.check)
+            _connect(widget, self.check)
         self.field("SpindleSpeed").setSpecialValueText("none")
         self._force_fields(layout)
         self.hints = self._hints()
@@ -104,7 +124,7 @@ class EngagementPanel:
     def _force_fields(self, layout):
         """The Forces check box beside the Material combo, then the coefficients and the immersion."""
         obj = self.obj
-        forces = QtWidgets.QCheckBox("Cutting forces")
+        forces = QtGui.QCheckBox(translate("Cutting forces"))
         forces.setObjectName("ABM_Forces")
         forces.setChecked(bool(obj.Forces))
         forces.setToolTip(obj.getDocumentationOfProperty("Forces"))
@@ -120,10 +140,10 @@ class EngagementPanel:
             self.names.append(name)
             layout.addRow(label, widget)
             _set_value(widget, _property_value(obj, name))
-            widget.valueChanged.connect(self.check)
+            _connect(widget, self.check)
 
     def _combo(self, name, choices):
-        combo = QtWidgets.QComboBox()
+        combo = QtGui.QComboBox()
         combo.setObjectName(f"ABM_{name}")
         combo.addItems(list(choices))
         combo.setCurrentIndex(list(choices).index(getattr(self.obj, name)))
@@ -135,7 +155,7 @@ class EngagementPanel:
     def field(self, name):
         """The widget of field `name` (a property name). Found by object name each time: the Python
         wrappers of FreeCAD's own widgets (Gui::QuantitySpinBox) do not stay valid."""
-        return self.form.findChild(QtWidgets.QWidget, f"ABM_{name}")
+        return self.form.findChild(QtGui.QWidget, f"ABM_{name}")
 
     def _hints(self):
         """PathHints of the toolpath file, or the InputError reading it."""
@@ -151,9 +171,9 @@ class EngagementPanel:
         values = {}
         for name in self.names:
             widget = self.field(name)
-            if isinstance(widget, QtWidgets.QComboBox):
+            if isinstance(widget, QtGui.QComboBox):
                 values[name] = widget.currentText()
-            elif isinstance(widget, QtWidgets.QCheckBox):
+            elif isinstance(widget, QtGui.QCheckBox):
                 values[name] = widget.isChecked()
             else:
                 values[name] = _get_value(widget)
@@ -172,10 +192,34 @@ class EngagementPanel:
             "phi_start": values["PhiStart"], "phi_end": values["PhiEnd"], "phi_step": values["PhiStep"],
         }
 
+    def unreadable(self):
+        """(message, field) of the first enabled quantity field whose text is not a quantity of its kind,
+        or (None, None)."""
+        for name, label, unit, *_ in FIELDS + FORCE_FIELDS:
+            widget = self.field(name)
+            if unit is None or not widget.isEnabled():
+                continue
+            text = widget.findChild(QtGui.QLineEdit).text().strip()
+            unit_name, kind, examples = KINDS[unit]
+            try:
+                quantity = FreeCAD.Units.Quantity(text)
+                readable = quantity.Unit in (getattr(FreeCAD.Units, unit_name), FreeCAD.Units.Unit())
+            except ValueError:
+                readable = False
+            if not readable:
+                parameter = next((p for p in BY_NAME.values() if p.prop == name), None)
+                words = parameter.label if parameter is not None else label
+                return (f"{words[:1].upper()}{words[1:]}: “{text}” is not a {kind}: type a number, with a unit "
+                        f"if you like ({examples}).", name)
+        return None, None
+
     def problem(self, values):
         """(message, field) of the first problem of `values`, or (None, None); marks what the file fixes."""
         if isinstance(self.hints, Exception):
             return str(self.hints), None
+        message, field = self.unreadable()
+        if message is not None:
+            return message, field
         try:
             parameters = resolve(self.given(values), self.hints, {})
             self.show_fixed(parameters)
@@ -211,8 +255,8 @@ class EngagementPanel:
                 widget.blockSignals(False)
                 notes.append(f"{BY_NAME[key].label} {parameters.values[key]:g} ({parameters.sources[key][1]})")
             widget.setEnabled(not fixed)
-        self.fixed.setText("Fixed by the toolpath file, the values it was made for: " + ", ".join(notes)
-                           if notes else "")
+        self.fixed.setText(translate("Fixed by the toolpath file, the values it was made for:") + " "
+                           + ", ".join(notes) if notes else "")
 
     def show_material(self, values):
         """Force fields: enabled with Forces on; the coefficients show a material's values, read-only,
@@ -231,7 +275,10 @@ class EngagementPanel:
             self.field(name).setEnabled(values["Forces"])
 
     def check(self, *_):
-        """Check the fields: mark the bad one, say why, enable OK only when all is well; True if valid."""
+        """Check the fields: mark the bad one, say why, enable OK only when all is well; True if valid.
+        Once the panel is closed: nothing (its fields may still signal as they go), False."""
+        if self.closed:
+            return False
         values = self.values()
         for name in ("YWindowMin", "YWindowMax"):
             self.field(name).setEnabled(values["YWindow"] == "custom")
@@ -240,13 +287,22 @@ class EngagementPanel:
         for name in self.names:
             self.field(name).setStyleSheet(INVALID_STYLE if name == field else "")
         self.message.setText(message or "")
-        if self.buttons is not None:
-            self.buttons.button(QtWidgets.QDialogButtonBox.Ok).setEnabled(message is None)
+        ok = self.ok_button()
+        if ok is not None:
+            ok.setEnabled(message is None)
         return message is None
+
+    def ok_button(self):
+        """The task dialog's OK button, or None: not made yet, or gone with the dialog (FreeCAD deletes
+        the button box; a reference kept to it must not be used then)."""
+        if self.buttons is None or not shiboken2.isValid(self.buttons):
+            self.buttons = None
+            return None
+        return self.buttons.button(QtGui.QDialogButtonBox.Ok)
 
     # ---- task dialog --------------------------------------------------------------------------
     def getStandardButtons(self):
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
 
     def modifyStandardButtons(self, buttons):
         """FreeCAD hands over the dialog's button box once it is made: OK follows the check."""
@@ -274,18 +330,26 @@ class EngagementPanel:
         return True
 
     def reject(self):
-        """Take everything back (a new engagement is removed) and close."""
-        doc = self.obj.Document
-        self.close()
+        """Take everything back (a new engagement is removed) and close: the transaction is aborted before
+        edit mode ends (ending it commits what is open), then the document recomputed, which gives an
+        existing engagement the results it had (kept, not computed again) and its view."""
+        doc, new = self.obj.Document, self.new
+        obj_name = self.obj.Name
         doc.abortTransaction()
+        self.close()
         doc.recompute()
+        obj = None if new else doc.getObject(obj_name)
+        if obj is not None:
+            view_providers.refresh(obj)
+            state.tell("refresh", obj)
         return True
 
     def close(self):
-        """Close the panel (leaving edit mode when it was opened by setEdit)."""
+        """Close the panel (leaving edit mode when it was opened by setEdit); forget the button box."""
+        self.closed, self.buttons = True, None
         if self in _SHOWN:
             _SHOWN.remove(self)
-        gui_doc = FreeCADGui.getDocument(self.obj.Document.Name)
+        gui_doc = FreeCADGui.getDocument(self.doc_name)
         if not self.new and gui_doc.getInEdit() is not None:
             gui_doc.resetEdit()  # the view provider's unsetEdit closes the dialog
         else:
@@ -294,11 +358,17 @@ class EngagementPanel:
 
 def compute(doc, stock, toolpath):
     """Open a transaction, add an engagement of `stock` and `toolpath` (what the toolpath file gives
-    filled in) and open its task panel; the panel."""
+    filled in, the rest from the preferences, :func:`.preferences.engagement_defaults`) and open its
+    task panel; the panel."""
     from ..features import create_engagement
+    from ..features.engagement import SETTINGS
     doc.openTransaction("Compute engagement")
     try:
         obj = create_engagement(doc, stock, toolpath)
+        for key, value in preferences.engagement_defaults().items():
+            prop = SETTINGS[key][0]
+            if key not in preferences.REQUIRED or not _property_value(obj, prop):
+                setattr(obj, prop, value)
         view_providers.attach(obj)
     except BaseException:
         doc.abortTransaction()
@@ -332,7 +402,7 @@ def _property_value(obj, name):
 def _spin_box(unit, low, high, step, *, integer=False):
     """A Gui::QuantitySpinBox in `unit`, or a plain (integer) spin box when unit is None."""
     if unit is None:
-        widget = QtWidgets.QSpinBox() if integer else QtWidgets.QDoubleSpinBox()
+        widget = QtGui.QSpinBox() if integer else QtGui.QDoubleSpinBox()
         if not integer:
             widget.setDecimals(1)
         widget.setRange(low, high)
@@ -346,15 +416,23 @@ def _spin_box(unit, low, high, step, *, integer=False):
     return widget
 
 
+def _connect(widget, check):
+    """Call check when the value of a field changes, and for a quantity field also when its text does
+    (text that is no quantity leaves the value as it was)."""
+    widget.valueChanged.connect(check)
+    if not isinstance(widget, (QtGui.QSpinBox, QtGui.QDoubleSpinBox)):
+        widget.findChild(QtGui.QLineEdit).textChanged.connect(check)
+
+
 def _set_value(widget, value):
-    if isinstance(widget, (QtWidgets.QSpinBox, QtWidgets.QDoubleSpinBox)):
+    if isinstance(widget, (QtGui.QSpinBox, QtGui.QDoubleSpinBox)):
         widget.setValue(type(widget.value())(value))
     else:
         widget.setProperty("rawValue", float(value))
 
 
 def _get_value(widget):
-    if isinstance(widget, (QtWidgets.QSpinBox, QtWidgets.QDoubleSpinBox)):
+    if isinstance(widget, (QtGui.QSpinBox, QtGui.QDoubleSpinBox)):
         return widget.value()
     return float(widget.property("rawValue"))
 

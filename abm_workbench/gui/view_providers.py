@@ -17,7 +17,18 @@ What each shows (colours RGB 0..1, from :mod:`abm_workbench.report.colours`):
 - Engagement: the engaged cutter surface, lit on both sides, shaded without edges, each face
   coloured (``DiffuseColor``) by the view property ``ColourBy`` (:mod:`.colouring`): the UEP
   surface of its engagement segment, the length of cut or the cut area; the CL point chosen in
-  the dock (:mod:`.dock`) drawn on top in yellow. Double-click: the task panel.
+  the dock (:mod:`.dock`) drawn on top in yellow. Double-click: the task panel. Selected, it
+  keeps its colours: FreeCAD draws its bounding box in the selection colour (``SelectionStyle``
+  BoundBox) instead of painting its faces.
+
+A document opened with input files that are neither where they were nor where they were
+relative to the document (``features.base.missing_files``) gets one dialog (:func:`ask_repoint`):
+it names them and asks for the folder that holds them now; they are re-pointed there by name
+and the document recomputed.
+
+After undo and redo (the observer's ``slotUndoDocument`` / ``slotRedoDocument``) the engagements
+of the document are recoloured and the dock told (``gui.state`` "refresh"): the results follow
+the restored properties (``EngagementFeature.result``).
 
 Nothing of the view provider is saved but its class (``__getstate__`` returns None).
 """
@@ -116,6 +127,7 @@ class EngagementViewProvider(ViewProvider):
         if "Lighting" in vobj.PropertiesList:
             vobj.Lighting = "Two side"
         vobj.DisplayMode = "Shaded"  # no edges: 9000 faces' boundaries would hide the colours
+        vobj.SelectionStyle = "BoundBox"  # selected: the box, not selection-green faces over the colours
         add_colour_by(vobj)
         colour(vobj)
 
@@ -123,10 +135,7 @@ class EngagementViewProvider(ViewProvider):
         # FreeCAD calls this before its own view provider has the new Shape's faces, and
         # per-face colours set now would not match them: colour once the event loop runs again.
         if prop == "Shape":
-            from PySide2 import QtCore
-
-            vobj = obj.ViewObject
-            QtCore.QTimer.singleShot(0, lambda: _colour_later(vobj))
+            colour_soon(obj)
 
     def onChanged(self, vobj, prop):
         if prop == "ColourBy":
@@ -220,6 +229,14 @@ def add_colour_by(vobj):
         vobj.ColourBy = value
 
 
+def colour_soon(obj):
+    """Recolour the engagement `obj` and refresh the dock once the event loop runs again."""
+    from PySide import QtCore
+
+    vobj = obj.ViewObject
+    QtCore.QTimer.singleShot(0, lambda: _colour_later(vobj))
+
+
 def _colour_later(vobj):
     try:
         colour(vobj)
@@ -243,7 +260,9 @@ def colour(vobj):
     add_colour_by(vobj)
     forces = obj.Proxy.forces(obj)
     colour_by = "segment" if vobj.ColourBy == "force" and forces is None else vobj.ColourBy
-    colours, legend = face_colours(result, faces, colour_by, forces)
+    from .preferences import colour_map
+
+    colours, legend = face_colours(result, faces, colour_by, forces, colour_map())
     vobj.DiffuseColor = [(*map(float, rgb), 0.0) for rgb in colours]
     provider.legend = legend
     return legend
@@ -286,15 +305,88 @@ class _Observer:
 
     def slotActivateDocument(self, doc):
         attach_all(doc)
+        if doc.Name not in _ASKED:  # once per document: as it is opened
+            _ASKED.add(doc.Name)
+            _ask_when_restored(doc.Name)
 
     def slotRecomputedObject(self, obj):
         attach(obj)
 
     def slotDeletedDocument(self, doc):
+        _ASKED.discard(doc.Name)
         state.tell("forget", doc)
+
+    def slotUndoDocument(self, doc):
+        self._restyle(doc)
+
+    def slotRedoDocument(self, doc):
+        self._restyle(doc)
+
+    @staticmethod
+    def _restyle(doc):
+        """Recolour the engagements of `doc` and refresh the dock: their results follow the restored
+        properties."""
+        for obj in doc.Objects:
+            if kind(obj) == "ABM::Engagement" and isinstance(getattr(obj.ViewObject, "Proxy", None), ViewProvider):
+                colour_soon(obj)
+
+
+#: Waiting for an opened document's objects: RESTORE_TRIES times RESTORE_WAIT ms at most.
+RESTORE_TRIES, RESTORE_WAIT = 100, 50
+
+
+def _ask_when_restored(name, tries=RESTORE_TRIES):
+    """ask_repoint for the document `name` once it is restored: FreeCAD activates a document it opens
+    before it reads its objects, and runs the event loop meanwhile; an empty document is waited for
+    `tries` times RESTORE_WAIT ms at most."""
+    from PySide import QtCore
+
+    doc = FreeCAD.listDocuments().get(name)
+    if doc is None:
+        return
+    if doc.Restoring or not doc.Objects:
+        if tries:
+            QtCore.QTimer.singleShot(RESTORE_WAIT, lambda: _ask_when_restored(name, tries - 1))
+        return
+    ask_repoint(doc)
+
+
+def ask_repoint(doc):
+    """When input files of `doc` are missing: one dialog naming them that asks for the folder holding
+    them now; those found there by name are re-pointed and the document recomputed. The objects
+    re-pointed."""
+    import FreeCADGui
+    from PySide import QtGui
+
+    from ..features.base import missing_files, repoint
+    from .i18n import translate
+
+    missing = missing_files(doc)
+    if not missing:
+        return []
+    names = "\n".join(f"{obj.Label}: {path}" for obj, _, path in missing)
+    dialog = QtGui.QFileDialog(FreeCADGui.getMainWindow(),
+                               translate("Input files missing: choose the folder that holds them")
+                               + f" ({len(missing)})", os.path.dirname(doc.FileName))
+    dialog.setObjectName("ABM_Repoint")
+    dialog.setFileMode(QtGui.QFileDialog.Directory)
+    dialog.setOptions(QtGui.QFileDialog.ShowDirsOnly | QtGui.QFileDialog.DontUseNativeDialog)
+    dialog.setLabelText(QtGui.QFileDialog.LookIn, translate("Missing:") + " " + names.replace("\n", "; "))
+    folder = dialog.selectedFiles()[0] if dialog.exec_() else ""
+    dialog.deleteLater()
+    if not folder:
+        FreeCAD.Console.PrintWarning(f"ABM: {doc.Label}: input files missing, not re-pointed:\n{names}\n")
+        return []
+    moved = repoint(doc, folder)
+    for obj, _, path in missing_files(doc):
+        FreeCAD.Console.PrintWarning(f"ABM: {obj.Label}: {os.path.basename(path)} is not in {folder}\n")
+    if moved:
+        doc.recompute()
+    return moved
 
 
 _OBSERVER = None
+_ASKED = set()  # names of the documents checked for missing input files
 
 
 def install_observer():

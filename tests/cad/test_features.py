@@ -288,7 +288,7 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     doc.recompute()
     for name in ("YWindow", "YWindowMin", "YWindowMax", "ValidationReport", "HelixAngle", "Forces", "Material",
                  "Ktc", "Krc", "Kac", "Kte", "Kre", "Kae", "ImmersionStart", "ImmersionEnd", "PeakForce",
-                 "ForceFeedPerTooth"):  # as saved by version 1
+                 "ForceFeedPerTooth", "ResultsData"):  # as saved by version 1
         engagement.removeProperty(name)
     engagement.Version = 1
     toolpath = doc.getObject("Toolpath")
@@ -316,11 +316,13 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
         reopened.recompute()
     finally:
         FreeCAD.closeDocument(reopened.Name)
+    # the document holds the results it was saved with (ResultsData): those of inclination 10°
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
         assert engagement.Inclination.Value == 10.0
-        assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
+        assert "Touched" not in engagement.State
+        assert_same(engagement.Proxy.result(engagement), reference())
     finally:
         FreeCAD.closeDocument(reopened.Name)
 
@@ -463,3 +465,87 @@ def test_helix_30_changes_the_length_of_cut_as_flute_engagement_does(doc):
     assert not np.allclose(result.length, straight.length)
     assert engagement.MaxLengthOfCut.Value == pytest.approx(expected.length.max(), abs=1e-12)
     assert_same_forces(engagement.Proxy.forces(engagement), model_test_forces(helix=30.0), 1e-9)
+
+
+def test_a_copied_fcstd_alone_reopens_with_its_results_and_forces_without_recompute(doc, tmp_path, monkeypatch):
+    import shutil
+
+    _, _, engagement = model_test(doc, forces=True, material="al7075-t6", immersion=(0.0, 120.0))
+    engagement.ShowSurfaces = False
+    doc.recompute()
+    assert engagement.isValid() and engagement.getEditorMode("ResultsData") == ["ReadOnly"]
+    saved = tmp_path / "project" / "job.FCStd"
+    saved.parent.mkdir()
+    doc.saveAs(str(saved))
+    FreeCAD.closeDocument(doc.Name)
+    # only the .FCStd travels: the folder it was saved in, results CSV and all, is gone
+    copy = tmp_path / "elsewhere" / "copy.FCStd"
+    copy.parent.mkdir()
+    shutil.copyfile(saved, copy)
+    shutil.rmtree(saved.parent)
+
+    def no_engine(*args, **kwargs):
+        raise AssertionError("the engine ran on restore")
+
+    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
+    monkeypatch.setattr(engagement_module, "pass_forces_of", no_engine)
+    reopened = FreeCAD.openDocument(str(copy))
+    try:
+        engagement = reopened.getObject("Engagement")
+        assert "Touched" not in engagement.State and engagement.isValid()
+        assert_same(engagement.Proxy.result(engagement), reference())  # bit for bit: the arrays themselves
+        assert_same_forces(engagement.Proxy.forces(engagement), model_test_forces(), 1e-9)  # as computed
+        assert os.listdir(copy.parent) == ["copy.FCStd"]
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_moved_project_reopens_with_its_input_files_and_missing_ones_are_repointed(doc, tmp_path):
+    import shutil
+
+    from abm_workbench.features.base import missing_files, repoint
+
+    project = tmp_path / "project"
+    (project / "inputs").mkdir(parents=True)
+    for name in ("stock.json", "toolpath.csv"):
+        shutil.copyfile(os.path.join(MODEL, name), project / "inputs" / name)
+    stock = create_stock(doc, str(project / "inputs" / "stock.json"))
+    toolpath = create_toolpath(doc, str(project / "inputs" / "toolpath.csv"))
+    create_engagement(doc, stock, toolpath, **SETTINGS)
+    doc.recompute()
+    doc.saveAs(str(project / "job.FCStd"))
+    assert (stock.SourceFileRelative, toolpath.FileRelative) == (os.path.join("inputs", "stock.json"),
+                                                                 os.path.join("inputs", "toolpath.csv"))
+    FreeCAD.closeDocument(doc.Name)
+    # the project folder moved whole: the input files found beside the document, and the results
+    # recomputed from them equal the engine's
+    moved = tmp_path / "moved"
+    shutil.move(str(project), str(moved))
+    reopened = FreeCAD.openDocument(str(moved / "job.FCStd"))
+    try:
+        stock, toolpath = reopened.getObject("Stock"), reopened.getObject("Toolpath")
+        assert (stock.SourceFile, toolpath.File) == (str(moved / "inputs" / "stock.json"),
+                                                    str(moved / "inputs" / "toolpath.csv"))
+        assert missing_files(reopened) == []
+        engagement = reopened.getObject("Engagement")
+        for obj in reopened.Objects:
+            obj.touch()
+        reopened.recompute()
+        assert all(obj.isValid() for obj in reopened.Objects)
+        assert_same(engagement.Proxy.result(engagement), reference())
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+    # the FCStd alone: both files missing, re-pointed to a folder that holds them by name
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    shutil.copyfile(moved / "job.FCStd", alone / "job.FCStd")
+    shutil.rmtree(moved)
+    reopened = FreeCAD.openDocument(str(alone / "job.FCStd"))
+    try:
+        missing = missing_files(reopened)
+        assert sorted((obj.Name, prop) for obj, prop, _ in missing) == [("Stock", "SourceFile"), ("Toolpath", "File")]
+        assert [obj.Name for obj in repoint(reopened, MODEL)] == ["Stock", "Toolpath"]
+        assert missing_files(reopened) == []
+        assert reopened.getObject("Toolpath").File == os.path.join(MODEL, "toolpath.csv")
+    finally:
+        FreeCAD.closeDocument(reopened.Name)

@@ -64,7 +64,7 @@ def run_gui(tmp_path):
             pytest.fail(f"the FreeCAD GUI did not finish in {GUI_TIMEOUT} s")
         assert out.exists(), "the FreeCAD GUI ended without running the macro"
         verdict = json.loads(out.read_text())
-        assert verdict["ok"], verdict.get("error")
+        assert verdict["ok"], f"{verdict.get('error')}\nverdict so far: {str(verdict)[:4000]}"
         return verdict
 
     return run

@@ -1,0 +1,193 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1">
+<context>
+    <name>ABM</name>
+    <message>
+        <source>Tool diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flutes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flute length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed per tooth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inclination α</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>φ step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ABM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New engagement: tool and cut (0: ask)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>beside the document</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validation reports in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helix angle β</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spindle speed (rpm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>φ start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>φ end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>y window from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>y window to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Immersion from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Immersion to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Engagement: tool and cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cutting forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toolpath</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wall model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>y window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fixed by the toolpath file, the values it was made for:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input files missing: choose the folder that holds them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Missing:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ABM_ComputeEngagement</name>
+    <message>
+        <source>Compute engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compute where the cutter engages the stock along the toolpath: select a stock and a toolpath (or have only one of each), then set the tool and cut in the task panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ABM_ImportStock</name>
+    <message>
+        <source>Import stock…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a staircase stock from the selected solid, or from a STEP, BREP or FCStd solid (recognised, exact walls) or a staircase JSON</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ABM_ImportToolpath</name>
+    <message>
+        <source>Import toolpath…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a toolpath from a CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k) or an APT / CL file</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ABM_InspectEngagement</name>
+    <message>
+        <source>Inspect engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the engagement dock for the selected engagement: choose a CL point (highlighted on the model), colour by segment, length of cut or cut area, and see the plots</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ABM_OpenModelTest</name>
+    <message>
+        <source>Open model test 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New document with model test 1 (after Hendriko 2020): the STEP stock with exact walls, the toolpath and the engagement with job.json's tool and cut, computed</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ABM_ValidateEngagement</name>
+    <message>
+        <source>Validate engagement…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the selected engagement's length of cut against OpenCASCADE booleans at all or chosen CL points (about 1 s per CL point; cancellable) and open the HTML report</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+</TS>
