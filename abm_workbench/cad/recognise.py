@@ -137,12 +137,12 @@ def _read_in_child(path, kind, timeout=READ_TIMEOUT):
     A damaged file can make OpenCASCADE end the process that reads or checks it (exit status 1,
     no message: a BREP with one line deleted does so in ``isValid()``) or read forever; the
     child takes that risk: it reads the file, runs the validity check once, and hands the
-    shape back as BREP text. The child is forked (no second FreeCAD import; a few ms) except
-    under the GUI, whose threads make forking unsafe: there it is spawned (a FreeCAD import,
-    ~0.4 s). InputError ``FILE: damaged or unreadable STEP (...)`` when the child raises, ends
-    without a shape or takes over `timeout` s.
+    shape back as BREP text. The child is spawned (a fresh interpreter importing FreeCAD, about
+    0.4 s): a forked child of a process whose native threads (OpenCASCADE's, the BLAS's) hold a
+    lock can hang, as it did in the test suite. InputError ``FILE: damaged or unreadable STEP
+    (...)`` when the child raises, ends without a shape or takes over `timeout` s.
     """
-    context = spawn_context() if FreeCAD.GuiUp else multiprocessing.get_context("fork")
+    context = spawn_context()
     receiver, sender = context.Pipe(duplex=False)
     child = context.Process(target=_child_read, args=(path, sender), daemon=True)
     child.start()

@@ -443,7 +443,7 @@ def test_bad_force_settings_fail_the_recompute_in_plain_words(doc):
     engagement.ImmersionStart = 0.0
     engagement.HelixAngle = 95.0
     doc.recompute()
-    assert engagement.getStatusString() == "Engagement: Helix angle must be within (-90, 90)°, got 95° (property HelixAngle)."
+    assert engagement.getStatusString() == "Engagement: Helix angle must be within [-60, 60]°, got 95° (property HelixAngle)."
     engagement.HelixAngle = 0.0
     doc.recompute()
     assert engagement.isValid() and engagement.PeakForce > 0.0

@@ -199,7 +199,7 @@ def test_cli_validate_helix(pass_files, tmp_path, capsys):
 
 @pytest.mark.parametrize("options, message", [
     (["--flute", "3"], "--flute: must be 1..2 (the tool has 2 flutes), got 3"),
-    (["--helix", "95"], "--helix: must be within (-90, 90)°, got 95°"),
+    (["--helix", "95"], "--helix: must be within [-60, 60]°, got 95°"),
 ])
 def test_cli_validate_helix_errors(pass_files, tmp_path, capsys, options, message):
     stock, path, job = pass_files
