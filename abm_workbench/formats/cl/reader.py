@@ -550,13 +550,7 @@ class _Reader:
         values = self.numbers(record)
         if len(values) != 9:
             raise self.error(record, f"needs 9 numbers (origin, X axis, Y axis), got {len(values)}")
-        frame = msys_frame([v * self.scale for v in values[:3]] + values[3:])
-        if isinstance(frame, str):
-            raise self.error(record, f"not a frame: {frame}")
-        self.base = frame
-        identity = not frame[1].any() and np.allclose(frame[0], np.eye(3), rtol=0.0, atol=1e-12)
-        self.base_words = "" if identity else f"MSYS line {record.line}"
-        self.set_frame(record.line)
+        self.set_base(record, msys_frame([v * self.scale for v in values[:3]] + values[3:]))
 
     def on_csys(self, record):
         """CSYS/3 x 4 matrix row by row: the setup frame of the following records."""
@@ -565,12 +559,16 @@ class _Reader:
             raise self.error(record, f"needs 12 numbers (a 3 x 4 matrix, row by row), got {len(values)}")
         for index in (3, 7, 11):
             values[index] *= self.scale
-        frame = csys_frame(values)
+        self.set_base(record, csys_frame(values))
+
+    def set_base(self, record, frame):
+        """Make `frame` (an (R, t), or the text of why the record is not one) the frame of the following
+        records (MSYS, CSYS)."""
         if isinstance(frame, str):
             raise self.error(record, f"not a frame: {frame}")
         self.base = frame
         identity = not frame[1].any() and np.allclose(frame[0], np.eye(3), rtol=0.0, atol=1e-12)
-        self.base_words = "" if identity else f"CSYS line {record.line}"
+        self.base_words = "" if identity else f"{record.word} line {record.line}"
         self.set_frame(record.line)
 
     def on_rotabl(self, record):
