@@ -21,6 +21,7 @@ progress(done, total) is still called once per CL point, as they finish; an inte
 """
 
 import concurrent.futures
+import multiprocessing
 import signal
 import time
 from dataclasses import dataclass
@@ -345,6 +346,7 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
     count = min(worker_count(workers), len(toolpath))
     if count <= 1:
         return reference(solid, tool, toolpath, phi, *extra, progress)
+    before = set(multiprocessing.active_children())
     executor = concurrent.futures.ProcessPoolExecutor(
         count, mp_context=spawn_context(), initializer=_start_worker,
         initargs=(solid.exportBrepToString(),))
@@ -357,7 +359,7 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
             if progress is not None:
                 progress(done, len(toolpath))
     except BaseException:
-        _stop(executor)
+        _stop(executor, before)
         raise
     executor.shutdown(wait=True)
     return {name: np.concatenate([part[name] for part in parts]) for name in parts[0]}
@@ -381,11 +383,13 @@ def _reference_task(reference, tool, toolpath, phi, extra):
     return reference(_SOLID, tool, toolpath, phi, *extra, None)
 
 
-def _stop(executor):
-    """Cancel what has not started and end the workers now (a boolean can take seconds)."""
-    # ProcessPoolExecutor has no public way to end running tasks (Python < 3.14): end its processes.
-    processes = list((getattr(executor, "_processes", None) or {}).values())
+def _stop(executor, before):
+    """Cancel what has not started and end the workers now (a boolean can take seconds): every child
+    process started since `before` (the set of children before the executor was made)."""
+    # ProcessPoolExecutor has no public way to end running tasks (Python < 3.14): end its processes, and
+    # any it was starting as the exception came (they are not in its table yet).
     executor.shutdown(wait=False, cancel_futures=True)
+    processes = set(multiprocessing.active_children()) - before
     for process in processes:
         process.terminate()
     for process in processes:

@@ -38,10 +38,11 @@ A staircase recognised over a y window describes the stock only inside that wind
 A wall's faces, edges and exact curve stay available in :class:`RecognisedWall`.
 """
 
-import faulthandler
 import multiprocessing
 import os
+import subprocess
 import sys
+import tempfile
 from dataclasses import dataclass
 
 import numpy as np
@@ -51,7 +52,7 @@ from ..engine.tolerances import RECOGNITION_TOL as TOL
 from ..engine.walls import SplineWall
 from ..errors import InputError
 from .faces import bspline_of_edge, classify_face, critical_points, fold, shape_box
-from .freecad_env import FreeCAD, Part
+from .freecad_env import DEBIAN_LIB, FreeCAD, Part
 from .solids import bspline_curve, parameter_at_y, trimmed_to_y
 
 _SUFFIXES = {".step": "STEP", ".stp": "STEP", ".brep": "BREP", ".brp": "BREP", ".fcstd": "FCStd"}
@@ -136,62 +137,64 @@ def _read_in_child(path, kind, timeout=READ_TIMEOUT):
 
     A damaged file can make OpenCASCADE end the process that reads or checks it (exit status 1,
     no message: a BREP with one line deleted does so in ``isValid()``) or read forever; the
-    child takes that risk: it reads the file, runs the validity check once, and hands the
-    shape back as BREP text. The child is spawned (a fresh interpreter importing FreeCAD, about
-    0.4 s): a forked child of a process whose native threads (OpenCASCADE's, the BLAS's) hold a
-    lock can hang, as it did in the test suite. InputError ``FILE: damaged or unreadable STEP
-    (...)`` when the child raises, ends without a shape or takes over `timeout` s.
+    child takes that risk: a fresh interpreter (:func:`interpreter`, not multiprocessing, so a
+    user's script is never imported again) reads the file, runs the validity check once and
+    writes the shape as BREP, read back here (about 0.4 s in all). InputError ``FILE: damaged or
+    unreadable STEP (...)`` when the child raises, ends without a shape or takes over `timeout` s.
     """
-    context = spawn_context()
-    receiver, sender = context.Pipe(duplex=False)
-    child = context.Process(target=_child_read, args=(path, sender), daemon=True)
-    child.start()
-    sender.close()
-    try:
-        answer = receiver.recv() if receiver.poll(timeout) else ("timeout", None)
-    except EOFError:
-        answer = ("ended", None)
-    finally:
-        receiver.close()
-        if child.is_alive():
-            child.kill()
-        child.join()
-    status, value = answer
-    if status == "ok":
-        shape = Part.Shape()
-        shape.importBrepFromString(value)
-        return shape
-    detail = {"error": f"cannot read as {kind}: {value}", "timeout": f"no shape after {timeout:g} s",
-              "ended": f"the reader ended with exit status {child.exitcode} and no shape"}[status]
+    with tempfile.TemporaryDirectory(prefix="abm-read-") as folder:
+        brep = os.path.join(folder, "shape.brep")
+        try:
+            done = subprocess.run([interpreter(), "-c", _CHILD_READ, path, brep, DEBIAN_LIB], capture_output=True,
+                                  text=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            raise InputError(f"{path}: damaged or unreadable {kind} (no shape after {timeout:g} s)") from None
+        if done.returncode == 0 and os.path.isfile(brep):
+            shape = Part.Shape()
+            shape.read(brep)
+            return shape
+    if done.returncode == _READ_FAILED:
+        detail = f"cannot read as {kind}: {done.stderr.strip().splitlines()[-1]}"
+    else:
+        detail = f"the reader ended with exit status {done.returncode} and no shape"
     raise InputError(f"{path}: damaged or unreadable {kind} ({detail})")
 
 
+#: Exit status of the reading child when FreeCAD raised (its message is the last line of stderr).
+_READ_FAILED = 3
+#: The reading child's program: argv = [file, BREP to write, FreeCAD's library folder].
+_CHILD_READ = f"""
+import sys
+sys.path.append(sys.argv[3])
+import FreeCAD, Part
+try:
+    shape = Part.read(sys.argv[1])
+    if not shape.isNull():
+        shape.isValid()  # the check that can end the process on a damaged file
+    shape.exportBrep(sys.argv[2])
+except Exception as error:
+    print(str(error).splitlines()[0] if str(error) else type(error).__name__, file=sys.stderr)
+    sys.exit({_READ_FAILED})
+"""
+
+
+def interpreter():
+    """The Python interpreter to start children with: this one, or under the GUI (where
+    sys.executable is FreeCAD's own program) the interpreter of the running Python's own
+    installation (``<sys.base_exec_prefix>/bin/pythonX.Y``, /usr/bin/python3.11 for Debian's
+    FreeCAD), not one found on PATH, which may be another Python without FreeCAD's numpy."""
+    if os.path.basename(sys.executable).lower().startswith("python"):
+        return sys.executable
+    version = f"python{sys.version_info.major}.{sys.version_info.minor}"
+    candidate = os.path.join(sys.base_exec_prefix, "bin", version)
+    return candidate if os.path.isfile(candidate) else sys.executable
+
+
 def spawn_context():
-    """The multiprocessing spawn context, set to start a Python interpreter: under the GUI
-    sys.executable is FreeCAD's own program, which cannot run a spawned child, so the
-    interpreter of the running Python's own installation (``<sys.base_exec_prefix>/bin/
-    pythonX.Y``, /usr/bin/python3.11 for Debian's FreeCAD) is used instead; not one found on
-    PATH, which may be another Python without FreeCAD's numpy."""
+    """The multiprocessing spawn context, its children started by :func:`interpreter`."""
     context = multiprocessing.get_context("spawn")
-    if not os.path.basename(sys.executable).lower().startswith("python"):
-        version = f"python{sys.version_info.major}.{sys.version_info.minor}"
-        interpreter = os.path.join(sys.base_exec_prefix, "bin", version)
-        context.set_executable(interpreter if os.path.isfile(interpreter) else sys.executable)
+    context.set_executable(interpreter())
     return context
-
-
-def _child_read(path, connection):
-    """In the child: send ("ok", BREP text) of the shape in `path`, or ("error", message)."""
-    faulthandler.disable()  # an inherited fault handler would dump this child's end on the shared stderr
-    try:
-        shape = Part.read(path)
-        if not shape.isNull():
-            shape.isValid()  # the check that can end the process on a damaged file
-        answer = ("ok", shape.exportBrepToString())
-    except Exception as error:  # FreeCAD raises RuntimeError or Part.OCCError
-        answer = ("error", str(error))
-    connection.send(answer)
-    connection.close()
 
 
 def check_window(y_window, swept, *, source=""):

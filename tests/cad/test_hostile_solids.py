@@ -72,15 +72,20 @@ def test_a_sound_file_reads_as_before():
 
 
 def test_under_the_gui_the_child_is_a_python_interpreter(monkeypatch):
-    """With FreeCAD's GUI up, the child is spawned (no fork of a Qt process), and sys.executable is
-    FreeCAD's program, which cannot run it: the Python interpreter on PATH runs it instead."""
-    import multiprocessing.spawn
-
-    from abm_workbench.cad.freecad_env import FreeCAD
-
-    monkeypatch.setattr(multiprocessing.spawn, "_python_exe", "/usr/bin/freecad")  # as set on import under the GUI
-    monkeypatch.setattr(FreeCAD, "GuiUp", 1, raising=False)
+    """Under FreeCAD's GUI sys.executable is FreeCAD's program, which cannot run the reading child: the
+    running Python's own interpreter runs it instead (and starts validation workers)."""
     monkeypatch.setattr(sys, "executable", "/usr/bin/freecad")
+    assert os.path.basename(recognise.interpreter()).startswith("python")
     shape = recognise.load_solid(os.path.join(MODEL, "stock.step"))
     assert len(shape.Faces) == len(Part.read(os.path.join(MODEL, "stock.step")).Faces)
-    assert os.path.basename(os.fsdecode(multiprocessing.spawn.get_executable())).startswith("python")
+
+
+def test_a_script_without_a_main_guard_reads_solids(tmp_path):
+    """The child is a fresh interpreter, not multiprocessing's: a user's script is not imported again."""
+    script = tmp_path / "script.py"
+    script.write_text(f"from abm_workbench.cad.recognise import load_solid\n"
+                      f"print(len(load_solid({os.path.join(MODEL, 'stock.step')!r}).Faces))\n")
+    done = subprocess.run([sys.executable, str(script)], cwd=ROOT, capture_output=True, text=True, timeout=300,
+                          env={**os.environ, "PYTHONPATH": ROOT})
+    assert done.returncode == 0, done.stderr
+    assert int(done.stdout) == len(Part.read(os.path.join(MODEL, "stock.step")).Faces)
