@@ -61,12 +61,12 @@ class StockRecognition:
     """What :func:`recognise_any` found.
 
     kind: "staircase" when the solid is the paper's staircase along +x (then ``staircase`` is
-    its :class:`~abm_workbench.cad.recognise.Recognition`), else "terraced". terraced: the
-    TerracedStock, always. reason: why the solid is not a staircase ("" when it is).
+    its :class:`~abm_workbench.cad.recognise.Recognition`), else "terraced" (then ``terraced``
+    is the TerracedStock). reason: why the solid is not a staircase ("" when it is).
     """
 
     kind: str
-    terraced: TerracedStock
+    terraced: TerracedStock = None
     staircase: object = None
     reason: str = ""
 
@@ -74,16 +74,19 @@ class StockRecognition:
 def recognise_any(shape, *, walls="exact", wall_points="chebyshev", y_window=None, source=""):
     """The stock of a 2.5D solid as a StockRecognition: the staircase when it is one, else the terraced stock.
 
-    The terraced recognition runs first: InputError when the solid is not 2.5D at all (its
-    message names the face). Then the staircase recognition with walls, wall_points, y_window
-    (see :func:`~abm_workbench.cad.recognise.recognise`); its refusal becomes ``reason``.
+    The staircase recognition runs first (with walls, wall_points, y_window, see
+    :func:`~abm_workbench.cad.recognise.recognise`): a staircase keeps its fast engine. Its
+    refusal becomes ``reason``, and the terraced recognition follows: InputError when the solid
+    is not 2.5D at all (its message names the face), or when the paper's quintic walls were
+    asked for (they need a staircase).
     """
-    terraced = recognise_terraced(shape, source=source)
     try:
         staircase = recognise(shape, walls=walls, wall_points=wall_points, y_window=y_window, source=source)
     except InputError as error:
-        return StockRecognition("terraced", terraced, None, str(error))
-    return StockRecognition("staircase", terraced, staircase, "")
+        if walls == "quintic":
+            raise InputError(f"{error} (the paper's quintic walls need a staircase stock)") from None
+        return StockRecognition("terraced", recognise_terraced(shape, source=source), None, str(error))
+    return StockRecognition("staircase", None, staircase, "")
 
 
 def recognise_terraced(shape, *, source=""):

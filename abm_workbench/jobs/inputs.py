@@ -175,18 +175,14 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
 
 def recognised(shape, name, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None):
     """The Stock of a solid `shape` (already in the engine frame `frame`) named `name` in messages:
-    a staircase when it is one (cad.recognise.recognise, with walls, wall_points, y_window), else
-    a general 2.5D terraced stock (cad.terraced_recognise), the staircase's refusal kept as its
-    reason. InputError naming the face when the solid is not 2.5D at all."""
-    from ..cad.recognise import recognise
-    try:
-        recognition = recognise(shape, walls=walls, wall_points=wall_points, y_window=y_window, source=name)
-    except InputError as error:
-        from ..cad.terraced_recognise import recognise_terraced
-        if walls == "quintic":
-            raise InputError(f"{error} (the paper's quintic walls need a staircase stock)") from None
-        return Stock(None, name, shape, walls, frame, recognise_terraced(shape, source=name), str(error))
-    return Stock(recognition.staircase, name, shape, walls, frame)
+    a staircase when it is one, else a general 2.5D terraced stock, the staircase's refusal kept as
+    its reason (cad.terraced_recognise.recognise_any). InputError naming the face when the solid
+    is not 2.5D at all."""
+    from ..cad.terraced_recognise import recognise_any
+    found = recognise_any(shape, walls=walls, wall_points=wall_points, y_window=y_window, source=name)
+    if found.staircase is None:
+        return Stock(None, name, shape, walls, frame, found.terraced, found.reason)
+    return Stock(found.staircase.staircase, name, shape, walls, frame)
 
 
 def _json_stock(name, frame):

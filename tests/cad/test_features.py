@@ -124,11 +124,7 @@ def test_engagement_equals_the_engine_and_is_restored_without_recompute(doc, tmp
     assert (tmp_path / "job_abm" / "Engagement.csv").is_file()
     assert (tmp_path / "job_abm" / "Engagement.summary.csv").is_file()
     FreeCAD.closeDocument(doc.Name)
-
-    def no_engine(*args, **kwargs):
-        raise AssertionError("the engine ran on restore")
-
-    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
+    forbid_the_engine(monkeypatch)
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
@@ -282,6 +278,15 @@ def test_stock_from_a_linked_solid_with_exact_walls(doc):
     assert_same(engagement.Proxy.result(engagement), reference(STOCK_STEP))
 
 
+def forbid_the_engine(monkeypatch):
+    """Make the engagement object's engine calls fail: what follows must not compute."""
+    def no_engine(*args, **kwargs):
+        raise AssertionError("the engine ran on restore")
+
+    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
+    monkeypatch.setattr(engagement_module, "pass_forces_of", no_engine)
+
+
 def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     _, _, engagement = model_test(doc)
     engagement.ShowSurfaces = False
@@ -394,11 +399,7 @@ def test_forces_equal_pass_forces_and_are_restored_without_recompute(doc, tmp_pa
     doc.saveAs(str(path))
     FreeCAD.closeDocument(doc.Name)
 
-    def no_engine(*args, **kwargs):
-        raise AssertionError("the engine ran on restore")
-
-    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
-    monkeypatch.setattr(engagement_module, "pass_forces_of", no_engine)
+    forbid_the_engine(monkeypatch)
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
@@ -484,11 +485,7 @@ def test_a_copied_fcstd_alone_reopens_with_its_results_and_forces_without_recomp
     shutil.copyfile(saved, copy)
     shutil.rmtree(saved.parent)
 
-    def no_engine(*args, **kwargs):
-        raise AssertionError("the engine ran on restore")
-
-    monkeypatch.setattr(engagement_module, "flute_1", no_engine)
-    monkeypatch.setattr(engagement_module, "pass_forces_of", no_engine)
+    forbid_the_engine(monkeypatch)
     reopened = FreeCAD.openDocument(str(copy))
     try:
         engagement = reopened.getObject("Engagement")
