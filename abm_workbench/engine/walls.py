@@ -12,12 +12,14 @@ from typing import Optional
 import numpy as np
 from scipy.interpolate import BSpline, PPoly
 
-from .polynomials import (bracketed_root, compose_linear, horner, monotone_root_unit, proved_monotone_unit,
-                          real_roots_unit)
+from .polynomials import (bernstein_unit, bracketed_root, compose_linear, derivative, horner, monotone_root_unit,
+                          product, proved_monotone_unit, real_roots_unit)
 from .rows import row_sum
 
 #: Six x values within this (mm) of each other make a straight wall.
 STRAIGHT_EPS = 1e-12
+#: Relative width by which a span's bounds on dx/dy are widened against rounding.
+SLOPE_MARGIN = 1e-9
 
 
 def _real_roots_between(ascending, lo, hi):
@@ -127,7 +129,8 @@ class SplineWall:
     Each knot span is kept as power-basis polynomials in a local u ∈ [0, 1]:
     spans_x, spans_y, spans_w: (S, p+1) ascending, so that x = X(u)/W(u), y = Y(u)/W(u).
     span_y: (S+1,) y at the span ends, increasing; span_boxes: (S, 4) x_min, x_max, y_min,
-    y_max of each span's control polygon (the span lies inside it).
+    y_max of each span's control polygon (the span lies inside it); span_slopes: (S, 2) least
+    and greatest dx/dy over each span (−inf, inf where dy/du is not proved positive).
     """
 
     degree: int
@@ -139,6 +142,7 @@ class SplineWall:
     spans_w: np.ndarray = field(init=False, repr=False)
     span_y: np.ndarray = field(init=False, repr=False)
     span_boxes: np.ndarray = field(init=False, repr=False)
+    span_slopes: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self):
         poles = np.array(self.poles, dtype=float)
@@ -159,8 +163,10 @@ class SplineWall:
             boxes, ends_y = boxes[::-1], ends_y[::-1]
         if not (np.diff(ends_y) > 0).all():
             raise ValueError("B-spline wall: y must be strictly monotone along the curve")
+        slopes = _slope_bounds(sx, sy, sw)
         for name, value in (("degree", p), ("knots", knots), ("poles", poles), ("weights", weights),
-                            ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y), ("span_boxes", boxes)):
+                            ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y), ("span_boxes", boxes),
+                            ("span_slopes", slopes)):
             if isinstance(value, np.ndarray):
                 value.setflags(write=False)
             object.__setattr__(self, name, value)
@@ -239,6 +245,14 @@ class SplineTable:
         self.base = min((e[0] for e in ends), default=0.0)
         self.shift = max((e[-1] for e in ends), default=0.0) - self.base + 1.0
         self.keys = np.concatenate([e - self.base + k * self.shift for k, e in enumerate(ends)]) if ends else np.empty(0)
+        # The curve's homogeneous point (X, Y, Ω) at every span end, in the order of keys.
+        self.knots_x, self.knots_y, self.knots_w = (
+            np.concatenate([np.append(getattr(w, name)[:, 0], getattr(w, name)[-1].sum()) for w in splines])
+            if splines else np.empty(0) for name in ("spans_x", "spans_y", "spans_w"))
+        # Sparse tables of the spans' slope bounds: entry [k, s] covers spans s .. s + 2^k − 1.
+        slopes = stacked("span_slopes", 2)
+        self.slope_low = _sparse_table(slopes[:, 0], np.minimum)
+        self.slope_high = _sparse_table(slopes[:, 1], np.maximum)
 
     def _local_span(self, walls, y, side):
         """Index within wall walls[i] of the span whose start is the last one below (side
@@ -268,22 +282,110 @@ class SplineTable:
         span, u = self.span_parameter(walls, y)
         return horner(self.spans_x[span], u) / horner(self.spans_w[span], u)
 
-    def crossings(self, walls, x0, y0, dx, dy, lo, hi):
+    def crossings(self, walls, x0, y0, dx, dy, lo, hi, sides=False):
         """Edge parameters l (k, r) in [lo, hi] where line i, (x0 + l·dx, y0 + l·dy), meets wall
-        walls[i]; all (k,). NaN-padded; a line with dx = dy = 0 never crosses.
+        walls[i]; all (k,). NaN-padded; a line with dx = dy = 0 never crosses. With `sides`,
+        also whether each line is at or beyond its wall (x ≥ W(y)) at lo and at hi, (k,) bool each.
 
-        Per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u; its real
-        roots in [0, 1] give the points, and l their projection on the line. Only spans whose y
-        range meets the segment's (a run, as y is monotone along the curve) and whose control
-        box meets the segment's x range over that y range are solved; one bracketed root where
-        the polynomial is proved monotone.
+        Only the spans whose y range meets the segment's are looked at (a run, as y is monotone
+        along the curve). Where the line's direction lies outside every tangent direction of
+        those spans (span_slopes), the line crosses them at most once: the span is found by
+        bisection on the knots' sides of the line and its one root by a bracketed Newton step
+        (_monotone_crossings). The other pairs go through _spans_crossings.
         """
-        k = np.size(x0)
+        walls = np.asarray(walls, dtype=np.intp)
+        k = walls.size
         sy = np.stack([y0 + dy * lo, y0 + dy * hi])
         y_lo, y_hi = sy.min(0), sy.max(0)
         first = np.maximum(self._local_span(walls, y_lo, "left"), 0)
         last = np.minimum(self._local_span(walls, y_hi, "right"), self.n_spans[walls] - 1)
         meets = (y_hi >= self.y_first[walls]) & (y_lo <= self.y_last[walls])
+        within = (y_lo >= self.y_first[walls]) & (y_hi <= self.y_last[walls]) & (last >= first)
+        start = self.first_span[walls] + np.minimum(first, last)
+        low, high = self._slopes(start, self.first_span[walls] + last)
+        with np.errstate(invalid="ignore"):
+            ahead, behind = dx - high * dy, dx - low * dy
+            proved = within & (ahead * behind > 0.0)
+        fast, slow = np.flatnonzero(proved), np.flatnonzero(~proved)
+        roots = np.full((k, 1), np.nan)
+        at_lo, at_hi = np.zeros(k, dtype=bool), np.zeros(k, dtype=bool)
+        if fast.size:
+            f = fast
+            roots[f, 0], at_lo[f], at_hi[f] = self._monotone_crossings(
+                walls[f], x0[f], y0[f], dx[f], dy[f], lo[f], hi[f], first[f], last[f], ahead[f] > 0.0)
+        if slow.size:
+            s = slow
+            found = self._spans_crossings(walls[s], x0[s], y0[s], dx[s], dy[s], lo[s], hi[s], first[s], last[s],
+                                          meets[s])
+            if found.shape[1] > roots.shape[1]:
+                roots = np.pad(roots, ((0, 0), (0, found.shape[1] - roots.shape[1])), constant_values=np.nan)
+            roots[s, : found.shape[1]] = found
+            if sides:
+                ends = np.stack([lo[s], hi[s]], axis=1)
+                at = x0[s, None] + dx[s, None] * ends >= self.x_at(walls[s, None], y0[s, None] + dy[s, None] * ends)
+                at_lo[s], at_hi[s] = at[:, 0], at[:, 1]
+        roots = roots[:, ~np.isnan(roots).all(axis=0)]
+        return (roots, at_lo, at_hi) if sides else roots
+
+    def _slopes(self, start, stop):
+        """Least and greatest dx/dy (P,) over the stacked spans start[i] .. stop[i] (inclusive)."""
+        level = np.frexp(stop - start + 1)[1] - 1  # ⌊log2 of the span count⌋
+        other = stop - (1 << level) + 1
+        low, high = self.slope_low.reshape(-1), self.slope_high.reshape(-1)
+        row = level * self.slope_low.shape[1]
+        return (np.minimum(low.take(row + start), low.take(row + other)),
+                np.maximum(high.take(row + start), high.take(row + other)))
+
+    def _knot_side(self, knot, x0, y0, dx, dy):
+        """(X − x0·Ω)·dy − (Y − y0·Ω)·dx at stacked knots `knot` (P,): Ω times the cross product of
+        the line's direction with the vector from (x0, y0) to the knot's point."""
+        w = self.knots_w[knot]
+        return (self.knots_x[knot] - x0 * w) * dy - (self.knots_y[knot] - y0 * w) * dx
+
+    def _monotone_crossings(self, walls, x0, y0, dx, dy, lo, hi, first, last, rising):
+        """The crossing (P,) (NaN: none in [lo, hi]) and the sides at lo and hi (P,) bool of lines
+        that meet spans first .. last (local indices) of wall walls[i] at most once.
+
+        The cross product h of the line's direction with the curve point is then strictly monotone
+        along those spans: the knot pair where h changes sign, found by bisection, brackets the one
+        root. `rising`: x − W(y) grows along the line (dx − W′·dy > 0 on the spans), which gives the
+        sides from the crossing; without one, the side at the first knot holds all along.
+        """
+        knot_lo = self.first_end[walls] + first
+        knot_hi = self.first_end[walls] + last + 1
+        h_lo = self._knot_side(knot_lo, x0, y0, dx, dy)
+        h_hi = self._knot_side(knot_hi, x0, y0, dx, dy)
+        cross = np.sign(h_lo) * np.sign(h_hi) <= 0.0
+        rows = np.flatnonzero(cross)
+        a, b, f_lo, f_hi = knot_lo[rows], knot_hi[rows], h_lo[rows], h_hi[rows]
+        r = rows
+        while rows.size and (b - a > 1).any():
+            mid = (a + b) // 2
+            f_mid = self._knot_side(mid, x0[r], y0[r], dx[r], dy[r])
+            up = (np.sign(f_mid) == np.sign(f_lo)) & (f_mid != 0.0)
+            a, f_lo = np.where(up, mid, a), np.where(up, f_mid, f_lo)
+            b, f_hi = np.where(up, b, mid), np.where(up, f_hi, f_mid)
+        span = a - self.first_end[walls[r]] + self.first_span[walls[r]]
+        sx, sy, sw = self.spans_x[span], self.spans_y[span], self.spans_w[span]
+        poly = (sx - x0[r, None] * sw) * dy[r, None] - (sy - y0[r, None] * sw) * dx[r, None]
+        u = bracketed_root(np.ascontiguousarray(poly.T), np.zeros(r.size), np.ones(r.size), f_lo, f_hi)
+        w = horner(sw, u)
+        px, py = horner(sx, u) / w, horner(sy, u) / w
+        at = np.full(x0.size, np.nan)
+        at[r] = ((px - x0[r]) * dx[r] + (py - y0[r]) * dy[r]) / (dx[r] ** 2 + dy[r] ** 2)
+        with np.errstate(invalid="ignore"):
+            root = np.where((at >= lo) & (at <= hi), at, np.nan)
+            side_lo = np.where(cross, np.where(rising, lo >= at, lo <= at), h_lo * dy < 0.0)
+            side_hi = np.where(cross, np.where(rising, hi >= at, hi <= at), h_lo * dy < 0.0)
+        return root, side_lo, side_hi
+
+    def _spans_crossings(self, walls, x0, y0, dx, dy, lo, hi, first, last, meets):
+        """Crossings (k, r), NaN-padded, of lines with spans first .. last of wall walls[i] (where
+        `meets`): per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u;
+        its real roots in [0, 1] give the points, and l their projection on the line. Only spans
+        whose control box meets the segment's x range over their y range are solved; one bracketed
+        root where the polynomial is proved monotone."""
+        k = np.size(x0)
         count = np.where(meets, last - first + 1, 0).clip(0)
         line = np.repeat(np.arange(k), count)
         span = self.first_span[walls[line]] + first[line] + np.arange(line.size) - np.repeat(np.cumsum(count) - count, count)
@@ -316,6 +418,35 @@ class SplineTable:
         out[line, rank] = l
         out = out.reshape(k, -1)
         return out[:, ~np.isnan(out).all(axis=0)]
+
+
+def _slope_bounds(sx, sy, sw):
+    """Least and greatest dx/dy (S, 2) over each span of x = X/Ω, y = Y/Ω, given as power-basis
+    polynomials in u ∈ [0, 1] (S, p+1) each.
+
+    dx/du = A/Ω² and dy/du = B/Ω² with A = X′Ω − XΩ′, B = Y′Ω − YΩ′. Where B's Bernstein
+    coefficients b_i on [0, 1] are all positive, dx/dy = A/B = Σ a_i β_i / Σ b_i β_i is a
+    weighted mean of the ratios a_i/b_i and lies between the least and the greatest of them;
+    elsewhere the bounds are (−inf, inf). Widened by SLOPE_MARGIN.
+    """
+    a = bernstein_unit(product(derivative(sx), sw) - product(sx, derivative(sw)))
+    b = bernstein_unit(product(derivative(sy), sw) - product(sy, derivative(sw)))
+    positive = (b > 1e-12 * np.abs(b).max(axis=1, keepdims=True)).all(axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = a / b
+    low, high = ratio.min(axis=1), ratio.max(axis=1)
+    widen = SLOPE_MARGIN * (1.0 + np.maximum(np.abs(low), np.abs(high)))
+    return np.column_stack([np.where(positive, low - widen, -np.inf), np.where(positive, high + widen, np.inf)])
+
+
+def _sparse_table(values, combine):
+    """(levels, S): level k combines entries s .. s + 2^k − 1 (clamped at the last) of values (S,)."""
+    levels, width = [np.asarray(values, dtype=float)], 1
+    while 2 * width <= values.size:
+        previous = levels[-1]
+        levels.append(combine(previous, np.concatenate([previous[width:], previous[-width:]])))
+        width *= 2
+    return np.stack(levels)
 
 
 def _power_spans(knots, coefficients, degree):
