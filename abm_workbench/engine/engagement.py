@@ -338,6 +338,8 @@ def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
     Returns l (P, 5) NaN-padded, monotone (P,), and whether the line is at or beyond the wall
     (x ≥ W(y), i.e. g ≤ 0) at lo and at hi, each (P,).
     """
+    if rows.size == 0:
+        return np.empty((0, 5)), np.zeros(0, dtype=bool), np.zeros(0, dtype=bool), np.zeros(0, dtype=bool)
     coefficients, y_mid, y_half = _quintic_table(stock, walls)
     lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
     span = hi - lo

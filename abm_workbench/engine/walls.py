@@ -130,7 +130,8 @@ class SplineWall:
     spans_x, spans_y, spans_w: (S, p+1) ascending, so that x = X(u)/W(u), y = Y(u)/W(u).
     span_y: (S+1,) y at the span ends, increasing; span_boxes: (S, 4) x_min, x_max, y_min,
     y_max of each span's control polygon (the span lies inside it); span_slopes: (S, 2) least
-    and greatest dx/dy over each span (−inf, inf where dy/du is not proved positive).
+    and greatest dx/dy over each span (−inf, inf where dy/du is not proved positive); straight:
+    every pole has the same x.
     """
 
     degree: int
@@ -143,6 +144,7 @@ class SplineWall:
     span_y: np.ndarray = field(init=False, repr=False)
     span_boxes: np.ndarray = field(init=False, repr=False)
     span_slopes: np.ndarray = field(init=False, repr=False)
+    straight: bool = field(init=False, repr=False)
 
     def __post_init__(self):
         poles = np.array(self.poles, dtype=float)
@@ -164,6 +166,7 @@ class SplineWall:
         if not (np.diff(ends_y) > 0).all():
             raise ValueError("B-spline wall: y must be strictly monotone along the curve")
         slopes = _slope_bounds(sx, sy, sw)
+        object.__setattr__(self, "straight", bool(np.ptp(poles[:, 0]) <= STRAIGHT_EPS))
         for name, value in (("degree", p), ("knots", knots), ("poles", poles), ("weights", weights),
                             ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y), ("span_boxes", boxes),
                             ("span_slopes", slopes)):
@@ -174,7 +177,7 @@ class SplineWall:
     @property
     def is_straight(self):
         """True when every pole has the same x: the wall is the plane x = const."""
-        return bool(np.ptp(self.poles[:, 0]) <= STRAIGHT_EPS)
+        return self.straight
 
     def translated(self, dx, dy):
         """The same wall moved by (dx, dy) mm."""
@@ -245,10 +248,14 @@ class SplineTable:
         self.base = min((e[0] for e in ends), default=0.0)
         self.shift = max((e[-1] for e in ends), default=0.0) - self.base + 1.0
         self.keys = np.concatenate([e - self.base + k * self.shift for k, e in enumerate(ends)]) if ends else np.empty(0)
-        # The curve's homogeneous point (X, Y, Ω) at every span end, in the order of keys.
-        self.knots_x, self.knots_y, self.knots_w = (
-            np.concatenate([np.append(getattr(w, name)[:, 0], getattr(w, name)[-1].sum()) for w in splines])
-            if splines else np.empty(0) for name in ("spans_x", "spans_y", "spans_w"))
+        self.knot_y = np.concatenate(ends) if ends else np.empty(0)
+        # The curve's homogeneous point (X, Y, Ω) at every span end, in the order of keys: (3, E);
+        # the spans' coefficients as columns: (3, p+1, S); Ω ≡ 1 unless some wall is rational.
+        self.knot_points = np.array([np.concatenate([np.append(getattr(w, name)[:, 0], getattr(w, name)[-1].sum())
+                                                     for w in splines]) if splines else np.empty(0)
+                                     for name in ("spans_x", "spans_y", "spans_w")])
+        self.span_columns = np.ascontiguousarray(np.stack([self.spans_x.T, self.spans_y.T, self.spans_w.T]))
+        self.rational = bool((self.spans_w[:, 1:] != 0.0).any() or (self.spans_w[:, 0] != 1.0).any())
         # Sparse tables of the spans' slope bounds: entry [k, s] covers spans s .. s + 2^k − 1.
         slopes = stacked("span_slopes", 2)
         self.slope_low = _sparse_table(slopes[:, 0], np.minimum)
@@ -339,45 +346,82 @@ class SplineTable:
     def _knot_side(self, knot, x0, y0, dx, dy):
         """(X − x0·Ω)·dy − (Y − y0·Ω)·dx at stacked knots `knot` (P,): Ω times the cross product of
         the line's direction with the vector from (x0, y0) to the knot's point."""
-        w = self.knots_w[knot]
-        return (self.knots_x[knot] - x0 * w) * dy - (self.knots_y[knot] - y0 * w) * dx
+        x, y, w = self.knot_points.take(knot, axis=1)
+        if self.rational:
+            return (x - x0 * w) * dy - (y - y0 * w) * dx
+        return (x - x0) * dy - (y - y0) * dx
 
     def _monotone_crossings(self, walls, x0, y0, dx, dy, lo, hi, first, last, rising):
         """The crossing (P,) (NaN: none in [lo, hi]) and the sides at lo and hi (P,) bool of lines
         that meet spans first .. last (local indices) of wall walls[i] at most once.
 
         The cross product h of the line's direction with the curve point is then strictly monotone
-        along those spans: the knot pair where h changes sign, found by bisection, brackets the one
-        root. `rising`: x − W(y) grows along the line (dx − W′·dy > 0 on the spans), which gives the
-        sides from the crossing; without one, the side at the first knot holds all along.
+        along those spans: the knot pair where h changes sign (_bracketing_knots) brackets the one
+        root, found in that span's polynomial by bracketed Newton. `rising`: x − W(y) grows along
+        the line (dx − W′·dy > 0 on the spans), which gives the sides from the crossing; without
+        one, the side at the first knot holds all along.
         """
         knot_lo = self.first_end[walls] + first
         knot_hi = self.first_end[walls] + last + 1
         h_lo = self._knot_side(knot_lo, x0, y0, dx, dy)
         h_hi = self._knot_side(knot_hi, x0, y0, dx, dy)
         cross = np.sign(h_lo) * np.sign(h_hi) <= 0.0
-        rows = np.flatnonzero(cross)
-        a, b, f_lo, f_hi = knot_lo[rows], knot_hi[rows], h_lo[rows], h_hi[rows]
-        r = rows
-        while rows.size and (b - a > 1).any():
-            mid = (a + b) // 2
-            f_mid = self._knot_side(mid, x0[r], y0[r], dx[r], dy[r])
-            up = (np.sign(f_mid) == np.sign(f_lo)) & (f_mid != 0.0)
-            a, f_lo = np.where(up, mid, a), np.where(up, f_mid, f_lo)
-            b, f_hi = np.where(up, b, mid), np.where(up, f_hi, f_mid)
-        span = a - self.first_end[walls[r]] + self.first_span[walls[r]]
-        sx, sy, sw = self.spans_x[span], self.spans_y[span], self.spans_w[span]
-        poly = (sx - x0[r, None] * sw) * dy[r, None] - (sy - y0[r, None] * sw) * dx[r, None]
-        u = bracketed_root(np.ascontiguousarray(poly.T), np.zeros(r.size), np.ones(r.size), f_lo, f_hi)
-        w = horner(sw, u)
-        px, py = horner(sx, u) / w, horner(sy, u) / w
+        r = np.flatnonzero(cross)
+        x0r, y0r, dxr, dyr = x0[r], y0[r], dx[r], dy[r]
+        a, f_lo, f_hi = self._bracketing_knots(walls[r], x0r, y0r, dxr, dyr, knot_lo[r], knot_hi[r], h_lo[r], h_hi[r])
+        sx, sy, sw = self.span_columns.take(a - self.first_end[walls[r]] + self.first_span[walls[r]], axis=2)
+        poly = (sx - x0r * sw) * dyr - (sy - y0r * sw) * dxr
+        u = bracketed_root(poly, np.zeros(r.size), np.ones(r.size), f_lo, f_hi)
+        px, py = horner(sx.T, u), horner(sy.T, u)
+        if self.rational:
+            w = horner(sw.T, u)
+            px, py = px / w, py / w
         at = np.full(x0.size, np.nan)
-        at[r] = ((px - x0[r]) * dx[r] + (py - y0[r]) * dy[r]) / (dx[r] ** 2 + dy[r] ** 2)
+        at[r] = ((px - x0r) * dxr + (py - y0r) * dyr) / (dxr * dxr + dyr * dyr)
         with np.errstate(invalid="ignore"):
             root = np.where((at >= lo) & (at <= hi), at, np.nan)
-            side_lo = np.where(cross, np.where(rising, lo >= at, lo <= at), h_lo * dy < 0.0)
-            side_hi = np.where(cross, np.where(rising, hi >= at, hi <= at), h_lo * dy < 0.0)
+            ahead = h_lo * dy < 0.0
+            side_lo = np.where(cross, (lo >= at) == rising, ahead)
+            side_hi = np.where(cross, (hi >= at) == rising, ahead)
         return root, side_lo, side_hi
+
+    def _bracketing_knots(self, walls, x0, y0, dx, dy, a, b, f_a, f_b):
+        """The stacked knot a (P,) of wall walls[i], between knots a[i] < b[i], such that the sides
+        f (_knot_side) at a and a + 1 differ in sign (or one vanishes), and f at both, given f_a,
+        f_b of opposite signs (or one zero) and f strictly monotone along the knots.
+
+        First one step of regula falsi: the knot interval holding the y where f, interpolated
+        linearly in y between a and b, vanishes; it brackets the root unless the curve bends much
+        within [a, b]. The few others go on by bisection on the knots.
+        """
+        with np.errstate(divide="ignore", invalid="ignore"):
+            guess = self.knot_y[a] + (self.knot_y[b] - self.knot_y[a]) * (f_a / (f_a - f_b))
+        probe = np.searchsorted(self.keys, guess - self.base + self.slot[walls] * self.shift, side="right") - 1
+        probe = np.minimum(np.maximum(probe, a), b - 1)  # a NaN guess (f_a = f_b = 0) searches to the end
+        f_p = self._knot_side(probe, x0, y0, dx, dy)
+        f_q = self._knot_side(probe + 1, x0, y0, dx, dy)
+        sign_a = np.sign(f_a)
+        past_start = (np.sign(f_p) == sign_a) & (f_p != 0.0)  # the root lies past the probe's start
+        past_end = (np.sign(f_q) == sign_a) & (f_q != 0.0)  # ... and past its end
+        found = past_start & ~past_end
+        if found.all():
+            return probe, f_p, f_q
+        # Elsewhere the root lies in [a, probe] (then probe > a, or f_a = 0 and it is at a) or [probe + 1, b].
+        rest = np.flatnonzero(~found)
+        before = ~past_start[rest] & (probe[rest] > a[rest])
+        ra = np.where(past_end[rest], probe[rest] + 1, a[rest])
+        rb = np.where(past_end[rest], b[rest], np.where(before, probe[rest], probe[rest] + 1))
+        fa = np.where(past_end[rest], f_q[rest], f_a[rest])
+        fb = np.where(past_end[rest], f_b[rest], np.where(before, f_p[rest], f_q[rest]))
+        x0, y0, dx, dy = x0[rest], y0[rest], dx[rest], dy[rest]
+        while (rb - ra > 1).any():
+            mid = (ra + rb) // 2
+            f_mid = self._knot_side(mid, x0, y0, dx, dy)
+            up = (np.sign(f_mid) == np.sign(fa)) & (f_mid != 0.0)
+            ra, fa = np.where(up, mid, ra), np.where(up, f_mid, fa)
+            rb, fb = np.where(up, rb, mid), np.where(up, fb, f_mid)
+        probe[rest], f_p[rest], f_q[rest] = ra, fa, fb
+        return probe, f_p, f_q
 
     def _spans_crossings(self, walls, x0, y0, dx, dy, lo, hi, first, last, meets):
         """Crossings (k, r), NaN-padded, of lines with spans first .. last of wall walls[i] (where
