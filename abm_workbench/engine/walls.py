@@ -197,19 +197,29 @@ class SplineWall:
         return float(low), float(high)
 
     def bins(self, edges):
-        """Per bin [edges[b], edges[b+1]] of y (B+1,): bounds of x (B,), (B,) and slope bound (inf).
+        """Per bin [edges[b], edges[b+1]] of y (B+1,): min x, max x and a bound on |dx/dy|, each (B,).
 
-        The bounds are those of x_range, for all bins at once.
+        The x range is exact: x at the bin's ends and at the curve's turning points in x inside
+        it (roots of dx/du per span). The slope bound is the largest |dx/dy| bound (span_slopes)
+        of the spans meeting the bin (inf where one is unbounded).
         """
         edges = np.asarray(edges, dtype=float)
         at_edges = self.x_at(edges)
         low = np.minimum(at_edges[:-1], at_edges[1:])
         high = np.maximum(at_edges[:-1], at_edges[1:])
-        boxes = self.span_boxes
-        meets = (boxes[:, 3, None] >= edges[None, :-1]) & (boxes[:, 2, None] <= edges[None, 1:])  # (S, B)
-        low = np.minimum(low, np.where(meets, boxes[:, 0, None], np.inf).min(axis=0))
-        high = np.maximum(high, np.where(meets, boxes[:, 1, None], -np.inf).max(axis=0))
-        return low, high, np.full(low.size, np.inf)
+        turning = product(derivative(self.spans_x), self.spans_w) - product(self.spans_x, derivative(self.spans_w))
+        roots = real_roots_unit(turning)
+        span, k = np.nonzero(~np.isnan(roots))
+        u = roots[span, k]
+        w = horner(self.spans_w[span], u)
+        x, y = horner(self.spans_x[span], u) / w, horner(self.spans_y[span], u) / w
+        where = np.searchsorted(edges, y, side="right") - 1
+        inside = (where >= 0) & (where < low.size)
+        np.minimum.at(low, where[inside], x[inside])
+        np.maximum.at(high, where[inside], x[inside])
+        steep = np.abs(self.span_slopes).max(axis=1)
+        meets = (self.span_y[1:, None] >= edges[None, :-1]) & (self.span_y[:-1, None] <= edges[None, 1:])  # (S, B)
+        return low, high, np.where(meets, steep[:, None], 0.0).max(axis=0)
 
 
 class SplineTable:
