@@ -312,24 +312,32 @@ class SplineTable:
         """
         walls = np.asarray(walls, dtype=np.intp)
         k = walls.size
-        sy = np.stack([y0 + dy * lo, y0 + dy * hi])
-        y_lo, y_hi = sy.min(0), sy.max(0)
-        first = np.maximum(self._local_span(walls, y_lo, "left"), 0)
-        last = np.minimum(self._local_span(walls, y_hi, "right"), self.n_spans[walls] - 1)
-        meets = (y_hi >= self.y_first[walls]) & (y_lo <= self.y_last[walls])
-        within = (y_lo >= self.y_first[walls]) & (y_hi <= self.y_last[walls]) & (last >= first)
-        start = self.first_span[walls] + np.minimum(first, last)
-        low, high = self._slopes(start, self.first_span[walls] + last)
+        y_a, y_b = y0 + dy * lo, y0 + dy * hi
+        y_lo, y_hi = np.minimum(y_a, y_b), np.maximum(y_a, y_b)
+        y_first, y_last, first_end = self.y_first[walls], self.y_last[walls], self.first_end[walls]
+        key = self.slot[walls] * self.shift - self.base  # + y: the key of y on wall walls[i]
+        first = np.searchsorted(self.keys, np.minimum(np.maximum(y_lo, y_first), y_last) + key, side="left") - 1
+        last = np.searchsorted(self.keys, np.minimum(np.maximum(y_hi, y_first), y_last) + key, side="right") - 1
+        first = np.maximum(first - first_end, 0)
+        last = np.minimum(last - first_end, self.n_spans[walls] - 1)
+        meets = (y_hi >= y_first) & (y_lo <= y_last)
+        within = (y_lo >= y_first) & (y_hi <= y_last) & (last >= first)
+        span_first = self.first_span[walls]
+        low, high = self._slopes(span_first + np.minimum(first, last), span_first + last)
         with np.errstate(invalid="ignore"):
             ahead, behind = dx - high * dy, dx - low * dy
             proved = within & (ahead * behind > 0.0)
-        fast, slow = np.flatnonzero(proved), np.flatnonzero(~proved)
         roots = np.full((k, 1), np.nan)
         at_lo, at_hi = np.zeros(k, dtype=bool), np.zeros(k, dtype=bool)
-        if fast.size:
-            f = fast
+        slow = np.flatnonzero(~proved)
+        if slow.size == 0:
+            roots[:, 0], at_lo, at_hi = self._monotone_crossings(
+                walls, x0, y0, dx, dy, lo, hi, first_end + first, first_end + last + 1, key, ahead > 0.0)
+        elif slow.size < k:
+            f = np.flatnonzero(proved)
             roots[f, 0], at_lo[f], at_hi[f] = self._monotone_crossings(
-                walls[f], x0[f], y0[f], dx[f], dy[f], lo[f], hi[f], first[f], last[f], ahead[f] > 0.0)
+                walls[f], x0[f], y0[f], dx[f], dy[f], lo[f], hi[f], first_end[f] + first[f],
+                first_end[f] + last[f] + 1, key[f], ahead[f] > 0.0)
         if slow.size:
             s = slow
             found = self._spans_crossings(walls[s], x0[s], y0[s], dx[s], dy[s], lo[s], hi[s], first[s], last[s],
@@ -361,25 +369,25 @@ class SplineTable:
             return (x - x0 * w) * dy - (y - y0 * w) * dx
         return (x - x0) * dy - (y - y0) * dx
 
-    def _monotone_crossings(self, walls, x0, y0, dx, dy, lo, hi, first, last, rising):
+    def _monotone_crossings(self, walls, x0, y0, dx, dy, lo, hi, knot_lo, knot_hi, key, rising):
         """The crossing (P,) (NaN: none in [lo, hi]) and the sides at lo and hi (P,) bool of lines
-        that meet spans first .. last (local indices) of wall walls[i] at most once.
+        that meet the spans between stacked knots knot_lo < knot_hi of wall walls[i] at most once.
 
         The cross product h of the line's direction with the curve point is then strictly monotone
         along those spans: the knot pair where h changes sign (_bracketing_knots) brackets the one
-        root, found in that span's polynomial by bracketed Newton. `rising`: x − W(y) grows along
-        the line (dx − W′·dy > 0 on the spans), which gives the sides from the crossing; without
-        one, the side at the first knot holds all along.
+        root, found in that span's polynomial by bracketed Newton. key: what added to a y gives its
+        key on the wall (keys). `rising`: x − W(y) grows along the line (dx − W′·dy > 0 on the
+        spans), which gives the sides from the crossing; without one, the side at the first knot
+        holds all along.
         """
-        knot_lo = self.first_end[walls] + first
-        knot_hi = self.first_end[walls] + last + 1
         h_lo = self._knot_side(knot_lo, x0, y0, dx, dy)
         h_hi = self._knot_side(knot_hi, x0, y0, dx, dy)
         cross = np.sign(h_lo) * np.sign(h_hi) <= 0.0
         r = np.flatnonzero(cross)
         x0r, y0r, dxr, dyr = x0[r], y0[r], dx[r], dy[r]
-        a, f_lo, f_hi = self._bracketing_knots(walls[r], x0r, y0r, dxr, dyr, knot_lo[r], knot_hi[r], h_lo[r], h_hi[r])
-        sx, sy, sw = self.span_columns.take(a - self.first_end[walls[r]] + self.first_span[walls[r]], axis=2)
+        a, f_lo, f_hi = self._bracketing_knots(x0r, y0r, dxr, dyr, knot_lo[r], knot_hi[r], h_lo[r], h_hi[r], key[r])
+        wr = walls[r]
+        sx, sy, sw = self.span_columns.take(a - self.first_end[wr] + self.first_span[wr], axis=2)
         poly = (sx - x0r * sw) * dyr - (sy - y0r * sw) * dxr
         u = bracketed_root(poly, np.zeros(r.size), np.ones(r.size), f_lo, f_hi)
         px, py = horner(sx.T, u), horner(sy.T, u)
@@ -395,18 +403,18 @@ class SplineTable:
             side_hi = np.where(cross, (hi >= at) == rising, ahead)
         return root, side_lo, side_hi
 
-    def _bracketing_knots(self, walls, x0, y0, dx, dy, a, b, f_a, f_b):
-        """The stacked knot a (P,) of wall walls[i], between knots a[i] < b[i], such that the sides
+    def _bracketing_knots(self, x0, y0, dx, dy, a, b, f_a, f_b, key):
+        """The stacked knot a (P,) of line i's wall, between knots a[i] < b[i], such that the sides
         f (_knot_side) at a and a + 1 differ in sign (or one vanishes), and f at both, given f_a,
         f_b of opposite signs (or one zero) and f strictly monotone along the knots.
 
         First one step of regula falsi: the knot interval holding the y where f, interpolated
         linearly in y between a and b, vanishes; it brackets the root unless the curve bends much
-        within [a, b]. The few others go on by bisection on the knots.
+        within [a, b]. The few others go on by bisection on the knots. key: as _monotone_crossings.
         """
         with np.errstate(divide="ignore", invalid="ignore"):
             guess = self.knot_y[a] + (self.knot_y[b] - self.knot_y[a]) * (f_a / (f_a - f_b))
-        probe = np.searchsorted(self.keys, guess - self.base + self.slot[walls] * self.shift, side="right") - 1
+        probe = np.searchsorted(self.keys, guess + key, side="right") - 1
         probe = np.minimum(np.maximum(probe, a), b - 1)  # a NaN guess (f_a = f_b = 0) searches to the end
         f_p = self._knot_side(probe, x0, y0, dx, dy)
         f_q = self._knot_side(probe + 1, x0, y0, dx, dy)
