@@ -220,3 +220,31 @@ def test_circle_arc_as_one_rational_span():
     l = roots[line, col]
     radius = np.hypot(x0[line] + l * np.cos(angle[line]) - 90.0, y0[line] + l * np.sin(angle[line]))
     np.testing.assert_allclose(radius, 30.0, atol=1e-9, rtol=0)
+
+
+def test_long_lines_across_many_spans():
+    # Lines at 11°..43° to x over 20 mm: steeper than the wall everywhere, so proved to cross it
+    # once, across up to eight spans, where one regula falsi step on the knots often misses.
+    table, curve = table_and_curve()
+    rng = np.random.default_rng(1)
+    k = 60
+    angle = rng.uniform(0.2, 0.75, k)
+    x0, y0 = rng.uniform(35.0, 45.0, k), rng.uniform(-5.0, 5.0, k)
+    counts = check(table, curve, x0, y0, np.cos(angle), np.sin(angle), np.full(k, -10.0), np.full(k, 10.0))
+    assert (counts == 1).sum() > 20
+
+
+@pytest.mark.parametrize("rational", [False, True])
+def test_span_slope_bounds_hold_the_curve(rational):
+    knots, poles, weights = wavy_curve(rational)
+    wall = SplineWall(3, knots, poles, weights)
+    curve = Curve(knots, poles, 3, weights)
+    d_numerator, d_denominator = curve.numerator.derivative(), curve.denominator.derivative()
+    edges = curve.knots
+    for j, (low, high) in enumerate(wall.span_slopes):
+        s = np.linspace(edges[j], edges[j + 1], 2001)
+        w, dw = curve.denominator(s), d_denominator(s)
+        velocity = (d_numerator(s) * w[:, None] - curve.numerator(s) * dw[:, None]) / (w * w)[:, None]
+        slope = velocity[:, 0] / velocity[:, 1]
+        assert low <= slope.min() and slope.max() <= high
+        assert high - low <= 2 * np.ptp(slope) + 1e-6  # a bound, not a blanket
