@@ -59,10 +59,10 @@ def reference(curve, x0, y0, dx, dy, lo, hi):
     found += list(0.5 * (a + b))
     # Touching points: extrema of the sampled cross product with no sign change around them.
     for i in np.flatnonzero((f[1:-1] - f[:-2]) * (f[2:] - f[1:-1]) < 0.0) + 1:
-        if f[i - 1] * f[i + 1] <= 0.0 or f[i - 1] * f[i] <= 0.0:
-            continue
+        if f[i - 1] * f[i + 1] <= 0.0 or f[i - 1] * f[i] <= 0.0 or abs(f[i]) > 1e-3:
+            continue  # a sign change (bisected above), or too far from zero to touch within two samples
         lo_s, hi_s, sign = s[i - 1], s[i + 1], np.sign(f[i])
-        for _ in range(120):  # golden section towards the extremum
+        for _ in range(80):  # golden section towards the extremum
             c = hi_s - 0.618 * (hi_s - lo_s)
             d = lo_s + 0.618 * (hi_s - lo_s)
             if sign * cross(np.array([c]))[0] < sign * cross(np.array([d]))[0]:
