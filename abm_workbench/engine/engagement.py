@@ -453,10 +453,12 @@ def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
     found (P,), and whether the line is at or beyond the wall at lo and at hi, each (P,)."""
     roots, at_lo, at_hi = stock.splines.crossings(walls, x0[rows], y0[rows], dx[rows], dy[rows], lo[rows], hi[rows],
                                                   sides=True)
+    if roots.shape[1] <= 1:  # at most one crossing per pair
+        found = roots if roots.shape[1] else np.full((rows.size, 1), np.nan)
+        return found, np.ones(rows.size, dtype=bool), at_lo, at_hi
     count = row_count(~np.isnan(roots))
     found = np.full((rows.size, 1), np.nan)
-    if roots.shape[1]:
-        found[count >= 1, 0] = np.nanmin(roots[count >= 1], axis=1)
+    found[count >= 1, 0] = np.nanmin(roots[count >= 1], axis=1)
     return found, count <= 1, at_lo, at_hi
 
 
