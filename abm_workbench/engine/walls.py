@@ -131,7 +131,7 @@ class SplineWall:
     span_y: (S+1,) y at the span ends, increasing; span_boxes: (S, 4) x_min, x_max, y_min,
     y_max of each span's control polygon (the span lies inside it); span_slopes: (S, 2) least
     and greatest dx/dy over each span (−inf, inf where dy/du is not proved positive); straight:
-    every pole has the same x.
+    every pole has the same x; table: the SplineTable of this wall alone (for x_at).
     """
 
     degree: int
@@ -145,6 +145,7 @@ class SplineWall:
     span_boxes: np.ndarray = field(init=False, repr=False)
     span_slopes: np.ndarray = field(init=False, repr=False)
     straight: bool = field(init=False, repr=False)
+    table: "SplineTable" = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         poles = np.array(self.poles, dtype=float)
@@ -173,6 +174,7 @@ class SplineWall:
             if isinstance(value, np.ndarray):
                 value.setflags(write=False)
             object.__setattr__(self, name, value)
+        object.__setattr__(self, "table", SplineTable((self,)))
 
     @property
     def is_straight(self):
@@ -186,7 +188,7 @@ class SplineWall:
     def x_at(self, y):
         """x = W(y) for y of any shape (mm); beyond the curve's ends, the end's x."""
         y = np.asarray(y, dtype=float)
-        return SplineTable((self,)).x_at(np.zeros(y.shape, dtype=np.intp), y)
+        return self.table.x_at(np.zeros(y.shape, dtype=np.intp), y)
 
     def x_range(self, y_lo, y_hi):
         """(min, max) bound of x over y in [y_lo, y_hi], from the control polygons (conservative)."""
