@@ -272,6 +272,10 @@ class SplineTable:
         slopes = stacked("span_slopes", 2)
         self.slope_low = _sparse_table(slopes[:, 0], np.minimum)
         self.slope_high = _sparse_table(slopes[:, 1], np.maximum)
+        # Least and greatest dx/dy of each wall over all its spans, (2, walls).
+        self.wall_slopes = np.array([[-np.inf, np.inf]] * len(walls)).reshape(-1, 2).T.copy()
+        self.wall_slopes[:, index] = [[w.span_slopes[:, 0].min() for w in splines],
+                                      [w.span_slopes[:, 1].max() for w in splines]]
 
     def _local_span(self, walls, y, side):
         """Index within wall walls[i] of the span whose start is the last one below (side
@@ -324,11 +328,16 @@ class SplineTable:
         last = np.minimum(last - first_end, self.n_spans[walls] - 1)
         meets = (y_hi >= y_first) & (y_lo <= y_last)
         within = (y_lo >= y_first) & (y_hi <= y_last) & (last >= first)
-        span_first = self.first_span[walls]
-        low, high = self._slopes(span_first + np.minimum(first, last), span_first + last)
+        # The wall's slope bound over all its spans proves most pairs; the others try their own run's.
         with np.errstate(invalid="ignore"):
-            ahead, behind = dx - high * dy, dx - low * dy
+            ahead, behind = dx - self.wall_slopes[1, walls] * dy, dx - self.wall_slopes[0, walls] * dy
             proved = within & (ahead * behind > 0.0)
+            again = np.flatnonzero(within & ~proved)
+            if again.size:
+                span_first = self.first_span[walls[again]]
+                low, high = self._slopes(span_first + first[again], span_first + last[again])
+                ahead[again], behind[again] = dx[again] - high * dy[again], dx[again] - low * dy[again]
+                proved[again] = ahead[again] * behind[again] > 0.0
         roots = np.full((k, 1), np.nan)
         at_lo, at_hi = np.zeros(k, dtype=bool), np.zeros(k, dtype=bool)
         slow = np.flatnonzero(~proved)
