@@ -12,6 +12,7 @@ from typing import Optional
 import numpy as np
 from scipy.interpolate import BSpline, PPoly
 
+from .bands import _sparse_table
 from .polynomials import (bernstein_unit, bracketed_root, compose_linear, derivative, horner, monotone_root_unit,
                           product, proved_monotone_unit, real_roots_unit)
 from .rows import row_sum
@@ -270,8 +271,8 @@ class SplineTable:
         self.rational = bool((self.spans_w[:, 1:] != 0.0).any() or (self.spans_w[:, 0] != 1.0).any())
         # Sparse tables of the spans' slope bounds: entry [k, s] covers spans s .. s + 2^k − 1.
         slopes = stacked("span_slopes", 2)
-        self.slope_low = _sparse_table(slopes[:, 0], np.minimum)
-        self.slope_high = _sparse_table(slopes[:, 1], np.maximum)
+        self.slope_low = _sparse_table(slopes[None, :, 0], np.minimum)[:, 0]
+        self.slope_high = _sparse_table(slopes[None, :, 1], np.maximum)[:, 0]
         # Least and greatest dx/dy of each wall over all its spans, (2, walls).
         self.wall_slopes = np.array([[-np.inf, np.inf]] * len(walls)).reshape(-1, 2).T.copy()
         self.wall_slopes[:, index] = [[w.span_slopes[:, 0].min() for w in splines],
@@ -312,9 +313,10 @@ class SplineTable:
 
         Only the spans whose y range meets the segment's are looked at (a run, as y is monotone
         along the curve). Where the line's direction lies outside every tangent direction of
-        those spans (span_slopes), the line crosses them at most once: the span is found by
-        bisection on the knots' sides of the line and its one root by a bracketed Newton step
-        (_monotone_crossings). The other pairs go through _spans_crossings.
+        those spans (span_slopes: the wall's bound first, then the run's), the line crosses them
+        at most once: the span is found from the knots' sides of the line (regula falsi, then
+        bisection) and its one root by bracketed Newton (_monotone_crossings), and the sides follow
+        from the crossing. The other pairs go through _spans_crossings and x_at.
         """
         walls = np.asarray(walls, dtype=np.intp)
         k = walls.size
@@ -510,16 +512,6 @@ def _slope_bounds(sx, sy, sw):
     low, high = ratio.min(axis=1), ratio.max(axis=1)
     widen = SLOPE_MARGIN * (1.0 + np.maximum(np.abs(low), np.abs(high)))
     return np.column_stack([np.where(positive, low - widen, -np.inf), np.where(positive, high + widen, np.inf)])
-
-
-def _sparse_table(values, combine):
-    """(levels, S): level k combines entries s .. s + 2^k − 1 (clamped at the last) of values (S,)."""
-    levels, width = [np.asarray(values, dtype=float)], 1
-    while 2 * width <= values.size:
-        previous = levels[-1]
-        levels.append(combine(previous, np.concatenate([previous[width:], previous[-width:]])))
-        width *= 2
-    return np.stack(levels)
 
 
 def _power_spans(knots, coefficients, degree):
