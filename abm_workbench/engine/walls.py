@@ -400,8 +400,14 @@ class SplineTable:
         x0r, y0r, dxr, dyr = x0[r], y0[r], dx[r], dy[r]
         a, f_lo, f_hi = self._bracketing_knots(x0r, y0r, dxr, dyr, knot_lo[r], knot_hi[r], h_lo[r], h_hi[r], key[r])
         wr = walls[r]
-        sx, sy, sw = self.span_columns.take(a - self.first_end[wr] + self.first_span[wr], axis=2)
-        poly = (sx - x0r * sw) * dyr - (sy - y0r * sw) * dxr
+        span = a - self.first_end[wr] + self.first_span[wr]
+        if self.rational:
+            sx, sy, sw = self.span_columns.take(span, axis=2)
+            poly = (sx - x0r * sw) * dyr - (sy - y0r * sw) * dxr
+        else:
+            sx, sy = self.span_columns[:2].take(span, axis=2)
+            poly = sx * dyr - sy * dxr
+            poly[0] -= x0r * dyr - y0r * dxr
         u = bracketed_root(poly, np.zeros(r.size), np.ones(r.size), f_lo, f_hi)
         px, py = horner(sx.T, u), horner(sy.T, u)
         if self.rational:
