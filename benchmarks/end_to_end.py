@@ -1,0 +1,161 @@
+"""The whole command line, start to exit: ``python3 -m abm_workbench engage ... --out R.npz`` at ≥ 10^6 instants.
+
+Run with FreeCAD's Python from the repository root: ``/usr/bin/python3 benchmarks/end_to_end.py``
+(``--instants``, ``--repeats``). The job: model test 1's staircase stock (JSON) and job file, its
+pass resampled to ceil(instants / 181) CL points (a toolpath CSV written to a temporary folder).
+
+Prints, from one run:
+1. the whole process (wall clock, start to exit; the best and the median of the repeats) for
+   .npz and .csv outputs, against the in-process stock (the default) and the stock as given;
+2. the split of one .npz run measured inside one process: start-up (``import abm_workbench.cli``
+   in a fresh interpreter, interpreter included), reading (job, toolpath, stock), in-process sweep,
+   engine (every chunk's columns), writing the .npz;
+3. the results CSV text of the same columns by formats.decimal_text and by a plain writer
+   (Python's repr of each rounded value, joined row by row), checked to be the same bytes.
+Ratios are printed beside the times, so that a loaded machine's figures still compare.
+"""
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, ROOT)
+
+MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
+PYTHON = "/usr/bin/python3"
+
+
+def resampled_toolpath(source, path, count):
+    """Write to `path` the toolpath CSV `source` (x, y, z, i, j, k, ... columns) resampled to `count` CL
+    points: positions linear in the CL index, the tool axis likewise then normalised."""
+    with open(source) as handle:
+        names = handle.readline().strip().split(",")
+    data = np.loadtxt(source, delimiter=",", skiprows=1)
+    old, new = np.arange(len(data)), np.linspace(0.0, len(data) - 1.0, count)
+    table = np.column_stack([np.interp(new, old, data[:, c]) for c in range(data.shape[1])])
+    axis = [names.index(name) for name in "ijk"]
+    table[:, axis] /= np.linalg.norm(table[:, axis], axis=1, keepdims=True)
+    np.savetxt(path, table, delimiter=",", header=",".join(names), comments="", fmt="%.17g")
+
+
+def timed_runs(command, repeats):
+    """(best, median) wall-clock seconds of `repeats` runs of `command` (checked to exit 0)."""
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=ROOT)
+        times.append(time.perf_counter() - start)
+    return min(times), float(np.median(times))
+
+
+def split(folder, repeats):
+    """Seconds of the parts of one .npz engage, in this process (start-up in fresh interpreters), and the
+    columns of every chunk: (dict part -> seconds, [(results, summary) columns], instants)."""
+    from abm_workbench.formats import replacing, results_npz
+    from abm_workbench.jobs import Job
+    from abm_workbench.jobs.job import load_job_stock, prepare
+    from abm_workbench.jobs.run import ResultsChunk, in_process_sweep
+    from abm_workbench.parallel import map_chunks
+
+    seconds = {"start-up": timed_runs([PYTHON, "-c", "import abm_workbench.cli"], repeats)[0]}
+    started = time.perf_counter()
+    job = Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"), os.path.join(MODEL, "job.json"),
+              {})
+    prepared = prepare(job)
+    stock, _ = load_job_stock(prepared)
+    seconds["reading"] = time.perf_counter() - started
+    started = time.perf_counter()
+    in_process, _ = in_process_sweep(prepared)
+    seconds["in-process sweep"] = time.perf_counter() - started
+    started = time.perf_counter()
+    task = ResultsChunk(keep=False, frame=prepared.hints.frame, in_process=in_process, columnar=True)
+    parts = [result.parts for *_, result in map_chunks(task, [(stock.model, prepared.tool, prepared.toolpath,
+                                                                prepared.settings)])]
+    seconds["engine"] = time.perf_counter() - started
+    started = time.perf_counter()
+    target = os.path.join(folder, "split.npz")
+    with replacing(target) as temporaries:
+        results_npz.write_chunks(iter(parts), temporaries[0])
+    seconds["writing .npz"] = time.perf_counter() - started
+    return seconds, parts, len(prepared.toolpath) * prepared.settings.phi.size
+
+
+def plain_csv(parts):
+    """The results CSV text of `parts` by a plain writer: each value's text by Python (repr of the
+    float rounded to decimal_text.DECIMALS places, '' for NaN, str of an int, a label), rows joined."""
+    from abm_workbench.formats.decimal_text import DECIMALS
+    from abm_workbench.formats.results_columns import INT_COLUMNS, TEXT_COLUMNS, text_labels
+
+    lines = [",".join(parts[0][0]) + "\n"]
+    for results, _ in parts:
+        texts = []
+        for name, values in results.items():
+            if name in TEXT_COLUMNS:
+                labels = np.array(text_labels(name, int(values.max(initial=0)) + 1))
+                texts.append(labels[values].tolist())
+            elif name in INT_COLUMNS:
+                texts.append([str(value) for value in values.tolist()])
+            else:
+                rounded = (np.round(values, DECIMALS) + 0.0).tolist()
+                texts.append(["" if value != value else repr(value) for value in rounded])
+        lines.extend(",".join(row) + "\n" for row in zip(*texts))
+    return "".join(lines)
+
+
+def csv_writers(parts):
+    """(seconds of decimal_text, seconds of the plain writer, same text?) for the results CSV of `parts`."""
+    from abm_workbench.formats.results_csv import BLOCK_ROWS, _csv, _fields
+
+    started = time.perf_counter()
+    fast = _csv(list(parts[0][0]), (_fields(results, slice(start, start + BLOCK_ROWS)) for results, _ in parts
+                                    for start in range(0, results["cl"].size, BLOCK_ROWS)))
+    fast_seconds = time.perf_counter() - started
+    started = time.perf_counter()
+    plain = plain_csv(parts)
+    return fast_seconds, time.perf_counter() - started, fast == plain
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--instants", type=int, default=10**6, help="at least this many instants (default 10^6)")
+    parser.add_argument("--repeats", type=int, default=3, help="runs per whole-process figure (default 3)")
+    args = parser.parse_args()
+    load = os.getloadavg()
+    with tempfile.TemporaryDirectory() as folder:
+        resampled_toolpath(os.path.join(MODEL, "toolpath.csv"), os.path.join(folder, "toolpath.csv"),
+                           math.ceil(args.instants / 181))
+        base = [PYTHON, "-m", "abm_workbench", "engage", "--stock", os.path.join(MODEL, "stock.json"),
+                "--toolpath", os.path.join(folder, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json")]
+        seconds, parts, instants = split(folder, args.repeats)
+        whole = {}
+        for model in ("in-process", "initial"):
+            for suffix in ("npz", "csv"):
+                whole[model, suffix] = timed_runs(base + ["--stock-model", model, "--out",
+                                                          os.path.join(folder, f"R.{suffix}")], args.repeats)
+        fast, plain, same = csv_writers(parts)
+    print(f"Whole command line, {instants:,} instants (model test 1, JSON stock); load average "
+          f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start, {os.cpu_count()} cores")
+    print("| stock model | output | best s | median s | instants/s (best) | vs .csv |")
+    print("|---|---|---|---|---|---|")
+    for (model, suffix), (best, median) in whole.items():
+        print(f"| {model} | .{suffix} | {best:.2f} | {median:.2f} | {instants / best:,.0f} | "
+              f"{whole[model, 'csv'][0] / best:.2f}x |")
+    total = sum(seconds.values())
+    print(f"\nSplit of one .npz run (in-process stock), sum {total:.2f} s:")
+    print("| part | s | share |")
+    print("|---|---|---|")
+    for part, value in seconds.items():
+        print(f"| {part} | {value:.3f} | {100 * value / total:.0f} % |")
+    print(f"\nResults CSV text of the same {instants:,} rows: decimal_text {fast:.2f} s, plain writer {plain:.2f} s "
+          f"({plain / fast:.1f}x slower); same bytes: {same}")
+
+
+if __name__ == "__main__":
+    main()
