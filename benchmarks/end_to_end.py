@@ -45,26 +45,43 @@ def resampled_toolpath(source, path, count):
     np.savetxt(path, table, delimiter=",", header=",".join(names), comments="", fmt="%.17g")
 
 
-def timed_runs(command, repeats):
-    """(best, median) wall-clock seconds of `repeats` runs of `command` (checked to exit 0)."""
+def cached_bytecode(folder):
+    """The environment of a Python that keeps its compiled modules in `folder` (as an installed
+    package has them), whatever PYTHONDONTWRITEBYTECODE says here (this machine sets it)."""
+    environment = {key: value for key, value in os.environ.items() if key != "PYTHONDONTWRITEBYTECODE"}
+    environment["PYTHONPYCACHEPREFIX"] = folder
+    return environment
+
+
+def timed_runs(command, repeats, environment=None):
+    """(best, median) wall-clock seconds of `repeats` runs of `command` (checked to exit 0), in
+    `environment` (default this one's)."""
     times = []
     for _ in range(repeats):
         start = time.perf_counter()
-        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=ROOT)
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=ROOT,
+                       env=environment)
         times.append(time.perf_counter() - start)
     return min(times), float(np.median(times))
 
 
-def split(folder, repeats):
-    """Seconds of the parts of one .npz engage, in this process (start-up in fresh interpreters), and the
-    columns of every chunk: (dict part -> seconds, [(results, summary) columns], instants)."""
+def start_up(environment, repeats):
+    """Best seconds of a fresh interpreter that does nothing, imports numpy, imports the command line."""
+    return {name: timed_runs([PYTHON, "-c", code], repeats, environment)[0] for name, code in (
+        ("python -c pass", "pass"), ("import numpy", "import numpy"), ("import abm_workbench.cli", "import abm_workbench.cli"))}
+
+
+def split(folder, repeats, environment):
+    """Seconds of the parts of one .npz engage, in this process (start-up: importing the command line in
+    a fresh interpreter in `environment`), and the columns of every chunk: (dict part -> seconds,
+    [(results, summary) columns], instants)."""
     from abm_workbench.formats import replacing, results_npz
     from abm_workbench.jobs import Job
     from abm_workbench.jobs.job import load_job_stock, prepare
     from abm_workbench.jobs.run import ResultsChunk, in_process_sweep
     from abm_workbench.parallel import map_chunks
 
-    seconds = {"start-up": timed_runs([PYTHON, "-c", "import abm_workbench.cli"], repeats)[0]}
+    seconds = {"start-up": timed_runs([PYTHON, "-c", "import abm_workbench.cli"], repeats, environment)[0]}
     started = time.perf_counter()
     job = Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"), os.path.join(MODEL, "job.json"),
               {})
@@ -133,14 +150,25 @@ def main():
                            math.ceil(args.instants / 181))
         base = [PYTHON, "-m", "abm_workbench", "engage", "--stock", os.path.join(MODEL, "stock.json"),
                 "--toolpath", os.path.join(folder, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json")]
-        seconds, parts, instants = split(folder, args.repeats)
+        cached = cached_bytecode(os.path.join(folder, "bytecode"))
+        timed_runs([PYTHON, "-m", "abm_workbench", "engage", "--help"], 1, cached)  # compiles every module once
+        uncached = {**cached_bytecode(os.path.join(folder, "empty")), "PYTHONDONTWRITEBYTECODE": "1"}
+        starts = {"none (compiled every run)": start_up(uncached, args.repeats),
+                  "bytecode cached": start_up(cached, args.repeats)}
+        seconds, parts, instants = split(folder, args.repeats, cached)
         whole = {}
         for model in ("in-process", "initial"):
             for suffix in ("npz", "csv"):
                 whole[model, suffix] = timed_runs(base + ["--stock-model", model, "--out",
-                                                          os.path.join(folder, f"R.{suffix}")], args.repeats)
+                                                          os.path.join(folder, f"R.{suffix}")], args.repeats, cached)
         fast, plain, same = csv_writers(parts)
-    print(f"Whole command line, {instants:,} instants (model test 1, JSON stock); load average "
+    print("Start-up, best of the repeats (s); the command line's own share is its time less numpy's:")
+    print("| bytecode | python -c pass | import numpy | import abm_workbench.cli | its own |")
+    print("|---|---|---|---|---|")
+    for name, times in starts.items():
+        print(f"| {name} | {' | '.join(f'{value:.3f}' for value in times.values())} | "
+              f"{times['import abm_workbench.cli'] - times['import numpy']:.3f} |")
+    print(f"\nWhole command line (bytecode cached), {instants:,} instants (model test 1, JSON stock); load average "
           f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start, {os.cpu_count()} cores")
     print("| stock model | output | best s | median s | instants/s (best) | vs .csv |")
     print("|---|---|---|---|---|---|")
