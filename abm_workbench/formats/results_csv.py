@@ -16,7 +16,8 @@ with a spindle speed, power (W); the summary gains FORCE_SUMMARY_COLUMNS per CL 
 peak_force, mean_force (resultant, N), peak_torque (N·mm).
 
 Numbers are rounded to decimal_text.DECIMALS (10) places and written in the shortest form
-that reads back as the rounded value; NaN is an empty field.
+that reads back as the rounded value; NaN is an empty field. The columns themselves come from
+formats.results_columns, which formats.results_npz writes as arrays.
 """
 
 import os
@@ -33,7 +34,7 @@ from .results_columns import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_CO
 
 __all__ = ["FORCE_COLUMNS", "FORCE_SUMMARY_COLUMNS", "INPROCESS_COLUMNS", "INPROCESS_SUMMARY_COLUMNS", "RESULT_COLUMNS",
            "SUMMARY_COLUMNS", "TOOLPATH_COLUMNS", "chunk_texts", "read_results", "results_text", "summary_path",
-           "summary_text", "write_chunks", "write_results"]
+           "summary_text", "table_text", "write_chunks", "write_results"]
 
 #: Rows formatted at a time (formats.decimal_text): a text matrix of about 6 MB.
 BLOCK_ROWS = 2**14
@@ -78,9 +79,7 @@ def results_text(engagement, *, first_cl=0, forces=None, initial=None):
     first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass).
     Formatted BLOCK_ROWS rows at a time (formats.decimal_text), so its working memory is bounded.
     """
-    columns = result_columns(engagement, first_cl=first_cl, forces=forces, initial=initial)
-    rows = columns["cl"].size
-    return _csv(list(columns), (_fields(columns, slice(start, start + BLOCK_ROWS)) for start in range(0, rows, BLOCK_ROWS)))
+    return table_text(result_columns(engagement, first_cl=first_cl, forces=forces, initial=initial))
 
 
 def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None, changed=None):
@@ -90,8 +89,14 @@ def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None, changed=
     toolpath, forces and changed are then the chunk's). changed: (m,) bool, against the
     in-process stock: earlier moves removed material the CL point's edges would meet.
     """
-    columns = summary_columns(engagement, toolpath=toolpath, first_cl=first_cl, forces=forces, changed=changed)
-    return _csv(list(columns), [_fields(columns, slice(None))])
+    return table_text(summary_columns(engagement, toolpath=toolpath, first_cl=first_cl, forces=forces, changed=changed))
+
+
+def table_text(columns):
+    """CSV text of `columns` (a dict name -> (rows,) array of formats.results_columns): a header of
+    the names, then one line per row, formatted BLOCK_ROWS rows at a time (formats.decimal_text)."""
+    rows = next(iter(columns.values())).size
+    return _csv(list(columns), (_fields(columns, slice(start, start + BLOCK_ROWS)) for start in range(0, rows, BLOCK_ROWS)))
 
 
 def _fields(columns, rows):
