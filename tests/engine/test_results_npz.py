@@ -10,7 +10,7 @@ import pytest
 from abm_workbench import cli
 from abm_workbench.engine import CASES, SURFACES, engage, segment_letter
 from abm_workbench.errors import InputError
-from abm_workbench.features.stored import read_engagement
+from abm_workbench.features.stored import read_engagement, read_forces
 from abm_workbench.formats import replacing, results_csv, results_npz
 from abm_workbench.formats.results_columns import chunk_columns
 from abm_workbench.parallel import toolpath_part
@@ -75,6 +75,14 @@ def test_npz_holds_the_engines_doubles(written):
     assert columns["case"].tolist() == [CASES[code] for code in engagement.case.ravel()]
     assert columns["segment"].tolist() == ["" if s < 0 else segment_letter(s) for s in engagement.segment.ravel()]
     assert_identical(read_engagement(written / "F.npz"), engagement)
+
+
+def test_forces_read_back_from_the_archive_are_the_csvs_unrounded(written):
+    from_npz, from_csv = read_forces(written / "F.npz", 0.1), read_forces(written / "F.csv", 0.1)
+    assert from_npz.shape == from_csv.shape == (53, 181)
+    for name in ("xyz", "torque", "power"):
+        assert np.array_equal(np.round(getattr(from_npz, name), 10) + 0.0, getattr(from_csv, name)), name
+    assert read_forces(written / "R.npz", 0.1) is None
 
 
 def test_chunks_write_the_same_archive_as_the_whole_pass(tmp_path):
