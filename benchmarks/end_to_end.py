@@ -6,10 +6,11 @@ pass resampled to ceil(instants / 181) CL points (a toolpath CSV written to a te
 
 Prints, from one run:
 1. the whole process (wall clock, start to exit; the best and the median of the repeats) for
-   .npz and .csv outputs, against the in-process stock (the default) and the stock as given;
+   .npz and .csv outputs, against the stock as given (``--stock-model initial``, the default
+   here) or the in-process stock (``--stock-model in-process``: much slower on this pass);
 2. the split of one .npz run measured inside one process: start-up (``import abm_workbench.cli``
-   in a fresh interpreter, interpreter included), reading (job, toolpath, stock), in-process sweep,
-   engine (every chunk's columns), writing the .npz;
+   in a fresh interpreter, interpreter included), reading (job, toolpath, stock), the in-process
+   sweep (with --stock-model in-process), engine (every chunk's columns), writing the .npz;
 3. the results CSV text of the same columns by formats.decimal_text and by a plain writer
    (Python's repr of each rounded value, joined row by row), checked to be the same bytes.
 Ratios are printed beside the times, so that a loaded machine's figures still compare.
@@ -71,9 +72,9 @@ def start_up(environment, repeats):
         ("python -c pass", "pass"), ("import numpy", "import numpy"), ("import abm_workbench.cli", "import abm_workbench.cli"))}
 
 
-def split(folder, repeats, environment):
+def split(folder, model, repeats, environment):
     """Seconds of the parts of one .npz engage, in this process (start-up: importing the command line in
-    a fresh interpreter in `environment`), and the columns of every chunk: (dict part -> seconds,
+    a fresh interpreter in `environment`) against stock model `model`, and the columns of every chunk: (dict part -> seconds,
     [(results, summary) columns], instants)."""
     from abm_workbench.formats import replacing, results_npz
     from abm_workbench.jobs import Job
@@ -84,13 +85,14 @@ def split(folder, repeats, environment):
     seconds = {"start-up": timed_runs([PYTHON, "-c", "import abm_workbench.cli"], repeats, environment)[0]}
     started = time.perf_counter()
     job = Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"), os.path.join(MODEL, "job.json"),
-              {})
+              {}, stock_model=model)
     prepared = prepare(job)
     stock, _ = load_job_stock(prepared)
     seconds["reading"] = time.perf_counter() - started
     started = time.perf_counter()
     in_process, _ = in_process_sweep(prepared)
-    seconds["in-process sweep"] = time.perf_counter() - started
+    if in_process is not None:
+        seconds["in-process sweep"] = time.perf_counter() - started
     started = time.perf_counter()
     task = ResultsChunk(keep=False, frame=prepared.hints.frame, in_process=in_process, columnar=True)
     parts = [result.parts for *_, result in map_chunks(task, [(stock.model, prepared.tool, prepared.toolpath,
@@ -143,6 +145,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--instants", type=int, default=10**6, help="at least this many instants (default 10^6)")
     parser.add_argument("--repeats", type=int, default=3, help="runs per whole-process figure (default 3)")
+    parser.add_argument("--stock-model", choices=("initial", "in-process"), default="initial",
+                        help="the stock as given (default) or the in-process stock")
     args = parser.parse_args()
     load = os.getloadavg()
     with tempfile.TemporaryDirectory() as folder:
@@ -155,12 +159,9 @@ def main():
         uncached = {**cached_bytecode(os.path.join(folder, "empty")), "PYTHONDONTWRITEBYTECODE": "1"}
         starts = {"none (compiled every run)": start_up(uncached, args.repeats),
                   "bytecode cached": start_up(cached, args.repeats)}
-        seconds, parts, instants = split(folder, args.repeats, cached)
-        whole = {}
-        for model in ("in-process", "initial"):
-            for suffix in ("npz", "csv"):
-                whole[model, suffix] = timed_runs(base + ["--stock-model", model, "--out",
-                                                          os.path.join(folder, f"R.{suffix}")], args.repeats, cached)
+        seconds, parts, instants = split(folder, args.stock_model, args.repeats, cached)
+        whole = {suffix: timed_runs(base + ["--stock-model", args.stock_model, "--out", os.path.join(folder, f"R.{suffix}")],
+                                    args.repeats, cached) for suffix in ("npz", "csv")}
         fast, plain, same = csv_writers(parts)
     print("Start-up, best of the repeats (s); the command line's own share is its time less numpy's:")
     print("| bytecode | python -c pass | import numpy | import abm_workbench.cli | its own |")
@@ -170,13 +171,14 @@ def main():
               f"{times['import abm_workbench.cli'] - times['import numpy']:.3f} |")
     print(f"\nWhole command line (bytecode cached), {instants:,} instants (model test 1, JSON stock); load average "
           f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start, {os.cpu_count()} cores")
-    print("| stock model | output | best s | median s | instants/s (best) | vs .csv |")
+    print("| stock model | output | best s | median s | instants/s (best) | .csv time / this |")
     print("|---|---|---|---|---|---|")
-    for (model, suffix), (best, median) in whole.items():
-        print(f"| {model} | .{suffix} | {best:.2f} | {median:.2f} | {instants / best:,.0f} | "
-              f"{whole[model, 'csv'][0] / best:.2f}x |")
+    for suffix, (best, median) in whole.items():
+        print(f"| {args.stock_model} | .{suffix} | {best:.2f} | {median:.2f} | {instants / best:,.0f} | "
+              f"{whole['csv'][0] / best:.2f} |")
     total = sum(seconds.values())
-    print(f"\nSplit of one .npz run (in-process stock), sum {total:.2f} s:")
+    print(f"\nSplit of one .npz run ({args.stock_model} stock), sum {total:.2f} s "
+          f"({instants / total:,.0f} instants/s):")
     print("| part | s | share |")
     print("|---|---|---|")
     for part, value in seconds.items():

@@ -57,8 +57,8 @@ def write_chunks(parts, path):
     write `path` itself to a temporary (formats.replacing) for all-or-nothing output.
     """
     path = os.fspath(path)
-    folder, name = os.path.split(os.path.abspath(path))
-    scratch = tempfile.mkdtemp(prefix=f".{name.lstrip('.')}.", suffix=".columns", dir=folder)
+    # A short name of its own: an output name as long as the folder allows still fits beside it.
+    scratch = tempfile.mkdtemp(prefix=".abm-columns-", dir=os.path.dirname(os.path.abspath(path)))
     columns = _RawColumns(scratch)
     try:
         count = 0

@@ -199,3 +199,12 @@ def test_the_archive_is_stored_uncompressed_with_every_column(written):
     assert {f"{name}.npy" for name in results_csv.RESULT_COLUMNS} <= names
     assert {f"summary/{name}.npy" for name in results_csv.SUMMARY_COLUMNS} <= names
     assert {"format.npy", "labels/case.npy", "labels/segment.npy"} <= names
+
+
+def test_the_longest_output_name_allowed_is_written(tmp_path):
+    """The scratch folder's name does not grow with the output's: a name at the length limit works."""
+    from abm_workbench.formats import STAGING_EXTRA
+
+    stem = "r" * (os.pathconf(tmp_path, "PC_NAME_MAX") - STAGING_EXTRA - len(".npz"))
+    assert run(tmp_path, stem + ".npz", "--stock-model", "initial") == 0
+    assert os.listdir(tmp_path) == [stem + ".npz"]
