@@ -54,21 +54,22 @@ def cached_bytecode(folder):
     return environment
 
 
-def timed_runs(command, repeats, environment=None):
+def timed_runs(command, repeats, environment=None, root=ROOT):
     """(best, median) wall-clock seconds of `repeats` runs of `command` (checked to exit 0), in
-    `environment` (default this one's)."""
+    `environment` (default this one's), in the folder `root`."""
     times = []
     for _ in range(repeats):
         start = time.perf_counter()
-        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=ROOT,
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=root,
                        env=environment)
         times.append(time.perf_counter() - start)
     return min(times), float(np.median(times))
 
 
-def start_up(environment, repeats):
-    """Best seconds of a fresh interpreter that does nothing, imports numpy, imports the command line."""
-    return {name: timed_runs([PYTHON, "-c", code], repeats, environment)[0] for name, code in (
+def start_up(environment, repeats, root=ROOT):
+    """Best seconds of a fresh interpreter that does nothing, imports numpy, imports the command line
+    (of the checkout `root`)."""
+    return {name: timed_runs([PYTHON, "-c", code], repeats, environment, root)[0] for name, code in (
         ("python -c pass", "pass"), ("import numpy", "import numpy"), ("import abm_workbench.cli", "import abm_workbench.cli"))}
 
 
@@ -141,12 +142,27 @@ def csv_writers(parts):
     return fast_seconds, time.perf_counter() - started, fast == plain
 
 
+def print_start_up(starts):
+    """The start-up table of {case: start_up(...)}, with the load average now."""
+    load = os.getloadavg()
+    print(f"Start-up, best of the repeats (s), load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} after; the "
+          "command line's own share is its time less numpy's:")
+    print("| bytecode | python -c pass | import numpy | import abm_workbench.cli | its own |")
+    print("|---|---|---|---|---|")
+    for name, times in starts.items():
+        print(f"| {name} | {' | '.join(f'{value:.3f}' for value in times.values())} | "
+              f"{times['import abm_workbench.cli'] - times['import numpy']:.3f} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--instants", type=int, default=10**6, help="at least this many instants (default 10^6)")
+    parser.add_argument("--start-up-only", action="store_true", help="only the start-up table")
     parser.add_argument("--repeats", type=int, default=3, help="runs per whole-process figure (default 3)")
     parser.add_argument("--stock-model", choices=("initial", "in-process"), default="initial",
                         help="the stock as given (default) or the in-process stock")
+    parser.add_argument("--baseline", metavar="CHECKOUT",
+                        help="also the start-up of the command line of another checkout (e.g. the main branch's)")
     args = parser.parse_args()
     load = os.getloadavg()
     with tempfile.TemporaryDirectory() as folder:
@@ -156,19 +172,21 @@ def main():
                 "--toolpath", os.path.join(folder, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json")]
         cached = cached_bytecode(os.path.join(folder, "bytecode"))
         timed_runs([PYTHON, "-m", "abm_workbench", "engage", "--help"], 1, cached)  # compiles every module once
-        uncached = {**cached_bytecode(os.path.join(folder, "empty")), "PYTHONDONTWRITEBYTECODE": "1"}
-        starts = {"none (compiled every run)": start_up(uncached, args.repeats),
+        uncached = {key: value for key, value in os.environ.items() if key != "PYTHONPYCACHEPREFIX"}
+        uncached["PYTHONDONTWRITEBYTECODE"] = "1"  # the project compiled at every run (without a __pycache__)
+        starts = {"project not cached": start_up(uncached, args.repeats),
                   "bytecode cached": start_up(cached, args.repeats)}
+        if args.baseline:
+            timed_runs([PYTHON, "-c", "import abm_workbench.cli"], 1, cached, args.baseline)
+            starts[f"bytecode cached, {args.baseline}"] = start_up(cached, args.repeats, args.baseline)
+        if args.start_up_only:
+            print_start_up(starts)
+            return
         seconds, parts, instants = split(folder, args.stock_model, args.repeats, cached)
         whole = {suffix: timed_runs(base + ["--stock-model", args.stock_model, "--out", os.path.join(folder, f"R.{suffix}")],
                                     args.repeats, cached) for suffix in ("npz", "csv")}
         fast, plain, same = csv_writers(parts)
-    print("Start-up, best of the repeats (s); the command line's own share is its time less numpy's:")
-    print("| bytecode | python -c pass | import numpy | import abm_workbench.cli | its own |")
-    print("|---|---|---|---|---|")
-    for name, times in starts.items():
-        print(f"| {name} | {' | '.join(f'{value:.3f}' for value in times.values())} | "
-              f"{times['import abm_workbench.cli'] - times['import numpy']:.3f} |")
+    print_start_up(starts)
     print(f"\nWhole command line (bytecode cached), {instants:,} instants (model test 1, JSON stock); load average "
           f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start, {os.cpu_count()} cores")
     print("| stock model | output | best s | median s | instants/s (best) | .csv time / this |")
