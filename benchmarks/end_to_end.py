@@ -70,13 +70,14 @@ def start_up(environment, repeats, root=ROOT):
     """Best seconds of a fresh interpreter that does nothing, imports numpy, imports the command line
     (of the checkout `root`)."""
     return {name: timed_runs([PYTHON, "-c", code], repeats, environment, root)[0] for name, code in (
-        ("python -c pass", "pass"), ("import numpy", "import numpy"), ("import abm_workbench.cli", "import abm_workbench.cli"))}
+        ("python -c pass", "pass"), ("import numpy", "import numpy"),
+        ("import abm_workbench.cli", "import abm_workbench.cli"))}
 
 
 def split(folder, model, repeats, environment):
-    """Seconds of the parts of one .npz engage, in this process (start-up: importing the command line in
-    a fresh interpreter in `environment`) against stock model `model`, and the columns of every chunk: (dict part -> seconds,
-    [(results, summary) columns], instants)."""
+    """Seconds of the parts of one .npz engage against stock model `model`, in this process (start-up:
+    importing the command line in a fresh interpreter in `environment`), and the columns of every
+    chunk: (dict part -> seconds, [(results, summary) columns], instants)."""
     from abm_workbench.formats import replacing, results_npz
     from abm_workbench.jobs import Job
     from abm_workbench.jobs.job import load_job_stock, prepare
@@ -183,8 +184,9 @@ def main():
             print_start_up(starts)
             return
         seconds, parts, instants = split(folder, args.stock_model, args.repeats, cached)
-        whole = {suffix: timed_runs(base + ["--stock-model", args.stock_model, "--out", os.path.join(folder, f"R.{suffix}")],
-                                    args.repeats, cached) for suffix in ("npz", "csv")}
+        whole = {suffix: timed_runs(base + ["--stock-model", args.stock_model, "--out",
+                                            os.path.join(folder, f"R.{suffix}")], args.repeats, cached)
+                 for suffix in ("npz", "csv")}
         fast, plain, same = csv_writers(parts)
     print_start_up(starts)
     print(f"\nWhole command line (bytecode cached), {instants:,} instants (model test 1, JSON stock); load average "

@@ -3,8 +3,8 @@ writes, or the NumPy archive of columns :mod:`abm_workbench.formats.results_npz`
 
 The engagement object stores its results in that CSV, not in the document; this module turns
 the file into the same :class:`~abm_workbench.engine.Engagement` the engine returned, with
-every number within 5e-11 of the computed one (the CSV keeps 10 decimals; an .npz every bit). The depth of cut
-per CL point is recomputed from the LEP / UEP z, as the engine computes it. With cutting
+every number within 5e-11 of the computed one (the CSV keeps 10 decimals; an .npz every bit).
+The depth of cut per CL point is recomputed from the LEP / UEP z, as the engine computes it. With cutting
 forces, :func:`read_forces` gives them back as a :class:`PassForces` (forces within 5e-11 N).
 
 The document keeps its results itself, in a compressed NumPy archive (:func:`write_archive`,

@@ -139,7 +139,8 @@ def integer_field(values):
     higher = np.zeros(values.size, dtype=bool)
     for row in range(count):
         group = (magnitude // np.uint64(_SIZE ** (count - 1 - row)) % np.uint64(_SIZE)).astype(np.intp)
-        np.take(_group_table(), group + np.where(higher, _FULL, _UNITS if row == count - 1 else _STRIPPED), out=words[row])
+        section = np.where(higher, _FULL, _UNITS if row == count - 1 else _STRIPPED)
+        np.take(_group_table(), group + section, out=words[row])
         higher |= group != 0
     words[0] |= negative * np.uint64(_MINUS)
     return words

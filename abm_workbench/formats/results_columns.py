@@ -112,7 +112,8 @@ def summary_columns(engagement, *, toolpath=None, first_cl=0, forces=None, chang
         columns.update({name: toolpath.cl[cl, axis] for axis, name in enumerate(TOOLPATH_COLUMNS[:3])})
         columns.update(theta_a=toolpath.theta_a[cl], theta_b=toolpath.theta_b[cl])
     if forces is not None:
-        columns.update(peak_force=forces.peak[cl], mean_force=forces.mean[cl], peak_torque=forces.torque.max(axis=1)[cl])
+        columns.update(peak_force=forces.peak[cl], mean_force=forces.mean[cl],
+                       peak_torque=forces.torque.max(axis=1)[cl])
     if changed is not None:
         columns["changed"] = np.asarray(changed)[cl]
     return _typed(columns)

@@ -96,7 +96,8 @@ def table_text(columns):
     """CSV text of `columns` (a dict name -> (rows,) array of formats.results_columns): a header of
     the names, then one line per row, formatted BLOCK_ROWS rows at a time (formats.decimal_text)."""
     rows = next(iter(columns.values())).size
-    return _csv(list(columns), (_fields(columns, slice(start, start + BLOCK_ROWS)) for start in range(0, rows, BLOCK_ROWS)))
+    blocks = (_fields(columns, slice(start, start + BLOCK_ROWS)) for start in range(0, rows, BLOCK_ROWS))
+    return _csv(list(columns), blocks)
 
 
 def _fields(columns, rows):

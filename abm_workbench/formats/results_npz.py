@@ -154,7 +154,8 @@ def read_tables(path):
         if unknown:
             raise InputError(f"{name}: unknown array {prefix + unknown[0]!r} in a results archive")
         rows = columns[required[0]].shape
-        tables.append({column: _column(name, prefix + column, values, rows, labels) for column, values in columns.items()})
+        tables.append({column: _column(name, prefix + column, values, rows, labels)
+                       for column, values in columns.items()})
     return tuple(tables)
 
 

@@ -398,7 +398,8 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
         if force_parts is not None:
             from ..report.forces import chosen_cl, force_over_phi_figure
             forces = joined_forces(force_parts)
-            force_over_phi_figure(forces, chosen_cl(forces), along=True).savefig(temporaries[len(results) + 1], format="png")
+            figure = force_over_phi_figure(forces, chosen_cl(forces), along=True)
+            figure.savefig(temporaries[len(results) + 1], format="png")
     return EngageResult(prepared, stock, outputs, depth, None if prepared.force_model is None else peak,
                         None if in_process is None else changed, model_note, time.perf_counter() - started)
 

@@ -89,8 +89,10 @@ def test_chunks_write_the_same_archive_as_the_whole_pass(tmp_path):
     stock, tool, toolpath, settings = model_job(1)
     whole = engage(stock, tool, toolpath, settings)
     assert results_npz.write_chunks([chunk_columns(whole, 0, toolpath=toolpath)], tmp_path / "whole.npz") == 1
-    parts = [chunk_columns(engage(stock, tool, toolpath_part(toolpath, start, stop), settings), start,
-                           toolpath=toolpath_part(toolpath, start, stop)) for start, stop in zip(BOUNDS[:-1], BOUNDS[1:])]
+    parts = []
+    for start, stop in zip(BOUNDS[:-1], BOUNDS[1:]):
+        part = toolpath_part(toolpath, start, stop)
+        parts.append(chunk_columns(engage(stock, tool, part, settings), start, toolpath=part))
     assert results_npz.write_chunks(iter(parts), tmp_path / "R.npz") == 4
     for summary in (False, True):
         a = results_npz.read_results(tmp_path / "whole.npz", summary)
