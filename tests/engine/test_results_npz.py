@@ -15,7 +15,7 @@ from abm_workbench.formats import replacing, results_csv, results_npz
 from abm_workbench.formats.results_columns import chunk_columns
 from abm_workbench.parallel import toolpath_part
 
-from .test_parallel import MODELS, assert_identical, model_job
+from .test_parallel import MODELS, ROOT, assert_identical, model_job
 
 MODEL = os.path.join(MODELS, "model_test_1")
 # Uneven chunks of model test 1's 53 CL points, one of a single CL point.
@@ -210,3 +210,33 @@ def test_the_longest_output_name_allowed_is_written(tmp_path):
     stem = "r" * (os.pathconf(tmp_path, "PC_NAME_MAX") - STAGING_EXTRA - len(".npz"))
     assert run(tmp_path, stem + ".npz", "--stock-model", "initial") == 0
     assert os.listdir(tmp_path) == [stem + ".npz"]
+
+
+def test_a_run_stopped_while_columns_stream_leaves_nothing(tmp_path):
+    """SIGTERM once the scratch columns hold data (mid-stream, ~10⁶ instants): no archive, no scratch
+    folder, no folder made, exit status 128 + 15."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    out = tmp_path / "made" / "R.npz"
+    command = [sys.executable, "-m", "abm_workbench", "engage", "--stock", os.path.join(MODEL, "stock.json"),
+               "--toolpath", os.path.join(MODEL, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json"),
+               "--stock-model", "initial", "--phi-step", "0.01", "--out", str(out)]
+    child = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)
+
+    def streaming():
+        folders = [entry for entry in os.scandir(out.parent) if entry.name.startswith(".abm-columns-")]
+        return folders and any(entry.stat().st_size for entry in os.scandir(folders[0].path))
+
+    deadline = time.monotonic() + 300.0
+    while not (out.parent.is_dir() and streaming()):
+        assert child.poll() is None, "the run ended before its columns were seen"
+        assert time.monotonic() < deadline
+        time.sleep(0.02)
+    child.send_signal(signal.SIGTERM)
+    _, err = child.communicate(timeout=300)
+    assert child.returncode == 128 + signal.SIGTERM and "Traceback" not in err
+    assert os.listdir(tmp_path) == []
