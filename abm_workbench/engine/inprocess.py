@@ -19,7 +19,6 @@ moves near a point, not with the program's length (docs/ENGINE.md). Lengths in m
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from .engagement import SURFACES
 from .intervals import EdgeIntervals
@@ -146,7 +145,7 @@ class SweptPieces:
     span_turn: np.ndarray
     span_centre: np.ndarray
     span_bound: np.ndarray
-    tree: cKDTree
+    tree: object  # scipy.spatial.cKDTree
     tolerance: float
 
 
@@ -214,6 +213,8 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     c0, c1, axis = _steps(p0[move], p1[move], w0[move], w1[move], turn[move], span_index[owner] * count[owner] + rank,
                           spans[move] * count[owner])
     first = np.cumsum(count) - count
+    from scipy.spatial import cKDTree  # here: scipy.spatial takes a while to import
+
     tree = cKDTree(centre if centre.size else np.zeros((0, 3)))
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
                        s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, tree, tolerance)
@@ -336,6 +337,8 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     radius = 0.5 * np.linalg.norm(high - low, axis=1)
     # (group, span) pairs: spheres that meet, the span's move ends before the CL point, and
     # the group's sphere is not surely apart from the span.
+    from scipy.spatial import cKDTree
+
     near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.span_bound.max()),
                                                   output_type="ndarray")
     g, k = near["i"].astype(np.intp), near["j"].astype(np.intp)

@@ -10,7 +10,6 @@ from dataclasses import dataclass, field
 from typing import Optional
 
 import numpy as np
-from scipy.interpolate import BSpline, PPoly
 
 from .bands import _sparse_table
 from .polynomials import (bernstein_unit, bracketed_root, compose_linear, derivative, horner, monotone_root_unit,
@@ -523,6 +522,8 @@ def _slope_bounds(sx, sy, sw):
 def _power_spans(knots, coefficients, degree):
     """Power-basis coefficients (S, p+1) in local u ∈ [0, 1] of each non-empty knot span, and
     the index of each span's first pole."""
+    from scipy.interpolate import BSpline, PPoly  # here: scipy.interpolate takes a while to import
+
     spline = BSpline(knots, coefficients, degree, extrapolate=False)
     pp = PPoly.from_spline(spline)
     widths = np.diff(pp.x)
