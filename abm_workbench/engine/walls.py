@@ -169,8 +169,8 @@ class SplineWall:
         slopes = _slope_bounds(sx, sy, sw)
         object.__setattr__(self, "straight", bool(np.ptp(poles[:, 0]) <= STRAIGHT_EPS))
         for name, value in (("degree", p), ("knots", knots), ("poles", poles), ("weights", weights),
-                            ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y), ("span_boxes", boxes),
-                            ("span_slopes", slopes)):
+                            ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y),
+                            ("span_boxes", boxes), ("span_slopes", slopes)):
             if isinstance(value, np.ndarray):
                 value.setflags(write=False)
             object.__setattr__(self, name, value)
