@@ -248,3 +248,19 @@ def test_span_slope_bounds_hold_the_curve(rational):
         slope = velocity[:, 0] / velocity[:, 1]
         assert low <= slope.min() and slope.max() <= high
         assert high - low <= 2 * np.ptp(slope) + 1e-6  # a bound, not a blanket
+
+
+@pytest.mark.parametrize("rational", [False, True])
+def test_bands_of_a_spline_wall_are_its_x_range_per_bin(rational):
+    # The bands decide which walls an edge line can reach: too narrow would lose crossings.
+    knots, poles, weights = wavy_curve(rational)
+    wall = SplineWall(3, knots, poles, weights)
+    curve = Curve(knots, poles, 3, weights)
+    edges = np.linspace(-14.0, 14.0, 23)
+    low, high, slope = wall.bins(edges)
+    for b in range(edges.size - 1):
+        y = np.linspace(edges[b], edges[b + 1], 4001)
+        x = curve.wall_x(y)
+        assert low[b] <= x.min() + 1e-9 and x.max() - 1e-9 <= high[b]
+        assert x.min() - low[b] < 1e-6 and high[b] - x.max() < 1e-6  # exact, not a bound
+        assert slope[b] >= np.abs(np.diff(x) / np.diff(y)).max() - 1e-6
