@@ -53,6 +53,7 @@ import atexit
 import hashlib
 import os
 import shutil
+import sys
 import tempfile
 import time
 from typing import NamedTuple
@@ -126,6 +127,41 @@ def property_words(label, error):
     parameter = BY_NAME.get(error.field)
     prop = f" (property {parameter.prop})" if parameter is not None and parameter.prop else ""
     return InputError(f"{label}: {label_words(error)[:-1]}{prop}.")
+
+
+class _Named(type):
+    """Metaclass of RecomputeFailed: see there."""
+
+    previous = None  # sys.tracebacklimit before FreeCAD reported one
+
+    def __str__(cls):
+        _Named.previous = getattr(sys, "tracebacklimit", None)
+        sys.tracebacklimit = 0
+        return PROG
+
+
+class RecomputeFailed(InputError, metaclass=_Named):
+    """An InputError that fails an object's recompute with its message alone, no Python traceback.
+
+    FreeCAD 0.20 reports an exception leaving a Python feature's ``execute`` as
+    ``<traceback><str(type)>: <message>`` (``PyException``: the type and message as strings, then
+    the traceback printed by ``PyTraceBack_Print``), and marks the object Invalid with the message
+    as its status string. str() of this class, which FreeCAD takes first, is "ABM" and sets
+    ``sys.tracebacklimit`` to 0, so the traceback prints as nothing; the instance, which FreeCAD
+    lets go right after, puts the limit back as it is deleted. Python code catching it sees an
+    InputError with the same message.
+    """
+
+    def __del__(self):
+        if getattr(sys, "tracebacklimit", None) == 0:
+            if _Named.previous is None:
+                del sys.tracebacklimit
+            else:
+                sys.tracebacklimit = _Named.previous
+
+
+#: How FreeCAD names a failed recompute of an engagement in the report view ("ABM: <message>").
+PROG = "ABM"
 
 
 class EngagementFeature(FeatureProxy):
@@ -216,6 +252,15 @@ class EngagementFeature(FeatureProxy):
         return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)
 
     def execute(self, obj):
+        """Recompute (:meth:`compute`); bad input fails it with its message alone (:class:`RecomputeFailed`)."""
+        try:
+            self.compute(obj)
+        except ParameterError as error:
+            raise RecomputeFailed(str(property_words(obj.Label, error))) from None
+        except InputError as error:
+            raise RecomputeFailed(str(error)) from None
+
+    def compute(self, obj):
         """Run the engine; store the results (CSV, read-only properties, Shape). Inputs the results of
         which are kept (:meth:`result`) take them back instead of running the engine again."""
         self._result, self._written, self._forces = None, None, None
@@ -252,7 +297,7 @@ class EngagementFeature(FeatureProxy):
         obj.EngineTime = elapsed
         obj.Parameters = parameters.describe(lambda parameter: parameter.prop)
         obj.Warnings = warnings
-        obj.Shape = engaged_surfaces(result) if obj.ShowSurfaces else Part.Shape()
+        obj.Shape = engaged_outline(result) if obj.ShowSurfaces else Part.Shape()
         self._keep(obj, key, (toolpath, stock))
 
     def _keep(self, obj, key, sources):
@@ -622,36 +667,38 @@ def _absolute(doc, path):
     return os.path.join(os.path.dirname(doc.FileName), path)
 
 
-def engaged_surfaces(result):
-    """A compound of the engaged cutter surface (see :func:`engaged_surface_parts`)."""
-    return Part.Compound(engaged_surface_parts(result)[0])
+def engaged_outline(result):
+    """A compound of the outline of the engaged cutter surface (see :func:`engaged_outline_parts`)."""
+    return Part.Compound(engaged_outline_parts(result)[0])
 
 
-def engaged_surface_parts(result):
-    """The engaged cutter surface of every CL point, piece by piece, and what each piece is.
+def engaged_outline_parts(result):
+    """The outline of the engaged cutter surface of every CL point, piece by piece, and what each is.
 
-    Per CL point and engagement segment: the ruled surface between the LEP and UEP polylines
-    over the segment (a line LEP–UEP for a one-angle segment; the two polylines where OCC
-    refuses the ruling; nothing for a segment of zero length). Returns (shapes, keys): keys[i]
-    = (cl, segment letter, UEP surface name) of shapes[i], e.g. for colouring by UEP surface.
+    Per CL point and engagement segment: a closed polyline along the LEP points of the segment's
+    angles and back along its UEP points (a line LEP–UEP for a one-angle segment; nothing for a
+    segment of zero length). The surface itself is drawn by the GUI as a mesh
+    (``gui.surface_mesh``). Returns (shapes, keys): keys[i] = (cl, segment letter, UEP surface
+    name) of shapes[i].
     """
+    from ..engine.engagement import SURFACES, segment_letter
+
+    segment = result.segment
+    cl, row = np.nonzero(segment >= 0)
+    key = cl * (segment.shape[1] + 1) + segment[cl, row]
+    starts = np.flatnonzero(np.concatenate([[True], key[1:] != key[:-1]]))
+    stops = np.append(starts[1:], cl.size)
+    lep, uep = result.lep_xyz[cl, row], result.uep_xyz[cl, row]
     shapes, keys = [], []
-    for cl in range(result.shape[0]):
-        for index, segment in enumerate(result.segments(cl)):
-            rows = np.flatnonzero(result.segment[cl] == index)
-            lep, uep = result.lep_xyz[cl, rows], result.uep_xyz[cl, rows]
-            key = (cl, segment["letter"], segment["surface"])
-            if len(rows) == 1:
-                if np.linalg.norm(uep[0] - lep[0]) > 1e-9:
-                    shapes.append(Part.LineSegment(FreeCAD.Vector(*lep[0]), FreeCAD.Vector(*uep[0])).toShape())
-                    keys.append(key)
-                continue
-            try:
-                pieces = [Part.makeRuledSurface(polyline(lep), polyline(uep))]
-            except Exception:  # noqa: BLE001 (OCC refuses degenerate rulings: show the two curves)
-                pieces = [polyline(lep), polyline(uep)]
-            shapes += pieces
-            keys += [key] * len(pieces)
+    for start, stop in zip(starts.tolist(), stops.tolist()):
+        first = (cl[start], row[start])
+        points = np.concatenate([lep[start:stop], uep[start:stop][::-1], lep[start:start + 1]]) \
+            if stop - start > 1 else np.stack([lep[start], uep[start]])
+        shape = polyline(points)
+        if shape.ShapeType == "Vertex":
+            continue  # a segment of zero length has no outline
+        shapes.append(shape)
+        keys.append((int(first[0]), segment_letter(segment[first]), SURFACES[result.uep_surface[first]]))
     return shapes, keys
 
 

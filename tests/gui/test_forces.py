@@ -69,12 +69,20 @@ along_lines = {{line.get_label(): line for line in along.lines}}
 verdict["along_match"] = [bool(np.allclose(along_lines["peak |F| over φ"].get_ydata(), forces.peak, atol=1e-9)),
                           bool(np.allclose(along_lines["mean |F| over φ"].get_ydata(), forces.mean, atol=1e-9)),
                           [float(x) for x in along.lines[-1].get_xdata()]]
-from abm_workbench.gui.colouring import COLOUR_BY, face_map, face_values, quantity_colours
+from scipy.spatial import cKDTree
+from abm_workbench.gui.colouring import COLOUR_BY, quantity_colours
 panel_dock.colour_by.setCurrentIndex(COLOUR_BY.index("force"))
 FreeCADGui.updateGui()
-legend = engagement.ViewObject.Proxy.legend
-values = face_values(np.linalg.norm(forces.xyz, axis=-1), face_map(engagement.Proxy.result(engagement), engagement.Shape))
-colours = np.array([c[:3] for c in engagement.ViewObject.DiffuseColor])
+provider = engagement.ViewObject.Proxy
+legend = provider.legend
+# each vertex of the mesh is the LEP or UEP of an engaged instant (found by geometry): its |F| there
+result = engagement.Proxy.result(engagement)
+instants = np.argwhere(result.segment >= 0)
+ends = np.concatenate([result.lep_xyz[instants[:, 0], instants[:, 1]], result.uep_xyz[instants[:, 0], instants[:, 1]]])
+resultant = np.linalg.norm(forces.xyz, axis=-1)[instants[:, 0], instants[:, 1]]
+distance, nearest = cKDTree(ends).query(np.array(provider.mesh.points))
+values = np.concatenate([resultant, resultant])[nearest]
+colours = np.array(provider.colours)
 verdict["colour_force"] = [panel_dock.colour_by.model().item(3).isEnabled(), engagement.ViewObject.ColourBy,
                            legend.kind, legend.unit, abs(legend.high - float(values.max())),
                            float(np.abs(colours - quantity_colours(values, values.min(), values.max())).max())]

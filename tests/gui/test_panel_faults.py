@@ -77,9 +77,9 @@ def snapshot():
             "phi_step": engagement.PhiStep.Value, "state": engagement.State, "instants": engagement.Instants,
             "result": None if result is None else [result.phi.tolist(), round(float(np.nansum(result.length)), 9),
                                                     hashlib.sha256(np.round(result.length, 9).tobytes()).hexdigest()],
-            "faces": len(engagement.Shape.Faces),
-            "colours": hashlib.sha256(np.round([c[:3] for c in vobj.DiffuseColor], 6).tobytes()).hexdigest(),
-            "coloured": len(vobj.DiffuseColor),
+            "faces": 0 if vobj.Proxy.mesh is None else len(vobj.Proxy.mesh.points),
+            "colours": hashlib.sha256(np.round(np.reshape(vobj.Proxy.colours, (-1, 3)), 6).tobytes()).hexdigest(),
+            "coloured": 0 if vobj.Proxy.colours is None else len(vobj.Proxy.colours),
             "undo": list(doc.UndoNames), "redo": list(doc.RedoNames),
             "dock": [shown_dock.obj is engagement, shown_dock.spin.maximum(), shown_dock.about.text(),
                      [float(v) for v in shown_dock.figure.axes[0].get_xlim()]]}}
