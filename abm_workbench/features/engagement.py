@@ -66,7 +66,8 @@ from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..formats.results_csv import write_results
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
 from ..jobs import tool_and_settings
-from ..jobs.run import check_model, flute_1, in_part_frame, pass_forces_of
+from ..jobs import run as _run
+from ..jobs.run import check_model, in_part_frame
 from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_properties, document_or_active
 from .base import remember_relative
 from .stored import PassForces, read_archive, read_engagement, read_forces, write_archive
@@ -97,6 +98,26 @@ INPUT_GROUPS = ("Inputs", "Tool", "Cut", "Forces", "Display")
 #: Properties execute sets from the results (restored with kept results).
 KEPT_PROPERTIES = ("DepthOfCutMin", "DepthOfCutMax", "MaxLengthOfCut", "Instants", "EngagedInstants",
                    "EngagedCLPoints", "EngineTime", "Parameters", "Warnings", "PeakForce", "ForceFeedPerTooth")
+
+
+def _call(function, *args):
+    return function(*args)
+
+
+#: engine_call(function, *args) -> function(*args): how execute runs the engine's pure-numpy calls
+#: (flute_1, pass_forces_of below). Headless, a plain call; the GUI puts a worker thread with
+#: progress and Cancel here (``gui.worker.install``).
+engine_call = _call
+
+
+def flute_1(*args):
+    """``jobs.run.flute_1`` through engine_call."""
+    return engine_call(_run.flute_1, *args)
+
+
+def pass_forces_of(*args):
+    """``jobs.run.pass_forces_of`` through engine_call."""
+    return engine_call(_run.pass_forces_of, *args)
 
 
 class EngagementInputs(NamedTuple):

@@ -445,9 +445,13 @@ _ASKED = set()  # names of the documents checked for missing input files
 
 
 def install_observer():
-    """Install the document observer once (InitGui.py calls it), and attach to open documents."""
+    """Install the document observer once (InitGui.py calls it), and attach to open documents; run the
+    engagements' engine in a worker thread (:mod:`.worker`)."""
     global _OBSERVER
     if _OBSERVER is None and FreeCAD.GuiUp:
+        from . import worker
+
+        worker.install()
         _OBSERVER = _Observer()
         FreeCAD.addDocumentObserver(_OBSERVER)
         for doc in FreeCAD.listDocuments().values():
