@@ -1,13 +1,13 @@
 """Colours of the engaged cutter surface: by UEP surface of the segment, or by a quantity.
 
-A :class:`FaceMap` says, per coloured piece, which CL point and φ rows it stands for and the UEP
-surface of its segment; the engagement's mesh (:mod:`.surface_mesh`) colours each engaged
-instant so (``surface_mesh.instant_map``), a piece of one angle. Colours are RGB in 0..1.
+:func:`instant_colours` colours engaged instants, given by their CL point, φ row and UEP surface
+(the engagement's mesh, :mod:`.surface_mesh`, gives each of its vertices its instant's colour).
+Colours are RGB in 0..1.
 
 ColourBy choices (:data:`COLOUR_BY`):
 
 - ``segment``: the colour of the segment's UEP surface (``report.colours.SURFACE_COLOURS``);
-- ``length``: length of cut (mm), mean over the piece's two angles, on a colour map;
+- ``length``: length of cut (mm) at the instant, on a colour map;
 - ``area``: cut area (mm²), likewise;
 - ``force``: resultant cutting force |F| (N) per instant, likewise; only for an engagement
   with forces (``EngagementFeature.forces``).
@@ -29,16 +29,6 @@ HIGHLIGHT_COLOUR = (1.0, 0.85, 0.0)
 
 
 @dataclass(frozen=True)
-class FaceMap:
-    """Per coloured piece (n of them): cl (n,) CL index, rows (n, 2) the φ rows of its two edges
-    (equal for a piece of one angle), surface (n,) UEP surface name of its segment."""
-
-    cl: np.ndarray
-    rows: np.ndarray
-    surface: np.ndarray
-
-
-@dataclass(frozen=True)
 class Legend:
     """What the colours mean. kind: a COLOUR_BY value. entries: [(name, rgb)] for segments.
     label, unit, low, high: the quantity's name, unit and range of the colour map. colour_map: its
@@ -53,8 +43,11 @@ class Legend:
     colour_map: str = COLOUR_MAP
 
 
-def face_colours(result, faces: FaceMap, colour_by, forces=None, colour_map=COLOUR_MAP):
-    """(colours (n, 3) RGB 0..1, Legend) of the pieces for `colour_by` (a COLOUR_BY value).
+def instant_colours(result, cl, row, surface, colour_by, forces=None, colour_map=COLOUR_MAP):
+    """(colours (n, 3) RGB 0..1, Legend) of n engaged instants for `colour_by` (a COLOUR_BY value).
+
+    cl, row: (n,) int, the instants' CL points and φ rows in `result` (an Engagement); surface:
+    (n,) str, their UEP surface names (for ``segment``).
 
     forces: the engagement's forces (PassForces or Forces), needed for ``force``; ValueError without.
     colour_map: the matplotlib colour map of the quantities.
@@ -64,7 +57,7 @@ def face_colours(result, faces: FaceMap, colour_by, forces=None, colour_map=COLO
     if colour_by not in COLOUR_BY:
         raise ValueError(f"colour_by must be one of {COLOUR_BY}, got {colour_by!r}")
     if colour_by == "segment":
-        names, which = np.unique(np.asarray(faces.surface, dtype=str), return_inverse=True)
+        names, which = np.unique(np.asarray(surface, dtype=str), return_inverse=True)
         table = np.array([SURFACE_COLOURS.get(name, SURFACE_COLOURS["none"]) for name in names], dtype=float)
         colours = table.reshape(-1, 3)[which.reshape(-1)]
         shown = [name for name in SURFACE_COLOURS if name in set(names)]
@@ -72,15 +65,9 @@ def face_colours(result, faces: FaceMap, colour_by, forces=None, colour_map=COLO
     attribute, label, unit = QUANTITIES[colour_by]
     if colour_by == "force" and forces is None:
         raise ValueError("colour by force needs the engagement's forces: turn Forces on and recompute")
-    values = face_values(getattr(forces if colour_by == "force" else result, attribute), faces)
+    values = np.asarray(getattr(forces if colour_by == "force" else result, attribute), dtype=float)[cl, row]
     low, high = (float(values.min()), float(values.max())) if values.size else (0.0, 0.0)
     return quantity_colours(values, low, high, colour_map), Legend(colour_by, (), label, unit, low, high, colour_map)
-
-
-def face_values(quantity, faces: FaceMap):
-    """(n,) value of an (m, p) quantity per piece: the mean over the piece's two angles."""
-    quantity = np.asarray(quantity, dtype=float)
-    return 0.5 * (quantity[faces.cl, faces.rows[:, 0]] + quantity[faces.cl, faces.rows[:, 1]])
 
 
 def quantity_colours(values, low, high, colour_map=COLOUR_MAP):

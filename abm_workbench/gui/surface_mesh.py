@@ -11,8 +11,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .colouring import FaceMap
-
 
 @dataclass(frozen=True)
 class SurfaceMesh:
@@ -41,22 +39,16 @@ def surface_mesh(result):
     return SurfaceMesh(points, cl, row, triangles.astype(np.int64))
 
 
-def instant_map(result, mesh: SurfaceMesh):
-    """The FaceMap (colouring) of the mesh's instants: each instant a piece of one angle, named by its
-    UEP surface (its segment's: a segment is a run of one UEP surface), so colouring.face_colours
-    gives one colour per instant."""
-    from ..engine.engagement import SURFACES
-
-    surface = np.asarray(SURFACES, dtype=object)[result.uep_surface[mesh.cl, mesh.row]]
-    return FaceMap(mesh.cl, np.column_stack([mesh.row, mesh.row]), surface)
-
-
 def vertex_colours(result, mesh: SurfaceMesh, colour_by, forces=None, colour_map=None):
     """(colours (2n, 3) RGB 0..1 per vertex, colouring.Legend) of the mesh for `colour_by` (a
-    colouring.COLOUR_BY value): an instant's LEP and UEP take the instant's colour."""
-    from .colouring import COLOUR_MAP, face_colours
+    colouring.COLOUR_BY value): an instant's LEP and UEP take the instant's colour; by segment,
+    the colour of its UEP surface, which is its segment's (a segment is a run of one UEP surface)."""
+    from ..engine.engagement import SURFACES
+    from .colouring import COLOUR_MAP, instant_colours
 
-    colours, legend = face_colours(result, instant_map(result, mesh), colour_by, forces, colour_map or COLOUR_MAP)
+    surface = np.asarray(SURFACES, dtype=object)[result.uep_surface[mesh.cl, mesh.row]]
+    colours, legend = instant_colours(result, mesh.cl, mesh.row, surface, colour_by, forces,
+                                      colour_map or COLOUR_MAP)
     return np.concatenate([colours, colours]), legend
 
 
