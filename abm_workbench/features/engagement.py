@@ -14,7 +14,8 @@
   ``Material`` (a name of ``forces.MATERIALS``, or custom), ``Ktc``, ``Krc``, ``Kac`` (N/mm²),
   ``Kte``, ``Kre``, ``Kae`` (N/mm; read-only and taken from the table unless Material is custom),
   ``ImmersionStart``, ``ImmersionEnd`` (deg: where a flute cuts);
-- group "Display": ``ShowSurfaces``: the Shape is the engaged cutter surface (below), or empty;
+- group "Display": ``ShowSurfaces``: the Shape is the outline of the engaged cutter surface
+  (below) and the GUI draws the surface, or both are empty;
 - group "Results" (read-only, set by ``execute``): ``DepthOfCutMin``, ``DepthOfCutMax``,
   ``MaxLengthOfCut`` (mm), ``Instants`` (CL points × angles), ``EngagedInstants``,
   ``EngagedCLPoints``, ``EngineTime`` (s), ``Parameters`` (each value and where it came from),
@@ -44,9 +45,13 @@ is missing, or is not the file saved with the document (its digest differs: reco
 saved), the object is marked touched as the document is activated (FreeCAD 0.20 clears touched
 flags at the end of a restore) and the next recompute computes it again.
 
-The Shape: per CL point and engagement segment, the ruled surface between the LEP and UEP
-polylines over the segment's φ range (the engaged part of the cutter surface), all in one
-compound; see docs/FEATURES.md for its cost.
+The Shape: per CL point and engagement segment, the outline of the engaged part of the cutter
+surface (a closed polyline through the segment's LEP and UEP points), all in one compound; the
+GUI draws the surface itself as a mesh (``gui.surface_mesh``). See docs/FEATURES.md.
+
+Bad input fails the recompute with its message alone, without a Python traceback in FreeCAD's
+report view (:class:`RecomputeFailed`). The engine's calls go through :data:`engine_call`, which
+the GUI replaces by a worker thread.
 """
 
 import atexit
@@ -215,8 +220,9 @@ class EngagementFeature(FeatureProxy):
               for name in ("inclination", "phi_start", "phi_end", "phi_step")),
         ])
         add_properties(obj, "Display", [
-            ("App::PropertyBool", "ShowSurfaces", "Shape: the engaged cutter surface of every CL point "
-                                                  "(one ruled surface per engagement segment), or empty", True),
+            ("App::PropertyBool", "ShowSurfaces", "Shape: the outline of the engaged cutter surface of every "
+                                                  "CL point (one closed polyline per engagement segment; the "
+                                                  "GUI draws the surface), or empty", True),
         ])
         add_properties(obj, "Results", [
             ("App::PropertyLength", "DepthOfCutMin", "smallest depth of cut over the engaged CL points"),
