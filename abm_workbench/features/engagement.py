@@ -77,7 +77,7 @@ from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_prop
 from .base import remember_relative
 from .stored import PassForces, read_archive, read_engagement, read_forces, write_archive
 from .stock import StockFeature
-from .toolpath import ToolpathFeature, polyline
+from .toolpath import POINT_TOL, ToolpathFeature
 
 #: WallModel choices: the stock object's, or one of the wall models.
 WALL_CHOICES = ("stock",) + WALL_MODELS
@@ -702,11 +702,12 @@ def engaged_outline(result):
 def engaged_outline_parts(result):
     """The outline of the engaged cutter surface of every CL point, piece by piece, and what each is.
 
-    Per CL point and engagement segment: a closed polyline along the LEP points of the segment's
-    angles and back along its UEP points (a line LEP–UEP for a one-angle segment; nothing for a
-    segment of zero length). The surface itself is drawn by the GUI as a mesh
-    (``gui.surface_mesh``). Returns (shapes, keys): keys[i] = (cl, segment letter, UEP surface
-    name) of shapes[i].
+    Per CL point and engagement segment: one closed polyline edge (a B-spline of degree 1, whose
+    poles are the points) along the LEP points of the segment's angles and back along its UEP
+    points (a line LEP–UEP for a one-angle segment; nothing for a segment of zero length). One
+    edge per segment, not one per pair of points, keeps FreeCAD's drawing of the Shape cheap. The
+    surface itself is drawn by the GUI as a mesh (``gui.surface_mesh``). Returns (shapes, keys):
+    keys[i] = (cl, segment letter, UEP surface name) of shapes[i].
     """
     from ..engine.engagement import SURFACES, segment_letter
 
@@ -721,10 +722,12 @@ def engaged_outline_parts(result):
         first = (cl[start], row[start])
         points = np.concatenate([lep[start:stop], uep[start:stop][::-1], lep[start:start + 1]]) \
             if stop - start > 1 else np.stack([lep[start], uep[start]])
-        shape = polyline(points)
-        if shape.ShapeType == "Vertex":
+        points = points[np.concatenate([[True], np.linalg.norm(np.diff(points, axis=0), axis=1) > POINT_TOL])]
+        if len(points) < 2:
             continue  # a segment of zero length has no outline
-        shapes.append(shape)
+        curve = Part.BSplineCurve()
+        curve.buildFromPoles([FreeCAD.Vector(*point) for point in points.tolist()], False, 1)
+        shapes.append(curve.toShape())
         keys.append((int(first[0]), segment_letter(segment[first]), SURFACES[result.uep_surface[first]]))
     return shapes, keys
 
