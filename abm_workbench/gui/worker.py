@@ -45,9 +45,8 @@ def install():
 def run(function, *args):
     """function(*args) in a worker thread, the GUI kept drawn meanwhile (see the module docstring);
     its value, or its exception raised here; Cancelled when the user cancels."""
-    app = QtGui.QApplication.instance()
-    if app is None or QtCore.QThread.currentThread() is not app.thread():
-        return function(*args)
+    if QtGui.QApplication.instance() is None or threading.current_thread() is not threading.main_thread():
+        return function(*args)  # no GUI, or not its thread: nothing to keep drawn
     job = _Job(function, args)
     thread, loop, silent = _Thread(job), QtCore.QEventLoop(), QtCore.QTimer()
     thread.finished.connect(loop.quit)
