@@ -87,8 +87,9 @@ class EngagementDock(QtGui.QDockWidget):
         from matplotlib.backends.backend_qt5agg import FigureCanvasQTAgg
         from matplotlib.figure import Figure
 
-        self.figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
+        self.figure = Figure(figsize=(4.2, 7.0), dpi=80)
         self.canvas = FigureCanvasQTAgg(self.figure)
+        self.canvas.mpl_connect("resize_event", lambda event: self.figure.axes and _lay_out(self.figure))
         self.canvas.setMinimumHeight(420)
         self.force_figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
         self.force_canvas = FigureCanvasQTAgg(self.force_figure)
@@ -184,11 +185,12 @@ class EngagementDock(QtGui.QDockWidget):
 
     def plot(self, result, cl):
         """Length of cut, cut area, h (the same at every CL point) over φ at `cl`, and the pass progression
-        with `cl` marked. The four axes are made once (laid out then) and only their curves are drawn
-        anew for another CL point: clearing and laying out axes is most of a redraw's cost."""
+        with `cl` marked. The four axes are made once (laid out then, and when the dock is resized) and
+        only their curves are drawn anew for another CL point: clearing and laying out axes is most of
+        a redraw's cost."""
         from ..report.colours import SURFACE_COLOURS
 
-        axes = _reused_axes(self.figure, PLOTS)
+        axes, new = _reused_axes(self.figure, PLOTS)
         phi = result.phi
         for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h),
                                      ("length of cut (mm)", "cut area (mm²)", "h (mm)")):
@@ -221,6 +223,8 @@ class EngagementDock(QtGui.QDockWidget):
         axes[3].set_ylabel("mm", fontsize="small")
         axes[3].set_title("Pass progression", fontsize="small")
         axes[3].legend(fontsize="x-small")
+        if new:
+            _lay_out(self.figure)
         self.canvas.draw_idle()
 
     def plot_forces(self, forces, cl):
@@ -272,23 +276,28 @@ class EngagementDock(QtGui.QDockWidget):
 
 
 def _reused_axes(figure, count):
-    """The `count` stacked axes of `figure`, emptied of their curves and legends: made (and laid out,
-    once, by the figure's constrained layout) when the figure does not hold them yet."""
+    """(the `count` stacked axes of `figure`, emptied of their curves and legends; whether they were
+    made now, the figure not holding them yet: then lay them out once filled, :func:`_lay_out`)."""
     if len(figure.axes) != count:
         figure.clear()
-        figure.set_layout_engine("constrained")
         axes = figure.subplots(count, 1)
         for ax in axes:
             ax.grid(True, alpha=0.3)
             ax.tick_params(labelsize="x-small")
-        figure.canvas.draw()  # lay the axes out once; later draws keep that layout
-        figure.set_layout_engine("none")
-        return list(axes)
+        return list(axes), True
     for ax in figure.axes:
         for artist in [*ax.lines, *([ax.get_legend()] if ax.get_legend() else [])]:
             artist.remove()
         ax.set_ylim(auto=True)
-    return list(figure.axes)
+    return list(figure.axes), False
+
+
+def _lay_out(figure):
+    """Place the axes of `figure` once by matplotlib's constrained layout, for its size and texts now;
+    later draws keep the places (finding them is most of a draw's cost)."""
+    figure.set_layout_engine("constrained")
+    figure.canvas.draw()
+    figure.set_layout_engine("none")
 
 
 def colour_bar(legend):

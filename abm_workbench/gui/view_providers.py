@@ -52,6 +52,8 @@ STOCK_TRANSPARENCY = 75  # percent
 TOOLPATH_COLOUR = (0.0, 0.0, 0.0)
 TOOLPATH_LINE_WIDTH = 4.0  # px
 TOOLPATH_POINT_SIZE = 6.0  # px
+#: Waiting for an opened document's objects: RESTORE_TRIES times RESTORE_WAIT ms at most.
+RESTORE_TRIES, RESTORE_WAIT = 100, 50
 
 
 def icon(name):
@@ -144,6 +146,10 @@ class EngagementViewProvider(ViewProvider):
             colour(vobj)
         elif prop == "Visibility":
             self._show()
+
+    def finishRestoring(self, *_):
+        """Draw the mesh once the document is restored (FreeCAD calls this then; the results are back)."""
+        colour(self.ViewObject)
 
     def doubleClicked(self, vobj):
         vobj.Document.setEdit(vobj.Object, 0)
@@ -384,10 +390,6 @@ class _Observer:
         for obj in doc.Objects:
             if kind(obj) == "ABM::Engagement" and isinstance(getattr(obj.ViewObject, "Proxy", None), ViewProvider):
                 colour_soon(obj)
-
-
-#: Waiting for an opened document's objects: RESTORE_TRIES times RESTORE_WAIT ms at most.
-RESTORE_TRIES, RESTORE_WAIT = 100, 50
 
 
 def _ask_when_restored(name, tries=RESTORE_TRIES):

@@ -326,10 +326,10 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     # the length of cut of the instant it lies on (found by geometry), on the colour map
     colour_by, kind, unit, low_length, high_length, bar = verdict["legend_length"]
     assert (colour_by, kind, unit, bar) == ("length", "length", "mm", True)
-    max_distance, colour_error, vertex_low, vertex_high, low, high = verdict["length_colours"]
+    max_distance, colour_error, vertex_low, vertex_high, shortest, longest = verdict["length_colours"]
     assert max_distance < 1e-9 and colour_error < 1e-6, verdict["length_colours"]
-    assert (low_length, high_length) == (pytest.approx(low), pytest.approx(high))
-    assert (vertex_low, vertex_high) == (pytest.approx(low), pytest.approx(high))
+    assert (low_length, high_length) == (pytest.approx(shortest), pytest.approx(longest))
+    assert (vertex_low, vertex_high) == (pytest.approx(shortest), pytest.approx(longest))
     assert "error" not in verdict["report_dock"].lower(), verdict["report_dock"]
     # the task panel: the job model's check in plain words, the field marked, OK disabled
     assert verdict["panel_open"] == [True, True, "", 12.0, 10.0]
