@@ -9,6 +9,7 @@ import os
 import pytest
 
 from tests.conftest import ROOT
+from tests.gui.events import EVENTS
 
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
 
@@ -20,37 +21,11 @@ from pivy import coin
 from PySide import QtCore, QtGui
 QtWidgets = QtGui
 window = FreeCADGui.getMainWindow()
-app = QtWidgets.QApplication.instance()
 report = window.findChild(QtWidgets.QDockWidget, "Report view").widget()
 def report_since(start):
     FreeCADGui.updateGui()
     return report.toPlainText()[start:]
-def settle():
-    for _ in range(5):
-        FreeCADGui.updateGui()
-        app.processEvents()
-def key(widget, code, text="", modifiers=QtCore.Qt.NoModifier):
-    for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
-        app.sendEvent(widget, QtGui.QKeyEvent(kind, code, modifiers, text))
-def retype(name, text):
-    widget = task_panel.shown().field(name)
-    widget.setFocus()
-    key(widget, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)
-    for char in text:
-        key(task_panel.shown().field(name), ord(char.upper()) if char.isalnum() else ord(char), char)
-    settle()
-def press(target):
-    centre = QtCore.QPointF(target.rect().center())
-    for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease):
-        app.sendEvent(target, QtGui.QMouseEvent(kind, centre, QtCore.Qt.LeftButton, QtCore.Qt.LeftButton,
-                                                QtCore.Qt.NoModifier))
-def button(text):
-    boxes = [box for box in window.findChildren(QtWidgets.QDialogButtonBox)
-             if shiboken2.isValid(box) and box.isVisible()]
-    return {{b.text().replace("&", ""): b for box in boxes for b in box.buttons()}}.get(text)
-def click(text):
-    press(button(text))
-    settle()
+{events}
 def open_panel():
     FreeCADGui.ActiveDocument.setEdit(engagement, 0)
     settle()
@@ -152,7 +127,7 @@ def verdict(tmp_path, run_gui):
     mods.mkdir(parents=True)
     (mods / "ABM").symlink_to(ROOT, target_is_directory=True)
     folders = [str(tmp_path / "shots"), os.path.join(ROOT, "build", "screenshots")]
-    return run_gui(BODY.format(model=MODEL, folders=folders))
+    return run_gui(BODY.format(model=MODEL, folders=folders, events=EVENTS))
 
 
 def test_mesh_plain_errors_and_a_cancellable_worker(verdict):
