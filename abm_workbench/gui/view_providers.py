@@ -148,8 +148,12 @@ class EngagementViewProvider(ViewProvider):
             self._show()
 
     def finishRestoring(self, *_):
-        """Draw the mesh once the document is restored (FreeCAD calls this then; the results are back)."""
-        colour(self.ViewObject)
+        """Draw the mesh once the document is restored (FreeCAD calls this then; the results are back), on the
+        next turn of the event loop: nothing more runs inside the restore."""
+        from PySide import QtCore
+
+        vobj = self.ViewObject
+        QtCore.QTimer.singleShot(0, lambda: _colour_later(vobj))
 
     def doubleClicked(self, vobj):
         vobj.Document.setEdit(vobj.Object, 0)
