@@ -4,13 +4,13 @@ FreeCAD's document is not thread-safe, so an engagement's recompute stays on the
 only its pure-numpy engine calls (``features.engagement.engine_call``: flute 1's engagement
 and the forces) run in a worker thread (:func:`run`), while the GUI thread waits in an event
 loop of its own and stays drawn. For the first SILENT_MS the wait shows only a wait cursor and
-ignores user input; a longer one shows the modal progress dialog ``ABM_Engine`` (CL points
-done of all, from the engine's own ``progress(done, total)`` after each chunk of CL points)
-with Cancel. Cancel stops the engine at its next chunk (the callback raises in the worker)
-and fails the recompute with :class:`Cancelled`, an InputError: the task panel says so and
-stays open, its Cancel then goes back as after any failed OK. An engine call without steps
-(the forces) cannot stop half-way: Cancel stops the wait at once and the call's result is
-thrown away when it ends.
+holds user input back (Qt delivers it afterwards); a longer one shows the modal progress
+dialog ``ABM_Engine`` (CL points done of all, from the engine's own ``progress(done, total)``
+after each chunk of CL points) with Cancel. Cancel stops the engine at its next chunk (the
+callback raises in the worker) and fails the recompute with :class:`Cancelled`, an
+InputError: the task panel says so and stays open, its Cancel then goes back as after any
+failed OK. An engine call without steps (the forces) cannot stop half-way: Cancel stops the
+wait at once and the call's result is thrown away when it ends.
 
 :func:`install` puts :func:`run` in place of the plain call (InitGui does it through
 ``view_providers.install_observer``).
@@ -23,7 +23,7 @@ from PySide import QtCore, QtGui
 
 from ..errors import InputError
 
-#: Milliseconds a wait stays silent (wait cursor, input ignored) before the progress dialog shows.
+#: Milliseconds a wait stays silent (wait cursor, user input held back) before the progress dialog shows.
 SILENT_MS = 400
 #: Milliseconds between two looks at the worker's progress.
 POLL_MS = 50
