@@ -4,7 +4,9 @@ common for all the edge lines of a CL point against one common per edge line.
 Reads model test 1's STEP solid, recognises its exact-wall staircase, and validates the pass
 (all 53 CL points, or --points N of them, φ by --phi-step degrees) once with one process and once
 with each N of --workers; prints the wall-clock time of the boolean reference, the speed-up and
-whether the references are the same bit for bit. Then, at --boolean-points CL points, it times the
+whether the references are the same bit for bit, and the CPU time used (this process and its
+workers): twice the one-process CPU time over the CPU time of 2 workers is the speed-up 2 idle
+cores would give at best, a figure the load of a shared machine hardly changes. Then, at --boolean-points CL points, it times the
 reference of one CL point as the code computes it (all edge lines in one common) and with one
 common per edge line, and prints the ratio. Every ratio comes from one run; the load average is
 printed before and after each measurement, since other work on the two cores lowers the speed-up.
@@ -17,6 +19,7 @@ For a quiet measurement run it alone on an otherwise idle machine:
 import argparse
 import json
 import os
+import resource
 import sys
 import time
 
@@ -40,6 +43,12 @@ def load():
     return f"{os.getloadavg()[0]:.2f}"
 
 
+def cpu_seconds():
+    """CPU seconds (user + system) of this process and of its ended children (the workers, once reaped)."""
+    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+
+
 def per_line_seconds(solid, tool, toolpath, phi):
     """Seconds of one common per edge line (the edges of the result read off as well) at one CL point."""
     base, direction = edge_lines(toolpath, tool, phi)
@@ -56,7 +65,7 @@ def main():
     parser.add_argument("--points", type=int, default=53)
     parser.add_argument("--phi-step", type=float, default=1.0)
     parser.add_argument("--workers", type=int, nargs="+", default=[2])
-    parser.add_argument("--boolean-points", type=int, default=3)
+    parser.add_argument("--boolean-points", type=int, default=2)
     args = parser.parse_args()
     job = json.load(open(os.path.join(MODEL, "job.json")))
     full = load_toolpath(os.path.join(MODEL, "toolpath.csv"))
@@ -67,18 +76,20 @@ def main():
     tool = Tool(job["diameter"], job["flutes"], job["flute_length"])
     settings = CutSettings(job["feed_per_tooth"], job["inclination"], 0.0, 180.0, args.phi_step)
     print(f"model test 1: {len(path)} CL points x {settings.phi.size} angles; {os.cpu_count()} CPUs")
-    before = load()
+    before, cpu = load(), cpu_seconds()
     one = validate(solid, stock, tool, path, settings)
-    base = one.seconds["boolean"]
-    print(f"workers 1: boolean reference {base:.1f} s; load average {before} -> {load()}")
+    base, base_cpu = one.seconds["boolean"], cpu_seconds() - cpu
+    print(f"workers 1: boolean reference {base:.1f} s, CPU {base_cpu:.1f} s; load average {before} -> {load()}")
     for workers in args.workers:
-        before = load()
+        before, cpu = load(), cpu_seconds()
         many = validate(solid, stock, tool, path, settings, workers=workers)
+        used = cpu_seconds() - cpu
         same = all(np.array_equal(one.reference[k], many.reference[k], equal_nan=one.reference[k].dtype.kind == "f")
                    for k in one.reference)
         seconds = many.seconds["boolean"]
-        print(f"workers {workers}: boolean reference {seconds:.1f} s, speed-up {base / seconds:.2f}x, "
-              f"same bits: {same}; load average {before} -> {load()}")
+        print(f"workers {workers}: boolean reference {seconds:.1f} s, speed-up {base / seconds:.2f}x, same bits: "
+              f"{same}; CPU {used:.1f} s (this process and its workers), so on {workers} idle cores at best "
+              f"{workers * base_cpu / used:.2f}x; load average {before} -> {load()}")
     for i in np.linspace(0, len(path) - 1, min(args.boolean_points, len(path))).round().astype(int):
         point, before = toolpath_part(path, i, i + 1), load()
         started = time.perf_counter()
