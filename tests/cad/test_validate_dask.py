@@ -1,6 +1,11 @@
 """validate(..., scheduler=…): the boolean reference on a Dask cluster (a loopback LocalCluster of 2
 worker processes, each its own FreeCAD) is the reference of one process, bit for bit; progress once
-per CL point; a malformed or silent scheduler is an InputError naming it."""
+per CL point; a malformed or silent scheduler is an InputError naming it; the command line's
+``validate --scheduler`` writes the tables of one process byte for byte."""
+
+import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -10,7 +15,7 @@ from abm_workbench.engine import Toolpath
 from abm_workbench.errors import InputError
 from abm_workbench.validation import validate
 
-from .test_validate_workers import model, same  # noqa: F401  (the model fixture of model test 1)
+from .test_validate_workers import MODEL, ROOT, model, same  # noqa: F401  (the model fixture of model test 1)
 
 distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed")
 
@@ -52,3 +57,27 @@ def test_a_scheduler_that_does_not_answer_is_named(model):  # noqa: F811
     short = Toolpath(path.cl[:1], path.theta_a[:1], path.theta_b[:1])
     with pytest.raises(InputError, match="tcp://127.0.0.1:9"):
         validate(solid, stock, tool, short, settings, scheduler="tcp://127.0.0.1:9")
+
+
+def run_validate(tmp_path, name, *options):
+    """validate of model test 1's first 3 CL points (φ every 10°) into tmp_path/name; the process."""
+    inputs = tmp_path / "toolpath.csv"
+    if not inputs.exists():
+        with open(os.path.join(MODEL, "toolpath.csv")) as handle:
+            inputs.write_text("".join(handle.readlines()[:4]))
+    command = [sys.executable, "-m", "abm_workbench", "validate", "--stock", os.path.join(MODEL, "stock.step"),
+               "--toolpath", str(inputs), "--job", os.path.join(MODEL, "job.json"), "--phi-step", "10",
+               "--report", str(tmp_path / name), *options]
+    return subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=300)
+
+
+def test_the_command_line_on_a_dask_cluster_writes_the_same_tables(tmp_path, cluster):
+    alone = run_validate(tmp_path, "one")
+    dask = run_validate(tmp_path, "dask", "--scheduler", cluster.scheduler_address)
+    assert alone.returncode == dask.returncode == 0, dask.stderr
+    for name in ("comparison.csv", "segments.csv", "depth.csv"):
+        assert (tmp_path / "one" / name).read_bytes() == (tmp_path / "dask" / name).read_bytes(), name
+    bad = run_validate(tmp_path, "bad", "--scheduler", "localhost:8786")
+    assert bad.returncode == 2 and bad.stderr.splitlines() == [
+        "abm: error: --scheduler: expected a Dask scheduler address such as tcp://127.0.0.1:8786, got 'localhost:8786'"]
+    assert sorted(os.listdir(tmp_path)) == ["dask", "one", "toolpath.csv"]
