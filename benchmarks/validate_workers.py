@@ -6,9 +6,9 @@ Reads model test 1's STEP solid, recognises its exact-wall staircase, and valida
 with each N of --workers; prints the wall-clock time of the boolean reference, the speed-up and
 whether the references are the same bit for bit, and the CPU time used (this process and its
 workers): twice the one-process CPU time over the CPU time of 2 workers is the speed-up 2 idle
-cores would give at best, a figure the load of a shared machine hardly changes. Then, at --boolean-points CL points, it times the
-reference of one CL point as the code computes it (all edge lines in one common) and with one
-common per edge line, and prints the ratio. Every ratio comes from one run; the load average is
+cores would give at best, a figure the load of a shared machine changes much less. Then, at
+--boolean-points CL points, it times the reference of one CL point as the code computes it (all
+edge lines in one common) and with one common per edge line, and prints the ratio. Every ratio comes from one run; the load average is
 printed before and after each measurement, since other work on the two cores lowers the speed-up.
 For a quiet measurement run it alone on an otherwise idle machine:
 
