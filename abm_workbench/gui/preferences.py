@@ -18,7 +18,6 @@ registered by InitGui.py with ``FreeCADGui.addPreferencePage``):
 """
 
 import FreeCAD
-from PySide import QtGui
 
 from ..jobs import BY_NAME
 from .i18n import noop, translate
@@ -79,6 +78,8 @@ class PreferencesPage:
     """The page "ABM" of FreeCAD's preferences: a form FreeCAD shows, loadSettings / saveSettings."""
 
     def __init__(self, parent=None):
+        from PySide import QtGui  # here: the functions above also serve FreeCAD without its GUI
+
         self.form = QtGui.QWidget(parent)
         self.form.setObjectName("ABM_Preferences")
         self.form.setWindowTitle(translate("ABM"))
