@@ -5,8 +5,8 @@ Reads model test 1's STEP solid, recognises its exact-wall staircase, and valida
 (all 53 CL points, or --points N of them, φ by --phi-step degrees) once with one process and once
 with each N of --workers; prints the wall-clock time of the boolean reference, the speed-up and
 whether the references are the same bit for bit, and the CPU time used (this process and its
-workers): twice the one-process CPU time over the CPU time of 2 workers is the speed-up 2 idle
-cores would give at best, a figure the load of a shared machine changes much less. Then, at
+workers) against one process's: what running on workers costs in CPU (starting them, sending
+tasks and results), which the wall-clock ratio hides on a loaded machine. Then, at
 --boolean-points CL points, it times the reference of one CL point as the code computes it (all
 edge lines in one common) and with one common per edge line, and prints the ratio. Every ratio comes from one run; the load average is
 printed before and after each measurement, since other work on the two cores lowers the speed-up.
@@ -88,8 +88,8 @@ def main():
                    for k in one.reference)
         seconds = many.seconds["boolean"]
         print(f"workers {workers}: boolean reference {seconds:.1f} s, speed-up {base / seconds:.2f}x, same bits: "
-              f"{same}; CPU {used:.1f} s (this process and its workers), so on {workers} idle cores at best "
-              f"{workers * base_cpu / used:.2f}x; load average {before} -> {load()}")
+              f"{same}; CPU {used:.1f} s (this process and its workers), {used / base_cpu:.2f}x that of one "
+              f"process; load average {before} -> {load()}")
     for i in np.linspace(0, len(path) - 1, min(args.boolean_points, len(path))).round().astype(int):
         point, before = toolpath_part(path, i, i + 1), load()
         started = time.perf_counter()
