@@ -15,6 +15,7 @@ from abm_workbench.engine import Toolpath
 from abm_workbench.errors import InputError
 from abm_workbench.validation import validate
 
+from .test_validate_interrupt import short_pass  # noqa: F401  (model test 1's first CL points as a CSV file)
 from .test_validate_workers import MODEL, ROOT, model, same  # noqa: F401  (the model fixture of model test 1)
 
 distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed")
@@ -59,25 +60,22 @@ def test_a_scheduler_that_does_not_answer_is_named(model):  # noqa: F811
         validate(solid, stock, tool, short, settings, scheduler="tcp://127.0.0.1:9")
 
 
-def run_validate(tmp_path, name, *options):
-    """validate of model test 1's first 3 CL points (φ every 10°) into tmp_path/name; the process."""
-    inputs = tmp_path / "toolpath.csv"
-    if not inputs.exists():
-        with open(os.path.join(MODEL, "toolpath.csv")) as handle:
-            inputs.write_text("".join(handle.readlines()[:4]))
+def run_validate(toolpath, report, *options):
+    """validate of model test 1's short pass (φ every 10°) into `report`; the finished process."""
     command = [sys.executable, "-m", "abm_workbench", "validate", "--stock", os.path.join(MODEL, "stock.step"),
-               "--toolpath", str(inputs), "--job", os.path.join(MODEL, "job.json"), "--phi-step", "10",
-               "--report", str(tmp_path / name), *options]
+               "--toolpath", str(toolpath), "--job", os.path.join(MODEL, "job.json"), "--phi-step", "10",
+               "--report", str(report), *options]
     return subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=300)
 
 
-def test_the_command_line_on_a_dask_cluster_writes_the_same_tables(tmp_path, cluster):
-    alone = run_validate(tmp_path, "one")
-    dask = run_validate(tmp_path, "dask", "--scheduler", cluster.scheduler_address)
+def test_the_command_line_on_a_dask_cluster_writes_the_same_tables(tmp_path, short_pass, cluster):  # noqa: F811
+    out = tmp_path / "out"
+    alone = run_validate(short_pass, out / "one")
+    dask = run_validate(short_pass, out / "dask", "--scheduler", cluster.scheduler_address)
     assert alone.returncode == dask.returncode == 0, dask.stderr
     for name in ("comparison.csv", "segments.csv", "depth.csv"):
-        assert (tmp_path / "one" / name).read_bytes() == (tmp_path / "dask" / name).read_bytes(), name
-    bad = run_validate(tmp_path, "bad", "--scheduler", "localhost:8786")
+        assert (out / "one" / name).read_bytes() == (out / "dask" / name).read_bytes(), name
+    bad = run_validate(short_pass, out / "bad", "--scheduler", "localhost:8786")
     assert bad.returncode == 2 and bad.stderr.splitlines() == [
         "abm: error: --scheduler: expected a Dask scheduler address such as tcp://127.0.0.1:8786, got 'localhost:8786'"]
-    assert sorted(os.listdir(tmp_path)) == ["dask", "one", "toolpath.csv"]
+    assert sorted(os.listdir(out)) == ["dask", "one"]
