@@ -179,6 +179,9 @@ def _build_parser():
     validate_parser.add_argument("--workers", type=int, default=1, metavar="N",
                                  help="processes computing the boolean reference: 1 (default) this process only, 0 "
                                       "all cores (each its own FreeCAD); the results are identical")
+    validate_parser.add_argument("--scheduler", metavar="tcp://HOST:PORT",
+                                 help="compute the boolean reference on the Dask cluster behind this scheduler (each "
+                                      "Dask worker its own FreeCAD; they must be able to import abm_workbench)")
     _force_arguments(validate_parser, helix=False)
     validate_parser.set_defaults(run=_run_validate)
 
@@ -398,7 +401,8 @@ def _run_validate(args):
     if args.workers < 0:
         raise ParameterError("workers", f"must be 0 (all cores) or a positive number of processes, got {args.workers}")
     result = runs.validate(_job(args), args.report, fcstd=args.fcstd, cls=args.cl, flute=args.flute,
-                           workers=args.workers, warn=_warn, progress=_Progress(label, sys.stderr))
+                           workers=args.workers, scheduler=args.scheduler, warn=_warn,
+                           progress=_Progress(label, sys.stderr))
     validation, forces = result.validation, result.forces
     total = overall(validation.comparison)
     m, p = validation.engagement.shape

@@ -263,6 +263,22 @@ class _ProcessPool:
         return concurrent.futures.wait(futures, return_when=concurrent.futures.FIRST_COMPLETED).done
 
 
+def map_cl_points(task, shared, m, scheduler):
+    """Run task(shared, i, i + 1) for every CL point i < m on the Dask cluster behind `scheduler`; yield
+    (i, result) in the order they finish.
+
+    shared (picklable, e.g. a solid's BREP text) is scattered to every Dask worker once. Leaving the
+    generator early (an error, KeyboardInterrupt, a cancelling progress callback) closes the client,
+    which cancels the tasks not yet started; a task already running on a Dask worker runs to its end
+    there, its result dropped. SchedulerError as map_chunks.
+    """
+    with _DaskPool(scheduler, [shared]) as pool:
+        futures = {pool.submit(task, 0, i, i + 1): i for i in range(m)}
+        for _ in range(m):
+            future = pool.wait_first(None)[0]
+            yield futures[future], future.result()
+
+
 class _DaskPool:
     """A Dask cluster behind a scheduler address; the jobs are scattered to every worker once."""
 

@@ -13,16 +13,18 @@ per instant and flute the axial length of cut, LEP and UEP (axial positions l) o
 flute_engagement against the helix boolean.
 
 Both take ``workers=N``: the reference of each CL point is then computed in one of N local
-processes (spawned, a Python interpreter even under the GUI, each with its own FreeCAD and its own copy of the solid, sent once as BREP
-text), CL points handed out one at a time as processes become free. Each CL point's reference
-depends on that CL point alone, so the result is the same, bit for bit, as in one process.
-progress(done, total) is still called once per CL point, as they finish; an interrupt
-(KeyboardInterrupt, or the command line's SIGTERM) stops every worker at once.
+processes (:mod:`abm_workbench.worker_processes`: spawned, a Python interpreter even under the GUI,
+each with its own FreeCAD and its own copy of the solid, sent once as BREP text), CL points handed
+out one at a time as processes become free; or ``scheduler="tcp://host:port"``: on the Dask
+cluster behind that scheduler, the BREP text scattered to every Dask worker once. Each CL point's
+reference depends on that CL point alone, so the result is the same, bit for bit, as in one
+process. progress(done, total) is still called once per CL point, as they finish; an interrupt
+(KeyboardInterrupt, the command line's SIGTERM / SIGHUP, a progress callback that raises) ends
+every local worker at once, and no worker is left whenever it comes.
 """
 
-import concurrent.futures
-import multiprocessing
-import signal
+import contextlib
+import threading
 import time
 from dataclasses import dataclass
 
@@ -212,12 +214,14 @@ def letters(engagement: Engagement):
     return names[engagement.segment]
 
 
-def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None, workers=1):
+def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None, workers=1,
+             scheduler=None):
     """Run the engine and the boolean reference on one pass; a Validation.
 
     solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's (a Staircase or a
     TerracedStock). progress(done, total) is called after each CL point of the reference. workers:
-    processes computing the reference (1: this one; 0: one per core; see the module docstring). Raises
+    processes computing the reference (1: this one; 0: one per core; see the module docstring);
+    scheduler: a Dask scheduler's address to compute it on instead (reference_by_workers). Raises
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
     """
@@ -230,7 +234,7 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
         raise NoEngagementError("no CL point of the pass engages the stock")
     started = time.perf_counter()
     reference = reference_by_workers(edge_lengths_by_boolean, solid, tool, toolpath, engagement.phi, (),
-                                     workers=workers, progress=progress)
+                                     workers=workers, scheduler=scheduler, progress=progress)
     boolean_seconds = time.perf_counter() - started
     comparison = compare(engagement, reference, toolpath, tool)
     return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds})
@@ -304,12 +308,12 @@ def _largest(values):
 
 
 def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, flutes=None, progress=None,
-                   workers=1):
+                   workers=1, scheduler=None):
     """Run the helix solver and the helix boolean reference on one pass; a HelixValidation.
 
     solid: the stock as a Part.Shape; staircase: the engine's. tool.helix may be any allowed β
     (0 too: the boolean then uses straight segments). flutes: 0-based flutes to check (default
-    all). progress(done, total) after each CL point of the reference. workers: as validate. Raises
+    all). progress(done, total) after each CL point of the reference. workers, scheduler: as validate. Raises
     NoEngagementError, before the reference runs, when no checked flute engages anywhere.
     Needs FreeCAD.
     """
@@ -325,43 +329,51 @@ def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *
         raise NoEngagementError("no CL point of the pass engages the stock with the checked flutes")
     started = time.perf_counter()
     reference = reference_by_workers(flute_lengths_by_boolean, solid, tool, toolpath, engagement.phi, (chosen,),
-                                     workers=workers, progress=progress)
+                                     workers=workers, scheduler=scheduler, progress=progress)
     boolean_seconds = time.perf_counter() - started
     return HelixValidation(engagement, reference, chosen, toolpath, tool,
                            {"abm": abm_seconds, "boolean": boolean_seconds})
 
 
-def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, workers=1, progress=None):
+def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, workers=1, scheduler=None,
+                         progress=None):
     """reference(solid, tool, toolpath, phi, *extra, progress): a boolean reference (a dict of
-    arrays over CL points first), computed in `workers` processes, one CL point per task.
+    arrays over CL points first), computed in `workers` processes or on a Dask cluster, one CL
+    point per task.
 
     reference: a module-level function of cad (edge_lengths_by_boolean, flute_lengths_by_boolean).
-    workers: 1 (or a pass of one CL point) runs it here; N > 1 in N spawned processes; 0 one
-    per core. progress(done, total) after each CL point. On any exception (KeyboardInterrupt
-    too) every worker is stopped before it propagates.
+    workers: 1 (or a pass of one CL point) runs it here; N > 1 in N spawned processes
+    (worker_processes.WorkerProcesses); 0 one per core. scheduler: the address of a Dask scheduler
+    ("tcp://host:port"), instead of local processes. progress(done, total) after each CL point. On
+    any exception (KeyboardInterrupt too) every local worker is ended before it propagates.
     """
-    from .cad.recognise import spawn_context
-    from .parallel import toolpath_part, worker_count
+    from .parallel import worker_count
 
+    if scheduler is not None:
+        from .parallel import map_cl_points
+
+        task = _DaskReference(reference, tool, toolpath, phi, extra)
+        with contextlib.closing(map_cl_points(task, solid.exportBrepToString(), len(toolpath), scheduler)) as finished:
+            return _assembled(finished, len(toolpath), progress)
     count = min(worker_count(workers), len(toolpath))
     if count <= 1:
         return reference(solid, tool, toolpath, phi, *extra, progress)
-    before = set(multiprocessing.active_children())
-    executor = concurrent.futures.ProcessPoolExecutor(
-        count, mp_context=spawn_context(), initializer=_start_worker,
-        initargs=(solid.exportBrepToString(),))
-    try:
-        futures = {executor.submit(_reference_task, reference, tool, toolpath_part(toolpath, i, i + 1), phi, extra): i
-                   for i in range(len(toolpath))}
-        parts = [None] * len(toolpath)
-        for done, future in enumerate(concurrent.futures.as_completed(futures), start=1):
-            parts[futures[future]] = future.result()
-            if progress is not None:
-                progress(done, len(toolpath))
-    except BaseException:
-        _stop(executor, before)
-        raise
-    executor.shutdown(wait=True)
+    from .parallel import toolpath_part
+    from .worker_processes import WorkerProcesses
+
+    tasks = [(reference, tool, toolpath_part(toolpath, i, i + 1), phi, extra) for i in range(len(toolpath))]
+    with WorkerProcesses(count, _start_worker, (solid.exportBrepToString(),)) as processes:
+        return _assembled(processes.map_unordered(_reference_task, tasks), len(toolpath), progress)
+
+
+def _assembled(finished, m, progress):
+    """The reference dict of a pass of m CL points from (CL index, reference of that CL point alone) pairs
+    in any order; progress(done, m) after each."""
+    parts = [None] * m
+    for done, (i, part) in enumerate(finished, start=1):
+        parts[i] = part
+        if progress is not None:
+            progress(done, m)
     return {name: np.concatenate([part[name] for part in parts]) for name in parts[0]}
 
 
@@ -369,9 +381,8 @@ _SOLID = None  # a worker's stock (Part.Shape), set once by _start_worker
 
 
 def _start_worker(brep):
-    """In a worker: read the stock from BREP text; leave Ctrl-C to the parent, which stops the workers."""
+    """In a worker: read the stock from BREP text."""
     global _SOLID
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
     from .cad.freecad_env import Part
 
     _SOLID = Part.Shape()
@@ -383,14 +394,28 @@ def _reference_task(reference, tool, toolpath, phi, extra):
     return reference(_SOLID, tool, toolpath, phi, *extra, None)
 
 
-def _stop(executor, before):
-    """Cancel what has not started and end the workers now (a boolean can take seconds): every child
-    process started since `before` (the set of children before the executor was made)."""
-    # ProcessPoolExecutor has no public way to end running tasks (Python < 3.14): end its processes, and
-    # any it was starting as the exception came (they are not in its table yet).
-    executor.shutdown(wait=False, cancel_futures=True)
-    processes = set(multiprocessing.active_children()) - before
-    for process in processes:
-        process.terminate()
-    for process in processes:
-        process.join()
+@dataclass(frozen=True)
+class _DaskReference:
+    """The reference of CL points start:stop of a pass, as a Dask task on the stock's BREP text: each
+    Dask worker process imports its own FreeCAD and reads the BREP once (kept for the next tasks)."""
+
+    reference: object
+    tool: Tool
+    toolpath: Toolpath
+    phi: np.ndarray
+    extra: tuple
+
+    def __call__(self, brep, start, stop):
+        from .parallel import toolpath_part
+
+        global _SOLID_BREP
+        with _SOLID_LOCK:  # one boolean at a time per process: a Dask worker may run tasks in several threads
+            if _SOLID_BREP != brep:
+                _start_worker(brep)
+                _SOLID_BREP = brep
+            return self.reference(_SOLID, self.tool, toolpath_part(self.toolpath, start, stop), self.phi,
+                                  *self.extra, None)
+
+
+_SOLID_BREP = None  # in a Dask worker: the BREP text _SOLID was read from
+_SOLID_LOCK = threading.Lock()

@@ -11,11 +11,13 @@ registered by InitGui.py with ``FreeCADGui.addPreferencePage``):
   ABM_ComputeEngagement starts from them (a toolpath file's values still win);
 - the folder validation reports go to (empty: beside the document, as before), :func:`report_root`;
 - the colour map of the quantities on the engagement surface and in the dock's colour bar
-  (a matplotlib colour map name, :data:`COLOUR_MAPS`), :func:`colour_map`.
+  (a matplotlib colour map name, :data:`COLOUR_MAPS`), :func:`colour_map`;
+- the processes computing a validation's boolean reference, "Validation workers"
+  (:func:`validation_workers`: 1 in FreeCAD's own process, 0 one per core, N that many spawned
+  Python processes, each with its own FreeCAD).
 """
 
 import FreeCAD
-from PySide import QtGui
 
 from ..jobs import BY_NAME
 from .i18n import noop, translate
@@ -36,6 +38,8 @@ DEFAULTS = (
 REQUIRED = ("diameter", "flutes", "flute_length", "feed_per_tooth")
 #: Colour maps offered for the quantities (matplotlib names); the first is the default.
 COLOUR_MAPS = ("viridis", "plasma", "inferno", "magma", "cividis", "turbo")
+#: Largest number of validation workers the page offers.
+MAX_WORKERS = 256
 
 
 def parameters():
@@ -65,10 +69,17 @@ def colour_map():
     return name if name in COLOUR_MAPS else COLOUR_MAPS[0]
 
 
+def validation_workers():
+    """Processes computing a validation's boolean reference (int: 1 this process, 0 one per core)."""
+    return min(max(parameters().GetInt("ValidationWorkers", 1), 0), MAX_WORKERS)
+
+
 class PreferencesPage:
     """The page "ABM" of FreeCAD's preferences: a form FreeCAD shows, loadSettings / saveSettings."""
 
     def __init__(self, parent=None):
+        from PySide import QtGui  # here: the functions above also serve FreeCAD without its GUI
+
         self.form = QtGui.QWidget(parent)
         self.form.setObjectName("ABM_Preferences")
         self.form.setWindowTitle(translate("ABM"))
@@ -99,6 +110,13 @@ class PreferencesPage:
         self.colour_map.setObjectName("ABM_ColourMap")
         self.colour_map.addItems(list(COLOUR_MAPS))
         rows.addRow(translate("Colour map"), self.colour_map)
+        self.workers = QtGui.QSpinBox()
+        self.workers.setObjectName("ABM_ValidationWorkers")
+        self.workers.setRange(0, MAX_WORKERS)
+        self.workers.setSpecialValueText(translate("one per core"))
+        self.workers.setToolTip(translate("Processes computing the boolean reference of a validation: 1 in "
+                                          "FreeCAD's own process, 0 one per core"))
+        rows.addRow(translate("Validation workers"), self.workers)
         layout.addWidget(box)
         layout.addStretch(1)
 
@@ -112,6 +130,7 @@ class PreferencesPage:
                 field.setValue(group.GetInt(name, int(value)))
         self.report_folder.setText(report_root())
         self.colour_map.setCurrentIndex(COLOUR_MAPS.index(colour_map()))
+        self.workers.setValue(validation_workers())
 
     def saveSettings(self):
         group = parameters()
@@ -122,3 +141,4 @@ class PreferencesPage:
                 group.SetInt(name, int(self.fields[name].value()))
         group.SetString("ReportFolder", self.report_folder.text().strip())
         group.SetString("ColourMap", self.colour_map.currentText())
+        group.SetInt("ValidationWorkers", int(self.workers.value()))

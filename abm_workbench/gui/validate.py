@@ -12,6 +12,9 @@ The boolean costs about 0.5–1 s per CL point, so the progress callback is call
 With the object's Forces on, the report gets its "Cutting forces" section: the object's force
 model (``features.engagement.force_model_of``) on the pass validated. A helical tool is
 validated by the helix boolean (``jobs.run.validation``), flute 1 reported, as ``validate --helix``.
+The boolean reference runs on the processes of the preference "Validation workers"
+(``preferences.validation_workers``: 1 in FreeCAD's process, 0 one per core), as ``validate
+--workers``; a progress callback that raises (Cancel) ends those processes at once.
 """
 
 import os
@@ -49,12 +52,14 @@ def report_folder(obj):
     return os.path.join(results_folder(obj.Document), f"{obj.Name}_validation")
 
 
-def validate_engagement(obj, cls, folder, progress=None):
+def validate_engagement(obj, cls, folder, progress=None, workers=None):
     """Validate the engagement object `obj` at CL points `cls` (indices, None: all) and write the
     report into `folder`; the path of its index.html.
 
     progress(done, total) is called after each CL point of the boolean reference; an exception
-    it raises (e.g. :class:`Cancelled`) stops the validation and leaves `folder` as it was.
+    it raises (e.g. :class:`Cancelled`) stops the validation, ends its worker processes and leaves
+    `folder` as it was. workers: processes computing the boolean reference (1 this one, 0 one per core),
+    None: the preference "Validation workers".
     InputError with the command line's message for bad input.
     """
     from ..features.engagement import force_model_of
@@ -62,6 +67,7 @@ def validate_engagement(obj, cls, folder, progress=None):
     from ..report.html import ReportJob, write_report
     from ..report.staging import staged
     from ..validation import NoEngagementError
+    from .preferences import validation_workers
 
     started = time.perf_counter()
     model = force_model_of(obj)
@@ -75,7 +81,8 @@ def validate_engagement(obj, cls, folder, progress=None):
     pass_ = Toolpath(toolpath.cl[index], toolpath.theta_a[index], toolpath.theta_b[index],
                      None if toolpath.cc is None else toolpath.cc[index])
     try:
-        validation, helix = checked_validation(solid, stock.model, tool, pass_, settings, progress=progress)
+        validation, helix = checked_validation(solid, stock.model, tool, pass_, settings, progress=progress,
+                                               workers=validation_workers() if workers is None else workers)
     except NoEngagementError:
         raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock at CL points "
                          f"{_cl_list(chosen)}") from None

@@ -118,19 +118,21 @@ def no_engagement(job: Job):
                       f"(are the toolpath and {job.stock} in the same frame?)")
 
 
-def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None, workers=1):
+def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None, workers=1,
+               scheduler=None):
     """(Validation of flute 1 or the first checked flute, HelixValidation or None) of the engine against
     OpenCASCADE booleans: straight edges by ``validation.validate``, a helical tool (or chosen `flutes`,
     0-based) by ``validation.validate_helix``. validation.NoEngagementError when the tool never touches
-    the stock."""
+    the stock. workers, scheduler: where the boolean reference runs (``validation.reference_by_workers``)."""
     from ..validation import validate, validate_helix
 
     if tool.helix == 0.0 and flutes is None:
-        return validate(solid, staircase, tool, toolpath, settings, progress=progress, workers=workers), None
+        return validate(solid, staircase, tool, toolpath, settings, progress=progress, workers=workers,
+                        scheduler=scheduler), None
     if not isinstance(staircase, Staircase):
         raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
     helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress,
-                           workers=workers)
+                           workers=workers, scheduler=scheduler)
     return helix.flute(helix.flutes[0]), helix
 
 
@@ -419,16 +421,19 @@ class ValidateResult:
     written: list
 
 
-def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, warn=print, progress=None):
+def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, scheduler=None, warn=print,
+             progress=None):
     """Validate a job against OpenCASCADE booleans: the HTML report folder `report` and, with `fcstd`, an
     annotated FreeCAD document. cls: CL indices shown in detail ('0,22,40'), None: chosen. flute: check
     only this flute (1-based) of a helical tool. workers: processes computing the boolean reference
-    (1 this one, 0 one per core). Returns a ValidateResult."""
+    (1 this one, 0 one per core); scheduler: a Dask scheduler's address to compute it on instead.
+    Returns a ValidateResult."""
     from ..report.html import ReportJob, report_cls, write_report
     from ..report.staging import staged
     from ..report.tables import write_flutes_csv
     from ..validation import NoEngagementError
 
+    check_method(Method(workers=workers, scheduler=scheduler), forces=False, helix=0.0)
     if job.stock_model == "in-process":
         raise ParameterError("stock_model", "validation against the in-process stock is not available yet: it "
                                             "checks the stock as given (initial)")
@@ -451,7 +456,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, w
 
     try:
         checked, helix = validation(solid, stock.model, tool, toolpath, settings, flutes=flutes,
-                                    progress=progress, workers=workers)
+                                    progress=progress, workers=workers, scheduler=scheduler)
     except NoEngagementError:
         raise no_engagement(job) from None
     engagement = checked.engagement

@@ -1,0 +1,170 @@
+"""Spawned worker processes that run tasks one at a time and are gone whenever the caller stops.
+
+:class:`WorkerProcesses` starts `count` processes with the spawn method (a fresh interpreter each,
+:func:`abm_workbench.cad.recognise.spawn_context`: FreeCAD's own Python even under the GUI), each
+running ``initializer(*initargs)`` once and then the tasks it is sent, one at a time, over a pipe
+of its own. :meth:`WorkerProcesses.map_unordered` hands the tasks out as workers become free and
+yields (index, result) as they finish.
+
+Leaving the ``with`` block ends every worker, whatever ended the block (the last result, an error,
+KeyboardInterrupt, the command line's SIGTERM / SIGHUP, a progress callback that cancels):
+
+- SIGINT, SIGTERM and SIGHUP are held back (``signal.pthread_sigmask``) while the workers are
+  started and while they are stopped, so an interrupt arrives either before the first worker
+  exists or after every started one is recorded, and never halfway through the clean-up: it is
+  delivered when the block of held signals ends;
+- the workers inherit that mask, so Ctrl-C on a terminal (sent to the whole process group) cannot
+  stop a worker halfway through its start-up; each then ignores SIGINT and SIGHUP (the parent ends
+  it) and lets SIGTERM end it as usual;
+- on an error the workers are killed (SIGKILL: a boolean cannot be interrupted halfway, and a
+  worker still starting has SIGTERM held) and reaped; after the last result they are told to end
+  and given STOP_WAIT seconds before being killed;
+- a worker holds only its own end of its pipe, so if the parent dies without any clean-up (SIGKILL)
+  the worker reads the end of the pipe after its current task and ends too.
+"""
+
+import contextlib
+import multiprocessing.connection
+import signal
+from multiprocessing import resource_tracker
+
+#: Signals held back while workers are started or stopped.
+HELD = tuple(getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name))
+#: Seconds the workers get to end by themselves after the last task, before they are killed.
+STOP_WAIT = 5.0
+
+
+class WorkerError(RuntimeError):
+    """A worker process ended without answering its task (it crashed or was killed)."""
+
+
+@contextlib.contextmanager
+def held_signals():
+    """Hold back HELD signals during the block (this thread); a signal that came meanwhile is
+    delivered, and its handler runs, when the block ends. Where the platform cannot, nothing is held."""
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, HELD)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+class WorkerProcesses:
+    """`count` spawned worker processes for the ``with`` block; see the module docstring.
+
+    initializer: a module-level function run once in each worker with `initargs` (picklable); an
+    error it raises is given back as the answer to every task of that worker.
+    """
+
+    def __init__(self, count, initializer, initargs=()):
+        self.count, self.initializer, self.initargs = int(count), initializer, tuple(initargs)
+        self.processes, self.connections = [], []
+
+    def __enter__(self):
+        from .cad.recognise import spawn_context
+
+        context = spawn_context()
+        resource_tracker.ensure_running()  # first: starting it lets SIGINT and SIGTERM through again
+        with held_signals():
+            try:
+                for _ in range(self.count):
+                    ours, theirs = context.Pipe()
+                    process = context.Process(target=_serve, args=(theirs, self.initializer, self.initargs),
+                                              daemon=True)
+                    self.connections.append(ours)
+                    try:
+                        process.start()
+                    finally:
+                        theirs.close()
+                    self.processes.append(process)
+            except BaseException:
+                self._stop(clean=False)
+                raise
+        return self
+
+    def __exit__(self, kind, error, trace):
+        with held_signals():
+            self._stop(clean=kind is None)
+        return False
+
+    def map_unordered(self, function, arguments):
+        """Yield (index, function(*arguments[index])) for every index, run in the workers, in the order
+        they finish. function: module-level (picklable), arguments: a sequence of tuples. An error raised
+        by a task is raised here; a worker that ends without answering raises WorkerError."""
+        waiting = list(range(len(arguments)))[::-1]
+        busy = {}
+
+        def hand_out(connection):
+            if waiting:
+                index = waiting.pop()
+                connection.send((function, arguments[index]))
+                busy[connection] = index
+
+        for connection in self.connections:
+            hand_out(connection)
+        while busy:
+            for connection in multiprocessing.connection.wait(list(busy)):
+                index = busy.pop(connection)
+                try:
+                    succeeded, value = connection.recv()
+                except (EOFError, OSError):
+                    process = self.processes[self.connections.index(connection)]
+                    process.join(timeout=1.0)
+                    raise WorkerError(f"a worker process ended without answering task {index} "
+                                      f"(exit code {process.exitcode})") from None
+                if not succeeded:
+                    raise value
+                hand_out(connection)
+                yield index, value
+
+    def _stop(self, clean):
+        """End every worker started: asked to end first after a clean run, killed otherwise; all reaped."""
+        if clean:
+            for connection in self.connections:
+                with contextlib.suppress(OSError):
+                    connection.send(None)
+            for process in self.processes:
+                process.join(timeout=STOP_WAIT)
+        for process in self.processes:
+            if process.exitcode is None:
+                process.kill()
+        for process in self.processes:
+            process.join()
+        for connection in self.connections:
+            connection.close()
+
+
+def _serve(connection, initializer, initargs):
+    """A worker's life: SIGINT and SIGHUP ignored (the parent ends the worker), the signals held back
+    since the spawn let through, the initializer run, then tasks answered until None or the pipe's end."""
+    for name in ("SIGINT", "SIGHUP"):
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), signal.SIG_IGN)
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, HELD)
+    failure = None
+    try:
+        initializer(*initargs)
+    except Exception as error:
+        failure = error
+    while True:
+        try:
+            task = connection.recv()
+        except EOFError:
+            return
+        if task is None:
+            return
+        function, arguments = task
+        try:
+            if failure is not None:
+                raise failure
+            answer = (True, function(*arguments))
+        except Exception as error:
+            answer = (False, error)
+        try:
+            connection.send(answer)
+        except Exception as error:  # an answer that does not pickle: said in words
+            connection.send((False, RuntimeError(f"{type(error).__name__}: {error}")))
