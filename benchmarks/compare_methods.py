@@ -36,7 +36,7 @@ same stock; 905,000 instants). Each method runs in a child process of its own, s
 memory is the child's resident set (native memory such as Embree's BVH included); its time is
 split into preparation (reading and recognising the STEP solid, or tessellating it and building
 the mesh and BVH) and the engagement itself (best of --peer-repeats runs after one warm-up).
-Errors are against the boolean: on every CL point of the 53-point pass, and on --subset CL
+Errors are against the boolean: on every CL point of the 53-point pass, and on --subset (53) CL
 points evenly spread over the 5,000-point pass (the boolean costs about a second per CL point).
 Every method, the Z-map included (no removal along the pass), answers the boolean's question:
 the engagement with the initial stock. Writes build/benchmarks/compare_peers.csv.
@@ -331,8 +331,9 @@ def main():
                              "make compare-peers)")
     parser.add_argument("--points", default=",".join(map(str, PEER_POINTS)),
                         help="--peers: CL points per pass, e.g. 53,5000 (53: the bundled pass; more: resampled)")
-    parser.add_argument("--subset", type=int, default=50,
-                        help="--peers: CL points checked by the boolean on a longer pass, evenly spread (default 50)")
+    parser.add_argument("--subset", type=int, default=53,
+                        help="--peers: CL points checked by the boolean, evenly spread over a longer pass "
+                             "(default 53: every CL point of the bundled pass)")
     parser.add_argument("--peer-repeats", type=int, default=5, help="--peers: timed runs up to 10^5 instants")
     parser.add_argument("--large-repeats", type=int, default=2,
                         help="--peers: timed runs above 10^5 instants (the Z-map: one)")
