@@ -173,14 +173,14 @@ def _cast(stock, origins, directions, length):
     kept = hi > lo
     run_ray, lo, hi = run_ray[kept], lo[kept], hi[kept]
 
+    # The runs are disjoint and in order along each ray: its first run holds the LEP, its last the UEP.
     result = {"length": np.bincount(run_ray, weights=hi - lo, minlength=n), "lep_l": np.full(n, np.nan),
               "uep_l": np.full(n, np.nan), "unbalanced": unbalanced}
-    engaged = np.unique(run_ray)
-    result["lep_l"][engaged] = np.inf
-    result["uep_l"][engaged] = -np.inf
-    np.minimum.at(result["lep_l"], run_ray, lo)
-    np.maximum.at(result["uep_l"], run_ray, hi)
-    new_piece = np.r_[True, (run_ray[1:] != run_ray[:-1]) | (lo[1:] - hi[:-1] > PIECE_GAP)] if run_ray.size \
-        else np.zeros(0, bool)
+    other_ray = run_ray[1:] != run_ray[:-1]
+    first = np.r_[True, other_ray][:run_ray.size]
+    final = np.r_[other_ray, True][:run_ray.size]
+    result["lep_l"][run_ray[first]] = lo[first]
+    result["uep_l"][run_ray[final]] = hi[final]
+    new_piece = first | np.r_[False, lo[1:] - hi[:-1] > PIECE_GAP][:run_ray.size]
     result["pieces"] = np.bincount(run_ray[new_piece], minlength=n)
     return result
