@@ -37,7 +37,7 @@ memory is the child's resident set (native memory such as Embree's BVH included)
 split into preparation (reading and recognising the STEP solid, or tessellating it and building
 the mesh and BVH) and the engagement itself (best of --peer-repeats runs after one warm-up).
 Errors are against the boolean: on every CL point of the 53-point pass, and on --subset (53) CL
-points evenly spread over the 5,000-point pass (the boolean costs about a second per CL point).
+points evenly spread over the 5,000-point pass (the boolean costs seconds per CL point).
 Every method, the Z-map included (no removal along the pass), answers the boolean's question:
 the engagement with the initial stock. Writes build/benchmarks/compare_peers.csv.
 """
@@ -74,15 +74,19 @@ GRIDS = (0.2, 0.1, 0.05)
 KINDS = ("top", "straight_wall", "curved_wall")
 
 
-def load_model(number):
-    """(name, tool, toolpath, settings, quintic Stock, exact Stock) of model test `number`."""
+def model_inputs(number):
+    """(STEP path, tool, settings, toolpath) of model test `number`, its bundled pass (53 CL points)."""
     folder = os.path.join(MODELS, f"model_test_{number}")
     job = load_job(os.path.join(folder, "job.json"))
     tool = Tool(job["diameter"], int(job["flutes"]), job["flute_length"])
     settings = CutSettings(job["feed_per_tooth"], job["inclination"], job["phi_start"], job["phi_end"], job["phi_step"],
                            job.get("spindle_rpm"))
-    toolpath = load_toolpath(os.path.join(folder, "toolpath.csv"))
-    step = os.path.join(folder, "stock.step")
+    return os.path.join(folder, "stock.step"), tool, settings, load_toolpath(os.path.join(folder, "toolpath.csv"))
+
+
+def load_model(number):
+    """(name, tool, toolpath, settings, quintic Stock, exact Stock) of model test `number`."""
+    step, tool, settings, toolpath = model_inputs(number)
     quintic = load_stock(step, walls="quintic", y_window=functools.partial(swept_y_window, toolpath, tool))
     exact = load_stock(step, walls="exact")
     return f"model test {number}", tool, toolpath, settings, quintic, exact
@@ -142,15 +146,8 @@ def model_pass(number, points):
     """
     from engine_throughput import densified
 
-    folder = os.path.join(MODELS, f"model_test_{number}")
-    job = load_job(os.path.join(folder, "job.json"))
-    tool = Tool(job["diameter"], int(job["flutes"]), job["flute_length"])
-    settings = CutSettings(job["feed_per_tooth"], job["inclination"], job["phi_start"], job["phi_end"], job["phi_step"],
-                           job.get("spindle_rpm"))
-    toolpath = load_toolpath(os.path.join(folder, "toolpath.csv"))
-    if points != len(toolpath):
-        toolpath = densified(toolpath, points)
-    return os.path.join(folder, "stock.step"), tool, settings, toolpath
+    step, tool, settings, toolpath = model_inputs(number)
+    return step, tool, settings, toolpath if points == len(toolpath) else densified(toolpath, points)
 
 
 def peer_child(method, number, points, repeats, save):
