@@ -39,9 +39,9 @@ if ROOT not in sys.path:
 
 from abm_workbench.engine import edge_lines  # noqa: E402
 
-#: Rays per Embree query: bounds the memory of one query (about 1 KiB per ray).
+#: Rays per Embree query: bounds the memory one query takes.
 RAYS_PER_QUERY = 1 << 16
-#: Crossings this far apart (mm) along one ray are still told apart; trimesh's own step past a hit is larger.
+#: Inside runs of one ray closer than this (mm) are one piece of cut.
 PIECE_GAP = 1e-9
 
 
@@ -63,6 +63,7 @@ class MeshStock:
 
     @property
     def triangles(self):
+        """Number of triangles of the mesh."""
         return len(self.mesh.faces)
 
 
@@ -98,7 +99,7 @@ def mesh_stock(step_path, deviation):
     seconds["tessellate"] = time.perf_counter() - started
 
     started = time.perf_counter()
-    mesh = trimesh.Trimesh(vertices, faces, process=True, merge_tex=True, merge_norm=True)
+    mesh = trimesh.Trimesh(vertices, faces, process=True)  # merges coincident vertices
     if not (mesh.is_watertight and mesh.is_winding_consistent):
         raise ValueError(f"{step_path}: the tessellation at {deviation:g} mm is not a closed, consistently "
                          f"wound mesh ({len(mesh.faces)} triangles)")
