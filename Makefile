@@ -4,7 +4,7 @@ PYTHON := /usr/bin/python3
 DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth
 OUT := build
 
-.PHONY: deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 test benchmark scaling models install screenshots
+.PHONY: deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 test benchmark scaling models install screenshots compare-peers
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -33,6 +33,27 @@ test: deps
 
 benchmark: deps
 	$(PYTHON) benchmarks/engine_throughput.py
+
+# ABM against an independent peer (benchmarks/peer_raycast.py: the STEP solid tessellated by
+# OpenCASCADE, ray-cast with Embree through trimesh) on both model tests; a few minutes, to
+# build/benchmarks/compare_peers.csv. The peer's packages go into a virtual environment that sees
+# the system's FreeCAD, numpy and scipy (pinned, installed without their dependencies, so that the
+# system's numpy stays the one imported); the project itself never needs them.
+PEERS_VENV := $(OUT)/peers-venv
+PEER_PACKAGES := trimesh==5.2.0 embreex==4.4.0.post1 manifold3d==3.5.4
+
+$(PEERS_VENV)/ready: Makefile
+	@dpkg -s python3-venv >/dev/null 2>&1 || $(MAKE) deps DEBS=python3-venv
+	rm -rf $(PEERS_VENV)
+	$(PYTHON) -m venv --system-site-packages $(PEERS_VENV)
+	$(PEERS_VENV)/bin/python -m pip install --quiet --no-deps $(PEER_PACKAGES)
+	test "$$($(PEERS_VENV)/bin/python -c 'import numpy; print(numpy.__file__)')" = \
+	  "$$($(PYTHON) -c 'import numpy; print(numpy.__file__)')"
+	$(PEERS_VENV)/bin/python -c 'import trimesh.ray.ray_pyembree, embreex, manifold3d'
+	touch $@
+
+compare-peers: deps $(PEERS_VENV)/ready
+	$(PEERS_VENV)/bin/python benchmarks/compare_methods.py --peers
 
 # Time and peak memory from 10^3 to 10^7 instants: engine, command line, local workers, Dask
 # (docs/SCALING.md); a few minutes, to build/benchmarks/scaling.{csv,png}.
