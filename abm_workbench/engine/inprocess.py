@@ -11,7 +11,7 @@ part moves more than the tolerance (docs/ENGINE.md gives the construction and th
 
 Each edge line's inside intervals in the stock (an EdgeIntervals, as the staircase engine's
 `inside_intervals` gives them) lose their parts inside those volumes. The pieces are grouped
-in spans; a KD tree over the spans' bounding spheres gives each CL point the spans near it, and
+in spans; a KD tree over bounding spheres of slices of the spans gives each CL point the spans near it, and
 tests that prove a miss drop most pairs before the closed form, so the cost grows with the
 moves near a point, not with the program's length (docs/ENGINE.md). Lengths in mm.
 """
@@ -35,6 +35,14 @@ _PAIR_BATCH = 1 << 16
 _GROUPS = 12
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
+#: Spans per group of edge lines solved first (those whose axes pass nearest the group).
+_PROBE = 2
+#: Rounds of that first solving, at most; they stop when a round leaves more than this
+#: share of the envelopes' length.
+_PROBE_ROUNDS = 3
+_PROBE_GAIN = 0.8
+#: (edge line, span) pairs per line above which that first solving is done.
+_PROBE_PAIRS = 8
 
 
 def _float_array(name, value, shape):
@@ -123,7 +131,9 @@ class SweptPieces:
     c0, c1 (S, 3), axis (S, 3), height (S,): the span as one constant-axis hull, and slack (S,)
     (mm): every piece of the span lies within slack of that hull with its radius, the axes of
     its pieces within turn/2 (S,) (rad) of the span's axis; centre (S, 3)
-    and bound (S,): a bounding sphere of it all; tree: cKDTree over the centres.
+    and bound (S,): a bounding sphere of it all. Balls: the span's height cut in slices about
+    as tall as its radius, each in a bounding sphere (ball_span (B,) its span, ball_centre
+    (B, 3), ball_bound (B,)); tree: cKDTree over the balls' centres.
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
     """
@@ -146,6 +156,9 @@ class SweptPieces:
     span_turn: np.ndarray
     span_centre: np.ndarray
     span_bound: np.ndarray
+    ball_span: np.ndarray
+    ball_centre: np.ndarray
+    ball_bound: np.ndarray
     tree: cKDTree
     tolerance: float
 
@@ -205,8 +218,16 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     # Within a span the axis turns by Θ/spans: every point of the tool stays within
     # ρ·Θ/(2·spans) of the same point turned to the span's middle axis.
     slack = 0.5 * rho[span_of] * turn[span_of] / spans[span_of]
+    # A point c0 + s·d + a·w + b of the hull lies within |d|/2 + √(r² + (a − a_mid)²) of the
+    # point (c0 + c1)/2 + a_mid·w, and within slack of that once the axis turns.
+    half = 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack
     centre = 0.5 * (s0 + s1) + 0.5 * s_height[:, None] * s_axis
-    bound = np.hypot(s_radius + 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack, 0.5 * s_height + slack)
+    bound = half + np.hypot(s_radius, 0.5 * s_height)
+    slices = np.maximum(np.ceil(s_height / s_radius), 1).astype(np.intp)
+    ball_span, ball_index = _csr(slices)
+    tall = (s_height / slices)[ball_span]
+    ball_centre = (0.5 * (s0 + s1))[ball_span] + ((ball_index + 0.5) * tall)[:, None] * s_axis[ball_span]
+    ball_bound = half[ball_span] + np.hypot(s_radius[ball_span], 0.5 * tall)
     # Pieces: per_span equal turning steps of each span's move, in order.
     count = per_span[span_of]
     owner, rank = _csr(count)
@@ -214,9 +235,10 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     c0, c1, axis = _steps(p0[move], p1[move], w0[move], w1[move], turn[move], span_index[owner] * count[owner] + rank,
                           spans[move] * count[owner])
     first = np.cumsum(count) - count
-    tree = cKDTree(centre if centre.size else np.zeros((0, 3)))
+    tree = cKDTree(ball_centre if ball_centre.size else np.zeros((0, 3)))
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
-                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, tree, tolerance)
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, ball_span, ball_centre,
+                       ball_bound, tree, tolerance)
 
 
 def _apart(a, b, c0, c1, axis, radius, height, slack, turn=None):
@@ -233,11 +255,16 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, turn=None):
     if turn is not None:
         reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack, 0.0, height)
         slack = np.minimum(slack, 0.5 * turn * np.hypot(radius, reach))
-    pa, pb, pd = qa - aa[:, None] * axis, qb - ab[:, None] * axis, d - da[:, None] * axis
-    far = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius + slack
+    slack = np.broadcast_to(slack, aa.shape)
     below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack
     above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack
-    return far | below | above
+    apart = below | above
+    # The distance seen along the axis only where the cheaper test left it open.
+    i = np.flatnonzero(~apart)
+    w = axis[i]
+    pa, pb, pd = qa[i] - aa[i, None] * w, qb[i] - ab[i, None] * w, d[i] - da[i, None] * w
+    apart[i] = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius[i] + slack[i]
+    return apart
 
 
 def _inside(x, c0, c1, axis, radius, low, high):
@@ -316,91 +343,264 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
     if stock.rows.size == 0 or pieces.move.size == 0:
         return empty
-    # Per line with stock material: the segment a … b from its first start to its last end.
+    # Per line with stock material: the range lo … hi from its first start to its last end,
+    # and the envelope of its remaining material, which narrows as removals are found
+    # (lo ≥ hi: nothing remains, the line is removed whole).
     first = np.flatnonzero(np.r_[True, stock.rows[1:] != stock.rows[:-1]])
     last = np.r_[first[1:], stock.rows.size] - 1
     line = stock.rows[first]
     lo, hi = stock.start[first], stock.end[last]
-    a = origins[line] + lo[:, None] * directions[line]
-    b = origins[line] + hi[:, None] * directions[line]
-    # Per group of a CL point's lines (its angles in _GROUPS runs): a bounding sphere of their
-    # segments (smaller than one sphere for the whole point, so fewer spans meet it).
+    envelope = np.stack([lo, hi])
+    line_origins, line_directions = origins[line], directions[line]
+    # Lines in groups: a CL point's angles in _GROUPS runs, all with the tool axis of that
+    # point as direction.
     cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
     present = np.unique(cl)
     group = np.searchsorted(present, cl)
-    low = np.full((present.size, 3), np.inf)
-    high = np.full((present.size, 3), -np.inf)
-    np.minimum.at(low, group, np.minimum(a, b))
-    np.maximum.at(high, group, np.maximum(a, b))
-    centre = 0.5 * (low + high)
-    radius = 0.5 * np.linalg.norm(high - low, axis=1)
+    members = np.argsort(group, kind="stable")
+    starts = np.searchsorted(group[members], np.arange(present.size))
+    sizes = np.bincount(group, minlength=present.size)
+    centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
     # (group, span) pairs: spheres that meet, the span's move ends before the CL point, and
     # the group's sphere is not surely apart from the span.
-    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.span_bound.max()),
+    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
                                                   output_type="ndarray")
-    g, k = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = (near["v"] <= radius[g] + pieces.span_bound[k]) & (pieces.span_move[k] <= program_index[present[g] // _GROUPS] - 1)
+    g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
+    keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
+    pair = np.unique(g[keep] * pieces.span_first.size + pieces.ball_span[ball[keep]])
+    g, k = pair // pieces.span_first.size, pair % pieces.span_first.size
+    keep = pieces.span_move[k] <= program_index[present[g] // _GROUPS] - 1
+    g, k = _near_groups(g[keep], k[keep], centre, radius, pieces)
+    # Where the lines meet many spans, first, in a few rounds (while they pay), a few spans per group: among those whose sides hold the group's
+    # whole sphere (seen along their axis), the ones reaching lowest and highest along the
+    # group's lines, and the ones whose axes pass nearest. They usually remove most of the
+    # lines, whose narrowed envelopes then meet far fewer spans.
+    found = []
+    for _ in range(_PROBE_ROUNDS if sizes[g].sum() > _PROBE_PAIRS * line.size else 0):
+        remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
+        u = line_directions[members[starts]][g]
+        across = _across(centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k]) - pieces.span_radius[k]
+        lower, upper = _extent(centre[g], u, pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
+                               pieces.span_radius[k], pieces.span_height[k])
+        holds = across + radius[g] + pieces.span_slack[k] <= 0.0
+        probe = np.flatnonzero(_smallest(g, across, _PROBE) | _smallest(g, np.where(holds, lower, np.inf), _PROBE)
+                               | _smallest(g, np.where(holds, -upper, np.inf), _PROBE))
+        found.append(_expanded(g[probe], k[probe], members, starts, sizes, envelope, line_origins, line_directions,
+                               pieces))
+        rest = np.ones(g.size, dtype=bool)
+        rest[probe] = False
+        centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
+        g, k = _near_groups(g[rest], k[rest], centre, radius, pieces)
+        if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
+            break
+    found.append(_expanded(g, k, members, starts, sizes, envelope, line_origins, line_directions, pieces))
+    dead = envelope[0] >= envelope[1]
+    seg, enter, leave = (np.concatenate(part) for part in zip(*found))
+    alive = ~dead[seg]
+    return (np.concatenate([line[dead], line[seg[alive]]]), np.concatenate([lo[dead], enter[alive]]),
+            np.concatenate([hi[dead], leave[alive]]))
+
+
+def _group_spheres(group, n, envelope, origins, directions):
+    """Bounding spheres (centre (n, 3), radius (n,)) of the envelopes of each group's lines
+    that still hold material (group (L,) of each line, non-decreasing); radius −inf for a
+    group without any."""
+    alive = np.flatnonzero(envelope[0] < envelope[1])
+    a, b = _ends(alive, envelope, origins, directions)
+    low, high = np.zeros((n, 3)), np.zeros((n, 3))
+    owner = group[alive]  # non-decreasing: the lines are in row order
+    first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=np.intp)
+    empty = np.ones(n, dtype=bool)
+    empty[owner[first]] = False
+    if first.size:
+        low[owner[first]] = np.minimum.reduceat(np.minimum(a, b), first, axis=0)
+        high[owner[first]] = np.maximum.reduceat(np.maximum(a, b), first, axis=0)
+    return 0.5 * (low + high), np.where(empty, -np.inf, 0.5 * np.linalg.norm(high - low, axis=1))
+
+
+def _near_groups(g, k, centre, radius, pieces):
+    """The pairs (group g, span k) whose group sphere meets the span's bounding sphere and is
+    not surely apart from the span."""
+    gap = np.linalg.norm(centre[g] - pieces.span_centre[k], axis=1)
+    keep = gap <= radius[g] + pieces.span_bound[k]
     g, k = g[keep], k[keep]
     keep = ~_apart(centre[g], centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
                    pieces.span_radius[k], pieces.span_height[k], pieces.span_slack[k] + radius[g])
-    g, k = g[keep], k[keep]
-    # (line, span) pairs, in batches of (CL point, span) pairs that expand to at most
-    # _EXPAND_BATCH of them, so that memory stays bounded.
-    order = np.argsort(group, kind="stable")
-    starts = np.searchsorted(group[order], np.arange(present.size))
-    sizes = np.bincount(group, minlength=present.size)[g]
-    cuts = np.unique(np.r_[0, np.searchsorted(np.cumsum(sizes), np.arange(_EXPAND_BATCH, int(sizes.sum()),
+    return g[keep], k[keep]
+
+
+def _expanded(g, k, members, starts, sizes, envelope, origins, directions, pieces):
+    """Removal intervals (seg, enter, leave) from the pairs (group g, span k), expanded to the
+    group's lines (members[starts[g] …] of sizes[g]) in batches of at most _EXPAND_BATCH."""
+    order = np.argsort(g, kind="stable")
+    g, k = g[order], k[order]
+    count = sizes[g]
+    cuts = np.unique(np.r_[0, np.searchsorted(np.cumsum(count), np.arange(_EXPAND_BATCH, int(count.sum()),
                                                                           _EXPAND_BATCH), side="right"), g.size])
-    whole = np.zeros(a.shape[0], dtype=bool)
-    found = []
+    found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     for first, stop in zip(cuts[:-1], cuts[1:]):
-        pair, rank = _csr(sizes[first:stop])
-        seg = order[starts[g[first:stop]][pair] + rank]
-        found.append(_line_span_pairs(seg[~whole[seg]], k[first:stop][pair][~whole[seg]], a, b, lo, hi, line, whole,
-                                      pieces, origins, directions))
-    dead = np.flatnonzero(whole)
-    return tuple(np.concatenate([ends[dead]] + [f[i] for f in found]) for i, ends in enumerate((line, lo, hi)))
+        pair, rank = _csr(count[first:stop])
+        seg = members[starts[g[first:stop]][pair] + rank]
+        found.append(_line_span_pairs(seg, k[first:stop][pair], envelope, origins, directions, pieces))
+    return tuple(np.concatenate(part) for part in zip(*found))
 
 
-def _line_span_pairs(seg, span, a, b, lo, hi, line, whole, pieces, origins, directions):
-    """Removal intervals (rows, enter, leave) from the pairs (segment seg[i], span span[i]).
+def _ends(seg, envelope, origins, directions):
+    """The ends (K, 3) of the current envelopes of segments `seg` (K,)."""
+    return (origins[seg] + envelope[0, seg, None] * directions[seg],
+            origins[seg] + envelope[1, seg, None] * directions[seg])
 
-    Segments a … b (L, 3) run from lo to hi (L,) along lines `line` (L,). Lines found removed
-    whole are marked in `whole` (L,) and give no intervals here.
+
+def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
+    """Removal intervals (seg, enter, leave) from the pairs (segment seg[i], span span[i]).
+
+    envelope: (2, L) the range lo … hi (mm along the line) holding each segment's remaining
+    material, narrowed in place by the removals found; origins, directions: (L, 3) the
+    segments' lines. Pairs are solved in rounds: each round solves, per segment, the pieces
+    reaching lowest and highest along its line (1, 2, 4, … of each), narrows the envelopes,
+    and drops the pairs whose piece is then surely apart from the envelope (it can remove
+    nothing more), so that a line cut by many pieces solves few of them.
     """
-    keep = ~_apart(a[seg], b[seg], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+    a, b = _ends(seg, envelope, origins, directions)
+    keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
-    # A line whose segment lies deep enough inside a span (both ends at least the span's slack
-    # inside its hull, which is convex) is removed whole: its other pairs need no solving.
+    # A segment lying deep enough inside a span (both ends at least the span's slack inside
+    # its hull, which is convex) is removed whole: its other pairs need no solving.
     slack, h = pieces.span_slack[span], pieces.span_height[span]
     hull = (pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span] - slack,
             slack, h - slack)
-    inside = _inside(a[seg], *hull) & _inside(b[seg], *hull)
-    whole[seg[inside]] = True
-    seg, span = seg[~whole[seg]], span[~whole[seg]]
-    # (line, piece) pairs; pieces of spans that turn are culled one by one the same way.
+    inside = _inside(a[keep], *hull) & _inside(b[keep], *hull)
+    envelope[1, seg[inside]] = envelope[0, seg[inside]]
+    # A first round at the level of spans: per segment, the span reaching lowest along its
+    # line and the one reaching highest; then the other spans against the narrowed envelopes.
+    first = _reaching(seg, origins[seg], directions[seg], pieces.span_c0[span], pieces.span_c1[span],
+                      pieces.span_axis[span], pieces.span_radius[span] + pieces.span_slack[span],
+                      pieces.span_height[span], 1)
+    out = [_solved(*_near_pieces(*_span_pieces(seg[first], span[first], pieces), envelope, origins, directions,
+                                 pieces), envelope, origins, directions, pieces)]
+    rest = np.ones(seg.size, dtype=bool)
+    rest[first] = False
+    seg, span = seg[rest], span[rest]
+    seg, span = seg[envelope[0, seg] < envelope[1, seg]], span[envelope[0, seg] < envelope[1, seg]]
+    a, b = _ends(seg, envelope, origins, directions)
+    keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                   pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
+    seg, piece = _span_pieces(seg[keep], span[keep], pieces)
+    take = 1
+    while seg.size:
+        seg, piece = _near_pieces(seg, piece, envelope, origins, directions, pieces)
+        chosen = _reaching(seg, origins[seg], directions[seg], pieces.c0[piece], pieces.c1[piece], pieces.axis[piece],
+                           pieces.radius[piece], pieces.height[piece], take)
+        out.append(_solved(seg[chosen], piece[chosen], envelope, origins, directions, pieces))
+        rest = np.ones(seg.size, dtype=bool)
+        rest[chosen] = False
+        seg, piece = seg[rest], piece[rest]
+        take *= 2
+    return tuple(np.concatenate(part) for part in zip(*out))
+
+
+def _near_pieces(seg, piece, envelope, origins, directions, pieces):
+    """The pairs (seg, piece) (K,) whose segment's envelope is open and not surely apart from the piece."""
+    open_ = envelope[0, seg] < envelope[1, seg]
+    seg, piece = seg[open_], piece[open_]
+    a, b = _ends(seg, envelope, origins, directions)
+    near = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
+                   pieces.height[piece], 0.0)
+    return seg[near], piece[near]
+
+
+def _span_pieces(seg, span, pieces):
+    """The pairs (seg, span) (K,) expanded to (seg, piece): every piece of each span."""
     owner, rank = _csr(pieces.span_count[span])
-    seg, piece = seg[owner], pieces.span_first[span][owner] + rank
-    several = np.flatnonzero(pieces.span_count[span][owner] > 1)
-    if several.size:
-        q, s = piece[several], seg[several]
-        far = _apart(a[s], b[s], pieces.c0[q], pieces.c1[q], pieces.axis[q], pieces.radius[q], pieces.height[q], 0.0)
-        drop = np.zeros(seg.size, dtype=bool)
-        drop[several[far]] = True
-        seg, piece = seg[~drop], piece[~drop]
-    out_rows, out_enter, out_leave = [np.zeros(0, dtype=line.dtype)], [np.zeros(0)], [np.zeros(0)]
+    return seg[owner], pieces.span_first[span][owner] + rank
+
+
+def _solved(seg, piece, envelope, origins, directions, pieces):
+    """Removal intervals (seg, enter, leave) of the segments seg (K,) inside pieces piece (K,)
+    that overlap their envelopes (2, L), closed form in batches; the envelopes are narrowed."""
+    found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     for begin in range(0, seg.size, _PAIR_BATCH):
         s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
-        r = line[s]
-        enter, leave = line_hull_interval(origins[r], directions[r], pieces.c0[q], pieces.c1[q], pieces.axis[q],
+        enter, leave = line_hull_interval(origins[s], directions[s], pieces.c0[q], pieces.c1[q], pieces.axis[q],
                                           pieces.radius[q], pieces.height[q])
         with np.errstate(invalid="ignore"):
-            hit = (np.minimum(leave, hi[s]) - np.maximum(enter, lo[s])) > LENGTH_EPS
-        out_rows.append(r[hit])
-        out_enter.append(enter[hit])
-        out_leave.append(leave[hit])
-    return np.concatenate(out_rows), np.concatenate(out_enter), np.concatenate(out_leave)
+            hit = (np.minimum(leave, envelope[1, s]) - np.maximum(enter, envelope[0, s])) > LENGTH_EPS
+        found.append((s[hit], enter[hit], leave[hit]))
+        _narrow(envelope, *found[-1])
+    return tuple(np.concatenate(part) for part in zip(*found))
+
+
+def _reaching(owner, origin, direction, c0, c1, axis, radius, height, take):
+    """Indices of the pairs (one per row, all (K, 3) or (K,)) of each owner (K,) whose hull
+    (c0, c1, axis, radius, height) reaches lowest along the line origin + l·direction (the
+    `take` lowest per owner) or highest (the `take` highest), by its extent along the line:
+    l ∈ [lower, upper] for every point of the hull (mm)."""
+    lower, upper = _extent(origin, direction, c0, c1, axis, radius, height)
+    return np.flatnonzero(_smallest(owner, lower, take) | _smallest(owner, -upper, take))
+
+
+def _extent(origin, direction, c0, c1, axis, radius, height):
+    """(lower, upper) (K,): every point of each hull (c0, c1, axis, radius, height) lies at
+    lower ≤ l ≤ upper along the line origin + l·direction, the tightest such bounds (mm)."""
+    base = np.einsum("ij,ij->i", c0 - origin, direction)
+    du = np.einsum("ij,ij->i", c1 - c0, direction)
+    wu = np.einsum("ij,ij->i", axis, direction)
+    across = radius * np.sqrt(np.maximum(1.0 - wu * wu, 0.0))
+    lower = base + np.minimum(du, 0.0) + np.minimum(height * wu, 0.0) - across
+    upper = base + np.maximum(du, 0.0) + np.maximum(height * wu, 0.0) + across
+    return lower, upper
+
+
+def _smallest(owner, key, take):
+    """(K,) bool: the `take` rows of smallest key (K,) of each owner (K,)."""
+    order = np.lexsort((key, owner))
+    ranked = owner[order]
+    first = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
+    rank = np.arange(owner.size) - np.repeat(first, np.diff(np.r_[first, owner.size]))
+    chosen = np.zeros(owner.size, dtype=bool)
+    chosen[order[rank < take]] = True
+    return chosen
+
+
+def _across(x, c0, c1, axis):
+    """(K,) distance from points x to the segments c0 … c1 seen along the unit axis (all (K, 3), mm)."""
+    q, d = x - c0, c1 - c0
+    q = q - np.einsum("ij,ij->i", q, axis)[:, None] * axis
+    d = d - np.einsum("ij,ij->i", d, axis)[:, None] * axis
+    dd = np.einsum("ij,ij->i", d, d)
+    t = np.clip(np.einsum("ij,ij->i", q, d) / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
+    gap = q - t[:, None] * d
+    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+
+
+def _narrow(envelope, seg, enter, leave):
+    """Narrow the envelopes (2, L) of segments `seg` (K,) by the removals [enter, leave] (K,):
+    lo moves up past the removals that cover it without a gap, hi down likewise."""
+    if seg.size == 0:
+        return
+    envelope[0] = _covered_from(envelope[0], seg, enter, leave)
+    envelope[1] = -_covered_from(-envelope[1], seg, -leave, -enter)
+
+
+def _covered_from(start, seg, enter, leave):
+    """start (L,) moved to the end of the run of intervals [enter, leave] of its segment (seg
+    (K,)) that covers it without a gap: a sorted sweep per segment. Returns a new (L,) array."""
+    order = np.lexsort((enter, seg))
+    seg, enter, leave = seg[order], enter[order], leave[order]
+    owners, first, count = np.unique(seg, return_index=True, return_counts=True)
+    owner = np.repeat(np.arange(owners.size), count)
+    rank = np.arange(seg.size) - first[owner]
+    width = int(count.max()) + 1
+    enters = np.full((owners.size, width), np.inf)
+    leaves = np.full((owners.size, width), -np.inf)
+    enters[owner, rank], leaves[owner, rank] = enter, leave
+    # reach[:, i]: how far the intervals before the i-th cover from start, if they chain.
+    reach = np.maximum.accumulate(np.concatenate([start[owners][:, None], leaves[:, :-1]], axis=1), axis=1)
+    gap = np.argmax(enters > reach, axis=1)
+    moved = start.copy()
+    moved[owners] = reach[np.arange(owners.size), gap]
+    return moved
 
 
 def subtract(stock: EdgeIntervals, rows, enter, leave):

@@ -19,7 +19,7 @@ from typing import Optional
 import numpy as np
 
 from ..engine import Staircase, flute_engagement, zmap_engage
-from ..engine.stocks import engage_in_process, engage_stock
+from ..engine.stocks import engage_in_process, engage_stock, in_process_lengths
 from ..errors import InputError, ParameterError
 from ..formats import check_output_path, replacing
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
@@ -51,8 +51,8 @@ def in_process_sweep(prepared, method="abm"):
     """((SweptPieces of the prepared job's whole program in its engine frame, (m,) program rows of its CL
     points) for a run against the in-process stock, or None for the stock as given; why not, or '').
 
-    The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM
-    without forces), else the stock as given, the reason said. ParameterError when in-process is asked
+    The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM,
+    with or without the straight-flute forces), else the stock as given, the reason said. ParameterError when in-process is asked
     for where it is not available, or the stock model is unknown.
     """
     from ..engine.inprocess import swept_pieces
@@ -63,8 +63,7 @@ def in_process_sweep(prepared, method="abm"):
         raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
     if job.stock_model == "initial":
         return None, ""
-    missing = ("a helical tool" if tool.helix else "the forces" if prepared.force_model is not None else
-               "the Z-map method" if method != "abm" else None)
+    missing = "a helical tool" if tool.helix else "the Z-map method" if method != "abm" else None
     if missing is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
@@ -92,12 +91,18 @@ def check_model(stock, forces=False, method="abm", helix=0.0):
                                        "2.5D stock")
 
 
-def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=None):
+def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=None, in_process=None):
     """The Forces of a pass under force model (Coefficients, immersion (start, end) deg), reusing flute 1's
-    straight-edge lengths of `engagement`; feed: (m,) feed per tooth (mm) per CL point, or None."""
+    straight-edge lengths of `engagement`; feed: (m,) feed per tooth (mm) per CL point, or None.
+    in_process: (SweptPieces, (m,) program rows of the CL points) to take every flute's lengths against
+    the in-process stock (straight flutes), or None for the stock as given."""
     coefficients, immersion = model
+    lengths_at = None
+    if in_process is not None:
+        def lengths_at(shifted):
+            return in_process_lengths(staircase, tool, toolpath, shifted.phi, *in_process)
     return pass_forces(staircase, tool, toolpath, settings, coefficients, immersion=immersion, feed=feed,
-                       first=engagement.length if tool.helix == 0.0 else None)
+                       first=engagement.length if tool.helix == 0.0 else None, lengths_at=lengths_at)
 
 
 def in_part_frame(engagement, frame):
@@ -271,9 +276,8 @@ class CsvChunk:
             engagement, initial, changed = engage_in_process(stock, tool, part, settings, pieces, rows[start:stop])
         forces = None
         if self.force_model is not None:
-            coefficients, immersion = self.force_model
-            forces = pass_forces(stock, tool, part, settings, coefficients, immersion=immersion,
-                                 first=engagement.length if tool.helix == 0.0 else None)
+            forces = pass_forces_of(stock, tool, part, settings, self.force_model, engagement,
+                                    in_process=None if self.in_process is None else (pieces, rows[start:stop]))
         engagement = in_part_frame(engagement, self.frame)
         return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces, initial=initial,
                                        changed=changed), engagement.depth_of_cut,
@@ -528,11 +532,17 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
     stock, _ = load_job_stock(prepared)
     check_model(stock, forces=True, helix=tool.helix)
-    engagement = flute_1(stock.model, tool, toolpath, settings)
+    in_process, model_note = in_process_sweep(prepared)
+    if model_note:
+        warn(f"{model_note}: the feeds are scheduled against the stock as given")
+    if in_process is None:
+        engagement = flute_1(stock.model, tool, toolpath, settings)
+    else:
+        engagement = engage_in_process(stock.model, tool, toolpath, settings, *in_process)[0]
     if not engagement.engaged.any():
         raise no_engagement(job)
     forces = pass_forces_of(stock.model, tool, toolpath, settings, prepared.force_model, engagement,
-                            feed=programmed)
+                            feed=programmed, in_process=in_process)
     plan = feed_schedule(forces, limit, kind=kind, min_feed=min_feed)
     unit = "N" if kind == "force" else "mm²"
     if plan.infeasible.any():
