@@ -29,6 +29,8 @@ from .tolerances import LENGTH_EPS
 _MACHINED = SURFACES.index("machined")
 #: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
 _OPPOSITE_EPS = 1e-12
+#: Spans per chain at most.
+_CHAIN = 16
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
 _PAIR_BATCH = 1 << 16
 #: Runs of angles per CL point, each with its own bounding sphere for the spatial index.
@@ -41,7 +43,7 @@ _PROBE = 2
 #: share of the envelopes' length.
 _PROBE_ROUNDS = 3
 _PROBE_GAIN = 0.8
-#: (edge line, span) pairs per line above which that first solving is done.
+#: (edge line, span) pairs per line above which chains are tested per line and probes made.
 _PROBE_PAIRS = 8
 
 
@@ -131,9 +133,14 @@ class SweptPieces:
     c0, c1 (S, 3), axis (S, 3), height (S,): the span as one constant-axis hull, and slack (S,)
     (mm): every piece of the span lies within slack of that hull with its radius, the axes of
     its pieces within turn/2 (S,) (rad) of the span's axis; centre (S, 3)
-    and bound (S,): a bounding sphere of it all. Balls: the span's height cut in slices about
-    as tall as its radius, each in a bounding sphere (ball_span (B,) its span, ball_centre
-    (B, 3), ball_bound (B,)); tree: cKDTree over the balls' centres.
+    and bound (S,): a bounding sphere of it all.
+    Chains (runs of consecutive spans of one tool, no longer than its radius): chain_first,
+    chain_count (C,) their spans; chain_move (C,) the first move; chain_c0, chain_c1,
+    chain_axis (C, 3), chain_radius, chain_height (C,): one constant-axis hull from the first
+    span's start to the last one's end; chain_slack (C,): the pieces' bottom centres lie
+    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|). Balls: each chain's height cut in slices about as tall as its radius,
+    each in a bounding sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,));
+    tree: cKDTree over the balls' centres.
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
     """
@@ -156,7 +163,17 @@ class SweptPieces:
     span_turn: np.ndarray
     span_centre: np.ndarray
     span_bound: np.ndarray
-    ball_span: np.ndarray
+    chain_first: np.ndarray
+    chain_count: np.ndarray
+    chain_move: np.ndarray
+    chain_c0: np.ndarray
+    chain_c1: np.ndarray
+    chain_axis: np.ndarray
+    chain_radius: np.ndarray
+    chain_height: np.ndarray
+    chain_slack: np.ndarray
+    chain_lean: np.ndarray
+    ball_chain: np.ndarray
     ball_centre: np.ndarray
     ball_bound: np.ndarray
     tree: cKDTree
@@ -220,14 +237,8 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     slack = 0.5 * rho[span_of] * turn[span_of] / spans[span_of]
     # A point c0 + s·d + a·w + b of the hull lies within |d|/2 + √(r² + (a − a_mid)²) of the
     # point (c0 + c1)/2 + a_mid·w, and within slack of that once the axis turns.
-    half = 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack
     centre = 0.5 * (s0 + s1) + 0.5 * s_height[:, None] * s_axis
-    bound = half + np.hypot(s_radius, 0.5 * s_height)
-    slices = np.maximum(np.ceil(s_height / s_radius), 1).astype(np.intp)
-    ball_span, ball_index = _csr(slices)
-    tall = (s_height / slices)[ball_span]
-    ball_centre = (0.5 * (s0 + s1))[ball_span] + ((ball_index + 0.5) * tall)[:, None] * s_axis[ball_span]
-    ball_bound = half[ball_span] + np.hypot(s_radius[ball_span], 0.5 * tall)
+    bound = 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack + np.hypot(s_radius, 0.5 * s_height)
     # Pieces: per_span equal turning steps of each span's move, in order.
     count = per_span[span_of]
     owner, rank = _csr(count)
@@ -235,29 +246,78 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     c0, c1, axis = _steps(p0[move], p1[move], w0[move], w1[move], turn[move], span_index[owner] * count[owner] + rank,
                           spans[move] * count[owner])
     first = np.cumsum(count) - count
-    tree = cKDTree(ball_centre if ball_centre.size else np.zeros((0, 3)))
+    chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner)
+    tree = cKDTree(chains[-2] if chains[-2].size else np.zeros((0, 3)))
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
-                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, ball_span, ball_centre,
-                       ball_bound, tree, tolerance)
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, *chains, tree,
+                       tolerance)
 
 
-def _apart(a, b, c0, c1, axis, radius, height, slack, turn=None):
+def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span):
+    """The chains of the spans (SweptPieces's chain_… and ball_… fields, in order).
+
+    span_move, radius, height (S,), s0, s1, s_axis (S, 3): the spans; c0, c1, axis (P, 3), piece_span
+    (P,): the pieces and their span. A chain breaks where the moves stop following each other
+    or the tool changes, and after _CHAIN spans or a path as long as the tool's radius. Its
+    axis w is the mean of its spans' axes; its slack the largest distance of a piece's ends
+    from its path, its lean the largest |w_p − w| of a piece's axis w_p (see _apart).
+    """
+    n = span_move.size
+    step = np.linalg.norm(s1 - s0, axis=1)
+    run = np.cumsum(np.r_[True, (np.diff(span_move) > 1) | (np.diff(radius) != 0) | (np.diff(height) != 0)]) - 1
+    run_first = np.flatnonzero(np.r_[True, run[1:] != run[:-1]]) if n else np.zeros(0, dtype=np.intp)
+    before = np.cumsum(step) - step
+    along = before - before[run_first][run]
+    rank = np.arange(n) - run_first[run]
+    key = np.stack([run, rank // _CHAIN, np.floor(along / radius)])
+    new = np.r_[True, (key[:, 1:] != key[:, :-1]).any(axis=0)] if n else np.zeros(0, dtype=bool)
+    chain = np.cumsum(new) - 1
+    first = np.flatnonzero(new)
+    count = np.diff(np.r_[first, n])
+    last = first + count - 1
+    mean = np.add.reduceat(s_axis, first, axis=0) if n else np.zeros((0, 3))
+    chain_axis = mean / np.linalg.norm(mean, axis=1)[:, None]
+    ch0, ch1 = s0[first], s1[last]
+    piece_chain = chain[piece_span]
+    d = ch1[piece_chain] - ch0[piece_chain]
+    zero = np.zeros_like(d)
+    off = np.maximum(_segment_distance(c0, zero, ch0[piece_chain], d), _segment_distance(c1, zero, ch0[piece_chain], d))
+    slack, lean = np.zeros(first.size), np.zeros(first.size)
+    np.maximum.at(slack, piece_chain, off)
+    np.maximum.at(lean, piece_chain, np.linalg.norm(axis - chain_axis[piece_chain], axis=1))
+    r, h = radius[first], height[first]
+    slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
+    ball_chain, ball_index = _csr(slices)
+    tall = (h / slices)[ball_chain]
+    ball_centre = (0.5 * (ch0 + ch1))[ball_chain] + ((ball_index + 0.5) * tall)[:, None] * chain_axis[ball_chain]
+    grown = 0.5 * np.linalg.norm(ch1 - ch0, axis=1) + slack + lean * np.hypot(r, h)
+    ball_bound = grown[ball_chain] + np.hypot(r[ball_chain], 0.5 * tall)
+    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, ball_chain, ball_centre,
+            ball_bound)
+
+
+def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
     it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm.
 
-    turn (K,), rad: the slack comes from turning the tool by up to turn/2 about its bottom
-    centre; only the tool's part up to the segment's height can come near it, so a point there
-    moves by at most turn/2 · √(radius² + that height²), which replaces slack when smaller.
+    lean (K,): the volume is made of pieces whose bottom centres lie within slack of the
+    hull's path and whose axes differ from its axis by at most lean (the length of the
+    difference of the unit vectors); turning a piece about its bottom centre moves a point
+    at height h by at most lean·√(radius² + h²), and only the part up to the height the
+    segment reaches can come near it, so that much is added to slack.
+
+    grain (K,) or scalar, mm: also apart when the segment reaches less than that into the
+    hull's axial range (it can then share only a sliver with the hull).
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
-    if turn is not None:
-        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack, 0.0, height)
-        slack = np.minimum(slack, 0.5 * turn * np.hypot(radius, reach))
     slack = np.broadcast_to(slack, aa.shape)
-    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack
-    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack
+    if lean is not None:
+        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0, height)
+        slack = slack + lean * np.hypot(radius, reach)
+    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack + grain
+    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack - grain
     apart = below | above
     # The distance seen along the axis only where the cheaper test left it open.
     i = np.flatnonzero(~apart)
@@ -360,45 +420,75 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     members = np.argsort(group, kind="stable")
     starts = np.searchsorted(group[members], np.arange(present.size))
     sizes = np.bincount(group, minlength=present.size)
+    before = program_index[line // p] - 1
+    group_before = program_index[present // _GROUPS] - 1
     centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
-    # (group, span) pairs: spheres that meet, the span's move ends before the CL point, and
-    # the group's sphere is not surely apart from the span.
+    # (group, chain) pairs: a group's sphere meets a ball of the chain, the chain's first move
+    # ends before the CL point, and the sphere is not surely apart from the chain.
     near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
                                                   output_type="ndarray")
     g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
     keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
-    pair = np.unique(g[keep] * pieces.span_first.size + pieces.ball_span[ball[keep]])
-    g, k = pair // pieces.span_first.size, pair % pieces.span_first.size
-    keep = pieces.span_move[k] <= program_index[present[g] // _GROUPS] - 1
+    chains = pieces.chain_first.size
+    pair = np.unique(g[keep] * chains + pieces.ball_chain[ball[keep]])
+    g, k = pair // chains, pair % chains
+    keep = pieces.chain_move[k] <= group_before[g]
     g, k = _near_groups(g[keep], k[keep], centre, radius, pieces)
-    # Where the lines meet many spans, first, in a few rounds (while they pay), a few spans per group: among those whose sides hold the group's
-    # whole sphere (seen along their axis), the ones reaching lowest and highest along the
-    # group's lines, and the ones whose axes pass nearest. They usually remove most of the
-    # lines, whose narrowed envelopes then meet far fewer spans.
-    found = []
-    for _ in range(_PROBE_ROUNDS if sizes[g].sum() > _PROBE_PAIRS * line.size else 0):
+    lines = (members, starts, sizes, envelope, line_origins, line_directions, before, pieces)
+    # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
+    # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
+    # meet far fewer chains.
+    if (sizes[g] * pieces.chain_count[k]).sum() <= _PROBE_PAIRS * line.size:
+        # Few: straight to (group, span) pairs, with no test of the chains per line.
+        owner, rank = _csr(pieces.chain_count[k])
+        g, span = g[owner], pieces.chain_first[k][owner] + rank
+        keep = pieces.span_move[span] <= group_before[g]
+        g, span = g[keep], span[keep]
+        keep = ~_apart(centre[g], centre[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                       pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + radius[g])
+        found = [_expanded(g[keep], span[keep], *lines, chained=False)]
+        g = k = np.zeros(0, dtype=np.intp)
+    else:
+        found = []
+    for _ in range(_PROBE_ROUNDS if g.size else 0):
         remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
-        u = line_directions[members[starts]][g]
-        across = _across(centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k]) - pieces.span_radius[k]
-        lower, upper = _extent(centre[g], u, pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
-                               pieces.span_radius[k], pieces.span_height[k])
-        holds = across + radius[g] + pieces.span_slack[k] <= 0.0
-        probe = np.flatnonzero(_smallest(g, across, _PROBE) | _smallest(g, np.where(holds, lower, np.inf), _PROBE)
-                               | _smallest(g, np.where(holds, -upper, np.inf), _PROBE))
-        found.append(_expanded(g[probe], k[probe], members, starts, sizes, envelope, line_origins, line_directions,
-                               pieces))
-        rest = np.ones(g.size, dtype=bool)
-        rest[probe] = False
+        found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
+                               *lines, chained=False))
         centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
-        g, k = _near_groups(g[rest], k[rest], centre, radius, pieces)
+        g, k = _near_groups(g, k, centre, radius, pieces)
         if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
             break
-    found.append(_expanded(g, k, members, starts, sizes, envelope, line_origins, line_directions, pieces))
+    found.append(_expanded(g, k, *lines, chained=True))
     dead = envelope[0] >= envelope[1]
     seg, enter, leave = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]
     return (np.concatenate([line[dead], line[seg[alive]]]), np.concatenate([lo[dead], enter[alive]]),
             np.concatenate([hi[dead], leave[alive]]))
+
+
+def _probe(g, k, centre, radius, direction, group_before, pieces):
+    """A few (group, span) pairs per group from its (group g, chain k) pairs: first chains, then
+    their spans (those ending before the group's CL point), chosen alike: among the hulls whose
+    sides hold the group's whole sphere (seen along their axis), the _PROBE reaching lowest and
+    the _PROBE reaching highest along the group's lines (direction (n, 3)), and the _PROBE whose
+    axes pass nearest the sphere's centre."""
+    def chosen(g, c0, c1, axis, r, h, slack):
+        across = _across(centre[g], c0, c1, axis) - r
+        lower, upper = _extent(centre[g], direction[g], c0, c1, axis, r, h)
+        holds = across + radius[g] + slack <= 0.0
+        return np.flatnonzero(_smallest(g, across, _PROBE) | _smallest(g, np.where(holds, lower, np.inf), _PROBE)
+                              | _smallest(g, np.where(holds, -upper, np.inf), _PROBE))
+
+    grown = pieces.chain_slack + pieces.chain_lean * np.hypot(pieces.chain_radius, pieces.chain_height)
+    pick = chosen(g, pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k], pieces.chain_radius[k],
+                  pieces.chain_height[k], grown[k])
+    owner, rank = _csr(pieces.chain_count[k[pick]])
+    g, span = g[pick][owner], pieces.chain_first[k[pick]][owner] + rank
+    keep = pieces.span_move[span] <= group_before[g]
+    g, span = g[keep], span[keep]
+    pick = chosen(g, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span],
+                  pieces.span_height[span], pieces.span_slack[span])
+    return g[pick], span[pick]
 
 
 def _group_spheres(group, n, envelope, origins, directions):
@@ -419,19 +509,17 @@ def _group_spheres(group, n, envelope, origins, directions):
 
 
 def _near_groups(g, k, centre, radius, pieces):
-    """The pairs (group g, span k) whose group sphere meets the span's bounding sphere and is
-    not surely apart from the span."""
-    gap = np.linalg.norm(centre[g] - pieces.span_centre[k], axis=1)
-    keep = gap <= radius[g] + pieces.span_bound[k]
-    g, k = g[keep], k[keep]
-    keep = ~_apart(centre[g], centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
-                   pieces.span_radius[k], pieces.span_height[k], pieces.span_slack[k] + radius[g])
+    """The pairs (group g, chain k) whose group sphere (centre, radius) is not surely apart from the chain."""
+    keep = ~_apart(centre[g], centre[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
+                   pieces.chain_radius[k], pieces.chain_height[k], pieces.chain_slack[k] + radius[g],
+                   pieces.chain_lean[k])
     return g[keep], k[keep]
 
 
-def _expanded(g, k, members, starts, sizes, envelope, origins, directions, pieces):
-    """Removal intervals (seg, enter, leave) from the pairs (group g, span k), expanded to the
-    group's lines (members[starts[g] …] of sizes[g]) in batches of at most _EXPAND_BATCH."""
+def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, *, chained):
+    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k: `chained`),
+    expanded to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most
+    _EXPAND_BATCH; before (L,) the last program row that precedes each line's CL point."""
     order = np.argsort(g, kind="stable")
     g, k = g[order], k[order]
     count = sizes[g]
@@ -440,9 +528,26 @@ def _expanded(g, k, members, starts, sizes, envelope, origins, directions, piece
     found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     for first, stop in zip(cuts[:-1], cuts[1:]):
         pair, rank = _csr(count[first:stop])
-        seg = members[starts[g[first:stop]][pair] + rank]
-        found.append(_line_span_pairs(seg, k[first:stop][pair], envelope, origins, directions, pieces))
+        seg, item = members[starts[g[first:stop]][pair] + rank], k[first:stop][pair]
+        if chained:
+            seg, item = _chain_spans(seg, item, envelope, origins, directions, before, pieces)
+        found.append(_line_span_pairs(seg, item, envelope, origins, directions, pieces))
     return tuple(np.concatenate(part) for part in zip(*found))
+
+
+def _chain_spans(seg, chain, envelope, origins, directions, before, pieces):
+    """The pairs (segment seg, chain) (K,) as (segment, span) pairs: the chains not surely apart
+    from the segment's envelope, each span of them that ends before the segment's CL point."""
+    open_ = envelope[0, seg] < envelope[1, seg]
+    seg, chain = seg[open_], chain[open_]
+    a, b = _ends(seg, envelope, origins, directions)
+    keep = ~_apart(a, b, pieces.chain_c0[chain], pieces.chain_c1[chain], pieces.chain_axis[chain],
+                   pieces.chain_radius[chain], pieces.chain_height[chain], pieces.chain_slack[chain],
+                   pieces.chain_lean[chain])
+    owner, rank = _csr(pieces.chain_count[chain[keep]])
+    seg, span = seg[keep][owner], pieces.chain_first[chain[keep]][owner] + rank
+    keep = pieces.span_move[span] <= before[seg]
+    return seg[keep], span[keep]
 
 
 def _ends(seg, envelope, origins, directions):
@@ -463,7 +568,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     """
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                   pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
+                   pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving.
@@ -485,7 +590,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     seg, span = seg[envelope[0, seg] < envelope[1, seg]], span[envelope[0, seg] < envelope[1, seg]]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                   pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
+                   pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, piece = _span_pieces(seg[keep], span[keep], pieces)
     take = 1
     while seg.size:
@@ -501,12 +606,16 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
 
 
 def _near_pieces(seg, piece, envelope, origins, directions, pieces):
-    """The pairs (seg, piece) (K,) whose segment's envelope is open and not surely apart from the piece."""
+    """The pairs (seg, piece) (K,) whose segment's envelope is open and from which the piece may
+    remove more than LENGTH_EPS."""
     open_ = envelope[0, seg] < envelope[1, seg]
     seg, piece = seg[open_], piece[open_]
     a, b = _ends(seg, envelope, origins, directions)
+    # A piece reaching less than LENGTH_EPS·|u·w| into the segment's axial range removes less
+    # than LENGTH_EPS of it along the line: _solved would keep nothing of it.
+    grain = LENGTH_EPS * np.abs(np.einsum("ij,ij->i", directions[seg], pieces.axis[piece]))
     near = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
-                   pieces.height[piece], 0.0)
+                   pieces.height[piece], 0.0, grain=grain)
     return seg[near], piece[near]
 
 
@@ -541,14 +650,25 @@ def _reaching(owner, origin, direction, c0, c1, axis, radius, height, take):
 
 
 def _extent(origin, direction, c0, c1, axis, radius, height):
-    """(lower, upper) (K,): every point of each hull (c0, c1, axis, radius, height) lies at
-    lower ≤ l ≤ upper along the line origin + l·direction, the tightest such bounds (mm)."""
-    base = np.einsum("ij,ij->i", c0 - origin, direction)
-    du = np.einsum("ij,ij->i", c1 - c0, direction)
+    """(lower, upper) (K,) mm: every point of each hull (c0, c1, axis, radius, height) on the
+    line origin + l·direction has lower ≤ l ≤ upper. Two bounds, the tighter taken: the hull's
+    extent along the direction, and where the line crosses the planes bounding the hull's
+    axial range (the point at l has axial height a0 + l·ua − s·da for some s ∈ [0, 1], which
+    must lie within 0 … H)."""
+    q, d = origin - c0, c1 - c0
+    base = -np.einsum("ij,ij->i", q, direction)
+    du = np.einsum("ij,ij->i", d, direction)
     wu = np.einsum("ij,ij->i", axis, direction)
     across = radius * np.sqrt(np.maximum(1.0 - wu * wu, 0.0))
     lower = base + np.minimum(du, 0.0) + np.minimum(height * wu, 0.0) - across
     upper = base + np.maximum(du, 0.0) + np.maximum(height * wu, 0.0) + across
+    a0, da = np.einsum("ij,ij->i", q, axis), np.einsum("ij,ij->i", d, axis)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        first = (np.minimum(da, 0.0) - a0) / wu
+        second = (height + np.maximum(da, 0.0) - a0) / wu
+    crossing = np.abs(wu) > 0.0
+    lower = np.where(crossing, np.maximum(lower, np.minimum(first, second)), lower)
+    upper = np.where(crossing, np.minimum(upper, np.maximum(first, second)), upper)
     return lower, upper
 
 
