@@ -37,7 +37,7 @@ _PAIR_BATCH = 1 << 16
 _GROUPS = 12
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
-#: Spans per group of edge lines solved first (those whose axes pass nearest the group).
+#: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
 _PROBE = 2
 #: Rounds of that first solving, at most; they stop when a round leaves more than this
 #: share of the envelopes' length.
@@ -124,23 +124,23 @@ class ProgramMoves:
 
 @dataclass(frozen=True)
 class SweptPieces:
-    """The cutting moves of a program as P constant-axis pieces grouped in S spans, with a KD
-    tree over the spans.
+    """The cutting moves of a program as P constant-axis pieces grouped in S spans and C chains,
+    with a KD tree over the chains.
 
     Pieces: c0, c1 (P, 3) bottom centres at the piece's ends; axis (P, 3) unit; radius, height
     (P,) (mm); move (P,) the program row j ending the move the piece belongs to.
     Spans (consecutive pieces of one move): first, count (S,) their pieces; move (S,) as above;
     c0, c1 (S, 3), axis (S, 3), height (S,): the span as one constant-axis hull, and slack (S,)
     (mm): every piece of the span lies within slack of that hull with its radius, the axes of
-    its pieces within turn/2 (S,) (rad) of the span's axis; centre (S, 3)
-    and bound (S,): a bounding sphere of it all.
+    its pieces within turn/2 (S,) (rad) of the span's axis.
     Chains (runs of consecutive spans of one tool, no longer than its radius): chain_first,
     chain_count (C,) their spans; chain_move (C,) the first move; chain_c0, chain_c1,
     chain_axis (C, 3), chain_radius, chain_height (C,): one constant-axis hull from the first
     span's start to the last one's end; chain_slack (C,): the pieces' bottom centres lie
-    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|). Balls: each chain's height cut in slices about as tall as its radius,
-    each in a bounding sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,));
-    tree: cKDTree over the balls' centres.
+    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|).
+    Balls: each chain's height cut in slices about as tall as its radius, each in a bounding
+    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: cKDTree
+    over the balls' centres.
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
     """
@@ -161,8 +161,6 @@ class SweptPieces:
     span_radius: np.ndarray
     span_slack: np.ndarray
     span_turn: np.ndarray
-    span_centre: np.ndarray
-    span_bound: np.ndarray
     chain_first: np.ndarray
     chain_count: np.ndarray
     chain_move: np.ndarray
@@ -235,10 +233,6 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     # Within a span the axis turns by Θ/spans: every point of the tool stays within
     # ρ·Θ/(2·spans) of the same point turned to the span's middle axis.
     slack = 0.5 * rho[span_of] * turn[span_of] / spans[span_of]
-    # A point c0 + s·d + a·w + b of the hull lies within |d|/2 + √(r² + (a − a_mid)²) of the
-    # point (c0 + c1)/2 + a_mid·w, and within slack of that once the axis turns.
-    centre = 0.5 * (s0 + s1) + 0.5 * s_height[:, None] * s_axis
-    bound = 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack + np.hypot(s_radius, 0.5 * s_height)
     # Pieces: per_span equal turning steps of each span's move, in order.
     count = per_span[span_of]
     owner, rank = _csr(count)
@@ -249,7 +243,7 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner)
     tree = cKDTree(chains[-2] if chains[-2].size else np.zeros((0, 3)))
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
-                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, *chains, tree,
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, tree,
                        tolerance)
 
 
@@ -290,6 +284,8 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     ball_chain, ball_index = _csr(slices)
     tall = (h / slices)[ball_chain]
     ball_centre = (0.5 * (ch0 + ch1))[ball_chain] + ((ball_index + 0.5) * tall)[:, None] * chain_axis[ball_chain]
+    # A point c0 + s·d + a·w + b of the hull lies within |d|/2 + √(r² + (a − a_mid)²) of the
+    # point (c0 + c1)/2 + a_mid·w; the pieces lie within slack + lean·√(r² + H²) of the hull.
     grown = 0.5 * np.linalg.norm(ch1 - ch0, axis=1) + slack + lean * np.hypot(r, h)
     ball_bound = grown[ball_chain] + np.hypot(r[ball_chain], 0.5 * tall)
     return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, ball_chain, ball_centre,
