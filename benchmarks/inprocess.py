@@ -117,7 +117,7 @@ def main():
     rows.append((f"{name}, initial (engage)", n, initial, ""))
     rows.append((f"{name}, in-process", n, inproc, f"{changed} CL changed"))
 
-    print(f"| case | instants | seconds | instants/s | note |\n|---|---|---|---|---|")
+    print("| case | instants | seconds | instants/s | note |\n|---|---|---|---|---|")
     for name, count, seconds, note in rows:
         print(f"| {name} | {count} | {seconds:.3f} | {count / seconds:.3g} | {note} |")
     single = rows[1][2] / rows[0][2]

@@ -431,11 +431,8 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     keep = pieces.chain_move[k] <= group_before[g]
     g, k = _near_groups(g[keep], k[keep], centre, radius, pieces)
     lines = (members, starts, sizes, envelope, line_origins, line_directions, before, pieces)
-    # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
-    # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
-    # meet far fewer chains.
     if (sizes[g] * pieces.chain_count[k]).sum() <= _PROBE_PAIRS * line.size:
-        # Few: straight to (group, span) pairs, with no test of the chains per line.
+        # Few (line, span) pairs: straight to (group, span) pairs, no test of chains per line.
         owner, rank = _csr(pieces.chain_count[k])
         g, span = g[owner], pieces.chain_first[k][owner] + rank
         keep = pieces.span_move[span] <= group_before[g]
@@ -446,6 +443,9 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         g = k = np.zeros(0, dtype=np.intp)
     else:
         found = []
+    # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
+    # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
+    # meet far fewer chains.
     for _ in range(_PROBE_ROUNDS if g.size else 0):
         remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
         found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),

@@ -52,8 +52,8 @@ def in_process_sweep(prepared, method="abm"):
     points) for a run against the in-process stock, or None for the stock as given; why not, or '').
 
     The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM,
-    with or without the straight-flute forces), else the stock as given, the reason said. ParameterError when in-process is asked
-    for where it is not available, or the stock model is unknown.
+    with or without the straight-flute forces), else the stock as given, the reason said.
+    ParameterError when in-process is asked for where it is not available, or the stock model is unknown.
     """
     from ..engine.inprocess import swept_pieces
     from .inputs import program_moves
