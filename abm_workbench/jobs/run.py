@@ -24,7 +24,7 @@ from ..errors import InputError, ParameterError
 from ..formats import check_output_path, replacing
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
 from ..forces import joined_forces, pass_forces
-from ..parallel import PassAssembly, map_chunks, toolpath_part, worker_count
+from ..parallel import CHUNK_INSTANTS, PassAssembly, map_chunks, toolpath_part, worker_count
 from .job import Job, cl_indices, load_job_stock, prepare
 
 
@@ -103,6 +103,23 @@ def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=
             return in_process_lengths(staircase, tool, toolpath, shifted.phi, *in_process)
     return pass_forces(staircase, tool, toolpath, settings, coefficients, immersion=immersion, feed=feed,
                        first=engagement.length if tool.helix == 0.0 else None, lengths_at=lengths_at)
+
+
+def _in_process_forces(staircase, tool, toolpath, settings, model, in_process, feed):
+    """(whether any edge line is engaged, the Forces of the pass) against the in-process stock,
+    chunk by chunk (parallel.CHUNK_INSTANTS instants each) so that memory stays bounded;
+    in_process and feed (m,) as for pass_forces_of."""
+    pieces, rows = in_process
+    step = max(1, CHUNK_INSTANTS // settings.phi.size)
+    engaged, parts = False, []
+    for start in range(0, len(toolpath), step):
+        stop = min(len(toolpath), start + step)
+        part = toolpath_part(toolpath, start, stop)
+        engagement = engage_in_process(staircase, tool, part, settings, pieces, rows[start:stop])[0]
+        engaged |= bool(engagement.engaged.any())
+        parts.append(pass_forces_of(staircase, tool, part, settings, model, engagement, feed=feed[start:stop],
+                                    in_process=(pieces, rows[start:stop])))
+    return engaged, joined_forces(parts)
 
 
 def in_part_frame(engagement, frame):
@@ -537,12 +554,14 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
         warn(f"{model_note}: the feeds are scheduled against the stock as given")
     if in_process is None:
         engagement = flute_1(stock.model, tool, toolpath, settings)
+        engaged = engagement.engaged.any()
+        forces = pass_forces_of(stock.model, tool, toolpath, settings, prepared.force_model, engagement,
+                                feed=programmed) if engaged else None
     else:
-        engagement = engage_in_process(stock.model, tool, toolpath, settings, *in_process)[0]
-    if not engagement.engaged.any():
+        engaged, forces = _in_process_forces(stock.model, tool, toolpath, settings, prepared.force_model, in_process,
+                                             programmed)
+    if not engaged:
         raise no_engagement(job)
-    forces = pass_forces_of(stock.model, tool, toolpath, settings, prepared.force_model, engagement,
-                            feed=programmed, in_process=in_process)
     plan = feed_schedule(forces, limit, kind=kind, min_feed=min_feed)
     unit = "N" if kind == "force" else "mm²"
     if plan.infeasible.any():

@@ -12,6 +12,7 @@ from abm_workbench.engine import CutSettings, Tool, Toolpath
 from abm_workbench.engine.inprocess import swept_pieces
 from abm_workbench.engine.stocks import engage_in_process
 from abm_workbench.forces import Coefficients, edge_forces, pass_forces
+from abm_workbench.jobs import run
 from abm_workbench.jobs.run import pass_forces_of
 
 from .test_inprocess import AGREE, Program, edge_lines, reference, staircase, straight
@@ -20,7 +21,7 @@ COEFFICIENTS = Coefficients(ktc=2000.0, krc=800.0, kac=300.0, kte=20.0, kre=15.0
 IMMERSION = (0.0, 180.0)
 
 
-def test_forces_against_the_in_process_stock():
+def test_forces_against_the_in_process_stock(monkeypatch):
     """Three flutes on the second of two overlapping passes: flute 1 at φ = 0 … 340°, the others
     at φ + 120° and φ + 240°, so that every flute cuts over part of the revolution."""
     program = Program()
@@ -57,3 +58,9 @@ def test_forces_against_the_in_process_stock():
     assert (np.abs(initial.tool_frame - want.tool_frame).max(axis=(1, 2)) > 10 * bound).all()
     # And the flutes other than the first do cut material the first pass left.
     assert (np.abs(flutes[1:] - flutes[0]).max() > 1.0) and want.resultant.max() > 0.0
+    # schedule's path, chunk by chunk (one CL point each here), gives the same forces.
+    monkeypatch.setattr(run, "CHUNK_INSTANTS", phi.size)
+    engaged, chunked = run._in_process_forces(stock, tool, toolpath, settings, (COEFFICIENTS, IMMERSION), in_process,
+                                              np.full(rows.size, settings.feed_per_tooth))
+    assert engaged
+    np.testing.assert_array_equal(chunked.tool_frame, got.tool_frame)
