@@ -18,7 +18,8 @@ What the APT file could not read, or had to assume, is printed once as ``abm: wa
 
 engage --workers N runs the pass in chunks of CL points on N local processes (0: all cores),
 --scheduler tcp://host:port on a Dask cluster; the results are the same bytes (docs/SCALING.md).
-The results CSV is written chunk by chunk, so memory stays bounded however long the pass.
+The results (CSV, or an .npz of columns) are written chunk by chunk, so memory stays bounded
+however long the pass.
 
 This module only parses arguments and prints: the options of the cutting parameters come from
 their declarations (``jobs.parameters``), the runs from ``jobs.run``, shared with the GUI.
@@ -123,13 +124,15 @@ def _build_parser():
     engage_parser = commands.add_parser(
         "engage", help="cut geometry of one pass", description=(
             "Length of cut, engagement points, cut area and depth of cut of a flat-end mill along one pass "
-            "over staircase stock. Lengths in mm, angles in degrees. Writes OUT (one row per CL point and "
-            "rotation angle), OUT with .summary.csv (one row per CL point and engagement segment) and, "
-            "with --plot, a PNG."),
+            "over staircase stock. Lengths in mm, angles in degrees. Writes OUT: a CSV (one row per CL point and "
+            "rotation angle) and its summary with .summary.csv (one row per CL point and engagement segment), "
+            "or, for a name ending in .npz, both as columns of one NumPy archive; with --plot, a PNG."),
     )
     _input_arguments(engage_parser)
     outputs = engage_parser.add_argument_group("outputs")
-    outputs.add_argument("--out", required=True, metavar="R.csv", help="results CSV; the summary goes to R.summary.csv")
+    outputs.add_argument("--out", required=True, metavar="R.csv|R.npz",
+                         help="results CSV, the summary going to R.summary.csv; or, ending in .npz, a NumPy archive "
+                              "of one array per column, the summary's as summary/<column> (docs/USAGE.md)")
     outputs.add_argument("--plot", metavar="R.png", help="also write a PNG of the pass (with --forces, and "
                          "R.forces.png: force along the pass and over φ at chosen CL points)")
     method = engage_parser.add_argument_group("method")

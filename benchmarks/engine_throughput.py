@@ -1,9 +1,14 @@
-"""Engine throughput: instants per second for model test 1 and for a toolpath of ≥ 10^6 instants.
+"""Engine throughput: instants per second for model test 1 and for a toolpath of ≥ 10^6 instants,
+and exact against quintic walls on both model tests' STEP solids.
 
 Run with FreeCAD's Python from the repository root: `/usr/bin/python3 benchmarks/engine_throughput.py`
 (or `make benchmark`). Times are engine time only (files are loaded before the clock starts),
 the best and the median of several runs on one core (numpy is single-threaded for these
 operations). Peak memory is what tracemalloc sees numpy allocate during one run.
+The walls table reads each stock.step twice, as the command line does: `--walls exact` (the
+solid's own B-spline walls, over the whole strip) and `--walls quintic` (the paper's quintics,
+fitted over the y range the pass sweeps); the two are timed in alternation, so that a change in
+the machine's load falls on both, and their ratio is printed from the same run.
 """
 
 import argparse
@@ -43,6 +48,53 @@ def densified(toolpath, count):
     return Toolpath(cl, np.interp(new, old, toolpath.theta_a), np.interp(new, old, toolpath.theta_b))
 
 
+def step_stocks(folder, toolpath, tool):
+    """(exact, quintic) Staircases of a model test's stock.step, recognised as the command line does."""
+    from abm_workbench.jobs.inputs import load_stock, swept_y_window  # FreeCAD only here
+
+    step = os.path.join(folder, "stock.step")
+    exact = load_stock(step, walls="exact").staircase
+    quintic = load_stock(step, walls="quintic", y_window=lambda z_max: swept_y_window(toolpath, tool, z_max)).staircase
+    return exact, quintic
+
+
+def alternating(stocks, tool, path, settings, repeats):
+    """Best wall-clock and best CPU seconds (per stock) of engage() on each of `stocks`, run in
+    turn `repeats` times. CPU time is this process's own: on a machine with more runnable
+    processes than cores it is the time of one core, where wall-clock time also counts waiting."""
+    for stock in stocks:
+        engage(stock, tool, path, settings)
+    wall, cpu = [[] for _ in stocks], [[] for _ in stocks]
+    for _ in range(repeats):
+        for k, stock in enumerate(stocks):
+            start, start_cpu = time.perf_counter(), time.process_time()
+            engage(stock, tool, path, settings)
+            wall[k].append(time.perf_counter() - start)
+            cpu[k].append(time.process_time() - start_cpu)
+    return [(float(np.min(w)), float(np.min(c))) for w, c in zip(wall, cpu)]
+
+
+def walls_table(repeats, large):
+    """Exact against quintic walls on both model tests' STEP solids: the 53-point pass and ≥ `large` instants."""
+    print(f"\nload average before: {' '.join(f'{v:.2f}' for v in os.getloadavg())}")
+    print(f"{'case':<34} {'instants':>9} {'clock':>5} {'exact ms':>9} {'quintic ms':>10} {'exact /s':>10} "
+          f"{'quintic /s':>10} {'exact/quintic':>13}")
+    for number in (1, 2):
+        folder = MODEL.replace("model_test_1", f"model_test_{number}")
+        _, tool, path, settings = load_model(folder)
+        stocks = step_stocks(folder, path, tool)
+        p = settings.phi.size
+        big = densified(path, -(-large // p))
+        for name, toolpath, runs in ((f"model test {number}, 53 CL x {p} phi", path, repeats),
+                                     (f"model test {number}, {len(big)} CL x {p} phi", big, 3)):
+            (exact_wall, exact_cpu), (quintic_wall, quintic_cpu) = alternating(stocks, tool, toolpath, settings, runs)
+            n = len(toolpath) * p
+            for clock, exact, quintic in (("wall", exact_wall, quintic_wall), ("cpu", exact_cpu, quintic_cpu)):
+                print(f"{name:<34} {n:>9} {clock:>5} {exact * 1e3:>9.1f} {quintic * 1e3:>10.1f} {n / exact:>10.3g} "
+                      f"{n / quintic:>10.3g} {exact / quintic:>13.2f}")
+    print(f"load average after: {' '.join(f'{v:.2f}' for v in os.getloadavg())}")
+
+
 def measure(stock, tool, path, settings, repeats, chunk):
     """(best seconds, median seconds, peak MiB) of engage() over `repeats` runs."""
     engage(stock, tool, path, settings, chunk_instants=chunk)
@@ -62,7 +114,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=50, help="runs of each 53-point pass")
     parser.add_argument("--large", type=int, default=1_000_000, help="instants in the large toolpath")
+    parser.add_argument("--walls-only", action="store_true", help="only the exact against quintic walls table")
     args = parser.parse_args()
+    if args.walls_only:
+        walls_table(args.repeats, args.large)
+        return
     print(f"{'case':<46} {'instants':>9} {'best ms':>9} {'median ms':>10} {'instants/s':>11} {'peak MiB':>9}")
     for number in (1, 2):
         stock, tool, path, settings = load_model(MODEL.replace("model_test_1", f"model_test_{number}"))
@@ -76,6 +132,7 @@ def main():
             n = len(toolpath) * p
             print(f"{name:<46} {n:>9} {best * 1e3:>9.1f} {median * 1e3:>10.1f} {n / best:>11.3g} {peak:>9.1f}")
     print("paper (MATLAB, i7 2.7 GHz): ABM 713.87 s for one 53-point pass")
+    walls_table(args.repeats, args.large)
 
 
 if __name__ == "__main__":

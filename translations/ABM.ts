@@ -123,6 +123,14 @@
         <source>Missing:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Computing the engagement…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ABM_ComputeEngagement</name>

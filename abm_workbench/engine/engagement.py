@@ -338,6 +338,8 @@ def _wall_crossings(stock, rows, walls, steepness, lo, hi, x0, y0, dx, dy):
     Returns l (P, 5) NaN-padded, monotone (P,), and whether the line is at or beyond the wall
     (x ≥ W(y), i.e. g ≤ 0) at lo and at hi, each (P,).
     """
+    if rows.size == 0:
+        return np.empty((0, 5)), np.zeros(0, dtype=bool), np.zeros(0, dtype=bool), np.zeros(0, dtype=bool)
     coefficients, y_mid, y_half = _quintic_table(stock, walls)
     lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
     span = hi - lo
@@ -449,15 +451,15 @@ def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
     """Crossings of line rows[i] with exact (B-spline) wall walls[i] inside [lo, hi] (P pairs),
     as _wall_crossings gives them: l (P, 1), the first one or NaN, whether at most one was
     found (P,), and whether the line is at or beyond the wall at lo and at hi, each (P,)."""
-    lo, hi, x0, y0, dx, dy = lo[rows], hi[rows], x0[rows], y0[rows], dx[rows], dy[rows]
-    roots = stock.splines.crossings(walls, x0, y0, dx, dy, lo, hi)
+    roots, at_lo, at_hi = stock.splines.crossings(walls, x0[rows], y0[rows], dx[rows], dy[rows], lo[rows], hi[rows],
+                                                  sides=True)
+    if roots.shape[1] <= 1:  # at most one crossing per pair
+        found = roots if roots.shape[1] else np.full((rows.size, 1), np.nan)
+        return found, np.ones(rows.size, dtype=bool), at_lo, at_hi
     count = row_count(~np.isnan(roots))
     found = np.full((rows.size, 1), np.nan)
-    if roots.shape[1]:
-        found[count >= 1, 0] = np.nanmin(roots[count >= 1], axis=1)
-    ends = np.stack([lo, hi], axis=1)
-    at = x0[:, None] + dx[:, None] * ends >= stock.splines.x_at(walls[:, None], y0[:, None] + dy[:, None] * ends)
-    return found, count <= 1, at[:, 0], at[:, 1]
+    found[count >= 1, 0] = np.nanmin(roots[count >= 1], axis=1)
+    return found, count <= 1, at_lo, at_hi
 
 
 def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, *_, starts=None):

@@ -19,7 +19,6 @@ moves near a point, not with the program's length (docs/ENGINE.md). Lengths in m
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial import cKDTree
 
 from .engagement import SURFACES
 from .intervals import EdgeIntervals
@@ -174,7 +173,7 @@ class SweptPieces:
     ball_chain: np.ndarray
     ball_centre: np.ndarray
     ball_bound: np.ndarray
-    tree: cKDTree
+    tree: object  # scipy.spatial.cKDTree
     tolerance: float
 
 
@@ -241,6 +240,8 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
                           spans[move] * count[owner])
     first = np.cumsum(count) - count
     chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner)
+    from scipy.spatial import cKDTree  # here: scipy.spatial takes a while to import
+
     tree = cKDTree(chains[-2] if chains[-2].size else np.zeros((0, 3)))
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
                        s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, tree,
@@ -421,6 +422,8 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
     # (group, chain) pairs: a group's sphere meets a ball of the chain, the chain's first move
     # ends before the CL point, and the sphere is not surely apart from the chain.
+    from scipy.spatial import cKDTree
+
     near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
                                                   output_type="ndarray")
     g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)

@@ -217,9 +217,24 @@ def proved_monotone_unit(coefficients):
     if d < 1:
         return np.zeros(c.shape[0], dtype=bool)
     slope = derivative(c)
-    bernstein = slope @ _power_to_bernstein(d - 1).T
+    bernstein = bernstein_unit(slope)
     margin = 1e-12 * row_sum(np.abs(slope))
     return (row_min(bernstein) > margin) | (row_max(bernstein) < -margin)
+
+
+def bernstein_unit(coefficients):
+    """Bernstein coefficients on [0, 1] (m, d+1) of polynomials given in the power basis (m, d+1),
+    ascending; each polynomial lies between the least and the greatest of its own over [0, 1]."""
+    c = np.asarray(coefficients, dtype=float)
+    return c @ _power_to_bernstein(c.shape[1] - 1).T
+
+
+def product(p, q):
+    """Row-wise products (m, a+b−1) of polynomials (m, a) and (m, b), ascending."""
+    out = np.zeros((p.shape[0], p.shape[1] + q.shape[1] - 1))
+    for i in range(p.shape[1]):
+        out[:, i:i + q.shape[1]] += p[:, i:i + 1] * q
+    return out
 
 
 def _power_to_bernstein(degree):

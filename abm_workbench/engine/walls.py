@@ -10,14 +10,16 @@ from dataclasses import dataclass, field
 from typing import Optional
 
 import numpy as np
-from scipy.interpolate import BSpline, PPoly
 
-from .polynomials import (bracketed_root, compose_linear, horner, monotone_root_unit, proved_monotone_unit,
-                          real_roots_unit)
+from .bands import _sparse_table
+from .polynomials import (bernstein_unit, bracketed_root, compose_linear, derivative, horner, monotone_root_unit,
+                          product, proved_monotone_unit, real_roots_unit)
 from .rows import row_sum
 
 #: Six x values within this (mm) of each other make a straight wall.
 STRAIGHT_EPS = 1e-12
+#: Relative width by which a span's bounds on dx/dy are widened against rounding.
+SLOPE_MARGIN = 1e-9
 
 
 def _real_roots_between(ascending, lo, hi):
@@ -127,7 +129,9 @@ class SplineWall:
     Each knot span is kept as power-basis polynomials in a local u ∈ [0, 1]:
     spans_x, spans_y, spans_w: (S, p+1) ascending, so that x = X(u)/W(u), y = Y(u)/W(u).
     span_y: (S+1,) y at the span ends, increasing; span_boxes: (S, 4) x_min, x_max, y_min,
-    y_max of each span's control polygon (the span lies inside it).
+    y_max of each span's control polygon (the span lies inside it); span_slopes: (S, 2) least
+    and greatest dx/dy over each span (−inf, inf where dy/du is not proved positive); straight:
+    every pole has the same x; table: the SplineTable of this wall alone (for x_at).
     """
 
     degree: int
@@ -139,6 +143,9 @@ class SplineWall:
     spans_w: np.ndarray = field(init=False, repr=False)
     span_y: np.ndarray = field(init=False, repr=False)
     span_boxes: np.ndarray = field(init=False, repr=False)
+    span_slopes: np.ndarray = field(init=False, repr=False)
+    straight: bool = field(init=False, repr=False)
+    table: "SplineTable" = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         poles = np.array(self.poles, dtype=float)
@@ -159,16 +166,20 @@ class SplineWall:
             boxes, ends_y = boxes[::-1], ends_y[::-1]
         if not (np.diff(ends_y) > 0).all():
             raise ValueError("B-spline wall: y must be strictly monotone along the curve")
+        slopes = _slope_bounds(sx, sy, sw)
+        object.__setattr__(self, "straight", bool(np.ptp(poles[:, 0]) <= STRAIGHT_EPS))
         for name, value in (("degree", p), ("knots", knots), ("poles", poles), ("weights", weights),
-                            ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y), ("span_boxes", boxes)):
+                            ("spans_x", sx), ("spans_y", sy), ("spans_w", sw), ("span_y", ends_y),
+                            ("span_boxes", boxes), ("span_slopes", slopes)):
             if isinstance(value, np.ndarray):
                 value.setflags(write=False)
             object.__setattr__(self, name, value)
+        object.__setattr__(self, "table", SplineTable((self,)))
 
     @property
     def is_straight(self):
         """True when every pole has the same x: the wall is the plane x = const."""
-        return bool(np.ptp(self.poles[:, 0]) <= STRAIGHT_EPS)
+        return self.straight
 
     def translated(self, dx, dy):
         """The same wall moved by (dx, dy) mm."""
@@ -177,7 +188,7 @@ class SplineWall:
     def x_at(self, y):
         """x = W(y) for y of any shape (mm); beyond the curve's ends, the end's x."""
         y = np.asarray(y, dtype=float)
-        return SplineTable((self,)).x_at(np.zeros(y.shape, dtype=np.intp), y)
+        return self.table.x_at(np.zeros(y.shape, dtype=np.intp), y)
 
     def x_range(self, y_lo, y_hi):
         """(min, max) bound of x over y in [y_lo, y_hi], from the control polygons (conservative)."""
@@ -188,19 +199,29 @@ class SplineWall:
         return float(low), float(high)
 
     def bins(self, edges):
-        """Per bin [edges[b], edges[b+1]] of y (B+1,): bounds of x (B,), (B,) and slope bound (inf).
+        """Per bin [edges[b], edges[b+1]] of y (B+1,): min x, max x and a bound on |dx/dy|, each (B,).
 
-        The bounds are those of x_range, for all bins at once.
+        The x range is exact: x at the bin's ends and at the curve's turning points in x inside
+        it (roots of dx/du per span). The slope bound is the largest |dx/dy| bound (span_slopes)
+        of the spans meeting the bin (inf where one is unbounded).
         """
         edges = np.asarray(edges, dtype=float)
         at_edges = self.x_at(edges)
         low = np.minimum(at_edges[:-1], at_edges[1:])
         high = np.maximum(at_edges[:-1], at_edges[1:])
-        boxes = self.span_boxes
-        meets = (boxes[:, 3, None] >= edges[None, :-1]) & (boxes[:, 2, None] <= edges[None, 1:])  # (S, B)
-        low = np.minimum(low, np.where(meets, boxes[:, 0, None], np.inf).min(axis=0))
-        high = np.maximum(high, np.where(meets, boxes[:, 1, None], -np.inf).max(axis=0))
-        return low, high, np.full(low.size, np.inf)
+        turning = product(derivative(self.spans_x), self.spans_w) - product(self.spans_x, derivative(self.spans_w))
+        roots = real_roots_unit(turning)
+        span, k = np.nonzero(~np.isnan(roots))
+        u = roots[span, k]
+        w = horner(self.spans_w[span], u)
+        x, y = horner(self.spans_x[span], u) / w, horner(self.spans_y[span], u) / w
+        where = np.searchsorted(edges, y, side="right") - 1
+        inside = (where >= 0) & (where < low.size)
+        np.minimum.at(low, where[inside], x[inside])
+        np.maximum.at(high, where[inside], x[inside])
+        steep = np.abs(self.span_slopes).max(axis=1)
+        meets = (self.span_y[1:, None] >= edges[None, :-1]) & (self.span_y[:-1, None] <= edges[None, 1:])  # (S, B)
+        return low, high, np.where(meets, steep[:, None], 0.0).max(axis=0)
 
 
 class SplineTable:
@@ -239,6 +260,22 @@ class SplineTable:
         self.base = min((e[0] for e in ends), default=0.0)
         self.shift = max((e[-1] for e in ends), default=0.0) - self.base + 1.0
         self.keys = np.concatenate([e - self.base + k * self.shift for k, e in enumerate(ends)]) if ends else np.empty(0)
+        self.knot_y = np.concatenate(ends) if ends else np.empty(0)
+        # The curve's homogeneous point (X, Y, Ω) at every span end, in the order of keys: (3, E);
+        # the spans' coefficients as columns: (3, p+1, S); Ω ≡ 1 unless some wall is rational.
+        self.knot_points = np.array([np.concatenate([np.append(getattr(w, name)[:, 0], getattr(w, name)[-1].sum())
+                                                     for w in splines]) if splines else np.empty(0)
+                                     for name in ("spans_x", "spans_y", "spans_w")])
+        self.span_columns = np.ascontiguousarray(np.stack([self.spans_x.T, self.spans_y.T, self.spans_w.T]))
+        self.rational = bool((self.spans_w[:, 1:] != 0.0).any() or (self.spans_w[:, 0] != 1.0).any())
+        # Sparse tables of the spans' slope bounds: entry [k, s] covers spans s .. s + 2^k − 1.
+        slopes = stacked("span_slopes", 2)
+        self.slope_low = _sparse_table(slopes[None, :, 0], np.minimum)[:, 0]
+        self.slope_high = _sparse_table(slopes[None, :, 1], np.maximum)[:, 0]
+        # Least and greatest dx/dy of each wall over all its spans, (2, walls).
+        self.wall_slopes = np.array([[-np.inf, np.inf]] * len(walls)).reshape(-1, 2).T.copy()
+        self.wall_slopes[:, index] = [[w.span_slopes[:, 0].min() for w in splines],
+                                      [w.span_slopes[:, 1].max() for w in splines]]
 
     def _local_span(self, walls, y, side):
         """Index within wall walls[i] of the span whose start is the last one below (side
@@ -268,22 +305,167 @@ class SplineTable:
         span, u = self.span_parameter(walls, y)
         return horner(self.spans_x[span], u) / horner(self.spans_w[span], u)
 
-    def crossings(self, walls, x0, y0, dx, dy, lo, hi):
+    def crossings(self, walls, x0, y0, dx, dy, lo, hi, sides=False):
         """Edge parameters l (k, r) in [lo, hi] where line i, (x0 + l·dx, y0 + l·dy), meets wall
-        walls[i]; all (k,). NaN-padded; a line with dx = dy = 0 never crosses.
+        walls[i]; all (k,). NaN-padded; a line with dx = dy = 0 never crosses. With `sides`,
+        also whether each line is at or beyond its wall (x ≥ W(y)) at lo and at hi, (k,) bool each.
 
-        Per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u; its real
-        roots in [0, 1] give the points, and l their projection on the line. Only spans whose y
-        range meets the segment's (a run, as y is monotone along the curve) and whose control
-        box meets the segment's x range over that y range are solved; one bracketed root where
-        the polynomial is proved monotone.
+        Only the spans whose y range meets the segment's are looked at (a run, as y is monotone
+        along the curve). Where the line's direction lies outside every tangent direction of
+        those spans (span_slopes: the wall's bound first, then the run's), the line crosses them
+        at most once: the span is found from the knots' sides of the line (regula falsi, then
+        bisection) and its one root by bracketed Newton (_monotone_crossings), and the sides follow
+        from the crossing. The other pairs go through _spans_crossings and x_at.
         """
+        walls = np.asarray(walls, dtype=np.intp)
+        k = walls.size
+        y_a, y_b = y0 + dy * lo, y0 + dy * hi
+        y_lo, y_hi = np.minimum(y_a, y_b), np.maximum(y_a, y_b)
+        y_first, y_last, first_end = self.y_first[walls], self.y_last[walls], self.first_end[walls]
+        key = self.slot[walls] * self.shift - self.base  # + y: the key of y on wall walls[i]
+        first = np.searchsorted(self.keys, np.minimum(np.maximum(y_lo, y_first), y_last) + key, side="left") - 1
+        last = np.searchsorted(self.keys, np.minimum(np.maximum(y_hi, y_first), y_last) + key, side="right") - 1
+        first = np.maximum(first - first_end, 0)
+        last = np.minimum(last - first_end, self.n_spans[walls] - 1)
+        meets = (y_hi >= y_first) & (y_lo <= y_last)
+        within = (y_lo >= y_first) & (y_hi <= y_last) & (last >= first)
+        # The wall's slope bound over all its spans proves most pairs; the others try their own run's.
+        with np.errstate(invalid="ignore"):
+            ahead, behind = dx - self.wall_slopes[1, walls] * dy, dx - self.wall_slopes[0, walls] * dy
+            proved = within & (ahead * behind > 0.0)
+            again = np.flatnonzero(within & ~proved)
+            if again.size:
+                span_first = self.first_span[walls[again]]
+                low, high = self._slopes(span_first + first[again], span_first + last[again])
+                ahead[again], behind[again] = dx[again] - high * dy[again], dx[again] - low * dy[again]
+                proved[again] = ahead[again] * behind[again] > 0.0
+        roots = np.full((k, 1), np.nan)
+        at_lo, at_hi = np.zeros(k, dtype=bool), np.zeros(k, dtype=bool)
+        slow = np.flatnonzero(~proved)
+        if slow.size == 0:
+            roots[:, 0], at_lo, at_hi = self._monotone_crossings(
+                walls, x0, y0, dx, dy, lo, hi, first_end + first, first_end + last + 1, key, ahead > 0.0)
+        elif slow.size < k:
+            f = np.flatnonzero(proved)
+            roots[f, 0], at_lo[f], at_hi[f] = self._monotone_crossings(
+                walls[f], x0[f], y0[f], dx[f], dy[f], lo[f], hi[f], first_end[f] + first[f],
+                first_end[f] + last[f] + 1, key[f], ahead[f] > 0.0)
+        if slow.size:
+            s = slow
+            found = self._spans_crossings(walls[s], x0[s], y0[s], dx[s], dy[s], lo[s], hi[s], first[s], last[s],
+                                          meets[s])
+            if found.shape[1] > roots.shape[1]:
+                roots = np.pad(roots, ((0, 0), (0, found.shape[1] - roots.shape[1])), constant_values=np.nan)
+            roots[s, : found.shape[1]] = found
+            if sides:
+                ends = np.stack([lo[s], hi[s]], axis=1)
+                at = x0[s, None] + dx[s, None] * ends >= self.x_at(walls[s, None], y0[s, None] + dy[s, None] * ends)
+                at_lo[s], at_hi[s] = at[:, 0], at[:, 1]
+        roots = roots[:, ~np.isnan(roots).all(axis=0)]
+        return (roots, at_lo, at_hi) if sides else roots
+
+    def _slopes(self, start, stop):
+        """Least and greatest dx/dy (P,) over the stacked spans start[i] .. stop[i] (inclusive)."""
+        level = np.frexp(stop - start + 1)[1] - 1  # ⌊log2 of the span count⌋
+        other = stop - (1 << level) + 1
+        low, high = self.slope_low.reshape(-1), self.slope_high.reshape(-1)
+        row = level * self.slope_low.shape[1]
+        return (np.minimum(low.take(row + start), low.take(row + other)),
+                np.maximum(high.take(row + start), high.take(row + other)))
+
+    def _knot_side(self, knot, x0, y0, dx, dy):
+        """(X − x0·Ω)·dy − (Y − y0·Ω)·dx at stacked knots `knot` (P,): Ω times the cross product of
+        the line's direction with the vector from (x0, y0) to the knot's point."""
+        x, y, w = self.knot_points.take(knot, axis=1)
+        if self.rational:
+            return (x - x0 * w) * dy - (y - y0 * w) * dx
+        return (x - x0) * dy - (y - y0) * dx
+
+    def _monotone_crossings(self, walls, x0, y0, dx, dy, lo, hi, knot_lo, knot_hi, key, rising):
+        """The crossing (P,) (NaN: none in [lo, hi]) and the sides at lo and hi (P,) bool of lines
+        that meet the spans between stacked knots knot_lo < knot_hi of wall walls[i] at most once.
+
+        The cross product h of the line's direction with the curve point is then strictly monotone
+        along those spans: the knot pair where h changes sign (_bracketing_knots) brackets the one
+        root, found in that span's polynomial by bracketed Newton. key: what added to a y gives its
+        key on the wall (keys). `rising`: x − W(y) grows along the line (dx − W′·dy > 0 on the
+        spans), which gives the sides from the crossing; without one, the side at the first knot
+        holds all along.
+        """
+        h_lo = self._knot_side(knot_lo, x0, y0, dx, dy)
+        h_hi = self._knot_side(knot_hi, x0, y0, dx, dy)
+        cross = np.sign(h_lo) * np.sign(h_hi) <= 0.0
+        r = np.flatnonzero(cross)
+        x0r, y0r, dxr, dyr = x0[r], y0[r], dx[r], dy[r]
+        a, f_lo, f_hi = self._bracketing_knots(x0r, y0r, dxr, dyr, knot_lo[r], knot_hi[r], h_lo[r], h_hi[r], key[r])
+        wr = walls[r]
+        span = a - self.first_end[wr] + self.first_span[wr]
+        if self.rational:
+            sx, sy, sw = self.span_columns.take(span, axis=2)
+            poly = (sx - x0r * sw) * dyr - (sy - y0r * sw) * dxr
+        else:
+            sx, sy = self.span_columns[:2].take(span, axis=2)
+            poly = sx * dyr - sy * dxr
+            poly[0] -= x0r * dyr - y0r * dxr
+        u = bracketed_root(poly, np.zeros(r.size), np.ones(r.size), f_lo, f_hi)
+        px, py = horner(sx.T, u), horner(sy.T, u)
+        if self.rational:
+            w = horner(sw.T, u)
+            px, py = px / w, py / w
+        at = np.full(x0.size, np.nan)
+        at[r] = ((px - x0r) * dxr + (py - y0r) * dyr) / (dxr * dxr + dyr * dyr)
+        with np.errstate(invalid="ignore"):
+            root = np.where((at >= lo) & (at <= hi), at, np.nan)
+            ahead = h_lo * dy < 0.0
+            side_lo = np.where(cross, (lo >= at) == rising, ahead)
+            side_hi = np.where(cross, (hi >= at) == rising, ahead)
+        return root, side_lo, side_hi
+
+    def _bracketing_knots(self, x0, y0, dx, dy, a, b, f_a, f_b, key):
+        """The stacked knot a (P,) of line i's wall, between knots a[i] < b[i], such that the sides
+        f (_knot_side) at a and a + 1 differ in sign (or one vanishes), and f at both, given f_a,
+        f_b of opposite signs (or one zero) and f strictly monotone along the knots.
+
+        First one step of regula falsi: the knot interval holding the y where f, interpolated
+        linearly in y between a and b, vanishes; it brackets the root unless the curve bends much
+        within [a, b]. The few others go on by bisection on the knots. key: as _monotone_crossings.
+        """
+        with np.errstate(divide="ignore", invalid="ignore"):
+            guess = self.knot_y[a] + (self.knot_y[b] - self.knot_y[a]) * (f_a / (f_a - f_b))
+        probe = np.searchsorted(self.keys, guess + key, side="right") - 1
+        probe = np.minimum(np.maximum(probe, a), b - 1)  # a NaN guess (f_a = f_b = 0) searches to the end
+        f_p = self._knot_side(probe, x0, y0, dx, dy)
+        f_q = self._knot_side(probe + 1, x0, y0, dx, dy)
+        sign_a = np.sign(f_a)
+        past_start = (np.sign(f_p) == sign_a) & (f_p != 0.0)  # the root lies past the probe's start
+        past_end = (np.sign(f_q) == sign_a) & (f_q != 0.0)  # ... and past its end
+        found = past_start & ~past_end
+        if found.all():
+            return probe, f_p, f_q
+        # Elsewhere the root lies in [a, probe] (then probe > a, or f_a = 0 and it is at a) or [probe + 1, b].
+        rest = np.flatnonzero(~found)
+        before = ~past_start[rest] & (probe[rest] > a[rest])
+        ra = np.where(past_end[rest], probe[rest] + 1, a[rest])
+        rb = np.where(past_end[rest], b[rest], np.where(before, probe[rest], probe[rest] + 1))
+        fa = np.where(past_end[rest], f_q[rest], f_a[rest])
+        fb = np.where(past_end[rest], f_b[rest], np.where(before, f_p[rest], f_q[rest]))
+        x0, y0, dx, dy = x0[rest], y0[rest], dx[rest], dy[rest]
+        while (rb - ra > 1).any():
+            mid = (ra + rb) // 2
+            f_mid = self._knot_side(mid, x0, y0, dx, dy)
+            up = (np.sign(f_mid) == np.sign(fa)) & (f_mid != 0.0)
+            ra, fa = np.where(up, mid, ra), np.where(up, f_mid, fa)
+            rb, fb = np.where(up, rb, mid), np.where(up, fb, f_mid)
+        probe[rest], f_p[rest], f_q[rest] = ra, fa, fb
+        return probe, f_p, f_q
+
+    def _spans_crossings(self, walls, x0, y0, dx, dy, lo, hi, first, last, meets):
+        """Crossings (k, r), NaN-padded, of lines with spans first .. last of wall walls[i] (where
+        `meets`): per span, (X(u) − x0·W(u))·dy − (Y(u) − y0·W(u))·dx = 0 is a polynomial in u;
+        its real roots in [0, 1] give the points, and l their projection on the line. Only spans
+        whose control box meets the segment's x range over their y range are solved; one bracketed
+        root where the polynomial is proved monotone."""
         k = np.size(x0)
-        sy = np.stack([y0 + dy * lo, y0 + dy * hi])
-        y_lo, y_hi = sy.min(0), sy.max(0)
-        first = np.maximum(self._local_span(walls, y_lo, "left"), 0)
-        last = np.minimum(self._local_span(walls, y_hi, "right"), self.n_spans[walls] - 1)
-        meets = (y_hi >= self.y_first[walls]) & (y_lo <= self.y_last[walls])
         count = np.where(meets, last - first + 1, 0).clip(0)
         line = np.repeat(np.arange(k), count)
         span = self.first_span[walls[line]] + first[line] + np.arange(line.size) - np.repeat(np.cumsum(count) - count, count)
@@ -318,9 +500,30 @@ class SplineTable:
         return out[:, ~np.isnan(out).all(axis=0)]
 
 
+def _slope_bounds(sx, sy, sw):
+    """Least and greatest dx/dy (S, 2) over each span of x = X/Ω, y = Y/Ω, given as power-basis
+    polynomials in u ∈ [0, 1] (S, p+1) each.
+
+    dx/du = A/Ω² and dy/du = B/Ω² with A = X′Ω − XΩ′, B = Y′Ω − YΩ′. Where B's Bernstein
+    coefficients b_i on [0, 1] are all positive, dx/dy = A/B = Σ a_i β_i / Σ b_i β_i is a
+    weighted mean of the ratios a_i/b_i and lies between the least and the greatest of them;
+    elsewhere the bounds are (−inf, inf). Widened by SLOPE_MARGIN.
+    """
+    a = bernstein_unit(product(derivative(sx), sw) - product(sx, derivative(sw)))
+    b = bernstein_unit(product(derivative(sy), sw) - product(sy, derivative(sw)))
+    positive = (b > 1e-12 * np.abs(b).max(axis=1, keepdims=True)).all(axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = a / b
+    low, high = ratio.min(axis=1), ratio.max(axis=1)
+    widen = SLOPE_MARGIN * (1.0 + np.maximum(np.abs(low), np.abs(high)))
+    return np.column_stack([np.where(positive, low - widen, -np.inf), np.where(positive, high + widen, np.inf)])
+
+
 def _power_spans(knots, coefficients, degree):
     """Power-basis coefficients (S, p+1) in local u ∈ [0, 1] of each non-empty knot span, and
     the index of each span's first pole."""
+    from scipy.interpolate import BSpline, PPoly  # here: scipy.interpolate takes a while to import
+
     spline = BSpline(knots, coefficients, degree, extrapolate=False)
     pp = PPoly.from_spline(spline)
     widths = np.diff(pp.x)

@@ -14,7 +14,8 @@
   ``Material`` (a name of ``forces.MATERIALS``, or custom), ``Ktc``, ``Krc``, ``Kac`` (N/mm²),
   ``Kte``, ``Kre``, ``Kae`` (N/mm; read-only and taken from the table unless Material is custom),
   ``ImmersionStart``, ``ImmersionEnd`` (deg: where a flute cuts);
-- group "Display": ``ShowSurfaces``: the Shape is the engaged cutter surface (below), or empty;
+- group "Display": ``ShowSurfaces``: the Shape is the outline of the engaged cutter surface
+  (below) and the GUI draws the surface, or both are empty;
 - group "Results" (read-only, set by ``execute``): ``DepthOfCutMin``, ``DepthOfCutMax``,
   ``MaxLengthOfCut`` (mm), ``Instants`` (CL points × angles), ``EngagedInstants``,
   ``EngagedCLPoints``, ``EngineTime`` (s), ``Parameters`` (each value and where it came from),
@@ -44,15 +45,20 @@ is missing, or is not the file saved with the document (its digest differs: reco
 saved), the object is marked touched as the document is activated (FreeCAD 0.20 clears touched
 flags at the end of a restore) and the next recompute computes it again.
 
-The Shape: per CL point and engagement segment, the ruled surface between the LEP and UEP
-polylines over the segment's φ range (the engaged part of the cutter surface), all in one
-compound; see docs/FEATURES.md for its cost.
+The Shape: per CL point and engagement segment, the outline of the engaged part of the cutter
+surface (a closed polyline through the segment's LEP and UEP points), all in one compound; the
+GUI draws the surface itself as a mesh (``gui.surface_mesh``). See docs/FEATURES.md.
+
+Bad input fails the recompute with its message alone, without a Python traceback in FreeCAD's
+report view (:class:`RecomputeFailed`). The engine's calls go through :data:`engine_call`, which
+the GUI replaces by a worker thread.
 """
 
 import atexit
 import hashlib
 import os
 import shutil
+import sys
 import tempfile
 import time
 from typing import NamedTuple
@@ -65,12 +71,13 @@ from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..formats.results_csv import write_results
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
 from ..jobs import tool_and_settings
-from ..jobs.run import check_model, flute_1, in_part_frame, pass_forces_of
+from ..jobs import run as _run
+from ..jobs.run import check_model, in_part_frame
 from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_properties, document_or_active
 from .base import remember_relative
 from .stored import PassForces, read_archive, read_engagement, read_forces, write_archive
 from .stock import StockFeature
-from .toolpath import ToolpathFeature, polyline
+from .toolpath import POINT_TOL, ToolpathFeature
 
 #: WallModel choices: the stock object's, or one of the wall models.
 WALL_CHOICES = ("stock",) + WALL_MODELS
@@ -96,6 +103,26 @@ INPUT_GROUPS = ("Inputs", "Tool", "Cut", "Forces", "Display")
 #: Properties execute sets from the results (restored with kept results).
 KEPT_PROPERTIES = ("DepthOfCutMin", "DepthOfCutMax", "MaxLengthOfCut", "Instants", "EngagedInstants",
                    "EngagedCLPoints", "EngineTime", "Parameters", "Warnings", "PeakForce", "ForceFeedPerTooth")
+
+
+def _call(function, *args):
+    return function(*args)
+
+
+#: engine_call(function, *args) -> function(*args): how execute runs the engine's pure-numpy calls
+#: (flute_1, pass_forces_of below). Headless, a plain call; the GUI puts a worker thread with
+#: progress and Cancel here (``gui.worker.install``).
+engine_call = _call
+
+
+def flute_1(*args):
+    """``jobs.run.flute_1`` through engine_call."""
+    return engine_call(_run.flute_1, *args)
+
+
+def pass_forces_of(*args):
+    """``jobs.run.pass_forces_of`` through engine_call."""
+    return engine_call(_run.pass_forces_of, *args)
 
 
 class EngagementInputs(NamedTuple):
@@ -128,6 +155,41 @@ def property_words(label, error):
     return InputError(f"{label}: {label_words(error)[:-1]}{prop}.")
 
 
+class _Named(type):
+    """Metaclass of RecomputeFailed: see there."""
+
+    previous = None  # sys.tracebacklimit before FreeCAD reported one
+
+    def __str__(cls):
+        _Named.previous = getattr(sys, "tracebacklimit", None)
+        sys.tracebacklimit = 0
+        return PROG
+
+
+class RecomputeFailed(InputError, metaclass=_Named):
+    """An InputError that fails an object's recompute with its message alone, no Python traceback.
+
+    FreeCAD 0.20 reports an exception leaving a Python feature's ``execute`` as
+    ``<traceback><str(type)>: <message>`` (``PyException``: the type and message as strings, then
+    the traceback printed by ``PyTraceBack_Print``), and marks the object Invalid with the message
+    as its status string. str() of this class, which FreeCAD takes first, is "ABM" and sets
+    ``sys.tracebacklimit`` to 0, so the traceback prints as nothing; the instance, which FreeCAD
+    lets go right after, puts the limit back as it is deleted. Python code catching it sees an
+    InputError with the same message.
+    """
+
+    def __del__(self):
+        if getattr(sys, "tracebacklimit", None) == 0:
+            if _Named.previous is None:
+                del sys.tracebacklimit
+            else:
+                sys.tracebacklimit = _Named.previous
+
+
+#: How FreeCAD names a failed recompute of an engagement in the report view ("ABM: <message>").
+PROG = "ABM"
+
+
 class EngagementFeature(FeatureProxy):
     """Proxy of the engagement object (see the module docstring)."""
 
@@ -158,8 +220,9 @@ class EngagementFeature(FeatureProxy):
               for name in ("inclination", "phi_start", "phi_end", "phi_step")),
         ])
         add_properties(obj, "Display", [
-            ("App::PropertyBool", "ShowSurfaces", "Shape: the engaged cutter surface of every CL point "
-                                                  "(one ruled surface per engagement segment), or empty", True),
+            ("App::PropertyBool", "ShowSurfaces", "Shape: the outline of the engaged cutter surface of every "
+                                                  "CL point (one closed polyline per engagement segment; the "
+                                                  "GUI draws the surface), or empty", True),
         ])
         add_properties(obj, "Results", [
             ("App::PropertyLength", "DepthOfCutMin", "smallest depth of cut over the engaged CL points"),
@@ -216,6 +279,15 @@ class EngagementFeature(FeatureProxy):
         return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)
 
     def execute(self, obj):
+        """Recompute (:meth:`compute`); bad input fails it with its message alone (:class:`RecomputeFailed`)."""
+        try:
+            self.compute(obj)
+        except ParameterError as error:
+            raise RecomputeFailed(str(property_words(obj.Label, error))) from None
+        except InputError as error:
+            raise RecomputeFailed(str(error)) from None
+
+    def compute(self, obj):
         """Run the engine; store the results (CSV, read-only properties, Shape). Inputs the results of
         which are kept (:meth:`result`) take them back instead of running the engine again."""
         self._result, self._written, self._forces = None, None, None
@@ -252,7 +324,7 @@ class EngagementFeature(FeatureProxy):
         obj.EngineTime = elapsed
         obj.Parameters = parameters.describe(lambda parameter: parameter.prop)
         obj.Warnings = warnings
-        obj.Shape = engaged_surfaces(result) if obj.ShowSurfaces else Part.Shape()
+        obj.Shape = engaged_outline(result) if obj.ShowSurfaces else Part.Shape()
         self._keep(obj, key, (toolpath, stock))
 
     def _keep(self, obj, key, sources):
@@ -622,36 +694,41 @@ def _absolute(doc, path):
     return os.path.join(os.path.dirname(doc.FileName), path)
 
 
-def engaged_surfaces(result):
-    """A compound of the engaged cutter surface (see :func:`engaged_surface_parts`)."""
-    return Part.Compound(engaged_surface_parts(result)[0])
+def engaged_outline(result):
+    """A compound of the outline of the engaged cutter surface (see :func:`engaged_outline_parts`)."""
+    return Part.Compound(engaged_outline_parts(result)[0])
 
 
-def engaged_surface_parts(result):
-    """The engaged cutter surface of every CL point, piece by piece, and what each piece is.
+def engaged_outline_parts(result):
+    """The outline of the engaged cutter surface of every CL point, piece by piece, and what each is.
 
-    Per CL point and engagement segment: the ruled surface between the LEP and UEP polylines
-    over the segment (a line LEP–UEP for a one-angle segment; the two polylines where OCC
-    refuses the ruling; nothing for a segment of zero length). Returns (shapes, keys): keys[i]
-    = (cl, segment letter, UEP surface name) of shapes[i], e.g. for colouring by UEP surface.
+    Per CL point and engagement segment: one closed polyline edge (a B-spline of degree 1, whose
+    poles are the points) along the LEP points of the segment's angles and back along its UEP
+    points (a line LEP–UEP for a one-angle segment; nothing for a segment of zero length). One
+    edge per segment, not one per pair of points, keeps FreeCAD's drawing of the Shape cheap. The
+    surface itself is drawn by the GUI as a mesh (``gui.surface_mesh``). Returns (shapes, keys):
+    keys[i] = (cl, segment letter, UEP surface name) of shapes[i].
     """
+    from ..engine.engagement import SURFACES, segment_letter
+
+    segment = result.segment
+    cl, row = np.nonzero(segment >= 0)
+    key = cl * (segment.shape[1] + 1) + segment[cl, row]
+    starts = np.flatnonzero(np.concatenate([[True], key[1:] != key[:-1]]))
+    stops = np.append(starts[1:], cl.size)
+    lep, uep = result.lep_xyz[cl, row], result.uep_xyz[cl, row]
     shapes, keys = [], []
-    for cl in range(result.shape[0]):
-        for index, segment in enumerate(result.segments(cl)):
-            rows = np.flatnonzero(result.segment[cl] == index)
-            lep, uep = result.lep_xyz[cl, rows], result.uep_xyz[cl, rows]
-            key = (cl, segment["letter"], segment["surface"])
-            if len(rows) == 1:
-                if np.linalg.norm(uep[0] - lep[0]) > 1e-9:
-                    shapes.append(Part.LineSegment(FreeCAD.Vector(*lep[0]), FreeCAD.Vector(*uep[0])).toShape())
-                    keys.append(key)
-                continue
-            try:
-                pieces = [Part.makeRuledSurface(polyline(lep), polyline(uep))]
-            except Exception:  # noqa: BLE001 (OCC refuses degenerate rulings: show the two curves)
-                pieces = [polyline(lep), polyline(uep)]
-            shapes += pieces
-            keys += [key] * len(pieces)
+    for start, stop in zip(starts.tolist(), stops.tolist()):
+        first = (cl[start], row[start])
+        points = np.concatenate([lep[start:stop], uep[start:stop][::-1], lep[start:start + 1]]) \
+            if stop - start > 1 else np.stack([lep[start], uep[start]])
+        points = points[np.concatenate([[True], np.linalg.norm(np.diff(points, axis=0), axis=1) > POINT_TOL])]
+        if len(points) < 2:
+            continue  # a segment of zero length has no outline
+        curve = Part.BSplineCurve()
+        curve.buildFromPoles([FreeCAD.Vector(*point) for point in points.tolist()], False, 1)
+        shapes.append(curve.toShape())
+        keys.append((int(first[0]), segment_letter(segment[first]), SURFACES[result.uep_surface[first]]))
     return shapes, keys
 
 

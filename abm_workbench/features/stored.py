@@ -1,9 +1,10 @@
-"""An Engagement read back from its results CSV (the file :mod:`abm_workbench.formats.results_csv` writes).
+"""An Engagement read back from its results file: the CSV :mod:`abm_workbench.formats.results_csv`
+writes, or the NumPy archive of columns :mod:`abm_workbench.formats.results_npz` writes (``.npz``).
 
 The engagement object stores its results in that CSV, not in the document; this module turns
 the file into the same :class:`~abm_workbench.engine.Engagement` the engine returned, with
-every number within 5e-11 of the computed one (the CSV keeps 10 decimals). The depth of cut
-per CL point is recomputed from the LEP / UEP z, as the engine computes it. With cutting
+every number within 5e-11 of the computed one (the CSV keeps 10 decimals; an .npz every bit).
+The depth of cut per CL point is recomputed from the LEP / UEP z, as the engine computes it. With cutting
 forces, :func:`read_forces` gives them back as a :class:`PassForces` (forces within 5e-11 N).
 
 The document keeps its results itself, in a compressed NumPy archive (:func:`write_archive`,
@@ -19,7 +20,8 @@ import numpy as np
 
 from ..engine import CASES, SURFACES, Engagement
 from ..errors import InputError
-from ..formats.results_csv import FORCE_COLUMNS, RESULT_COLUMNS, read_results
+from ..formats import results_csv, results_npz
+from ..formats.results_columns import FORCE_COLUMNS, RESULT_COLUMNS
 from ..forces import ANGLE_EPS
 
 
@@ -34,8 +36,15 @@ def letter_index(letters):
     return out
 
 
+def read_results(path):
+    """The results columns of results file `path` (name -> (rows,) array): an .npz by
+    formats.results_npz, any other by formats.results_csv."""
+    reader = results_npz if os.fspath(path).lower().endswith(".npz") else results_csv
+    return reader.read_results(path)
+
+
 def _pass_shape(name, cl):
-    """(m, p) of a results CSV's cl column (rows,): m CL points of p angles each, in CL point
+    """(m, p) of a results file's cl column (rows,): m CL points of p angles each, in CL point
     order; InputError naming the file `name` otherwise."""
     m = int(cl.max()) + 1 if cl.size else 0
     if m == 0 or cl.size % m:
@@ -47,12 +56,12 @@ def _pass_shape(name, cl):
 
 
 def read_engagement(path):
-    """The Engagement in results CSV `path`; InputError naming the file when it is not one."""
+    """The Engagement in results file `path` (CSV or .npz); InputError naming the file when it is not one."""
     name = os.fspath(path)
     columns = read_results(path)
     missing = [column for column in RESULT_COLUMNS if column not in columns]
     if missing:
-        raise InputError(f"{name}: not a results CSV: missing column {missing[0]!r}")
+        raise InputError(f"{name}: not a results file: missing column {missing[0]!r}")
     m, p = _pass_shape(name, columns["cl"])
 
     def grid(column, dtype=float):
@@ -78,8 +87,10 @@ def read_engagement(path):
         phi=phi, h=columns["h"][:p].astype(float), lep_l=grid("lep_l"), uep_l=grid("uep_l"), length=length,
         pieces=grid("pieces", np.int32), uep_surface=lookup("uep_surface", SURFACES),
         uep_section=grid("uep_section", np.int32), uep_wall=grid("uep_wall", np.int32),
-        case=lookup("case", CASES), segment=letter_index(columns["segment"].tolist()).reshape(m, p),
+        case=lookup("case", CASES), segment=letter_index(columns["segment"].tolist()).astype(np.int32).reshape(m, p),
         area=grid("area"), lep_xyz=lep_xyz, uep_xyz=uep_xyz, depth_of_cut=depth,
+        lep_surface=lookup("lep_surface", SURFACES), lep_section=grid("lep_section", np.int32),
+        lep_wall=grid("lep_wall", np.int32),
     )
 
 
@@ -126,7 +137,7 @@ class PassForces:
 
 
 def read_forces(path, feed):
-    """The PassForces in results CSV `path` (its fx, fy, fz, torque and, if there, power columns),
+    """The PassForces in results file `path` (CSV or .npz; its fx, fy, fz, torque and, if there, power columns),
     at feed per tooth `feed` (mm, scalar or (m,)); None when it has no force columns. InputError
     naming the file when the columns are incomplete."""
     name = os.fspath(path)

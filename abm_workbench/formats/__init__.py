@@ -4,6 +4,7 @@
 - :mod:`.toolpath_csv`: one pass of CL points with tool orientation, CSV (mm, degrees).
 - :mod:`.apt`: toolpaths from APT / CL data files.
 - :mod:`.results_csv`: an Engagement as CSV, one row per (CL point, φ), plus a summary.
+- :mod:`.results_npz`: the same columns as one NumPy archive (``.npz``), one array per column.
 
 Bad input raises :class:`abm_workbench.errors.InputError` naming the file and the line or
 item. Every reader takes numbers in one grammar (:data:`NUMBER`: ASCII digits, an optional

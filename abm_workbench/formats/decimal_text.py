@@ -22,6 +22,8 @@ stripped, one '0' kept after the point. Elements outside that range (|r| < 10^�
 |k| ≥ 10^15, inf) and any whose k / 10^d is not numpy's rounded value are written by repr itself.
 """
 
+import functools
+
 import numpy as np
 
 #: Decimal places kept by number_field (mm, deg, mm² in the results): values read back within 5e-11.
@@ -38,9 +40,11 @@ _POSITIONAL = 10.0 ** (DECIMALS - 4)
 _MINUS, _POINT = ord("-"), ord(".")
 
 
+@functools.lru_cache(maxsize=None)
 def _group_table():
-    """(7·10^GROUP,) WORD table: for g in 0 … 10^GROUP − 1, entry s + g holds g's GROUP digits in
-    bytes 2 … 6, as written in section s (one of the offsets below):
+    """(7·10^GROUP,) WORD table, read-only, built on first use (5.6 MB, tens of ms): for g in
+    0 … 10^GROUP − 1, entry s + g holds g's GROUP digits in bytes 2 … 6, as written in section s
+    (one of the offsets below):
 
     _WHOLE: leading zeros NUL, '0' for 0, in bytes 1 … 5 and '.' in byte 6; _NEGATIVE_WHOLE (=
     _WHOLE + 10^GROUP): the same with '-' in byte 0; _FULL: leading zeros written; _FIRST_DECIMALS
@@ -61,11 +65,11 @@ def _group_table():
     table[1, :, 0] = _MINUS
     for section, text in enumerate((digits, first, trailing, leading, units), start=2):
         table[section, :, 2:2 + GROUP] = text
-    return table.reshape(-1, 8).view(WORD).reshape(-1)
+    words = table.reshape(-1, 8).view(WORD).reshape(-1)
+    words.flags.writeable = False
+    return words
 
 
-_TABLE = _group_table()
-_TABLE.flags.writeable = False
 _WHOLE, _NEGATIVE_WHOLE, _FULL, _FIRST_DECIMALS, _TRIMMED, _STRIPPED, _UNITS = range(0, 7 * _SIZE, _SIZE)
 
 
@@ -121,7 +125,7 @@ def _fixed_point(magnitude, negative):
     index = index.astype(np.intp)
     words = np.empty((3, magnitude.size), dtype=WORD)
     for row, section in enumerate((_WHOLE, _FULL, _TRIMMED)):
-        np.take(_TABLE[section:], index[row], out=words[row], mode="clip")
+        np.take(_group_table()[section:], index[row], out=words[row], mode="clip")
     return words
 
 
@@ -135,7 +139,8 @@ def integer_field(values):
     higher = np.zeros(values.size, dtype=bool)
     for row in range(count):
         group = (magnitude // np.uint64(_SIZE ** (count - 1 - row)) % np.uint64(_SIZE)).astype(np.intp)
-        np.take(_TABLE, group + np.where(higher, _FULL, _UNITS if row == count - 1 else _STRIPPED), out=words[row])
+        section = np.where(higher, _FULL, _UNITS if row == count - 1 else _STRIPPED)
+        np.take(_group_table(), group + section, out=words[row])
         higher |= group != 0
     words[0] |= negative * np.uint64(_MINUS)
     return words

@@ -16,7 +16,8 @@ with a spindle speed, power (W); the summary gains FORCE_SUMMARY_COLUMNS per CL 
 peak_force, mean_force (resultant, N), peak_torque (N·mm).
 
 Numbers are rounded to decimal_text.DECIMALS (10) places and written in the shortest form
-that reads back as the rounded value; NaN is an empty field.
+that reads back as the rounded value; NaN is an empty field. The columns themselves come from
+formats.results_columns, which formats.results_npz writes as arrays.
 """
 
 import os
@@ -24,36 +25,23 @@ import re
 
 import numpy as np
 
-from ..engine import CASES, SURFACES, segment_letter
 from ..errors import InputError
 from . import parse_number, read_text, replacing
 from .decimal_text import WORD, integer_field, number_field, text_field
+from .results_columns import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS,
+                              INT_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS, TEXT_COLUMNS, TOOLPATH_COLUMNS,
+                              result_columns, summary_columns, text_labels)
 
-RESULT_COLUMNS = (
-    "cl", "phi_deg", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall",
-    "case", "segment", "h", "area", "lep_x", "lep_y", "lep_z", "uep_x", "uep_y", "uep_z",
-    "lep_surface", "lep_section", "lep_wall",
-)
-SUMMARY_COLUMNS = (
-    "cl", "depth_of_cut", "segment", "phi_start", "phi_end", "uep_surface", "uep_section", "uep_wall",
-    "max_length", "mean_length",
-)
-#: Results columns added with forces (power only with a spindle speed), and summary columns.
-FORCE_COLUMNS = ("fx", "fy", "fz", "torque", "power")
-FORCE_SUMMARY_COLUMNS = ("peak_force", "mean_force", "peak_torque")
-#: Columns added against the in-process stock: per instant the length of cut in the stock itself, per CL
-#: point whether earlier moves of the program removed material its edges would meet (1) or not (0).
-INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS = ("length_initial",), ("changed",)
-#: Summary columns added when the toolpath is given.
-TOOLPATH_COLUMNS = ("cl_x", "cl_y", "cl_z", "theta_a", "theta_b")
+__all__ = ["FORCE_COLUMNS", "FORCE_SUMMARY_COLUMNS", "INPROCESS_COLUMNS", "INPROCESS_SUMMARY_COLUMNS", "RESULT_COLUMNS",
+           "SUMMARY_COLUMNS", "TOOLPATH_COLUMNS", "chunk_texts", "read_results", "results_text", "summary_path",
+           "summary_text", "table_text", "write_chunks", "write_results"]
+
 #: Rows formatted at a time (formats.decimal_text): a text matrix of about 6 MB.
 BLOCK_ROWS = 2**14
 #: A comma and a line end in the last byte of a word (decimal_text.WORD).
 _COMMA, _NEWLINE = np.uint64(ord(",") << 56), np.uint64(ord("\n") << 56)
 #: An integer field: ASCII digits with an optional minus sign.
 _INTEGER = re.compile(r"-?[0-9]+")
-_TEXT_COLUMNS = {"uep_surface", "lep_surface", "case", "segment"}
-_INT_COLUMNS = {"cl", "pieces", "uep_section", "uep_wall", "lep_section", "lep_wall", "changed"}
 
 
 def summary_path(path):
@@ -91,36 +79,7 @@ def results_text(engagement, *, first_cl=0, forces=None, initial=None):
     first_cl: index of the engagement's first CL point in its pass (for a chunk of a pass).
     Formatted BLOCK_ROWS rows at a time (formats.decimal_text), so its working memory is bounded.
     """
-    m, p = engagement.shape
-    flat = {name: getattr(engagement, name).reshape(-1) for name in (
-        "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall", "case", "segment", "area",
-        "lep_surface", "lep_section", "lep_wall")}
-    for point in ("lep", "uep"):
-        xyz = getattr(engagement, f"{point}_xyz").reshape(-1, 3)
-        flat.update({f"{point}_{name}": xyz[:, axis] for axis, name in enumerate("xyz")})
-    names = RESULT_COLUMNS
-    if initial is not None:
-        names += INPROCESS_COLUMNS
-        flat["length_initial"] = np.asarray(initial, dtype=float).reshape(-1)
-    if forces is not None:
-        names += FORCE_COLUMNS[:4] if forces.power is None else FORCE_COLUMNS
-        xyz = forces.xyz.reshape(-1, 3)
-        flat.update(fx=xyz[:, 0], fy=xyz[:, 1], fz=xyz[:, 2], torque=forces.torque.reshape(-1))
-        if forces.power is not None:
-            flat["power"] = forces.power.reshape(-1)
-    letters = [segment_letter(s) for s in range(int(flat["segment"].max(initial=-1)) + 1)]
-    labels = {"uep_surface": text_field(SURFACES), "lep_surface": text_field(SURFACES), "case": text_field(CASES),
-              "segment": text_field(letters + [""])}
-
-    def block(start):
-        rows = slice(start, min(start + BLOCK_ROWS, m * p))
-        index = np.arange(rows.start, rows.stop)
-        values = {name: column[rows] for name, column in flat.items()}
-        values.update(cl=first_cl + index // p, phi_deg=engagement.phi[index % p], h=engagement.h[index % p])
-        return [labels[name][:, values[name]] if name in labels else integer_field(values[name])
-                if name in _INT_COLUMNS else number_field(values[name]) for name in names]
-
-    return _csv(names, map(block, range(0, m * p, BLOCK_ROWS)))
+    return table_text(result_columns(engagement, first_cl=first_cl, forces=forces, initial=initial))
 
 
 def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None, changed=None):
@@ -130,38 +89,27 @@ def summary_text(engagement, *, toolpath=None, first_cl=0, forces=None, changed=
     toolpath, forces and changed are then the chunk's). changed: (m,) bool, against the
     in-process stock: earlier moves removed material the CL point's edges would meet.
     """
-    table = engagement.segment_table()
-    # One row per segment, and one for each CL point without any, in CL order.
-    idle = np.flatnonzero(np.bincount(table["cl"], minlength=engagement.shape[0]) == 0)
-    order = np.argsort(np.concatenate([table["cl"], idle]), kind="stable")
+    return table_text(summary_columns(engagement, toolpath=toolpath, first_cl=first_cl, forces=forces, changed=changed))
 
-    def rows(values, idle_value):
-        return np.concatenate([values, np.full(idle.size, idle_value, dtype=np.asarray(values).dtype)])[order]
 
-    cl = np.concatenate([table["cl"], idle])[order]
-    letters = [segment_letter(s) for s in range(int(table["index"].max(initial=-1)) + 1)]
-    columns = [
-        integer_field(cl + first_cl), _numbers(engagement.depth_of_cut[cl]),
-        text_field(letters + [""])[:, rows(table["index"], -1)],
-        _numbers(rows(table["phi_start"], np.nan)), _numbers(rows(table["phi_end"], np.nan)),
-        text_field(SURFACES)[:, rows(table["surface"], SURFACES.index("none"))],
-        integer_field(rows(table["section"], -1)), integer_field(rows(table["wall"], -1)),
-        _numbers(rows(table["max_length"], 0.0)), _numbers(rows(table["mean_length"], 0.0)),
-    ]
-    names = SUMMARY_COLUMNS
-    if toolpath is not None:
-        if len(toolpath) != engagement.shape[0]:
-            raise ValueError(f"toolpath has {len(toolpath)} CL points, the engagement {engagement.shape[0]}")
-        names += TOOLPATH_COLUMNS
-        columns += [_numbers(toolpath.cl[cl, axis]) for axis in range(3)]
-        columns += [_numbers(toolpath.theta_a[cl]), _numbers(toolpath.theta_b[cl])]
-    if forces is not None:
-        names += FORCE_SUMMARY_COLUMNS
-        columns += [_numbers(forces.peak[cl]), _numbers(forces.mean[cl]), _numbers(forces.torque.max(axis=1)[cl])]
-    if changed is not None:
-        names += INPROCESS_SUMMARY_COLUMNS
-        columns += [integer_field(np.asarray(changed, dtype=np.int64)[cl])]
-    return _csv(names, [columns])
+def table_text(columns):
+    """CSV text of `columns` (a dict name -> (rows,) array of formats.results_columns): a header of
+    the names, then one line per row, formatted BLOCK_ROWS rows at a time (formats.decimal_text)."""
+    rows = next(iter(columns.values())).size
+    blocks = (_fields(columns, slice(start, start + BLOCK_ROWS)) for start in range(0, rows, BLOCK_ROWS))
+    return _csv(list(columns), blocks)
+
+
+def _fields(columns, rows):
+    """The decimal_text fields of `rows` (a slice) of every one of `columns` (results_columns), in order."""
+    fields = []
+    for name, values in columns.items():
+        values = values[rows]
+        if name in TEXT_COLUMNS:
+            fields.append(text_field(text_labels(name, int(columns[name].max(initial=0)) + 1))[:, values])
+        else:
+            fields.append(integer_field(values) if name in INT_COLUMNS else number_field(values))
+    return fields
 
 
 def chunk_texts(engagement, first_cl, *, toolpath=None, forces=None, initial=None, changed=None):
@@ -191,11 +139,6 @@ def write_chunks(parts, path, summary):
             segments.write(summary_part)
             count += 1
     return count
-
-
-def _numbers(values):
-    """Field (w, n) of float `values` (n,) rounded to decimal_text.DECIMALS places (decimal_text.number_field)."""
-    return number_field(np.asarray(values, dtype=float))
 
 
 def _csv(names, blocks):
@@ -250,9 +193,9 @@ def read_results(path):
 
 def _parse(column, text, name):
     """One column's text (rows,) as str, int or float array (see read_results)."""
-    if column in _TEXT_COLUMNS:
+    if column in TEXT_COLUMNS:
         return text
-    if column not in _INT_COLUMNS:
+    if column not in INT_COLUMNS:
         return np.array([parse_number(field, f"{name}:{row}: column {column!r}") if field else np.nan
                          for row, field in enumerate(text.tolist(), start=2)], dtype=float)
     values = []

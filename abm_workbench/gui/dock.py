@@ -5,7 +5,8 @@ FreeCAD's main window, showing one engagement object at a time (:func:`show`):
 
 - a slider and a spin box over the CL points (0-based, as in the results CSV); the chosen CL
   point is drawn on top of the model (``EngagementViewProvider.highlight``) and a line says
-  its depth of cut and engagement segments;
+  its depth of cut and engagement segments at once, and its plots follow once the events
+  queued are handled (a timer of 0 ms: a dragged slider plots where it stops);
 - "Colour by" (the view property ``ColourBy``) and the legend: for segments, the UEP surface
   kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit
   (force only for an engagement with forces: otherwise the segments are shown);
@@ -36,6 +37,8 @@ BAR_WIDTH = 220
 LEGEND_HEADROOM = 1.7
 #: Index of the "Forces" tab.
 FORCES_TAB = 1
+#: Stacked plots of the "Engagement" tab: length of cut, cut area, h, pass progression.
+PLOTS = 4
 
 
 class EngagementDock(QtGui.QDockWidget):
@@ -84,8 +87,9 @@ class EngagementDock(QtGui.QDockWidget):
         from matplotlib.backends.backend_qt5agg import FigureCanvasQTAgg
         from matplotlib.figure import Figure
 
-        self.figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
+        self.figure = Figure(figsize=(4.2, 7.0), dpi=80)
         self.canvas = FigureCanvasQTAgg(self.figure)
+        self.canvas.mpl_connect("resize_event", lambda event: self.figure.axes and _lay_out(self.figure))
         self.canvas.setMinimumHeight(420)
         self.force_figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
         self.force_canvas = FigureCanvasQTAgg(self.force_figure)
@@ -96,6 +100,11 @@ class EngagementDock(QtGui.QDockWidget):
         self.tabs.addTab(self.force_canvas, "Forces")
         layout.addWidget(self.tabs, 1)
         self.setWidget(body)
+        self.chosen = None  # the CL point whose plots are due
+        self.plots_due = QtCore.QTimer(self)  # plots drawn once the events queued are handled
+        self.plots_due.setSingleShot(True)
+        self.plots_due.setInterval(0)
+        self.plots_due.timeout.connect(self.plot_chosen)
 
     # ---- filling --------------------------------------------------------------------------
     def show_object(self, obj, cl=None):
@@ -144,7 +153,8 @@ class EngagementDock(QtGui.QDockWidget):
         self.choose(int(cl))
 
     def choose(self, cl):
-        """Make CL point `cl` the chosen one: highlight, text, plots."""
+        """Make CL point `cl` the chosen one: highlight and text at once, the plots once the events queued
+        are handled (a slider dragged over many CL points plots only where it stops)."""
         obj = self.obj
         result = _result(obj)
         if result is None or not 0 <= cl < result.shape[0]:
@@ -159,6 +169,15 @@ class EngagementDock(QtGui.QDockWidget):
                                f"{result.length[cl].max():.3f} mm; segments {parts}")
         else:
             self.about.setText(f"CL {cl}: the tool does not engage the stock here")
+        self.chosen = cl
+        self.plots_due.start()
+
+    def plot_chosen(self):
+        """Draw the plots of the chosen CL point (if the object still has results with it)."""
+        obj, cl = self.obj, self.chosen
+        result = _result(obj) if obj is not None else None
+        if result is None or cl is None or not 0 <= cl < result.shape[0]:
+            return
         self.plot(result, cl)
         forces = _forces(obj)
         if forces is not None:
@@ -166,12 +185,12 @@ class EngagementDock(QtGui.QDockWidget):
 
     def plot(self, result, cl):
         """Length of cut, cut area, h (the same at every CL point) over φ at `cl`, and the pass progression
-        with `cl` marked."""
+        with `cl` marked. The four axes are made once (laid out then, and when the dock is resized) and
+        only their curves are drawn anew for another CL point: clearing and laying out axes is most of
+        a redraw's cost."""
         from ..report.colours import SURFACE_COLOURS
 
-        figure = self.figure
-        figure.clear()
-        axes = figure.subplots(4, 1)
+        axes, new = _reused_axes(self.figure, PLOTS)
         phi = result.phi
         for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h),
                                      ("length of cut (mm)", "cut area (mm²)", "h (mm)")):
@@ -182,7 +201,8 @@ class EngagementDock(QtGui.QDockWidget):
                         label=f"{segment['letter']} {segment['surface'].replace('_', ' ')}")
             ax.set_ylabel(label, fontsize="small")
             ax.set_xlim(phi[0], phi[-1] if len(phi) > 1 else phi[0] + 1.0)
-            ax.grid(True, alpha=0.3)
+            ax.relim()
+            ax.autoscale_view(scalex=False)
         axes[0].set_title(f"CL {cl} over the tool rotation angle φ", fontsize="small")
         if result.segments(cl):  # room above the curves for the legend
             axes[0].set_ylim(0.0, LEGEND_HEADROOM * max(float(np.nanmax(result.length[cl])), 1e-9))
@@ -197,13 +217,14 @@ class EngagementDock(QtGui.QDockWidget):
         for values in (depth, longest):
             if np.isfinite(values[cl]):
                 axes[3].plot([cl], [values[cl]], "o", color="red")
+        axes[3].relim()
+        axes[3].autoscale_view()
         axes[3].set(xlabel="CL point")
         axes[3].set_ylabel("mm", fontsize="small")
         axes[3].set_title("Pass progression", fontsize="small")
         axes[3].legend(fontsize="x-small")
-        axes[3].grid(True, alpha=0.3)
-        for ax in axes:
-            ax.tick_params(labelsize="x-small")
+        if new:
+            _lay_out(self.figure)
         self.canvas.draw_idle()
 
     def plot_forces(self, forces, cl):
@@ -252,6 +273,31 @@ class EngagementDock(QtGui.QDockWidget):
             return
         obj.ViewObject.ColourBy = COLOUR_BY[index]  # onChanged recolours
         self.show_legend()
+
+
+def _reused_axes(figure, count):
+    """(the `count` stacked axes of `figure`, emptied of their curves and legends; whether they were
+    made now, the figure not holding them yet: then lay them out once filled, :func:`_lay_out`)."""
+    if len(figure.axes) != count:
+        figure.clear()
+        axes = figure.subplots(count, 1)
+        for ax in axes:
+            ax.grid(True, alpha=0.3)
+            ax.tick_params(labelsize="x-small")
+        return list(axes), True
+    for ax in figure.axes:
+        for artist in [*ax.lines, *([ax.get_legend()] if ax.get_legend() else [])]:
+            artist.remove()
+        ax.set_ylim(auto=True)
+    return list(figure.axes), False
+
+
+def _lay_out(figure):
+    """Place the axes of `figure` once by matplotlib's constrained layout, for its size and texts now;
+    later draws keep the places (finding them is most of a draw's cost)."""
+    figure.set_layout_engine("constrained")
+    figure.canvas.draw()
+    figure.set_layout_engine("none")
 
 
 def colour_bar(legend):

@@ -52,11 +52,16 @@ def zoom_on(view, result, cl, height=ZOOM_HEIGHT):
     camera.height.setValue(height)
 
 
+#: Rounds of the event loop before a screenshot: what was queued for later is drawn.
+SETTLE_ROUNDS = 4
+
+
 def grab_screen(path):
     """Save the whole X screen (3D view included, unlike QWidget.grab) as a PNG."""
     from PySide import QtGui
 
-    QtGui.QApplication.processEvents()
+    for _ in range(SETTLE_ROUNDS):  # the dock plots on the next turn, and matplotlib draws on the one after
+        QtGui.QApplication.processEvents()
     QtGui.QApplication.primaryScreen().grabWindow(0).save(path)
 
 

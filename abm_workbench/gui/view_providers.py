@@ -14,9 +14,10 @@ What each shows (colours RGB 0..1, from :mod:`abm_workbench.report.colours`):
 
 - Stock: light grey, 75 % transparent, so the toolpath and the engaged surface show through.
 - Toolpath: a 4 px line through the CL points, its vertices (the CL points) as 6 px points.
-- Engagement: the engaged cutter surface, lit on both sides, shaded without edges, each face
-  coloured (``DiffuseColor``) by the view property ``ColourBy`` (:mod:`.colouring`): the UEP
-  surface of its engagement segment, the length of cut or the cut area; the CL point chosen in
+- Engagement: the engaged cutter surface as one Coin triangle mesh built with numpy from the
+  results (:mod:`.surface_mesh`; the object's Shape is only its outline), lit on both sides,
+  each vertex coloured by the view property ``ColourBy`` (:mod:`.colouring`): the UEP surface
+  of its engagement segment, the length of cut, the cut area or the force; the CL point chosen in
   the dock (:mod:`.dock`) drawn on top in yellow. Double-click: the task panel. Selected, it
   keeps its colours: FreeCAD draws its bounding box in the selection colour (``SelectionStyle``
   BoundBox) instead of painting its faces.
@@ -51,6 +52,8 @@ STOCK_TRANSPARENCY = 75  # percent
 TOOLPATH_COLOUR = (0.0, 0.0, 0.0)
 TOOLPATH_LINE_WIDTH = 4.0  # px
 TOOLPATH_POINT_SIZE = 6.0  # px
+#: Waiting for an opened document's objects: RESTORE_TRIES times RESTORE_WAIT ms at most.
+RESTORE_TRIES, RESTORE_WAIT = 100, 50
 
 
 def icon(name):
@@ -114,32 +117,43 @@ class ToolpathViewProvider(ViewProvider):
 
 
 class EngagementViewProvider(ViewProvider):
-    """The engaged cutter surface, coloured per face (ColourBy), the chosen CL point highlighted;
-    double-click opens the task panel (:mod:`.task_panel`)."""
+    """The engaged cutter surface as one Coin mesh coloured per vertex (ColourBy), the chosen CL point
+    highlighted; double-click opens the task panel (:mod:`.task_panel`)."""
 
     def attach(self, vobj):
         super().attach(vobj)
         self.overlay = None  # coin node of the highlighted CL point, made on demand
         self.legend = None  # colouring.Legend of the colours shown
         self.cl = None  # the highlighted CL point
+        self.surface = None  # coin SoSwitch holding the mesh, made on demand
+        self.mesh = None  # surface_mesh.SurfaceMesh shown, or None
+        self.colours = None  # (2n, 3) RGB 0..1 of its vertices, or None
+        self.meshed = None  # the Engagement the mesh is of
+        self.vertices = None  # its coin SoVertexProperty (points and colours)
 
     def style(self, vobj):
-        if "Lighting" in vobj.PropertiesList:
-            vobj.Lighting = "Two side"
-        vobj.DisplayMode = "Shaded"  # no edges: 9000 faces' boundaries would hide the colours
-        vobj.SelectionStyle = "BoundBox"  # selected: the box, not selection-green faces over the colours
+        vobj.DisplayMode = "Shaded"  # the Shape (the outline) has no faces: only the mesh is drawn
+        vobj.SelectionStyle = "BoundBox"  # selected: the box, not selection-green over the colours
         add_colour_by(vobj)
         colour(vobj)
 
     def updateData(self, obj, prop):
-        # FreeCAD calls this before its own view provider has the new Shape's faces, and
-        # per-face colours set now would not match them: colour once the event loop runs again.
-        if prop == "Shape":
+        if prop in ("Shape", "ShowSurfaces"):
             colour_soon(obj)
 
     def onChanged(self, vobj, prop):
         if prop == "ColourBy":
             colour(vobj)
+        elif prop == "Visibility":
+            self._show()
+
+    def finishRestoring(self, *_):
+        """Draw the mesh once the document is restored (FreeCAD calls this then; the results are back), on the
+        next turn of the event loop: nothing more runs inside the restore."""
+        from PySide import QtCore
+
+        vobj = self.ViewObject
+        QtCore.QTimer.singleShot(0, lambda: _colour_later(vobj))
 
     def doubleClicked(self, vobj):
         vobj.Document.setEdit(vobj.Object, 0)
@@ -157,6 +171,50 @@ class EngagementViewProvider(ViewProvider):
 
         FreeCADGui.Control.closeDialog()
         return True
+
+    def draw(self, result, colours_of):
+        """Show the mesh of the Engagement `result` (None: nothing) with the vertex colours
+        colours_of(mesh) gives ((2n, 3) RGB 0..1); the mesh is rebuilt only for other results."""
+        from pivy import coin
+
+        from .surface_mesh import coord_index, packed_rgba, surface_mesh
+
+        if self.surface is None:
+            self.surface = coin.SoSwitch()
+            self.ViewObject.RootNode.addChild(self.surface)
+        if result is None:
+            self.mesh = self.colours = self.meshed = self.vertices = None
+            self.surface.removeAllChildren()
+            self._show()
+            return
+        if result is not self.meshed:
+            self.mesh, self.meshed = surface_mesh(result), result
+            self.surface.removeAllChildren()
+            group, hints = coin.SoSeparator(), coin.SoShapeHints()
+            hints.vertexOrdering = coin.SoShapeHints.COUNTERCLOCKWISE  # with an unknown shape type:
+            hints.shapeType = coin.SoShapeHints.UNKNOWN_SHAPE_TYPE  # lit on both sides
+            hints.creaseAngle = MESH_CREASE_ANGLE
+            self.vertices, faces = coin.SoVertexProperty(), coin.SoIndexedFaceSet()
+            self.vertices.materialBinding = coin.SoVertexProperty.PER_VERTEX_INDEXED
+            self.vertices.vertex.setValues(0, len(self.mesh.points), self.mesh.points.tolist())
+            faces.vertexProperty = self.vertices
+            index = coord_index(self.mesh.triangles)
+            faces.coordIndex.setValues(0, len(index), index.tolist())
+            for node in (hints, faces):
+                group.addChild(node)
+            self.surface.addChild(group)
+        self.colours = colours_of(self.mesh)
+        rgba = packed_rgba(self.colours)
+        self.vertices.orderedRGBA.setValues(0, len(rgba), rgba.tolist())
+        self._show()
+
+    def _show(self):
+        """The mesh drawn while the object is visible and has one."""
+        from pivy import coin
+
+        if self.surface is not None:
+            shown = self.ViewObject.Visibility and self.mesh is not None
+            self.surface.whichChild = coin.SO_SWITCH_ALL if shown else coin.SO_SWITCH_NONE
 
     def highlight(self, cl):
         """Draw the engaged part of CL point `cl` on top of everything (None: nothing): in yellow, its LEP
@@ -210,6 +268,8 @@ HIGHLIGHT_POINT_COLOUR = (0.0, 0.0, 0.0)
 HIGHLIGHT_LINE_WIDTH, HIGHLIGHT_POINT_SIZE = 3.0, 12.0
 #: About this many cutting edges (LEP to UEP) drawn across the highlighted CL point.
 HIGHLIGHT_EDGES = 12
+#: Crease angle of the mesh (rad): neighbouring triangles meeting at less than this are shaded smooth.
+MESH_CREASE_ANGLE = 0.5
 
 
 def add_colour_by(vobj):
@@ -246,26 +306,31 @@ def _colour_later(vobj):
 
 
 def colour(vobj):
-    """Set DiffuseColor of the engagement's view object per face by its ColourBy; the Legend, or None
-    when there is nothing to colour (no results, or a Shape that does not match them)."""
-    from .colouring import face_colours, face_map
+    """Draw the engagement's mesh coloured per vertex by its ColourBy; the Legend, or None when there is
+    nothing to draw (no results, or ShowSurfaces off)."""
+    from .preferences import colour_map
+    from .surface_mesh import vertex_colours
 
     obj = vobj.Object
-    result = obj.Proxy.result(obj)
-    faces = face_map(result, obj.Shape) if result is not None else None
     provider = vobj.Proxy
-    if faces is None or not len(faces.cl):
+    result = obj.Proxy.result(obj)
+    if result is None or not obj.ShowSurfaces:
+        provider.draw(None, None)
         provider.legend = None
         return None
     add_colour_by(vobj)
     forces = obj.Proxy.forces(obj)
     colour_by = "segment" if vobj.ColourBy == "force" and forces is None else vobj.ColourBy
-    from .preferences import colour_map
+    legends = []
 
-    colours, legend = face_colours(result, faces, colour_by, forces, colour_map())
-    vobj.DiffuseColor = [(*map(float, rgb), 0.0) for rgb in colours]
-    provider.legend = legend
-    return legend
+    def colours_of(mesh):
+        colours, legend = vertex_colours(result, mesh, colour_by, forces, colour_map())
+        legends.append(legend)
+        return colours
+
+    provider.draw(result, colours_of)
+    provider.legend = legends[0]
+    return provider.legend
 
 
 _CLASSES = {"ABM::Stock": StockViewProvider, "ABM::Toolpath": ToolpathViewProvider,
@@ -273,7 +338,7 @@ _CLASSES = {"ABM::Stock": StockViewProvider, "ABM::Toolpath": ToolpathViewProvid
 
 
 def refresh(obj):
-    """Restyle what depends on the results after a recompute (the engagement's face colours)."""
+    """Restyle what depends on the results after a recompute (the engagement's mesh and colours)."""
     if FreeCAD.GuiUp and kind(obj) == "ABM::Engagement" and isinstance(obj.ViewObject.Proxy, ViewProvider):
         colour(obj.ViewObject)
 
@@ -331,10 +396,6 @@ class _Observer:
                 colour_soon(obj)
 
 
-#: Waiting for an opened document's objects: RESTORE_TRIES times RESTORE_WAIT ms at most.
-RESTORE_TRIES, RESTORE_WAIT = 100, 50
-
-
 def _ask_when_restored(name, tries=RESTORE_TRIES):
     """ask_repoint for the document `name` once it is restored: FreeCAD activates a document it opens
     before it reads its objects, and runs the event loop meanwhile; an empty document is waited for
@@ -390,9 +451,13 @@ _ASKED = set()  # names of the documents checked for missing input files
 
 
 def install_observer():
-    """Install the document observer once (InitGui.py calls it), and attach to open documents."""
+    """Install the document observer once (InitGui.py calls it), and attach to open documents; run the
+    engagements' engine in a worker thread (:mod:`.worker`)."""
     global _OBSERVER
     if _OBSERVER is None and FreeCAD.GuiUp:
+        from . import worker
+
+        worker.install()
         _OBSERVER = _Observer()
         FreeCAD.addDocumentObserver(_OBSERVER)
         for doc in FreeCAD.listDocuments().values():

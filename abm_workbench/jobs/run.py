@@ -21,7 +21,8 @@ import numpy as np
 from ..engine import Staircase, flute_engagement, zmap_engage
 from ..engine.stocks import engage_in_process, engage_stock, in_process_lengths
 from ..errors import InputError, ParameterError
-from ..formats import check_output_path, replacing
+from ..formats import check_output_path, replacing, results_npz
+from ..formats.results_columns import chunk_columns
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
 from ..forces import joined_forces, pass_forces
 from ..parallel import CHUNK_INSTANTS, PassAssembly, map_chunks, toolpath_part, worker_count
@@ -255,12 +256,12 @@ class EngageResult:
 
 @dataclasses.dataclass(frozen=True)
 class ChunkResult:
-    """What a chunk task of engage gives back: (results, summary) CSV text and the depth of cut
-    (n,); the chunk's Engagement and Forces when kept for the plots; the peak resultant force
-    (n,) when forces are computed; against the in-process stock, which CL points earlier moves
-    changed (n,)."""
+    """What a chunk task of engage gives back: its (results, summary) as CSV text or as columns
+    (formats.results_columns) and the depth of cut (n,); the chunk's Engagement and Forces when kept
+    for the plots; the peak resultant force (n,) when forces are computed; against the in-process
+    stock, which CL points earlier moves changed (n,)."""
 
-    texts: tuple
+    parts: tuple
     depth: np.ndarray
     engagement: object = None
     forces: object = None
@@ -269,18 +270,20 @@ class ChunkResult:
 
 
 @dataclasses.dataclass(frozen=True)
-class CsvChunk:
+class ResultsChunk:
     """Task of a parallel engage: a chunk of CL points engaged (flute 1, straight or helical) and,
-    when force_model = (Coefficients, immersion) is given, its forces, as a ChunkResult; the
-    Engagement and Forces are kept for the plots when `keep`. frame: the operation's (R, t) from
-    part to engine coordinates, or None: LEP and UEP points are written in part coordinates.
-    in_process: (SweptPieces of the program in the engine frame, (m,) program row of each CL
-    point) to engage against the in-process stock, or None for the stock as given."""
+    when force_model = (Coefficients, immersion) is given, its forces, as a ChunkResult of CSV text
+    or, when `columnar`, of columns (for an .npz); the Engagement and Forces are kept for the plots
+    when `keep`. frame: the operation's (R, t) from part to engine coordinates, or None: LEP and
+    UEP points are written in part coordinates. in_process: (SweptPieces of the program in the
+    engine frame, (m,) program row of each CL point) to engage against the in-process stock, or
+    None for the stock as given."""
 
     keep: bool
     force_model: object = None
     frame: object = None
     in_process: object = None
+    columnar: bool = False
 
     def __call__(self, job, start, stop):
         stock, tool, toolpath, settings = job
@@ -296,17 +299,18 @@ class CsvChunk:
             forces = pass_forces_of(stock, tool, part, settings, self.force_model, engagement,
                                     in_process=None if self.in_process is None else (pieces, rows[start:stop]))
         engagement = in_part_frame(engagement, self.frame)
-        return ChunkResult(chunk_texts(engagement, start, toolpath=part, forces=forces, initial=initial,
-                                       changed=changed), engagement.depth_of_cut,
+        parts = (chunk_columns if self.columnar else chunk_texts)(engagement, start, toolpath=part, forces=forces,
+                                                                   initial=initial, changed=changed)
+        return ChunkResult(parts, engagement.depth_of_cut,
                            engagement if self.keep else None, forces if self.keep else None,
                            None if forces is None else forces.peak, changed)
 
 
 def _kept(chunks, depth, peak, changed, whole, force_parts):
-    """The CSV texts of (job, start, stop, ChunkResult) `chunks`, in order; each chunk's depth of
-    cut, peak force and changed flags stored into `depth`, `peak` and `changed` (m,), its
-    Engagement added to `whole` (a PassAssembly) and its Forces appended to `force_parts`, when
-    these are given."""
+    """The (results, summary) parts of (job, start, stop, ChunkResult) `chunks`, in order; each
+    chunk's depth of cut, peak force and changed flags stored into `depth`, `peak` and `changed`
+    (m,), its Engagement added to `whole` (a PassAssembly) and its Forces appended to
+    `force_parts`, when these are given."""
     for _, start, stop, result in chunks:
         depth[start:stop] = result.depth
         if result.peak is not None:
@@ -317,7 +321,7 @@ def _kept(chunks, depth, peak, changed, whole, force_parts):
             whole.add(result.engagement, start)
         if force_parts is not None:
             force_parts.append(result.forces)
-        yield result.texts
+        yield result.parts
 
 
 def check_method(method: Method, forces, helix):
@@ -356,7 +360,8 @@ def zmap_cells(method: Method):
 
 
 def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=None):
-    """Engage a job: the results CSV `out`, its summary beside it and, with `plot`, the PNG (and with
+    """Engage a job: the results `out` (R.csv, its summary beside it as R.summary.csv; or R.npz, results
+    and summary columns in one NumPy archive, formats.results_npz) and, with `plot`, the PNG (and with
     forces its force PNG). Returns an EngageResult. warn(message) is told each warning."""
     helix = job.given.get("helix")
     check_method(method, job.forces, helix not in (None, 0.0))
@@ -364,7 +369,9 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     for message in prepared.warnings():
         warn(message)
     toolpath, tool, settings = prepared.toolpath, prepared.tool, prepared.settings
-    outputs = [out, summary_path(out)] + ([plot] if plot else [])
+    columnar = os.fspath(out).lower().endswith(".npz")
+    results = [out] if columnar else [out, summary_path(out)]
+    outputs = results + ([plot] if plot else [])
     if plot and prepared.force_model is not None:
         outputs.append(os.path.splitext(plot)[0] + ".forces.png")
     check_outputs(outputs, _inputs(job))
@@ -379,8 +386,8 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     changed = np.zeros(len(toolpath), dtype=bool)
     with output_folders(outputs), replacing(*outputs) as temporaries:
         if method.name == "abm":
-            chunks = map_chunks(CsvChunk(keep=whole is not None, force_model=prepared.force_model,
-                                         frame=prepared.hints.frame, in_process=in_process),
+            chunks = map_chunks(ResultsChunk(keep=whole is not None, force_model=prepared.force_model,
+                                             frame=prepared.hints.frame, in_process=in_process, columnar=columnar),
                                 [(stock.model, tool, toolpath, settings)],
                                 workers=method.workers, scheduler=method.scheduler, progress=progress)
         else:
@@ -390,9 +397,13 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
                                                    edge_step=step, progress=progress), prepared.hints.frame)
             except ValueError as error:
                 raise ParameterError("method", f"the Z-map method: {error}") from None
-            chunks = [(0, 0, len(toolpath), ChunkResult(chunk_texts(engagement, 0, toolpath=toolpath),
-                                                        engagement.depth_of_cut, engagement))]
-        write_chunks(_kept(chunks, depth, peak, changed, whole, force_parts), temporaries[0], temporaries[1])
+            parts = (chunk_columns if columnar else chunk_texts)(engagement, 0, toolpath=toolpath)
+            chunks = [(0, 0, len(toolpath), ChunkResult(parts, engagement.depth_of_cut, engagement))]
+        kept = _kept(chunks, depth, peak, changed, whole, force_parts)
+        if columnar:
+            results_npz.write_chunks(kept, temporaries[0])
+        else:
+            write_chunks(kept, temporaries[0], temporaries[1])
         if np.isnan(depth).all():
             if in_process is not None and engage_stock(stock.model, tool, toolpath, settings).engaged.any():
                 raise InputError(f"{job.toolpath}: earlier moves of the program already removed all the material "
@@ -404,11 +415,12 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
             title = prepared.description or (
                 f"{os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}: D {tool.diameter:g} mm, "
                 f"{tool.flutes} flutes, f {settings.feed_per_tooth:g} mm/tooth, α {settings.inclination:g}°")
-            pass_figure(whole.engagement(), title=title).savefig(temporaries[2], format="png")
+            pass_figure(whole.engagement(), title=title).savefig(temporaries[len(results)], format="png")
         if force_parts is not None:
             from ..report.forces import chosen_cl, force_over_phi_figure
             forces = joined_forces(force_parts)
-            force_over_phi_figure(forces, chosen_cl(forces), along=True).savefig(temporaries[3], format="png")
+            figure = force_over_phi_figure(forces, chosen_cl(forces), along=True)
+            figure.savefig(temporaries[len(results) + 1], format="png")
     return EngageResult(prepared, stock, outputs, depth, None if prepared.force_model is None else peak,
                         None if in_process is None else changed, model_note, time.perf_counter() - started)
 

@@ -105,12 +105,22 @@ def test_engagement_equals_the_engine_and_is_restored_without_recompute(doc, tmp
     assert engagement.MaxLengthOfCut.Value == pytest.approx(expected.length.max(), abs=1e-12)
     assert engagement.EngineTime > 0.0
     assert "diameter 12 mm [Diameter]" in engagement.Parameters
-    # The Shape: one ruled surface (or line) per CL point and engagement segment.
-    segments = sum(len(expected.segments(cl)) for cl in range(53))
-    assert engagement.Shape.isValid() and len(engagement.Shape.childShapes()) == segments
-    shapes, keys = engagement_module.engaged_surface_parts(result)
-    assert len(shapes) == len(keys) == segments and keys[0][:2] == (0, "A")
-    assert {surface for _, _, surface in keys} == {"top", "straight_wall", "curved_wall"}
+    # The Shape: the outline, one closed polyline edge (or a line) per CL point and engagement segment,
+    # through that segment's LEP and UEP points and them only (the GUI draws the surface as a mesh).
+    segments = [(cl, segment) for cl in range(53) for segment in expected.segments(cl)]
+    assert engagement.Shape.isValid() and len(engagement.Shape.childShapes()) == len(segments)
+    assert not engagement.Shape.Faces
+    shapes, keys = engagement_module.engaged_outline_parts(result)
+    assert len(shapes) == len(keys) == len(segments) and keys[0][:2] == (0, "A")
+    assert keys == [(cl, segment["letter"], segment["surface"]) for cl, segment in segments]
+    for shape, (cl, segment) in zip(engagement.Shape.childShapes(), segments):
+        rows = (expected.phi >= segment["phi_start"]) & (expected.phi <= segment["phi_end"])
+        ends = np.concatenate([expected.lep_xyz[cl, rows], expected.uep_xyz[cl, rows]])
+        corners = np.array([list(point) for point in shape.Curve.getPoles()])
+        assert np.abs(corners[:, None] - ends[None]).max(axis=2).min(axis=1).max() < 1e-9
+        assert np.abs(ends[:, None] - corners[None]).max(axis=2).min(axis=1).max() < 1e-9
+        assert len(shape.Edges) == 1 and shape.Curve.Degree == 1
+        assert shape.isClosed() == (rows.sum() > 1)
     for name in ("DepthOfCutMax", "Instants", "ResultsFile"):
         assert engagement.getEditorMode(name) == ["ReadOnly"]
     assert engagement.getGroupOfProperty("Diameter") == "Tool" and engagement.getDocumentationOfProperty("Diameter")

@@ -54,16 +54,22 @@ verdict["engagement"] = [engagement.DepthOfCutMin.Value, engagement.DepthOfCutMa
                          engagement.YWindowMin.Value, engagement.YWindowMax.Value]
 verdict["icon_files"] = [os.path.basename(o.ViewObject.Proxy.getIcon()) for o in doc.Objects]
 result = engagement.Proxy.result(engagement)
-from abm_workbench.features.engagement import engaged_surface_parts
 from abm_workbench.report.colours import SURFACE_COLOURS
-shapes, keys = engaged_surface_parts(result)
-expected = []
-for shape, key in zip(shapes, keys):
-    expected += [SURFACE_COLOURS[key[2]]] * len(shape.Faces)
-colours = [tuple(c[:3]) for c in engagement.ViewObject.DiffuseColor]
-verdict["faces"] = [len(engagement.Shape.Faces), len(colours)]
-verdict["colours_match"] = len(colours) == len(expected) and bool(np.allclose(colours, expected, atol=1e-6))
-verdict["surfaces"] = sorted({{key[2] for key in keys}})
+# every vertex of the mesh is an engaged instant's LEP or UEP (found by geometry, not by the mesh's own
+# bookkeeping); its colour is the UEP surface of the segment whose φ range holds that instant
+mesh_points = np.array(engagement.ViewObject.Proxy.mesh.points)
+instants = np.argwhere(result.segment >= 0)
+ends = np.concatenate([result.lep_xyz[instants[:, 0], instants[:, 1]], result.uep_xyz[instants[:, 0], instants[:, 1]]])
+at = np.concatenate([instants, instants])
+distance, nearest = cKDTree(ends).query(mesh_points)
+def surface_at(cl, row):
+    phi = result.phi[row]
+    return [s["surface"] for s in result.segments(cl) if s["phi_start"] <= phi <= s["phi_end"]][0]
+expected = [SURFACE_COLOURS[surface_at(*at[i])] for i in nearest]
+colours = np.array(engagement.ViewObject.Proxy.colours)
+verdict["faces"] = [len(mesh_points), len(colours), len(engagement.ViewObject.Proxy.mesh.triangles)]
+verdict["colours_match"] = float(distance.max()) < 1e-9 and bool(np.allclose(colours, expected, atol=1e-6))
+verdict["surfaces"] = sorted({{surface_at(*i) for i in instants}})
 verdict["undo_names"] = list(doc.UndoNames)
 verdict["report_open"] = report_since(start)
 
@@ -87,19 +93,16 @@ FreeCADGui.updateGui()
 legend = provider.legend
 verdict["legend_length"] = [engagement.ViewObject.ColourBy, legend.kind, legend.unit, legend.low, legend.high,
                             not panel_dock.legend.pixmap().isNull()]
-# each face's colour against the length of cut at the instants its centre lies between (found by geometry)
-lep, uep = result.lep_xyz, result.uep_xyz
-centres = (lep[:, :-1] + lep[:, 1:] + uep[:, :-1] + uep[:, 1:]) / 4
-values = 0.5 * (result.length[:, :-1] + result.length[:, 1:])
-usable = np.isfinite(centres).all(axis=2) & (result.segment[:, :-1] == result.segment[:, 1:])
-tree = cKDTree(centres[usable])
-faces = np.array([list(face.CenterOfMass) for face in engagement.Shape.Faces])
-distance, nearest = tree.query(faces)
-face_values = values[usable][nearest]
-expected = colormaps["viridis"]((face_values - face_values.min()) / np.ptp(face_values))[:, :3]
-colours = np.array([c[:3] for c in engagement.ViewObject.DiffuseColor])
+# each vertex's colour against the length of cut of the instant it lies on (found by geometry)
+lengths = np.concatenate([result.length[instants[:, 0], instants[:, 1]]] * 2)
+mesh_points = np.array(provider.mesh.points)
+distance, nearest = cKDTree(ends).query(mesh_points)
+vertex_values = lengths[nearest]
+low, high = result.length[result.segment >= 0].min(), result.length[result.segment >= 0].max()
+expected = colormaps["viridis"]((vertex_values - low) / (high - low))[:, :3]
+colours = np.array(provider.colours)
 verdict["length_colours"] = [float(distance.max()), float(np.abs(colours - expected).max()),
-                             float(face_values.min()), float(face_values.max())]
+                             float(vertex_values.min()), float(vertex_values.max()), float(low), float(high)]
 view = FreeCADGui.ActiveDocument.ActiveView
 view.viewIsometric(); view.fitAll()
 zoom_on(view, result, cl)
@@ -177,7 +180,7 @@ second = commands.ComputeEngagement().execute(commands.load_settings(os.path.joi
 FreeCADGui.updateGui()
 verdict["second"] = None if second is None else [second.State, second.DepthOfCutMax.Value,
                                                  second.Stock.Name, second.Toolpath.Name,
-                                                 len(second.ViewObject.DiffuseColor)]
+                                                 len(second.ViewObject.Proxy.colours)]
 verdict["undo_names_2"] = list(doc.UndoNames)
 doc.undo()
 verdict["after_undo"] = [o.Name for o in doc.Objects]
@@ -305,8 +308,9 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert 1.7 < low < 1.9 and 7.3 < high < 7.5 and engaged > 40
     assert (diameter, flutes, inclination, feed) == (12, 2, 10, pytest.approx(0.1))
     assert (window, y0, y1) == ("auto", -15.0, 15.0)  # exact walls: the whole y range, as the command line
-    # every face coloured by the UEP surface of its segment; tops, straight and curved walls
-    assert verdict["faces"][0] > 1000 and verdict["faces"][0] == verdict["faces"][1]
+    # one mesh: every vertex (an engaged instant's LEP or UEP) coloured by the UEP surface of its
+    # segment; tops, straight and curved walls
+    assert verdict["faces"][0] > 1000 and verdict["faces"][0] == verdict["faces"][1] and verdict["faces"][2] > 1000
     assert verdict["colours_match"]
     assert {"top", "straight_wall", "curved_wall"} <= set(verdict["surfaces"])
     assert verdict["undo_names"] == ["Open model test 1"]
@@ -318,13 +322,14 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert verdict["slider"][5] == [[cl, cl]]
     assert verdict["legend_segment"][0] == "segment"
     assert {"top", "straight_wall", "curved_wall"} <= set(verdict["legend_segment"][1])
-    # colour by length: the legend's range and units; every face's colour is the length of cut at the
-    # two instants its centre lies between (found by geometry), on the colour map
+    # colour by length: the legend's range (the engaged instants') and units; every vertex's colour is
+    # the length of cut of the instant it lies on (found by geometry), on the colour map
     colour_by, kind, unit, low_length, high_length, bar = verdict["legend_length"]
     assert (colour_by, kind, unit, bar) == ("length", "length", "mm", True)
-    max_distance, colour_error, face_low, face_high = verdict["length_colours"]
-    assert max_distance < 0.1 and colour_error < 1e-6, verdict["length_colours"]  # neighbours: 0.1 mm apart
-    assert (low_length, high_length) == (pytest.approx(face_low), pytest.approx(face_high))
+    max_distance, colour_error, vertex_low, vertex_high, shortest, longest = verdict["length_colours"]
+    assert max_distance < 1e-9 and colour_error < 1e-6, verdict["length_colours"]
+    assert (low_length, high_length) == (pytest.approx(shortest), pytest.approx(longest))
+    assert (vertex_low, vertex_high) == (pytest.approx(shortest), pytest.approx(longest))
     assert "error" not in verdict["report_dock"].lower(), verdict["report_dock"]
     # the task panel: the job model's check in plain words, the field marked, OK disabled
     assert verdict["panel_open"] == [True, True, "", 12.0, 10.0]
@@ -406,9 +411,9 @@ def look(doc):
     FreeCADGui.updateGui()
     engagement = doc.getObject("Engagement")
     return {{"providers": [type(o.ViewObject.Proxy).__name__ for o in doc.Objects],
-             "faces": len(engagement.Shape.Faces),
-             "colours": sorted({{tuple(round(v, 2) for v in c[:3]) for c in engagement.ViewObject.DiffuseColor}}),
-             "count": len(engagement.ViewObject.DiffuseColor)}}
+             "faces": len(engagement.ViewObject.Proxy.mesh.points),
+             "colours": sorted({{tuple(round(float(v), 2) for v in c) for c in engagement.ViewObject.Proxy.colours}}),
+             "count": len(engagement.ViewObject.Proxy.colours)}}
 doc = FreeCAD.openDocument({headless!r})
 verdict["headless"] = look(doc)
 doc.saveAs({saved!r})
@@ -439,7 +444,7 @@ def test_view_providers_attach_to_a_document_made_headless_and_survive_saving(tm
 
     verdict = run_gui(RESTORE_BODY.format(headless=str(tmp_path / "headless.FCStd"), saved=str(tmp_path / "saved.FCStd")))
 
-    # saved colours are 8 bits per channel: compare to 0.01
+    # the UEP surfaces' colours, to 0.01
     palette = {tuple(round(v, 2) for v in colour) for colour in SURFACE_COLOURS.values()}
     for state in ("headless", "reopened"):
         look = verdict[state]

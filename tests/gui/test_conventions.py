@@ -119,9 +119,9 @@ engagement = commands.ComputeEngagement().execute(dict(diameter=12, flutes=2, fl
                                                        phi_step=10), [stock, path])
 engagement.ViewObject.ColourBy = "length"
 settle()
-colours = np.array([c[:3] for c in engagement.ViewObject.DiffuseColor])
+colours = np.array(engagement.ViewObject.Proxy.colours)
 def on(name):
-    table = np.round(colormaps[name](np.linspace(0.0, 1.0, 256))[:, :3], 2)  # colours are saved to 8 bits
+    table = np.round(colormaps[name](np.linspace(0.0, 1.0, 256))[:, :3], 2)  # the map's 256 colours
     return bool(np.all(np.abs(np.round(colours, 2)[:, None, :] - table[None]).max(axis=2).min(axis=1) <= 0.01))
 verdict["colour_map"] = [len(colours), on("plasma"), on("viridis"), engagement.ViewObject.Proxy.legend.colour_map]
 

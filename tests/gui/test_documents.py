@@ -34,7 +34,7 @@ path = commands.ImportToolpath().execute(os.path.join({inputs!r}, "toolpath.csv"
 engagement = commands.ComputeEngagement().execute(
     dict(diameter=12, flutes=2, flute_length=30, feed_per_tooth=0.1, inclination=10, phi_step=10), [stock, path])
 settle()
-before = [digest(engagement), len(engagement.ViewObject.DiffuseColor)]
+before = [digest(engagement), len(engagement.ViewObject.Proxy.colours)]
 doc.saveAs({saved!r})
 FreeCAD.closeDocument(doc.Name)
 settle()
@@ -82,7 +82,8 @@ verdict["asked"] = asked
 verdict["recomputed"] = len(calls)
 verdict["repointed"] = [reopened.getObject("Stock").SourceFile, reopened.getObject("Toolpath").File,
                         [o.State for o in reopened.Objects], digest(engagement) == before[0],
-                        len(engagement.ViewObject.DiffuseColor) == before[1] == len(engagement.Shape.Faces)]
+                        len(engagement.ViewObject.Proxy.colours) == before[1]
+                        == len(engagement.ViewObject.Proxy.mesh.points)]
 """
 
 

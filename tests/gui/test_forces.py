@@ -69,15 +69,24 @@ along_lines = {{line.get_label(): line for line in along.lines}}
 verdict["along_match"] = [bool(np.allclose(along_lines["peak |F| over φ"].get_ydata(), forces.peak, atol=1e-9)),
                           bool(np.allclose(along_lines["mean |F| over φ"].get_ydata(), forces.mean, atol=1e-9)),
                           [float(x) for x in along.lines[-1].get_xdata()]]
-from abm_workbench.gui.colouring import COLOUR_BY, face_map, face_values, quantity_colours
+from scipy.spatial import cKDTree
+from abm_workbench.gui.colouring import COLOUR_BY, quantity_colours
 panel_dock.colour_by.setCurrentIndex(COLOUR_BY.index("force"))
 FreeCADGui.updateGui()
-legend = engagement.ViewObject.Proxy.legend
-values = face_values(np.linalg.norm(forces.xyz, axis=-1), face_map(engagement.Proxy.result(engagement), engagement.Shape))
-colours = np.array([c[:3] for c in engagement.ViewObject.DiffuseColor])
+provider = engagement.ViewObject.Proxy
+legend = provider.legend
+# each vertex of the mesh is the LEP or UEP of an engaged instant (found by geometry): its |F| there
+result = engagement.Proxy.result(engagement)
+instants = np.argwhere(result.segment >= 0)
+ends = np.concatenate([result.lep_xyz[instants[:, 0], instants[:, 1]], result.uep_xyz[instants[:, 0], instants[:, 1]]])
+resultant = np.linalg.norm(forces.xyz, axis=-1)[instants[:, 0], instants[:, 1]]
+distance, nearest = cKDTree(ends).query(np.array(provider.mesh.points))
+values = np.concatenate([resultant, resultant])[nearest]
+colours = np.array(provider.colours)
 verdict["colour_force"] = [panel_dock.colour_by.model().item(3).isEnabled(), engagement.ViewObject.ColourBy,
                            legend.kind, legend.unit, abs(legend.high - float(values.max())),
-                           float(np.abs(colours - quantity_colours(values, values.min(), values.max())).max())]
+                           float(np.abs(colours - quantity_colours(values, values.min(), values.max())).max()),
+                           float(distance.max())]
 page = commands.ValidateEngagement().execute(engagement, "%d,40" % cl, {report_folder!r}, False)
 verdict["validated"] = [page is not None, sorted(os.listdir({report_folder!r}))]
 verdict["report_view"] = report.toPlainText()[start:]
@@ -106,9 +115,9 @@ def test_forces_in_the_task_panel_the_dock_and_the_validation_report(tmp_path, r
     assert verdict["lines_match"] == [True] * 4
     cl = verdict["dock"][1]
     assert verdict["along_match"] == [True, True, [cl, cl]]
-    enabled, colour_by, kind, unit, high_error, colour_error = verdict["colour_force"]
+    enabled, colour_by, kind, unit, high_error, colour_error, distance = verdict["colour_force"]
     assert (enabled, colour_by, kind, unit) == (True, "force", "force", "N")
-    assert high_error < 1e-9 and colour_error < 1e-6  # as test_commands checks colour by length
+    assert high_error < 1e-9 and colour_error < 1e-6 and distance < 1e-9  # as test_commands checks colour by length
     assert verdict["validated"][0] and "forces.png" in verdict["validated"][1]
     assert "<h2>Cutting forces</h2>" in (folder / "index.html").read_text(encoding="utf-8")
     assert "Error" not in verdict["report_view"] and "Traceback" not in verdict["report_view"], verdict["report_view"]

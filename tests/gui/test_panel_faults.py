@@ -12,6 +12,7 @@ import os
 import pytest
 
 from tests.conftest import ROOT
+from tests.gui.events import EVENTS
 
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
 
@@ -26,11 +27,7 @@ report = window.findChild(QtWidgets.QDockWidget, "Report view").widget()
 def report_since(start):
     FreeCADGui.updateGui()
     return report.toPlainText()[start:]
-def settle():
-    for _ in range(5):
-        FreeCADGui.updateGui()
-        QtWidgets.QApplication.processEvents()
-
+{events}
 FreeCADGui.activateWorkbench("ABMWorkbench")
 from abm_workbench.gui import commands, dock, task_panel
 from abm_workbench.gui.screenshots import grab_screen
@@ -42,29 +39,6 @@ engagement = commands.ComputeEngagement().execute(
 shown_dock = dock.find()
 settle()
 
-# ---- real events ------------------------------------------------------------------------------
-def key(widget, code, text="", modifiers=QtCore.Qt.NoModifier):
-    for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
-        QtWidgets.QApplication.sendEvent(widget, QtGui.QKeyEvent(kind, code, modifiers, text))
-def retype(name, text):
-    # select all (Ctrl+A) in the field, then type `text` key by key (Qt key codes are ASCII upper case)
-    widget = task_panel.shown().field(name)
-    widget.setFocus()
-    key(widget, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)
-    for char in text:
-        key(task_panel.shown().field(name), ord(char.upper()), char)
-    settle()
-def button(text):
-    boxes = [box for box in window.findChildren(QtWidgets.QDialogButtonBox)
-             if shiboken2.isValid(box) and box.isVisible()]
-    return {{b.text().replace("&", ""): b for box in boxes for b in box.buttons()}}.get(text)
-def click(text):
-    target = button(text)
-    centre = QtCore.QPointF(target.rect().center())
-    for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease):
-        QtWidgets.QApplication.sendEvent(target, QtGui.QMouseEvent(kind, centre, QtCore.Qt.LeftButton,
-                                                                  QtCore.Qt.LeftButton, QtCore.Qt.NoModifier))
-    settle()
 def open_panel():
     FreeCADGui.ActiveDocument.setEdit(engagement, 0)
     settle()
@@ -77,9 +51,9 @@ def snapshot():
             "phi_step": engagement.PhiStep.Value, "state": engagement.State, "instants": engagement.Instants,
             "result": None if result is None else [result.phi.tolist(), round(float(np.nansum(result.length)), 9),
                                                     hashlib.sha256(np.round(result.length, 9).tobytes()).hexdigest()],
-            "faces": len(engagement.Shape.Faces),
-            "colours": hashlib.sha256(np.round([c[:3] for c in vobj.DiffuseColor], 6).tobytes()).hexdigest(),
-            "coloured": len(vobj.DiffuseColor),
+            "faces": 0 if vobj.Proxy.mesh is None else len(vobj.Proxy.mesh.points),
+            "colours": hashlib.sha256(np.round(np.reshape(vobj.Proxy.colours, (-1, 3)), 6).tobytes()).hexdigest(),
+            "coloured": 0 if vobj.Proxy.colours is None else len(vobj.Proxy.colours),
             "undo": list(doc.UndoNames), "redo": list(doc.RedoNames),
             "dock": [shown_dock.obj is engagement, shown_dock.spin.maximum(), shown_dock.about.text(),
                      [float(v) for v in shown_dock.figure.axes[0].get_xlim()]]}}
@@ -206,7 +180,7 @@ def verdict(tmp_path, run_gui):
     mods.mkdir(parents=True)
     (mods / "ABM").symlink_to(ROOT, target_is_directory=True)
     folders = [str(tmp_path / "shots"), os.path.join(ROOT, "build", "screenshots")]
-    return run_gui(BODY.format(model=MODEL, folders=folders))
+    return run_gui(BODY.format(model=MODEL, folders=folders, events=EVENTS))
 
 
 def clean(text):

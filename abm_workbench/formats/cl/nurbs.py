@@ -13,7 +13,6 @@ into equal steps small enough for that bound to be <= the tolerance.
 
 
 import numpy as np
-from scipy.interpolate import BSpline
 
 
 def bspline_points(knots, control, tolerance):
@@ -40,6 +39,8 @@ def bspline_points(knots, control, tolerance):
     if (counts > degree).any():
         raise ValueError(f"knot {values[counts > degree][0]:g} is repeated more often than the degree "
                          f"{degree}: the curve breaks there")
+    from scipy.interpolate import BSpline  # here: scipy.interpolate takes a while to import
+
     spline = BSpline(knots, control, degree)
     bound = _second_derivative_bounds(knots, control, degree)
     spans = np.arange(degree, n)

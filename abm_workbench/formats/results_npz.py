@@ -1,0 +1,203 @@
+"""An Engagement's results and summary as one NumPy archive (``R.npz``): one array per column.
+
+The archive holds, as ``.npy`` members stored uncompressed (numpy.load reads them):
+
+- ``format``: the text ``abm-results/1``;
+- ``<column>``: each results column (formats.results_columns: the results CSV's names, rows and
+  units), an array (rows,), one row per instant;
+- ``summary/<column>``: each summary column, an array (summary rows,), one row per CL point and
+  engagement segment;
+- ``labels/<column>``: for each text column (uep_surface, lep_surface, case, segment) the
+  names its integer codes stand for (str array; code i is labels[i]; segment: '' for none, then
+  A, B, …), shared by the results and the summary.
+
+Floats are float64 as computed (the CSV rounds them to 10 decimals), NaN where the CSV has an
+empty field; integer and code columns have the dtypes of formats.results_columns.column_dtype.
+
+:func:`write_chunks` streams the columns of a pass chunk by chunk into one raw file per column in
+a scratch folder beside the output and builds the archive from them at the end, so its memory is
+one chunk's; :func:`read_results` reads an archive back as results_csv.read_results reads a CSV,
+refusing (InputError naming the file) anything else: not a zip, pickled arrays, missing or
+unknown columns, wrong dtypes or lengths, codes without a label, numbers too large.
+"""
+
+import os
+import shutil
+import tempfile
+import zipfile
+import zlib
+
+import numpy as np
+
+from ..errors import InputError
+from . import MAX_MAGNITUDE
+from .results_columns import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS,
+                              INT_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS, TEXT_COLUMNS, TOOLPATH_COLUMNS,
+                              column_dtype, text_labels)
+
+#: The `format` member's text.
+FORMAT = "abm-results/1"
+#: Key prefixes of the summary columns and of the labels of the text columns.
+SUMMARY, LABELS = "summary/", "labels/"
+#: Columns every archive has, and the ones it may have, per table.
+_TABLES = {"": (RESULT_COLUMNS, INPROCESS_COLUMNS + FORCE_COLUMNS),
+           SUMMARY: (SUMMARY_COLUMNS, TOOLPATH_COLUMNS + FORCE_SUMMARY_COLUMNS + INPROCESS_SUMMARY_COLUMNS)}
+#: The first bytes of a zip file (a local file header).
+_ZIP = b"PK\x03\x04"
+#: Bytes copied at a time from a column's raw file into the archive.
+_COPY = 1 << 22
+
+
+def write_chunks(parts, path):
+    """Write the (results columns, summary columns) pairs of the iterable `parts` (dicts name -> (rows,)
+    array of formats.results_columns, the same names in every pair), in order, as the archive `path`.
+    Returns the number of pairs. Memory: one pair, and a copy buffer.
+
+    The columns go to raw files in a scratch folder beside `path` (removed when done or failed);
+    write `path` itself to a temporary (formats.replacing) for all-or-nothing output.
+    """
+    path = os.fspath(path)
+    # A short name of its own: an output name as long as the folder allows still fits beside it.
+    scratch = tempfile.mkdtemp(prefix=".abm-columns-", dir=os.path.dirname(os.path.abspath(path)))
+    columns = _RawColumns(scratch)
+    try:
+        count = 0
+        for results, summary in parts:
+            columns.add("", results)
+            columns.add(SUMMARY, summary)
+            count += 1
+        columns.close()
+        with zipfile.ZipFile(path, "w", zipfile.ZIP_STORED, allowZip64=True) as archive:
+            _member(archive, "format", np.array(FORMAT))
+            for key in columns.keys:
+                with open(columns.file(key), "rb") as raw, archive.open(key + ".npy", "w", force_zip64=True) as member:
+                    np.lib.format.write_array_header_1_0(member, {
+                        "descr": np.lib.format.dtype_to_descr(columns.dtypes[key]), "fortran_order": False,
+                        "shape": (columns.rows[key],)})
+                    shutil.copyfileobj(raw, member, _COPY)
+            for text in TEXT_COLUMNS:
+                if text in columns.codes:
+                    _member(archive, LABELS + text, np.array(text_labels(text, columns.codes[text] + 1), dtype=str))
+        return count
+    finally:
+        columns.close()
+        shutil.rmtree(scratch, ignore_errors=True)
+
+
+def _member(archive, key, array):
+    """Write `array` as the member key.npy of the open ZipFile `archive`."""
+    with archive.open(key + ".npy", "w") as member:
+        np.lib.format.write_array(member, array, allow_pickle=False)
+
+
+class _RawColumns:
+    """Columns appended chunk by chunk to raw files (one per key, in the folder `scratch`): their
+    keys in order, dtype, row count and, per text column, the largest code seen."""
+
+    def __init__(self, scratch):
+        self.scratch, self.keys, self.dtypes, self.rows, self.codes, self._files = scratch, [], {}, {}, {}, {}
+
+    def file(self, key):
+        """The raw file of column `key`."""
+        return os.path.join(self.scratch, f"{self.keys.index(key)}.raw")
+
+    def add(self, prefix, columns):
+        """Append the arrays of dict `columns` to the columns prefix + name; ValueError when the names
+        or dtypes differ from the first chunk's."""
+        keys = [prefix + name for name in columns]
+        known = [key for key in self.keys if key.startswith(SUMMARY) == (prefix == SUMMARY)]
+        if known and keys != known:
+            raise ValueError(f"chunk columns {keys} differ from the first chunk's {known}")
+        for key, (name, values) in zip(keys, columns.items()):
+            if key not in self._files:
+                self.keys.append(key)
+                self.dtypes[key], self.rows[key] = column_dtype(name), 0
+                self._files[key] = open(self.file(key), "wb")
+            values = np.ascontiguousarray(values)
+            if values.dtype != self.dtypes[key] or values.ndim != 1:
+                raise ValueError(f"column {key}: {values.dtype} {values.shape}, expected {self.dtypes[key]} (rows,)")
+            self._files[key].write(values.data)
+            self.rows[key] += values.size
+            if name in TEXT_COLUMNS and values.size:
+                self.codes[name] = max(self.codes.get(name, 0), int(values.max()))
+
+    def close(self):
+        """Close every raw file (again: no effect)."""
+        for handle in self._files.values():
+            handle.close()
+
+
+def read_results(path, summary=False):
+    """The results columns (summary: the summary columns) of archive `path`, as a dict name -> (rows,)
+    array, as formats.results_csv.read_results gives a CSV's: text columns as str arrays, integer
+    columns as int, every other float (NaN: no value; here the doubles as computed, not rounded).
+    InputError naming the file for anything but an archive written by write_chunks."""
+    return read_tables(path)[1 if summary else 0]
+
+
+def read_tables(path):
+    """(results columns, summary columns) of archive `path` (read_results)."""
+    name = os.fspath(path)
+    arrays = _arrays(name)
+    text = arrays.pop("format", None)
+    if text is None or text.shape != () or text.dtype.kind != "U" or str(text) != FORMAT:
+        raise InputError(f"{name}: not an ABM results archive (no 'format' member saying {FORMAT})")
+    labels = {key[len(LABELS):]: arrays.pop(key) for key in list(arrays) if key.startswith(LABELS)}
+    tables = []
+    for prefix, (required, optional) in _TABLES.items():
+        keys = [key for key in arrays if key.startswith(SUMMARY) == (prefix == SUMMARY)]
+        columns = {key[len(prefix):]: arrays.pop(key) for key in keys}
+        missing = [column for column in required if column not in columns]
+        if missing:
+            raise InputError(f"{name}: not a results archive: no array {prefix + missing[0]!r}")
+        unknown = [column for column in columns if column not in required + optional]
+        if unknown:
+            raise InputError(f"{name}: unknown array {prefix + unknown[0]!r} in a results archive")
+        rows = columns[required[0]].shape
+        tables.append({column: _column(name, prefix + column, values, rows, labels)
+                       for column, values in columns.items()})
+    return tuple(tables)
+
+
+def _arrays(name):
+    """Every member of the npz file `name` as a dict key -> array; InputError when it is not one."""
+    try:
+        with open(name, "rb") as handle:
+            magic = handle.read(4)
+    except OSError as error:
+        raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+    if magic != _ZIP:
+        raise InputError(f"{name}: not a results archive (an .npz file is a zip file, and this is not one)")
+    try:
+        with np.load(name, allow_pickle=False) as archive:
+            return {key: archive[key] for key in archive.files}
+    except OSError as error:
+        raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+    except (ValueError, EOFError, KeyError, NotImplementedError, zipfile.BadZipFile, zlib.error) as error:
+        what = "holds pickled objects, which are not read" if "pickle" in str(error) else f"damaged ({error})"
+        raise InputError(f"{name}: not a results archive: {what}") from None
+
+
+def _column(name, key, values, rows, labels):
+    """Column `key` of archive `name` checked (dtype, shape `rows`, codes, magnitudes) and read."""
+    column = key.rsplit("/", 1)[-1]
+    dtype = column_dtype(column)
+    if values.dtype != dtype or values.shape != rows:
+        raise InputError(f"{name}: array {key!r}: {values.dtype} of shape {values.shape}, expected {dtype} of "
+                         f"shape {rows}")
+    if column in TEXT_COLUMNS:
+        names = labels.get(column)
+        if names is None or names.ndim != 1 or names.dtype.kind != "U":
+            raise InputError(f"{name}: array {key!r}: no labels ({LABELS + column!r}: a 1-D str array)")
+        bad = np.flatnonzero((values < 0) | (values >= names.size))
+        if bad.size:
+            raise InputError(f"{name}: array {key!r}: row {bad[0]}: code {values[bad[0]]} has no label "
+                             f"(labels 0..{names.size - 1})")
+        return names[values]
+    if column in INT_COLUMNS:
+        return values.astype(int)
+    bad = np.flatnonzero(~(np.abs(values) <= MAX_MAGNITUDE) & ~np.isnan(values))
+    if bad.size:
+        raise InputError(f"{name}: array {key!r}: row {bad[0]}: {values[bad[0]]:g} is too large (at most "
+                         f"{MAX_MAGNITUDE:g} in magnitude)")
+    return values

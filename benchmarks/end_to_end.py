@@ -1,0 +1,211 @@
+"""The whole command line, start to exit: ``python3 -m abm_workbench engage ... --out R.npz`` at ≥ 10^6 instants.
+
+Run with FreeCAD's Python from the repository root: ``/usr/bin/python3 benchmarks/end_to_end.py``
+(``--instants``, ``--repeats``). The job: model test 1's staircase stock (JSON) and job file, its
+pass resampled to ceil(instants / 181) CL points (a toolpath CSV written to a temporary folder).
+
+Prints, from one run:
+1. the whole process (wall clock, start to exit; the best and the median of the repeats) for
+   .npz and .csv outputs, against the stock as given (``--stock-model initial``, the default
+   here) or the in-process stock (``--stock-model in-process``: much slower on this pass);
+2. the split of one .npz run measured inside one process: start-up (``import abm_workbench.cli``
+   in a fresh interpreter, interpreter included), reading (job, toolpath, stock), the in-process
+   sweep (with --stock-model in-process), engine (every chunk's columns), writing the .npz;
+3. the results CSV text of the same columns by formats.decimal_text and by a plain writer
+   (Python's repr of each rounded value, joined row by row), checked to be the same bytes.
+Ratios are printed beside the times, so that a loaded machine's figures still compare.
+"""
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, ROOT)
+
+MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
+PYTHON = "/usr/bin/python3"
+
+
+def resampled_toolpath(source, path, count):
+    """Write to `path` the toolpath CSV `source` (x, y, z, i, j, k, ... columns) resampled to `count` CL
+    points: positions linear in the CL index, the tool axis likewise then normalised."""
+    with open(source) as handle:
+        names = handle.readline().strip().split(",")
+    data = np.loadtxt(source, delimiter=",", skiprows=1)
+    old, new = np.arange(len(data)), np.linspace(0.0, len(data) - 1.0, count)
+    table = np.column_stack([np.interp(new, old, data[:, c]) for c in range(data.shape[1])])
+    axis = [names.index(name) for name in "ijk"]
+    table[:, axis] /= np.linalg.norm(table[:, axis], axis=1, keepdims=True)
+    np.savetxt(path, table, delimiter=",", header=",".join(names), comments="", fmt="%.17g")
+
+
+def cached_bytecode(folder):
+    """The environment of a Python that keeps its compiled modules in `folder` (as an installed
+    package has them), whatever PYTHONDONTWRITEBYTECODE says here (this machine sets it)."""
+    environment = {key: value for key, value in os.environ.items() if key != "PYTHONDONTWRITEBYTECODE"}
+    environment["PYTHONPYCACHEPREFIX"] = folder
+    return environment
+
+
+def timed_runs(command, repeats, environment=None, root=ROOT):
+    """(best, median) wall-clock seconds of `repeats` runs of `command` (checked to exit 0), in
+    `environment` (default this one's), in the folder `root`."""
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=root,
+                       env=environment)
+        times.append(time.perf_counter() - start)
+    return min(times), float(np.median(times))
+
+
+def start_up(environment, repeats, root=ROOT):
+    """Best seconds of a fresh interpreter that does nothing, imports numpy, imports the command line
+    (of the checkout `root`)."""
+    return {name: timed_runs([PYTHON, "-c", code], repeats, environment, root)[0] for name, code in (
+        ("python -c pass", "pass"), ("import numpy", "import numpy"),
+        ("import abm_workbench.cli", "import abm_workbench.cli"))}
+
+
+def split(folder, model, repeats, environment):
+    """Seconds of the parts of one .npz engage against stock model `model`, in this process (start-up:
+    importing the command line in a fresh interpreter in `environment`), and the columns of every
+    chunk: (dict part -> seconds, [(results, summary) columns], instants)."""
+    from abm_workbench.formats import replacing, results_npz
+    from abm_workbench.jobs import Job
+    from abm_workbench.jobs.job import load_job_stock, prepare
+    from abm_workbench.jobs.run import ResultsChunk, in_process_sweep
+    from abm_workbench.parallel import map_chunks
+
+    seconds = {"start-up": timed_runs([PYTHON, "-c", "import abm_workbench.cli"], repeats, environment)[0]}
+    started = time.perf_counter()
+    job = Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"), os.path.join(MODEL, "job.json"),
+              {}, stock_model=model)
+    prepared = prepare(job)
+    stock, _ = load_job_stock(prepared)
+    seconds["reading"] = time.perf_counter() - started
+    started = time.perf_counter()
+    in_process, _ = in_process_sweep(prepared)
+    if in_process is not None:
+        seconds["in-process sweep"] = time.perf_counter() - started
+    started = time.perf_counter()
+    task = ResultsChunk(keep=False, frame=prepared.hints.frame, in_process=in_process, columnar=True)
+    parts = [result.parts for *_, result in map_chunks(task, [(stock.model, prepared.tool, prepared.toolpath,
+                                                                prepared.settings)])]
+    seconds["engine"] = time.perf_counter() - started
+    started = time.perf_counter()
+    target = os.path.join(folder, "split.npz")
+    with replacing(target) as temporaries:
+        results_npz.write_chunks(iter(parts), temporaries[0])
+    seconds["writing .npz"] = time.perf_counter() - started
+    return seconds, parts, len(prepared.toolpath) * prepared.settings.phi.size
+
+
+def plain_csv(parts):
+    """The results CSV text of `parts` by a plain writer: each value's text by Python (repr of the
+    float rounded to decimal_text.DECIMALS places, '' for NaN, str of an int, a label), rows joined."""
+    from abm_workbench.formats.decimal_text import DECIMALS
+    from abm_workbench.formats.results_columns import INT_COLUMNS, TEXT_COLUMNS, text_labels
+
+    lines = [",".join(parts[0][0]) + "\n"]
+    for results, _ in parts:
+        texts = []
+        for name, values in results.items():
+            if name in TEXT_COLUMNS:
+                labels = np.array(text_labels(name, int(values.max(initial=0)) + 1))
+                texts.append(labels[values].tolist())
+            elif name in INT_COLUMNS:
+                texts.append([str(value) for value in values.tolist()])
+            else:
+                rounded = (np.round(values, DECIMALS) + 0.0).tolist()
+                texts.append(["" if value != value else repr(value) for value in rounded])
+        lines.extend(",".join(row) + "\n" for row in zip(*texts))
+    return "".join(lines)
+
+
+def csv_writers(parts):
+    """(seconds of decimal_text, seconds of the plain writer, same text?) for the results CSV of `parts`."""
+    from abm_workbench.formats.results_csv import table_text
+
+    started = time.perf_counter()
+    texts = [table_text(results) for results, _ in parts]
+    fast = "".join(texts[:1] + [text.split("\n", 1)[1] for text in texts[1:]])
+    fast_seconds = time.perf_counter() - started
+    started = time.perf_counter()
+    plain = plain_csv(parts)
+    return fast_seconds, time.perf_counter() - started, fast == plain
+
+
+def print_start_up(starts):
+    """The start-up table of {case: start_up(...)}, with the load average now."""
+    load = os.getloadavg()
+    print(f"Start-up, best of the repeats (s), load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} after; the "
+          "command line's own share is its time less numpy's:")
+    print("| bytecode | python -c pass | import numpy | import abm_workbench.cli | its own |")
+    print("|---|---|---|---|---|")
+    for name, times in starts.items():
+        print(f"| {name} | {' | '.join(f'{value:.3f}' for value in times.values())} | "
+              f"{times['import abm_workbench.cli'] - times['import numpy']:.3f} |")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--instants", type=int, default=10**6, help="at least this many instants (default 10^6)")
+    parser.add_argument("--start-up-only", action="store_true", help="only the start-up table")
+    parser.add_argument("--repeats", type=int, default=3, help="runs per whole-process figure (default 3)")
+    parser.add_argument("--stock-model", choices=("initial", "in-process"), default="initial",
+                        help="the stock as given (default) or the in-process stock")
+    parser.add_argument("--baseline", metavar="CHECKOUT",
+                        help="also the start-up of the command line of another checkout (e.g. the main branch's)")
+    args = parser.parse_args()
+    load = os.getloadavg()
+    with tempfile.TemporaryDirectory() as folder:
+        resampled_toolpath(os.path.join(MODEL, "toolpath.csv"), os.path.join(folder, "toolpath.csv"),
+                           math.ceil(args.instants / 181))
+        base = [PYTHON, "-m", "abm_workbench", "engage", "--stock", os.path.join(MODEL, "stock.json"),
+                "--toolpath", os.path.join(folder, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json")]
+        cached = cached_bytecode(os.path.join(folder, "bytecode"))
+        timed_runs([PYTHON, "-m", "abm_workbench", "engage", "--help"], 1, cached)  # compiles every module once
+        uncached = {key: value for key, value in os.environ.items() if key != "PYTHONPYCACHEPREFIX"}
+        uncached["PYTHONDONTWRITEBYTECODE"] = "1"  # the project compiled at every run (without a __pycache__)
+        starts = {"project not cached": start_up(uncached, args.repeats),
+                  "bytecode cached": start_up(cached, args.repeats)}
+        if args.baseline:
+            timed_runs([PYTHON, "-c", "import abm_workbench.cli"], 1, cached, args.baseline)
+            starts[f"bytecode cached, {args.baseline}"] = start_up(cached, args.repeats, args.baseline)
+        if args.start_up_only:
+            print_start_up(starts)
+            return
+        seconds, parts, instants = split(folder, args.stock_model, args.repeats, cached)
+        whole = {suffix: timed_runs(base + ["--stock-model", args.stock_model, "--out",
+                                            os.path.join(folder, f"R.{suffix}")], args.repeats, cached)
+                 for suffix in ("npz", "csv")}
+        fast, plain, same = csv_writers(parts)
+    print_start_up(starts)
+    print(f"\nWhole command line (bytecode cached), {instants:,} instants (model test 1, JSON stock); load average "
+          f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start, {os.cpu_count()} cores")
+    print("| stock model | output | best s | median s | instants/s (best) | .csv time / this |")
+    print("|---|---|---|---|---|---|")
+    for suffix, (best, median) in whole.items():
+        print(f"| {args.stock_model} | .{suffix} | {best:.2f} | {median:.2f} | {instants / best:,.0f} | "
+              f"{whole['csv'][0] / best:.2f} |")
+    total = sum(seconds.values())
+    print(f"\nSplit of one .npz run ({args.stock_model} stock), sum {total:.2f} s "
+          f"({instants / total:,.0f} instants/s):")
+    print("| part | s | share |")
+    print("|---|---|---|")
+    for part, value in seconds.items():
+        print(f"| {part} | {value:.3f} | {100 * value / total:.0f} % |")
+    print(f"\nResults CSV text of the same {instants:,} rows: decimal_text {fast:.2f} s, plain writer {plain:.2f} s "
+          f"({plain / fast:.1f}x slower); same bytes: {same}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,185 @@
+"""Edit latency in the real FreeCAD GUI (under Xvfb): model test 1, a value typed into the task panel
+then OK, until the recompute is done and the 3D view drawn again; the same with forces on; the
+dock's CL point moved by one (a key press on its slider) until the 3D view shows the new
+highlight, and until the dock's plots are drawn too.
+
+    /usr/bin/python3 benchmarks/gui_latency.py [--root CHECKOUT ...] [--repeat N]
+
+Each --root is a checkout of the workbench (default: this one); give the old one too (e.g.
+``--root /work/main --root .``) to print before and after from one run, and their ratios. Times
+are medians of N edits (default 3), in seconds; the machine's load average is printed with them.
+"""
+
+import argparse
+import json
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+#: Seconds one GUI run may take.
+TIMEOUT = 900
+
+MACRO = r'''
+import json, os, sys, time, traceback
+sys.path.insert(0, {root!r})
+from PySide2 import QtCore, QtGui, QtWidgets
+
+def run():
+    out = {{}}
+    try:
+        import FreeCAD, FreeCADGui
+        import numpy as np
+        FreeCADGui.getMainWindow().showMaximized()
+        FreeCADGui.activateWorkbench("ABMWorkbench")
+        from abm_workbench.gui import commands, dock, task_panel
+        app = QtWidgets.QApplication.instance()
+        window = FreeCADGui.getMainWindow()
+
+        def settle():
+            for _ in range(3):
+                FreeCADGui.updateGui()
+                app.processEvents()
+
+        def drawn():
+            # the 3D view painted now, synchronously, and the GL pipeline finished
+            view = FreeCADGui.ActiveDocument.ActiveView
+            settle()
+            view.graphicsView().viewport().repaint()
+            app.processEvents()
+
+        def key(widget, code, text="", modifiers=QtCore.Qt.NoModifier):
+            for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+                app.sendEvent(widget, QtGui.QKeyEvent(kind, code, modifiers, text))
+
+        def ok_button():
+            boxes = [b for b in window.findChildren(QtWidgets.QDialogButtonBox) if b.isVisible()]
+            return [b for box in boxes for b in box.buttons() if b.text().replace("&", "") == "OK"][0]
+
+        def click(button):
+            centre = QtCore.QPointF(button.rect().center())
+            for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease):
+                app.sendEvent(button, QtGui.QMouseEvent(kind, centre, QtCore.Qt.LeftButton, QtCore.Qt.LeftButton,
+                                                        QtCore.Qt.NoModifier))
+
+        def edited(engagement, name, text):
+            # task panel opened, `text` typed into field `name`, then OK clicked: seconds until recomputed and drawn
+            FreeCADGui.ActiveDocument.setEdit(engagement, 0)
+            settle()
+            panel = task_panel.shown()
+            field = panel.field(name)
+            field.setFocus()
+            key(field, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)
+            for char in text:
+                key(field, ord(char.upper()), char)
+            settle()
+            button = ok_button()
+            started = time.perf_counter()
+            click(button)
+            waited = 0
+            while engagement.Proxy.result(engagement) is None or task_panel.shown() is not None:
+                settle()
+                waited += 1
+                if waited > 10000:
+                    raise RuntimeError("the edit did not finish")
+            drawn()
+            return time.perf_counter() - started
+
+        started = time.perf_counter()
+        _, _, engagement = commands.OpenModelTest().run()
+        drawn()
+        out["open"] = time.perf_counter() - started
+        out["state"] = engagement.State
+        values = ("9", "11", "8", "12", "7", "13", "6")
+        out["edit"] = [edited(engagement, "Inclination", v) for v in values[:{repeat}]]
+        engagement.Forces = True
+        engagement.touch()
+        engagement.Document.recompute()
+        settle()
+        out["forces"] = [edited(engagement, "Inclination", v) for v in values[:{repeat}]]
+        out["forces_on"] = bool(engagement.PeakForce > 0)
+        shown = dock.find()
+        slider = shown.slider
+        slider.setFocus()
+        highlighted, plotted = [], []
+        view = FreeCADGui.ActiveDocument.ActiveView
+        for step in range(2 * {repeat}):
+            started = time.perf_counter()
+            key(slider, QtCore.Qt.Key_Right if step % 2 == 0 else QtCore.Qt.Key_Left)
+            view.graphicsView().viewport().repaint()  # the highlight drawn, before any queued event
+            highlighted.append(time.perf_counter() - started)
+            settle()
+            shown.canvas.repaint()
+            drawn()
+            plotted.append(time.perf_counter() - started)
+        out["slider"], out["plots"] = highlighted, plotted
+        out["ok"] = True
+    except Exception:
+        out["error"] = traceback.format_exc()
+    finally:
+        with open({out!r}, "w") as handle:
+            json.dump(out, handle)
+        os._exit(0)
+
+QtCore.QTimer.singleShot(1500, run)
+'''
+
+
+def measure(root, repeat):
+    """The figures of one GUI run on the checkout `root` (dict of lists of seconds)."""
+    with tempfile.TemporaryDirectory(prefix="abm-latency-") as folder:
+        out, macro = os.path.join(folder, "out.json"), os.path.join(folder, "macro.py")
+        with open(macro, "w") as handle:
+            handle.write(MACRO.format(root=os.path.abspath(root), out=out, repeat=repeat))
+        mods = os.path.join(folder, "home", ".local", "share", "FreeCAD", "Mod")
+        os.makedirs(mods)
+        os.symlink(os.path.abspath(root), os.path.join(mods, "ABM"))
+        env = dict(os.environ, HOME=os.path.join(folder, "home"), QTWEBENGINE_DISABLE_SANDBOX="1")
+        process = subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", macro], env=env,
+                                   cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                   start_new_session=True)
+        try:
+            process.wait(timeout=TIMEOUT)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            sys.exit(f"{root}: the GUI did not finish in {TIMEOUT} s")
+        with open(out) as handle:
+            figures = json.load(handle)
+    if not figures.get("ok"):
+        sys.exit(f"{root}: {figures.get('error')}")
+    return figures
+
+
+def median(values):
+    ordered = sorted(values)
+    return ordered[len(ordered) // 2]
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--root", action="append", help="a checkout of the workbench (repeatable)")
+    parser.add_argument("--repeat", type=int, default=3, help="edits and slider moves measured (median)")
+    args = parser.parse_args(argv)
+    roots = args.root or [HERE]
+    rows = []
+    for root in roots:
+        figures = measure(root, args.repeat)
+        rows.append((root, figures["open"], median(figures["edit"]), median(figures["forces"]),
+                     median(figures["slider"]) * 1000.0, median(figures.get("plots", figures["slider"])) * 1000.0))
+    print(f"load average: {' '.join(f'{value:.2f}' for value in os.getloadavg())}")
+    print("| checkout | open model test 1 (s) | edit → OK → drawn (s) | with forces (s) | slider: highlight drawn (ms) "
+          "| slider: plots drawn too (ms) |")
+    print("|---|---|---|---|---|---|")
+    for root, *values in rows:
+        print(f"| {root} | " + " | ".join(f"{value:.3g}" for value in values) + " |")
+    if len(rows) > 1:
+        first = rows[0]
+        for row in rows[1:]:
+            ratios = " | ".join(f"{old / new:.3g}×" for old, new in zip(first[1:], row[1:]))
+            print(f"| {first[0]} ÷ {row[0]} | {ratios} |")
+
+
+if __name__ == "__main__":
+    main()
