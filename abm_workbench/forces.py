@@ -124,11 +124,13 @@ def flute_angles(phi_deg, flutes):
     return np.asarray(phi_deg, dtype=float)[None, :] + 360.0 * np.arange(int(flutes))[:, None] / int(flutes)
 
 
-def flute_lengths(stock, tool, toolpath, settings, *, first=None):
+def flute_lengths(stock, tool, toolpath, settings, *, first=None, lengths_at=None):
     """(Z, m, p) engaged length (mm) of each straight flute at every CL point and angle of settings.phi.
 
     Flute k is the edge at φ + 360·k/Z, solved by the engine. first: the (m, p) lengths of
-    flute 1 when already computed (an Engagement's length), to save that solve.
+    flute 1 when already computed (an Engagement's length), to save that solve. lengths_at:
+    a function of the flute's Settings giving its (m, p) lengths another way (e.g. against
+    the in-process stock), instead of the engine's engage on `stock`.
     """
     phi = settings.phi
     lengths = []
@@ -140,7 +142,7 @@ def flute_lengths(stock, tool, toolpath, settings, *, first=None):
         shifted = dataclasses.replace(settings, phi_start=start, phi_end=start + settings.phi_step * (phi.size - 1))
         if shifted.phi.size != phi.size:
             raise ValueError(f"flute {k + 1}: {shifted.phi.size} angles instead of {phi.size}")
-        lengths.append(engage(stock, tool, toolpath, shifted).length)
+        lengths.append(engage(stock, tool, toolpath, shifted).length if lengths_at is None else lengths_at(shifted))
     return np.stack(lengths)
 
 
@@ -350,20 +352,24 @@ def joined_forces(parts):
     return dataclasses.replace(first, **per_cl)
 
 
-def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL_SLOT, feed=None, first=None):
+def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL_SLOT, feed=None, first=None,
+                lengths_at=None):
     """Forces of a pass: straight flutes through the engine's engage per flute (edge_forces),
     helical ones (tool.helix ≠ 0) through helix.flute_engagement (helical_forces).
 
     feed: feed per tooth, scalar or (m,) mm (default settings.feed_per_tooth). first: flute 1's
-    (m, p) lengths when already computed (straight flutes only). Returns Forces.
+    (m, p) lengths when already computed, lengths_at: how the other flutes' lengths are found
+    (flute_lengths; straight flutes only). Returns Forces.
     """
+    if tool.helix != 0.0 and lengths_at is not None:
+        raise ValueError("lengths_at is for straight flutes only")
     immersion = check_immersion(immersion)
     rotation = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
     if tool.helix != 0.0:
         engaged = flute_engagement(stock, tool, toolpath, settings, immersion=immersion)
         return helical_forces(engaged, rotation, coefficients, feed=settings.feed_per_tooth if feed is None else feed,
                               spindle_rpm=settings.spindle_rpm)
-    lengths = flute_lengths(stock, tool, toolpath, settings, first=first)
+    lengths = flute_lengths(stock, tool, toolpath, settings, first=first, lengths_at=lengths_at)
     return edge_forces(lengths, settings.phi, rotation, tool.radius,
                        settings.inclination, settings.feed_per_tooth if feed is None else feed, coefficients,
                        immersion=immersion, spindle_rpm=settings.spindle_rpm)

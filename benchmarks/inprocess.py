@@ -10,7 +10,9 @@ Cases (engine time only; files are loaded before the clock starts; one core):
   all, at 1°, in chunks of `--chunk` instants: `engage` against the in-process path, over
   `--evaluate` CL points from the middle of the middle pass (the whole program is swept and
   indexed; only those points are evaluated, to keep the run short).
-Prints a table: case, instants, seconds, instants/s.
+Prints a table: case, instants, seconds, instants/s; then the ratios, measured in this one
+run: in-process over initial for each case, and the program's in-process time per instant over
+the single pass's; and the load average.
 """
 
 import argparse
@@ -61,10 +63,12 @@ def in_process(stock, tool, toolpath, settings, moves, first_row, chunk, toleran
     return time.perf_counter() - start, changed
 
 
-def best_of(repeats, run):
-    """Best seconds of `repeats` calls of run() (which returns seconds first), and its last result."""
-    results = [run() for _ in range(repeats)]
-    return min(r[0] for r in results), results[-1]
+def best_of(repeats, *runs):
+    """Best seconds of `repeats` calls of each of runs() (each returns seconds first), the calls
+    taken in turn so that a change of the machine's load touches them alike; and the last
+    result of each."""
+    results = [[run() for run in runs] for _ in range(repeats)]
+    return [(min(r[i][0] for r in results), results[-1][i]) for i in range(len(runs))]
 
 
 def main():
@@ -74,7 +78,7 @@ def main():
     parser.add_argument("--passes", type=int, default=16, help="passes of the program")
     parser.add_argument("--stepover", type=float, default=1.5, help="mm between passes")
     parser.add_argument("--chunk", type=int, default=1 << 15, help="instants per chunk")
-    parser.add_argument("--evaluate", type=int, default=1000, help="CL points of the program evaluated")
+    parser.add_argument("--evaluate", type=int, default=300, help="CL points of the program evaluated")
     parser.add_argument("--tolerance", type=float, default=0.05, help="five-axis sub-step tolerance (mm)")
     args = parser.parse_args()
     stock, tool, path, settings = load_model(MODEL)
@@ -87,9 +91,9 @@ def main():
         return (time.perf_counter() - start,)
 
     moves = program_of([path], tool)
-    initial, _ = best_of(args.repeats, lambda: timed_engage(path))
-    inproc, (_, changed) = best_of(args.repeats, lambda: in_process(stock, tool, path, settings, moves, 0, args.chunk,
-                                                                     args.tolerance))
+    (initial, _), (inproc, (_, changed)) = best_of(
+        args.repeats, lambda: timed_engage(path),
+        lambda: in_process(stock, tool, path, settings, moves, 0, args.chunk, args.tolerance))
     n = len(path) * p
     rows.append((f"model test 1, 53 CL x {p} phi, initial (engage)", n, initial, ""))
     rows.append((f"model test 1, 53 CL x {p} phi, in-process", n, inproc, f"{changed} CL changed"))
@@ -105,16 +109,25 @@ def main():
     theta_b = np.concatenate([t.theta_b for t in passes])
     chosen = Toolpath(program.cl[first:last], theta_a[first:last], theta_b[first:last])
     n = len(chosen) * p
-    (initial,) = timed_engage(chosen)
-    inproc, changed = in_process(stock, tool, chosen, settings, program, first, args.chunk, args.tolerance)
+    (initial, _), (inproc, (_, changed)) = best_of(
+        1, lambda: timed_engage(chosen),
+        lambda: in_process(stock, tool, chosen, settings, program, first, args.chunk, args.tolerance))
     name = (f"{args.passes * per_pass}-point program ({args.passes} passes, stepover {args.stepover} mm), "
             f"{len(chosen)} CL x {p} phi")
     rows.append((f"{name}, initial (engage)", n, initial, ""))
     rows.append((f"{name}, in-process", n, inproc, f"{changed} CL changed"))
 
-    print(f"| case | instants | seconds | instants/s | note |\n|---|---|---|---|---|")
+    print("| case | instants | seconds | instants/s | note |\n|---|---|---|---|---|")
     for name, count, seconds, note in rows:
         print(f"| {name} | {count} | {seconds:.3f} | {count / seconds:.3g} | {note} |")
+    single = rows[1][2] / rows[0][2]
+    program_ratio = rows[3][2] / rows[2][2]
+    per_single = rows[1][2] / rows[1][1]
+    per_program = rows[3][2] / rows[3][1]
+    print(f"\nsingle pass: in-process / initial = {single:.2f} (target <= 2)")
+    print(f"program: in-process / initial = {program_ratio:.1f}; in-process time per instant = "
+          f"{per_program / per_single:.1f} x the single pass's (target: within ~10)")
+    print(f"load average: {' '.join(f'{v:.2f}' for v in os.getloadavg())}")
 
 
 if __name__ == "__main__":

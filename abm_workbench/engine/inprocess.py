@@ -11,7 +11,7 @@ part moves more than the tolerance (docs/ENGINE.md gives the construction and th
 
 Each edge line's inside intervals in the stock (an EdgeIntervals, as the staircase engine's
 `inside_intervals` gives them) lose their parts inside those volumes. The pieces are grouped
-in spans; a KD tree over the spans' bounding spheres gives each CL point the spans near it, and
+in spans; a KD tree over bounding spheres of slices of the spans gives each CL point the spans near it, and
 tests that prove a miss drop most pairs before the closed form, so the cost grows with the
 moves near a point, not with the program's length (docs/ENGINE.md). Lengths in mm.
 """
@@ -28,12 +28,22 @@ from .tolerances import LENGTH_EPS
 _MACHINED = SURFACES.index("machined")
 #: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
 _OPPOSITE_EPS = 1e-12
+#: Spans per chain at most.
+_CHAIN = 16
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
 _PAIR_BATCH = 1 << 16
 #: Runs of angles per CL point, each with its own bounding sphere for the spatial index.
 _GROUPS = 12
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
+#: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
+_PROBE = 2
+#: Rounds of that first solving, at most; they stop when a round leaves more than this
+#: share of the envelopes' length.
+_PROBE_ROUNDS = 3
+_PROBE_GAIN = 0.8
+#: (edge line, span) pairs per line above which chains are tested per line and probes made.
+_PROBE_PAIRS = 8
 
 
 def _float_array(name, value, shape):
@@ -113,16 +123,23 @@ class ProgramMoves:
 
 @dataclass(frozen=True)
 class SweptPieces:
-    """The cutting moves of a program as P constant-axis pieces grouped in S spans, with a KD
-    tree over the spans.
+    """The cutting moves of a program as P constant-axis pieces grouped in S spans and C chains,
+    with a KD tree over the chains.
 
     Pieces: c0, c1 (P, 3) bottom centres at the piece's ends; axis (P, 3) unit; radius, height
     (P,) (mm); move (P,) the program row j ending the move the piece belongs to.
     Spans (consecutive pieces of one move): first, count (S,) their pieces; move (S,) as above;
     c0, c1 (S, 3), axis (S, 3), height (S,): the span as one constant-axis hull, and slack (S,)
     (mm): every piece of the span lies within slack of that hull with its radius, the axes of
-    its pieces within turn/2 (S,) (rad) of the span's axis; centre (S, 3)
-    and bound (S,): a bounding sphere of it all; tree: cKDTree over the centres.
+    its pieces within turn/2 (S,) (rad) of the span's axis.
+    Chains (runs of consecutive spans of one tool, no longer than its radius): chain_first,
+    chain_count (C,) their spans; chain_move (C,) the first move; chain_c0, chain_c1,
+    chain_axis (C, 3), chain_radius, chain_height (C,): one constant-axis hull from the first
+    span's start to the last one's end; chain_slack (C,): the pieces' bottom centres lie
+    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|).
+    Balls: each chain's height cut in slices about as tall as its radius, each in a bounding
+    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: cKDTree
+    over the balls' centres.
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
     """
@@ -143,8 +160,19 @@ class SweptPieces:
     span_radius: np.ndarray
     span_slack: np.ndarray
     span_turn: np.ndarray
-    span_centre: np.ndarray
-    span_bound: np.ndarray
+    chain_first: np.ndarray
+    chain_count: np.ndarray
+    chain_move: np.ndarray
+    chain_c0: np.ndarray
+    chain_c1: np.ndarray
+    chain_axis: np.ndarray
+    chain_radius: np.ndarray
+    chain_height: np.ndarray
+    chain_slack: np.ndarray
+    chain_lean: np.ndarray
+    ball_chain: np.ndarray
+    ball_centre: np.ndarray
+    ball_bound: np.ndarray
     tree: object  # scipy.spatial.cKDTree
     tolerance: float
 
@@ -204,8 +232,6 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     # Within a span the axis turns by Θ/spans: every point of the tool stays within
     # ρ·Θ/(2·spans) of the same point turned to the span's middle axis.
     slack = 0.5 * rho[span_of] * turn[span_of] / spans[span_of]
-    centre = 0.5 * (s0 + s1) + 0.5 * s_height[:, None] * s_axis
-    bound = np.hypot(s_radius + 0.5 * np.linalg.norm(s1 - s0, axis=1) + slack, 0.5 * s_height + slack)
     # Pieces: per_span equal turning steps of each span's move, in order.
     count = per_span[span_of]
     owner, rank = _csr(count)
@@ -213,32 +239,89 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     c0, c1, axis = _steps(p0[move], p1[move], w0[move], w1[move], turn[move], span_index[owner] * count[owner] + rank,
                           spans[move] * count[owner])
     first = np.cumsum(count) - count
+    chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner)
     from scipy.spatial import cKDTree  # here: scipy.spatial takes a while to import
 
-    tree = cKDTree(centre if centre.size else np.zeros((0, 3)))
+    tree = cKDTree(chains[-2] if chains[-2].size else np.zeros((0, 3)))
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
-                       s_height, s_radius, slack, turn[span_of] / spans[span_of], centre, bound, tree, tolerance)
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, tree,
+                       tolerance)
 
 
-def _apart(a, b, c0, c1, axis, radius, height, slack, turn=None):
+def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span):
+    """The chains of the spans (SweptPieces's chain_… and ball_… fields, in order).
+
+    span_move, radius, height (S,), s0, s1, s_axis (S, 3): the spans; c0, c1, axis (P, 3), piece_span
+    (P,): the pieces and their span. A chain breaks where the moves stop following each other
+    or the tool changes, and after _CHAIN spans or a path as long as the tool's radius. Its
+    axis w is the mean of its spans' axes; its slack the largest distance of a piece's ends
+    from its path, its lean the largest |w_p − w| of a piece's axis w_p (see _apart).
+    """
+    n = span_move.size
+    step = np.linalg.norm(s1 - s0, axis=1)
+    run = np.cumsum(np.r_[True, (np.diff(span_move) > 1) | (np.diff(radius) != 0) | (np.diff(height) != 0)]) - 1
+    run_first = np.flatnonzero(np.r_[True, run[1:] != run[:-1]]) if n else np.zeros(0, dtype=np.intp)
+    before = np.cumsum(step) - step
+    along = before - before[run_first][run]
+    rank = np.arange(n) - run_first[run]
+    key = np.stack([run, rank // _CHAIN, np.floor(along / radius)])
+    new = np.r_[True, (key[:, 1:] != key[:, :-1]).any(axis=0)] if n else np.zeros(0, dtype=bool)
+    chain = np.cumsum(new) - 1
+    first = np.flatnonzero(new)
+    count = np.diff(np.r_[first, n])
+    last = first + count - 1
+    mean = np.add.reduceat(s_axis, first, axis=0) if n else np.zeros((0, 3))
+    chain_axis = mean / np.linalg.norm(mean, axis=1)[:, None]
+    ch0, ch1 = s0[first], s1[last]
+    piece_chain = chain[piece_span]
+    d = ch1[piece_chain] - ch0[piece_chain]
+    zero = np.zeros_like(d)
+    off = np.maximum(_segment_distance(c0, zero, ch0[piece_chain], d), _segment_distance(c1, zero, ch0[piece_chain], d))
+    slack, lean = np.zeros(first.size), np.zeros(first.size)
+    np.maximum.at(slack, piece_chain, off)
+    np.maximum.at(lean, piece_chain, np.linalg.norm(axis - chain_axis[piece_chain], axis=1))
+    r, h = radius[first], height[first]
+    slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
+    ball_chain, ball_index = _csr(slices)
+    tall = (h / slices)[ball_chain]
+    ball_centre = (0.5 * (ch0 + ch1))[ball_chain] + ((ball_index + 0.5) * tall)[:, None] * chain_axis[ball_chain]
+    # A point c0 + s·d + a·w + b of the hull lies within |d|/2 + √(r² + (a − a_mid)²) of the
+    # point (c0 + c1)/2 + a_mid·w; the pieces lie within slack + lean·√(r² + H²) of the hull.
+    grown = 0.5 * np.linalg.norm(ch1 - ch0, axis=1) + slack + lean * np.hypot(r, h)
+    ball_bound = grown[ball_chain] + np.hypot(r[ball_chain], 0.5 * tall)
+    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, ball_chain, ball_centre,
+            ball_bound)
+
+
+def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
     it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm.
 
-    turn (K,), rad: the slack comes from turning the tool by up to turn/2 about its bottom
-    centre; only the tool's part up to the segment's height can come near it, so a point there
-    moves by at most turn/2 · √(radius² + that height²), which replaces slack when smaller.
+    lean (K,): the volume is made of pieces whose bottom centres lie within slack of the
+    hull's path and whose axes differ from its axis by at most lean (the length of the
+    difference of the unit vectors); turning a piece about its bottom centre moves a point
+    at height h by at most lean·√(radius² + h²), and only the part up to the height the
+    segment reaches can come near it, so that much is added to slack.
+
+    grain (K,) or scalar, mm: also apart when the segment reaches less than that into the
+    hull's axial range (it can then share only a sliver with the hull).
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
-    if turn is not None:
-        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack, 0.0, height)
-        slack = np.minimum(slack, 0.5 * turn * np.hypot(radius, reach))
-    pa, pb, pd = qa - aa[:, None] * axis, qb - ab[:, None] * axis, d - da[:, None] * axis
-    far = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius + slack
-    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack
-    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack
-    return far | below | above
+    slack = np.broadcast_to(slack, aa.shape)
+    if lean is not None:
+        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0, height)
+        slack = slack + lean * np.hypot(radius, reach)
+    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack + grain
+    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack - grain
+    apart = below | above
+    # The distance seen along the axis only where the cheaper test left it open.
+    i = np.flatnonzero(~apart)
+    w = axis[i]
+    pa, pb, pd = qa[i] - aa[i, None] * w, qb[i] - ab[i, None] * w, d[i] - da[i, None] * w
+    apart[i] = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius[i] + slack[i]
+    return apart
 
 
 def _inside(x, c0, c1, axis, radius, low, high):
@@ -317,93 +400,326 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
     if stock.rows.size == 0 or pieces.move.size == 0:
         return empty
-    # Per line with stock material: the segment a … b from its first start to its last end.
+    # Per line with stock material: the range lo … hi from its first start to its last end,
+    # and the envelope of its remaining material, which narrows as removals are found
+    # (lo ≥ hi: nothing remains, the line is removed whole).
     first = np.flatnonzero(np.r_[True, stock.rows[1:] != stock.rows[:-1]])
     last = np.r_[first[1:], stock.rows.size] - 1
     line = stock.rows[first]
     lo, hi = stock.start[first], stock.end[last]
-    a = origins[line] + lo[:, None] * directions[line]
-    b = origins[line] + hi[:, None] * directions[line]
-    # Per group of a CL point's lines (its angles in _GROUPS runs): a bounding sphere of their
-    # segments (smaller than one sphere for the whole point, so fewer spans meet it).
+    envelope = np.stack([lo, hi])
+    line_origins, line_directions = origins[line], directions[line]
+    # Lines in groups: a CL point's angles in _GROUPS runs, all with the tool axis of that
+    # point as direction.
     cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
     present = np.unique(cl)
     group = np.searchsorted(present, cl)
-    low = np.full((present.size, 3), np.inf)
-    high = np.full((present.size, 3), -np.inf)
-    np.minimum.at(low, group, np.minimum(a, b))
-    np.maximum.at(high, group, np.maximum(a, b))
-    centre = 0.5 * (low + high)
-    radius = 0.5 * np.linalg.norm(high - low, axis=1)
-    # (group, span) pairs: spheres that meet, the span's move ends before the CL point, and
-    # the group's sphere is not surely apart from the span.
+    members = np.argsort(group, kind="stable")
+    starts = np.searchsorted(group[members], np.arange(present.size))
+    sizes = np.bincount(group, minlength=present.size)
+    before = program_index[line // p] - 1
+    group_before = program_index[present // _GROUPS] - 1
+    centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
+    # (group, chain) pairs: a group's sphere meets a ball of the chain, the chain's first move
+    # ends before the CL point, and the sphere is not surely apart from the chain.
     from scipy.spatial import cKDTree
 
-    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.span_bound.max()),
+    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
                                                   output_type="ndarray")
-    g, k = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = (near["v"] <= radius[g] + pieces.span_bound[k]) & (pieces.span_move[k] <= program_index[present[g] // _GROUPS] - 1)
-    g, k = g[keep], k[keep]
-    keep = ~_apart(centre[g], centre[g], pieces.span_c0[k], pieces.span_c1[k], pieces.span_axis[k],
-                   pieces.span_radius[k], pieces.span_height[k], pieces.span_slack[k] + radius[g])
-    g, k = g[keep], k[keep]
-    # (line, span) pairs, in batches of (CL point, span) pairs that expand to at most
-    # _EXPAND_BATCH of them, so that memory stays bounded.
-    order = np.argsort(group, kind="stable")
-    starts = np.searchsorted(group[order], np.arange(present.size))
-    sizes = np.bincount(group, minlength=present.size)[g]
-    cuts = np.unique(np.r_[0, np.searchsorted(np.cumsum(sizes), np.arange(_EXPAND_BATCH, int(sizes.sum()),
+    g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
+    keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
+    chains = pieces.chain_first.size
+    pair = np.unique(g[keep] * chains + pieces.ball_chain[ball[keep]])
+    g, k = pair // chains, pair % chains
+    keep = pieces.chain_move[k] <= group_before[g]
+    g, k = _near_groups(g[keep], k[keep], centre, radius, pieces)
+    lines = (members, starts, sizes, envelope, line_origins, line_directions, before, pieces)
+    if (sizes[g] * pieces.chain_count[k]).sum() <= _PROBE_PAIRS * line.size:
+        # Few (line, span) pairs: straight to (group, span) pairs, no test of chains per line.
+        owner, rank = _csr(pieces.chain_count[k])
+        g, span = g[owner], pieces.chain_first[k][owner] + rank
+        keep = pieces.span_move[span] <= group_before[g]
+        g, span = g[keep], span[keep]
+        keep = ~_apart(centre[g], centre[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                       pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + radius[g])
+        found = [_expanded(g[keep], span[keep], *lines, chained=False)]
+        g = k = np.zeros(0, dtype=np.intp)
+    else:
+        found = []
+    # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
+    # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
+    # meet far fewer chains.
+    for _ in range(_PROBE_ROUNDS if g.size else 0):
+        remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
+        found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
+                               *lines, chained=False))
+        centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
+        g, k = _near_groups(g, k, centre, radius, pieces)
+        if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
+            break
+    found.append(_expanded(g, k, *lines, chained=True))
+    dead = envelope[0] >= envelope[1]
+    seg, enter, leave = (np.concatenate(part) for part in zip(*found))
+    alive = ~dead[seg]
+    return (np.concatenate([line[dead], line[seg[alive]]]), np.concatenate([lo[dead], enter[alive]]),
+            np.concatenate([hi[dead], leave[alive]]))
+
+
+def _probe(g, k, centre, radius, direction, group_before, pieces):
+    """A few (group, span) pairs per group from its (group g, chain k) pairs: first chains, then
+    their spans (those ending before the group's CL point), chosen alike: among the hulls whose
+    sides hold the group's whole sphere (seen along their axis), the _PROBE reaching lowest and
+    the _PROBE reaching highest along the group's lines (direction (n, 3)), and the _PROBE whose
+    axes pass nearest the sphere's centre."""
+    def chosen(g, c0, c1, axis, r, h, slack):
+        across = _across(centre[g], c0, c1, axis) - r
+        lower, upper = _extent(centre[g], direction[g], c0, c1, axis, r, h)
+        holds = across + radius[g] + slack <= 0.0
+        return np.flatnonzero(_smallest(g, across, _PROBE) | _smallest(g, np.where(holds, lower, np.inf), _PROBE)
+                              | _smallest(g, np.where(holds, -upper, np.inf), _PROBE))
+
+    grown = pieces.chain_slack + pieces.chain_lean * np.hypot(pieces.chain_radius, pieces.chain_height)
+    pick = chosen(g, pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k], pieces.chain_radius[k],
+                  pieces.chain_height[k], grown[k])
+    owner, rank = _csr(pieces.chain_count[k[pick]])
+    g, span = g[pick][owner], pieces.chain_first[k[pick]][owner] + rank
+    keep = pieces.span_move[span] <= group_before[g]
+    g, span = g[keep], span[keep]
+    pick = chosen(g, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span],
+                  pieces.span_height[span], pieces.span_slack[span])
+    return g[pick], span[pick]
+
+
+def _group_spheres(group, n, envelope, origins, directions):
+    """Bounding spheres (centre (n, 3), radius (n,)) of the envelopes of each group's lines
+    that still hold material (group (L,) of each line, non-decreasing); radius −inf for a
+    group without any."""
+    alive = np.flatnonzero(envelope[0] < envelope[1])
+    a, b = _ends(alive, envelope, origins, directions)
+    low, high = np.zeros((n, 3)), np.zeros((n, 3))
+    owner = group[alive]  # non-decreasing: the lines are in row order
+    first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=np.intp)
+    empty = np.ones(n, dtype=bool)
+    empty[owner[first]] = False
+    if first.size:
+        low[owner[first]] = np.minimum.reduceat(np.minimum(a, b), first, axis=0)
+        high[owner[first]] = np.maximum.reduceat(np.maximum(a, b), first, axis=0)
+    return 0.5 * (low + high), np.where(empty, -np.inf, 0.5 * np.linalg.norm(high - low, axis=1))
+
+
+def _near_groups(g, k, centre, radius, pieces):
+    """The pairs (group g, chain k) whose group sphere (centre, radius) is not surely apart from the chain."""
+    keep = ~_apart(centre[g], centre[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
+                   pieces.chain_radius[k], pieces.chain_height[k], pieces.chain_slack[k] + radius[g],
+                   pieces.chain_lean[k])
+    return g[keep], k[keep]
+
+
+def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, *, chained):
+    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k: `chained`),
+    expanded to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most
+    _EXPAND_BATCH; before (L,) the last program row that precedes each line's CL point."""
+    order = np.argsort(g, kind="stable")
+    g, k = g[order], k[order]
+    count = sizes[g]
+    cuts = np.unique(np.r_[0, np.searchsorted(np.cumsum(count), np.arange(_EXPAND_BATCH, int(count.sum()),
                                                                           _EXPAND_BATCH), side="right"), g.size])
-    whole = np.zeros(a.shape[0], dtype=bool)
-    found = []
+    found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     for first, stop in zip(cuts[:-1], cuts[1:]):
-        pair, rank = _csr(sizes[first:stop])
-        seg = order[starts[g[first:stop]][pair] + rank]
-        found.append(_line_span_pairs(seg[~whole[seg]], k[first:stop][pair][~whole[seg]], a, b, lo, hi, line, whole,
-                                      pieces, origins, directions))
-    dead = np.flatnonzero(whole)
-    return tuple(np.concatenate([ends[dead]] + [f[i] for f in found]) for i, ends in enumerate((line, lo, hi)))
+        pair, rank = _csr(count[first:stop])
+        seg, item = members[starts[g[first:stop]][pair] + rank], k[first:stop][pair]
+        if chained:
+            seg, item = _chain_spans(seg, item, envelope, origins, directions, before, pieces)
+        found.append(_line_span_pairs(seg, item, envelope, origins, directions, pieces))
+    return tuple(np.concatenate(part) for part in zip(*found))
 
 
-def _line_span_pairs(seg, span, a, b, lo, hi, line, whole, pieces, origins, directions):
-    """Removal intervals (rows, enter, leave) from the pairs (segment seg[i], span span[i]).
+def _chain_spans(seg, chain, envelope, origins, directions, before, pieces):
+    """The pairs (segment seg, chain) (K,) as (segment, span) pairs: the chains not surely apart
+    from the segment's envelope, each span of them that ends before the segment's CL point."""
+    open_ = envelope[0, seg] < envelope[1, seg]
+    seg, chain = seg[open_], chain[open_]
+    a, b = _ends(seg, envelope, origins, directions)
+    keep = ~_apart(a, b, pieces.chain_c0[chain], pieces.chain_c1[chain], pieces.chain_axis[chain],
+                   pieces.chain_radius[chain], pieces.chain_height[chain], pieces.chain_slack[chain],
+                   pieces.chain_lean[chain])
+    owner, rank = _csr(pieces.chain_count[chain[keep]])
+    seg, span = seg[keep][owner], pieces.chain_first[chain[keep]][owner] + rank
+    keep = pieces.span_move[span] <= before[seg]
+    return seg[keep], span[keep]
 
-    Segments a … b (L, 3) run from lo to hi (L,) along lines `line` (L,). Lines found removed
-    whole are marked in `whole` (L,) and give no intervals here.
+
+def _ends(seg, envelope, origins, directions):
+    """The ends (K, 3) of the current envelopes of segments `seg` (K,)."""
+    return (origins[seg] + envelope[0, seg, None] * directions[seg],
+            origins[seg] + envelope[1, seg, None] * directions[seg])
+
+
+def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
+    """Removal intervals (seg, enter, leave) from the pairs (segment seg[i], span span[i]).
+
+    envelope: (2, L) the range lo … hi (mm along the line) holding each segment's remaining
+    material, narrowed in place by the removals found; origins, directions: (L, 3) the
+    segments' lines. Pairs are solved in rounds: each round solves, per segment, the pieces
+    reaching lowest and highest along its line (1, 2, 4, … of each), narrows the envelopes,
+    and drops the pairs whose piece is then surely apart from the envelope (it can remove
+    nothing more), so that a line cut by many pieces solves few of them.
     """
-    keep = ~_apart(a[seg], b[seg], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                   pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span], pieces.span_turn[span])
+    a, b = _ends(seg, envelope, origins, directions)
+    keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                   pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
-    # A line whose segment lies deep enough inside a span (both ends at least the span's slack
-    # inside its hull, which is convex) is removed whole: its other pairs need no solving.
+    # A segment lying deep enough inside a span (both ends at least the span's slack inside
+    # its hull, which is convex) is removed whole: its other pairs need no solving.
     slack, h = pieces.span_slack[span], pieces.span_height[span]
     hull = (pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span] - slack,
             slack, h - slack)
-    inside = _inside(a[seg], *hull) & _inside(b[seg], *hull)
-    whole[seg[inside]] = True
-    seg, span = seg[~whole[seg]], span[~whole[seg]]
-    # (line, piece) pairs; pieces of spans that turn are culled one by one the same way.
+    inside = _inside(a[keep], *hull) & _inside(b[keep], *hull)
+    envelope[1, seg[inside]] = envelope[0, seg[inside]]
+    # A first round at the level of spans: per segment, the span reaching lowest along its
+    # line and the one reaching highest; then the other spans against the narrowed envelopes.
+    first = _reaching(seg, origins[seg], directions[seg], pieces.span_c0[span], pieces.span_c1[span],
+                      pieces.span_axis[span], pieces.span_radius[span] + pieces.span_slack[span],
+                      pieces.span_height[span], 1)
+    out = [_solved(*_near_pieces(*_span_pieces(seg[first], span[first], pieces), envelope, origins, directions,
+                                 pieces), envelope, origins, directions, pieces)]
+    rest = np.ones(seg.size, dtype=bool)
+    rest[first] = False
+    seg, span = seg[rest], span[rest]
+    seg, span = seg[envelope[0, seg] < envelope[1, seg]], span[envelope[0, seg] < envelope[1, seg]]
+    a, b = _ends(seg, envelope, origins, directions)
+    keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                   pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
+    seg, piece = _span_pieces(seg[keep], span[keep], pieces)
+    take = 1
+    while seg.size:
+        seg, piece = _near_pieces(seg, piece, envelope, origins, directions, pieces)
+        chosen = _reaching(seg, origins[seg], directions[seg], pieces.c0[piece], pieces.c1[piece], pieces.axis[piece],
+                           pieces.radius[piece], pieces.height[piece], take)
+        out.append(_solved(seg[chosen], piece[chosen], envelope, origins, directions, pieces))
+        rest = np.ones(seg.size, dtype=bool)
+        rest[chosen] = False
+        seg, piece = seg[rest], piece[rest]
+        take *= 2
+    return tuple(np.concatenate(part) for part in zip(*out))
+
+
+def _near_pieces(seg, piece, envelope, origins, directions, pieces):
+    """The pairs (seg, piece) (K,) whose segment's envelope is open and from which the piece may
+    remove more than LENGTH_EPS."""
+    open_ = envelope[0, seg] < envelope[1, seg]
+    seg, piece = seg[open_], piece[open_]
+    a, b = _ends(seg, envelope, origins, directions)
+    # A piece reaching less than LENGTH_EPS·|u·w| into the segment's axial range removes less
+    # than LENGTH_EPS of it along the line: _solved would keep nothing of it.
+    grain = LENGTH_EPS * np.abs(np.einsum("ij,ij->i", directions[seg], pieces.axis[piece]))
+    near = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
+                   pieces.height[piece], 0.0, grain=grain)
+    return seg[near], piece[near]
+
+
+def _span_pieces(seg, span, pieces):
+    """The pairs (seg, span) (K,) expanded to (seg, piece): every piece of each span."""
     owner, rank = _csr(pieces.span_count[span])
-    seg, piece = seg[owner], pieces.span_first[span][owner] + rank
-    several = np.flatnonzero(pieces.span_count[span][owner] > 1)
-    if several.size:
-        q, s = piece[several], seg[several]
-        far = _apart(a[s], b[s], pieces.c0[q], pieces.c1[q], pieces.axis[q], pieces.radius[q], pieces.height[q], 0.0)
-        drop = np.zeros(seg.size, dtype=bool)
-        drop[several[far]] = True
-        seg, piece = seg[~drop], piece[~drop]
-    out_rows, out_enter, out_leave = [np.zeros(0, dtype=line.dtype)], [np.zeros(0)], [np.zeros(0)]
+    return seg[owner], pieces.span_first[span][owner] + rank
+
+
+def _solved(seg, piece, envelope, origins, directions, pieces):
+    """Removal intervals (seg, enter, leave) of the segments seg (K,) inside pieces piece (K,)
+    that overlap their envelopes (2, L), closed form in batches; the envelopes are narrowed."""
+    found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     for begin in range(0, seg.size, _PAIR_BATCH):
         s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
-        r = line[s]
-        enter, leave = line_hull_interval(origins[r], directions[r], pieces.c0[q], pieces.c1[q], pieces.axis[q],
+        enter, leave = line_hull_interval(origins[s], directions[s], pieces.c0[q], pieces.c1[q], pieces.axis[q],
                                           pieces.radius[q], pieces.height[q])
         with np.errstate(invalid="ignore"):
-            hit = (np.minimum(leave, hi[s]) - np.maximum(enter, lo[s])) > LENGTH_EPS
-        out_rows.append(r[hit])
-        out_enter.append(enter[hit])
-        out_leave.append(leave[hit])
-    return np.concatenate(out_rows), np.concatenate(out_enter), np.concatenate(out_leave)
+            hit = (np.minimum(leave, envelope[1, s]) - np.maximum(enter, envelope[0, s])) > LENGTH_EPS
+        found.append((s[hit], enter[hit], leave[hit]))
+        _narrow(envelope, *found[-1])
+    return tuple(np.concatenate(part) for part in zip(*found))
+
+
+def _reaching(owner, origin, direction, c0, c1, axis, radius, height, take):
+    """Indices of the pairs (one per row, all (K, 3) or (K,)) of each owner (K,) whose hull
+    (c0, c1, axis, radius, height) reaches lowest along the line origin + l·direction (the
+    `take` lowest per owner) or highest (the `take` highest), by its extent along the line:
+    l ∈ [lower, upper] for every point of the hull (mm)."""
+    lower, upper = _extent(origin, direction, c0, c1, axis, radius, height)
+    return np.flatnonzero(_smallest(owner, lower, take) | _smallest(owner, -upper, take))
+
+
+def _extent(origin, direction, c0, c1, axis, radius, height):
+    """(lower, upper) (K,) mm: every point of each hull (c0, c1, axis, radius, height) on the
+    line origin + l·direction has lower ≤ l ≤ upper. Two bounds, the tighter taken: the hull's
+    extent along the direction, and where the line crosses the planes bounding the hull's
+    axial range (the point at l has axial height a0 + l·ua − s·da for some s ∈ [0, 1], which
+    must lie within 0 … H)."""
+    q, d = origin - c0, c1 - c0
+    base = -np.einsum("ij,ij->i", q, direction)
+    du = np.einsum("ij,ij->i", d, direction)
+    wu = np.einsum("ij,ij->i", axis, direction)
+    across = radius * np.sqrt(np.maximum(1.0 - wu * wu, 0.0))
+    lower = base + np.minimum(du, 0.0) + np.minimum(height * wu, 0.0) - across
+    upper = base + np.maximum(du, 0.0) + np.maximum(height * wu, 0.0) + across
+    a0, da = np.einsum("ij,ij->i", q, axis), np.einsum("ij,ij->i", d, axis)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        first = (np.minimum(da, 0.0) - a0) / wu
+        second = (height + np.maximum(da, 0.0) - a0) / wu
+    crossing = np.abs(wu) > 0.0
+    lower = np.where(crossing, np.maximum(lower, np.minimum(first, second)), lower)
+    upper = np.where(crossing, np.minimum(upper, np.maximum(first, second)), upper)
+    return lower, upper
+
+
+def _smallest(owner, key, take):
+    """(K,) bool: the `take` rows of smallest key (K,) of each owner (K,)."""
+    order = np.lexsort((key, owner))
+    ranked = owner[order]
+    first = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
+    rank = np.arange(owner.size) - np.repeat(first, np.diff(np.r_[first, owner.size]))
+    chosen = np.zeros(owner.size, dtype=bool)
+    chosen[order[rank < take]] = True
+    return chosen
+
+
+def _across(x, c0, c1, axis):
+    """(K,) distance from points x to the segments c0 … c1 seen along the unit axis (all (K, 3), mm)."""
+    q, d = x - c0, c1 - c0
+    q = q - np.einsum("ij,ij->i", q, axis)[:, None] * axis
+    d = d - np.einsum("ij,ij->i", d, axis)[:, None] * axis
+    dd = np.einsum("ij,ij->i", d, d)
+    t = np.clip(np.einsum("ij,ij->i", q, d) / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
+    gap = q - t[:, None] * d
+    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+
+
+def _narrow(envelope, seg, enter, leave):
+    """Narrow the envelopes (2, L) of segments `seg` (K,) by the removals [enter, leave] (K,):
+    lo moves up past the removals that cover it without a gap, hi down likewise."""
+    if seg.size == 0:
+        return
+    envelope[0] = _covered_from(envelope[0], seg, enter, leave)
+    envelope[1] = -_covered_from(-envelope[1], seg, -leave, -enter)
+
+
+def _covered_from(start, seg, enter, leave):
+    """start (L,) moved to the end of the run of intervals [enter, leave] of its segment (seg
+    (K,)) that covers it without a gap: a sorted sweep per segment. Returns a new (L,) array."""
+    order = np.lexsort((enter, seg))
+    seg, enter, leave = seg[order], enter[order], leave[order]
+    owners, first, count = np.unique(seg, return_index=True, return_counts=True)
+    owner = np.repeat(np.arange(owners.size), count)
+    rank = np.arange(seg.size) - first[owner]
+    width = int(count.max()) + 1
+    enters = np.full((owners.size, width), np.inf)
+    leaves = np.full((owners.size, width), -np.inf)
+    enters[owner, rank], leaves[owner, rank] = enter, leave
+    # reach[:, i]: how far the intervals before the i-th cover from start, if they chain.
+    reach = np.maximum.accumulate(np.concatenate([start[owners][:, None], leaves[:, :-1]], axis=1), axis=1)
+    gap = np.argmax(enters > reach, axis=1)
+    moved = start.copy()
+    moved[owners] = reach[np.arange(owners.size), gap]
+    return moved
 
 
 def subtract(stock: EdgeIntervals, rows, enter, leave):

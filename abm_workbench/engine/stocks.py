@@ -5,7 +5,8 @@
 :class:`~.engagement.Engagement` of m CL points × p angles (mm, degrees).
 :func:`stock_intervals` gives either model's inside intervals of edge lines, and
 :func:`engage_in_process` a pass against the in-process stock (the stock minus what earlier
-moves of the program removed, :mod:`.inprocess`).
+moves of the program removed, :mod:`.inprocess`), :func:`in_process_lengths` just its lengths
+of cut at any angles (the other flutes' for the forces).
 """
 
 import numpy as np
@@ -46,10 +47,26 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
     removed (docs/ENGINE.md); `initial` is the length of cut in the stock itself; `changed[i]`
     says whether earlier moves removed material from any edge line of CL point i.
     """
-    p = settings.phi.size
-    base, direction = edge_lines(toolpath, tool, settings.phi)
-    origins, directions = base.reshape(-1, 3), np.repeat(direction, p, axis=0)
-    initial = stock_intervals(stock, origins, directions, tool.flute_length)
-    remaining, changed = inprocess_intervals(initial, pieces, program_index, origins, directions, p)
+    initial, remaining, changed, origins, directions = _in_process(stock, tool, toolpath, settings.phi, pieces,
+                                                                   program_index)
     engagement = engagement_from_intervals(remaining, toolpath, tool, settings, origins, directions)
-    return engagement, initial.length.reshape(len(toolpath), p), changed
+    return engagement, initial.length.reshape(len(toolpath), -1), changed
+
+
+def in_process_lengths(stock, tool, toolpath, phi_deg, pieces, program_index):
+    """(m, p) length of cut (mm) against the in-process stock at angles phi_deg (p,) (any, e.g.
+    another flute's φ + 360·k/Z) of the m CL points of `toolpath`; pieces and program_index as
+    for engage_in_process."""
+    _, remaining, _, _, _ = _in_process(stock, tool, toolpath, phi_deg, pieces, program_index)
+    return remaining.length.reshape(len(toolpath), -1)
+
+
+def _in_process(stock, tool, toolpath, phi_deg, pieces, program_index):
+    """The edge lines at phi_deg (p,) of every CL point (origins, directions (m·p, 3)) and their
+    EdgeIntervals in the stock and in the in-process stock, with changed (m,)."""
+    phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    base, direction = edge_lines(toolpath, tool, phi)
+    origins, directions = base.reshape(-1, 3), np.repeat(direction, phi.size, axis=0)
+    initial = stock_intervals(stock, origins, directions, tool.flute_length)
+    remaining, changed = inprocess_intervals(initial, pieces, program_index, origins, directions, phi.size)
+    return initial, remaining, changed, origins, directions

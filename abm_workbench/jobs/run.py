@@ -19,13 +19,13 @@ from typing import Optional
 import numpy as np
 
 from ..engine import Staircase, flute_engagement, zmap_engage
-from ..engine.stocks import engage_in_process, engage_stock
+from ..engine.stocks import engage_in_process, engage_stock, in_process_lengths
 from ..errors import InputError, ParameterError
 from ..formats import check_output_path, replacing, results_npz
 from ..formats.results_columns import chunk_columns
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
 from ..forces import joined_forces, pass_forces
-from ..parallel import PassAssembly, map_chunks, toolpath_part, worker_count
+from ..parallel import CHUNK_INSTANTS, PassAssembly, map_chunks, toolpath_part, worker_count
 from .job import Job, cl_indices, load_job_stock, prepare
 
 
@@ -52,9 +52,9 @@ def in_process_sweep(prepared, method="abm"):
     """((SweptPieces of the prepared job's whole program in its engine frame, (m,) program rows of its CL
     points) for a run against the in-process stock, or None for the stock as given; why not, or '').
 
-    The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM
-    without forces), else the stock as given, the reason said. ParameterError when in-process is asked
-    for where it is not available, or the stock model is unknown.
+    The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM,
+    with or without the straight-flute forces), else the stock as given, the reason said.
+    ParameterError when in-process is asked for where it is not available, or the stock model is unknown.
     """
     from ..engine.inprocess import swept_pieces
     from .inputs import program_moves
@@ -64,8 +64,7 @@ def in_process_sweep(prepared, method="abm"):
         raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
     if job.stock_model == "initial":
         return None, ""
-    missing = ("a helical tool" if tool.helix else "the forces" if prepared.force_model is not None else
-               "the Z-map method" if method != "abm" else None)
+    missing = "a helical tool" if tool.helix else "the Z-map method" if method != "abm" else None
     if missing is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
@@ -93,12 +92,35 @@ def check_model(stock, forces=False, method="abm", helix=0.0):
                                        "2.5D stock")
 
 
-def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=None):
+def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=None, in_process=None):
     """The Forces of a pass under force model (Coefficients, immersion (start, end) deg), reusing flute 1's
-    straight-edge lengths of `engagement`; feed: (m,) feed per tooth (mm) per CL point, or None."""
+    straight-edge lengths of `engagement`; feed: (m,) feed per tooth (mm) per CL point, or None.
+    in_process: (SweptPieces, (m,) program rows of the CL points) to take every flute's lengths against
+    the in-process stock (straight flutes), or None for the stock as given."""
     coefficients, immersion = model
+    lengths_at = None
+    if in_process is not None:
+        def lengths_at(shifted):
+            return in_process_lengths(staircase, tool, toolpath, shifted.phi, *in_process)
     return pass_forces(staircase, tool, toolpath, settings, coefficients, immersion=immersion, feed=feed,
-                       first=engagement.length if tool.helix == 0.0 else None)
+                       first=engagement.length if tool.helix == 0.0 else None, lengths_at=lengths_at)
+
+
+def _in_process_forces(staircase, tool, toolpath, settings, model, in_process, feed):
+    """(whether any edge line is engaged, the Forces of the pass) against the in-process stock,
+    chunk by chunk (parallel.CHUNK_INSTANTS instants each) so that memory stays bounded;
+    in_process and feed (m,) as for pass_forces_of."""
+    pieces, rows = in_process
+    step = max(1, CHUNK_INSTANTS // settings.phi.size)
+    engaged, parts = False, []
+    for start in range(0, len(toolpath), step):
+        stop = min(len(toolpath), start + step)
+        part = toolpath_part(toolpath, start, stop)
+        engagement = engage_in_process(staircase, tool, part, settings, pieces, rows[start:stop])[0]
+        engaged |= bool(engagement.engaged.any())
+        parts.append(pass_forces_of(staircase, tool, part, settings, model, engagement, feed=feed[start:stop],
+                                    in_process=(pieces, rows[start:stop])))
+    return engaged, joined_forces(parts)
 
 
 def in_part_frame(engagement, frame):
@@ -276,9 +298,8 @@ class ResultsChunk:
             engagement, initial, changed = engage_in_process(stock, tool, part, settings, pieces, rows[start:stop])
         forces = None
         if self.force_model is not None:
-            coefficients, immersion = self.force_model
-            forces = pass_forces(stock, tool, part, settings, coefficients, immersion=immersion,
-                                 first=engagement.length if tool.helix == 0.0 else None)
+            forces = pass_forces_of(stock, tool, part, settings, self.force_model, engagement,
+                                    in_process=None if self.in_process is None else (pieces, rows[start:stop]))
         engagement = in_part_frame(engagement, self.frame)
         parts = (chunk_columns if self.columnar else chunk_texts)(engagement, start, toolpath=part, forces=forces,
                                                                    initial=initial, changed=changed)
@@ -545,11 +566,19 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
     stock, _ = load_job_stock(prepared)
     check_model(stock, forces=True, helix=tool.helix)
-    engagement = flute_1(stock.model, tool, toolpath, settings)
-    if not engagement.engaged.any():
+    in_process, model_note = in_process_sweep(prepared)
+    if model_note:
+        warn(f"{model_note}: the feeds are scheduled against the stock as given")
+    if in_process is None:
+        engagement = flute_1(stock.model, tool, toolpath, settings)
+        engaged = engagement.engaged.any()
+        forces = pass_forces_of(stock.model, tool, toolpath, settings, prepared.force_model, engagement,
+                                feed=programmed) if engaged else None
+    else:
+        engaged, forces = _in_process_forces(stock.model, tool, toolpath, settings, prepared.force_model, in_process,
+                                             programmed)
+    if not engaged:
         raise no_engagement(job)
-    forces = pass_forces_of(stock.model, tool, toolpath, settings, prepared.force_model, engagement,
-                            feed=programmed)
     plan = feed_schedule(forces, limit, kind=kind, min_feed=min_feed)
     unit = "N" if kind == "force" else "mm²"
     if plan.infeasible.any():

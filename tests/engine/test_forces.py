@@ -17,7 +17,8 @@ import pytest
 from scipy.integrate import quad
 
 from abm_workbench.engine import CutSettings, Staircase, Tool, Toolpath
-from abm_workbench.formats.results_csv import FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, RESULT_COLUMNS, read_results
+from abm_workbench.formats.results_csv import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS,
+                                               INPROCESS_SUMMARY_COLUMNS, RESULT_COLUMNS, read_results)
 from abm_workbench.formats.staircase_json import load_staircase
 from abm_workbench.formats.toolpath_csv import load_toolpath
 from abm_workbench.forces import (MATERIALS, Coefficients, check_immersion, edge_forces, in_immersion,
@@ -220,9 +221,10 @@ def test_engage_forces_columns(case, capsys):
     assert (status, err) == (0, "")
     assert "; peak force " in out
     results = read_results(case / "R.csv")
-    assert list(results) == [*RESULT_COLUMNS, *FORCE_COLUMNS]
+    # Forces are computed against the in-process stock by default (its initial-stock length column).
+    assert list(results) == [*RESULT_COLUMNS, *INPROCESS_COLUMNS, *FORCE_COLUMNS]
     summary = read_results(case / "R.summary.csv")
-    assert list(summary)[-3:] == list(FORCE_SUMMARY_COLUMNS)
+    assert list(summary)[-4:] == [*FORCE_SUMMARY_COLUMNS, *INPROCESS_SUMMARY_COLUMNS]
     # The same numbers as the Python API (the CSV keeps 10 decimals).
     coefficients = Coefficients(**{**vars(material("al7075-t6")), "kae": 1.5})
     forces = pass_forces(load_staircase("stock.json"), Tool(12, 2, 30), load_toolpath("toolpath.csv"),
