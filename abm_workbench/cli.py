@@ -289,7 +289,7 @@ def _input_arguments(parser):
                             "its one milling operation")
     files.add_argument("--stock-model", choices=("in-process", "initial"),
                        help="in-process: the stock minus what the program's earlier cutting moves removed (default "
-                            "where available: straight flutes, no forces, ABM); initial: the stock as given")
+                            "where available: straight flutes, ABM); initial: the stock as given")
     files.add_argument("--sweep-tolerance", type=float, default=0.05, metavar="MM",
                        help="sub-step of five-axis moves at the tool's rim for the in-process stock (mm), default 0.05")
     files.add_argument("--job", metavar="JOB.json",

@@ -39,7 +39,7 @@ class Job:
     toolpath file's operation (1-based), None for its one milling operation. solid: the solid's
     name in a stock file holding several, or None. stock_model: "in-process" (the stock minus what
     earlier cutting moves of the program removed) or "initial" (the stock as given, the paper's
-    assumption); None: in-process where the engine has it (straight flutes, no forces, ABM), else
+    assumption); None: in-process where the engine has it (straight flutes, ABM), else
     initial. sweep_tolerance: mm, the sub-step of five-axis moves at the tool's rim.
     """
 
