@@ -12,7 +12,7 @@ from PySide import QtCore
 
 import FreeCADGui
 
-from . import dock
+from . import dock, view_providers
 from .progress import busy
 from .reporting import CommandError, recompute_checked, report_error
 
@@ -45,6 +45,7 @@ def show_at(engagement, cl):
     obj = stock_of(engagement)
     if obj is None:
         obj = create_inprocess_stock(doc, engagement, cl)
+        view_providers.ViewProvider(obj.ViewObject)  # a Python feature without a view proxy is not drawn
         obj.ViewObject.ShapeColor = COLOUR
     obj.CLPoint = int(cl)
     obj.Label = f"{LABEL} (computing CL {cl}…)"

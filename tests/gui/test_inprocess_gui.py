@@ -16,7 +16,15 @@ STOCK = os.path.join(ROOT, "resources", "models", "model_test_1", "stock.json")
 BODY = """
 import numpy as np
 from PySide import QtCore, QtGui
-from PySide.QtTest import QTest
+
+def key(widget, code, text="", modifiers=QtCore.Qt.NoModifier):
+    for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+        QtGui.QApplication.sendEvent(widget, QtGui.QKeyEvent(kind, code, modifiers, text))
+
+def wait(ms):
+    until = QtCore.QTime.currentTime().addMSecs(ms)
+    while QtCore.QTime.currentTime() < until:
+        QtGui.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
 from abm_workbench.features import create_engagement, create_stock, create_toolpath
 from abm_workbench.gui import commands, dock, view_providers
 
@@ -36,12 +44,13 @@ verdict["changed"] = np.flatnonzero(in_process.changed).tolist()
 shown = commands.InspectEngagement.show(engagement, 0)
 QtGui.QApplication.processEvents()
 shown.slider.setFocus()
-QTest.keyClick(shown.slider, QtCore.Qt.Key_End)  # the slider's end: the program's last CL point
+key(shown.slider, QtCore.Qt.Key_End)  # the slider's end: the program's last CL point
 verdict["end"] = [shown.slider.maximum(), shown.spin.value()]
 chosen = int(np.argmax(in_process.initial.max(axis=1) - result.length.max(axis=1)))
-QTest.keyClick(shown.slider, QtCore.Qt.Key_Home)
-for _ in range(chosen):
-    QTest.keyClick(shown.slider, QtCore.Qt.Key_Right)
+key(shown.spin, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)  # the CL point typed into the spin box
+for char in str(chosen):
+    key(shown.spin, ord(char), char)
+key(shown.spin, QtCore.Qt.Key_Return)
 QtGui.QApplication.processEvents()
 verdict["chosen"] = [chosen, shown.spin.value(), shown.about.text(), float(result.length[chosen].max()),
                      float(in_process.initial[chosen].max())]
@@ -57,20 +66,24 @@ verdict["made"] = [len(made), made[0].CLPoint, made[0].Label, made[0].Shape.isVa
                    stock.Shape.Volume, made[0].RemovedVolume, stock.ViewObject.Visibility,
                    made[0].ViewObject.Visibility]
 # the slider moves on: the stock follows once it rests
-QTest.keyClick(shown.slider, QtCore.Qt.Key_Right)
+key(shown.slider, QtCore.Qt.Key_Left)
 deadline = QtCore.QTime.currentTime().addSecs(60)
-while made[0].CLPoint != chosen + 1 and QtCore.QTime.currentTime() < deadline:
-    QTest.qWait(100)
+while made[0].CLPoint != chosen - 1 and QtCore.QTime.currentTime() < deadline:
+    wait(100)
 verdict["followed"] = [made[0].CLPoint, made[0].Label]
+verdict["display"] = [made[0].ViewObject.DisplayMode, str(made[0].Shape.BoundBox)]
 view = FreeCADGui.ActiveDocument.ActiveView
 view.viewIsometric()
 view.fitAll()
-QTest.qWait(300)
+wait(300)
 view.saveImage({png!r}, 1000, 750, "White")
 """
 
 
 def test_dock_and_in_process_stock(tmp_path, run_gui):
+    mods = tmp_path / "home" / ".local" / "share" / "FreeCAD" / "Mod"  # the workbench installed: its menu
+    mods.mkdir(parents=True)
+    (mods / "ABM").symlink_to(ROOT, target_is_directory=True)
     program = tmp_path / "two_passes.apt"
     write_two_passes(program)
     png = tmp_path / "inprocess.png"
@@ -92,5 +105,5 @@ def test_dock_and_in_process_stock(tmp_path, run_gui):
     assert count == 1 and cl == chosen and label == f"In-process stock at CL {chosen}" and valid
     assert removed > 0.0 and abs(stock_volume - volume - removed) < 1e-6 * stock_volume
     assert not stock_visible and visible
-    assert verdict["followed"] == [chosen + 1, f"In-process stock at CL {chosen + 1}"]
+    assert verdict["followed"] == [chosen - 1, f"In-process stock at CL {chosen - 1}"]
     assert png.stat().st_size > 10000
