@@ -71,7 +71,6 @@ deadline = QtCore.QTime.currentTime().addSecs(60)
 while made[0].CLPoint != chosen - 1 and QtCore.QTime.currentTime() < deadline:
     wait(100)
 verdict["followed"] = [made[0].CLPoint, made[0].Label]
-verdict["display"] = [made[0].ViewObject.DisplayMode, str(made[0].Shape.BoundBox)]
 view = FreeCADGui.ActiveDocument.ActiveView
 view.viewIsometric()
 view.fitAll()
