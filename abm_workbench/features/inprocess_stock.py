@@ -8,6 +8,8 @@
   cut are those whose swept volume comes within Reach of the tool's bounding sphere at the CL
   point; 0: those touching that sphere, all the cutting edges there can meet), ``SweepTolerance``
   (mm: the sub-step of five-axis moves at the tool's rim for this view; 0: the engagement's own);
+- group "View": ``FollowDock`` (the GUI moves the object to the CL point chosen in the engagement
+  dock and recomputes it; changing it does not touch the object);
 - group "Results" (read-only, set by ``execute``): ``ProgramRow`` (the CL point's row in the
   whole program), ``RemovedVolume`` (mm³: the stock's volume minus the Shape's),
   ``ComputeTime`` (s).
@@ -30,7 +32,7 @@ from ..cad.inprocess_boolean import inprocess_solid
 from ..engine.inprocess import swept_pieces
 from ..errors import InputError
 from ..jobs.inputs import program_moves
-from .base import FeatureProxy, add_properties, document_or_active
+from .base import PROP_OUTPUT, FeatureProxy, add_properties, document_or_active
 
 #: Default sub-step (mm) of five-axis moves at the tool's rim for the view.
 VIEW_TOLERANCE = 0.5
@@ -53,6 +55,10 @@ class InProcessStockFeature(FeatureProxy):
                                                       "(0: the engagement's; smaller is closer and slower)",
              VIEW_TOLERANCE),
         ])
+        if "FollowDock" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyBool", "FollowDock", "View", "follow the CL point chosen in the engagement "
+                            "dock (off: only the command moves it)", PROP_OUTPUT)
+            obj.FollowDock = True
         add_properties(obj, "Results", [
             ("App::PropertyInteger", "ProgramRow", "the CL point's row in the whole program"),
             ("App::PropertyFloat", "RemovedVolume", "volume the earlier moves near the CL point removed (mm³)"),

@@ -5,7 +5,8 @@
 "computing" in the status bar and on the object's label while the booleans run; the engagement's
 stock is hidden so the cut stock shows. While that object exists, choosing another CL point in
 the dock recomputes it once the slider has rested for :data:`SETTLE_MS` (:class:`Follower`), so
-dragging the slider does not run the booleans at every step.
+dragging the slider does not run the booleans at every step; its FollowDock off, only the command
+moves it (the booleans can take minutes near a dense five-axis program).
 """
 
 from PySide import QtCore
@@ -83,7 +84,7 @@ class Follower(QtCore.QObject):
                 return
             obj = stock_of(engagement)
             cl = self.dock.spin.value()
-            if obj is not None and (obj.CLPoint != cl or "Touched" in obj.State):
+            if obj is not None and obj.FollowDock and (obj.CLPoint != cl or "Touched" in obj.State):
                 show_at(engagement, cl)
         except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
             report_error(error)

@@ -71,6 +71,10 @@ deadline = QtCore.QTime.currentTime().addSecs(60)
 while made[0].CLPoint != chosen - 1 and QtCore.QTime.currentTime() < deadline:
     wait(100)
 verdict["followed"] = [made[0].CLPoint, made[0].Label]
+made[0].FollowDock = False  # now only the command moves it
+key(shown.slider, QtCore.Qt.Key_Left)
+wait(2000)
+verdict["stayed"] = [made[0].CLPoint, shown.spin.value(), "Touched" in made[0].State]
 view = FreeCADGui.ActiveDocument.ActiveView
 view.viewIsometric()
 view.fitAll()
@@ -105,4 +109,5 @@ def test_dock_and_in_process_stock(tmp_path, run_gui):
     assert removed > 0.0 and abs(stock_volume - volume - removed) < 1e-6 * stock_volume
     assert not stock_visible and visible
     assert verdict["followed"] == [chosen - 1, f"In-process stock at CL {chosen - 1}"]
+    assert verdict["stayed"] == [chosen - 1, chosen - 2, False]
     assert png.stat().st_size > 10000
