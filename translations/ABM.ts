@@ -188,6 +188,17 @@
     </message>
 </context>
 <context>
+    <name>ABM_ShowInProcessStock</name>
+    <message>
+        <source>Show in-process stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the stock as it is at the dock's chosen CL point: the stock minus what the program's earlier moves near it removed (OpenCASCADE booleans, a few seconds); it follows the CL point chosen in the dock</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ABM_ValidateEngagement</name>
     <message>
         <source>Validate engagement…</source>

@@ -5,7 +5,9 @@
 
 - group "Inputs": ``Stock`` and ``Toolpath`` (links to the objects of :mod:`.stock` and
   :mod:`.toolpath`), ``WallModel`` (stock: the stock object's; exact or quintic: that model,
-  for a solid stock only);
+  for a solid stock only), ``StockModel`` (in-process: the stock minus what the program's
+  earlier cutting moves removed, where the engine has it; initial: the stock as given) and
+  ``SweepTolerance`` (mm, the sub-step of five-axis moves at the tool's rim);
 - group "Tool": ``Diameter`` (mm), ``Flutes``, ``FluteLength`` (mm), ``HelixAngle`` (deg, 0:
   straight flutes; a helical tool is solved by ``engine.helix.flute_engagement``, flute 1 shown);
 - group "Cut": ``FeedPerTooth`` (mm), ``SpindleSpeed`` (rpm, 0: none), ``Inclination`` (deg),
@@ -18,7 +20,9 @@
   (below) and the GUI draws the surface, or both are empty;
 - group "Results" (read-only, set by ``execute``): ``DepthOfCutMin``, ``DepthOfCutMax``,
   ``MaxLengthOfCut`` (mm), ``Instants`` (CL points × angles), ``EngagedInstants``,
-  ``EngagedCLPoints``, ``EngineTime`` (s), ``Parameters`` (each value and where it came from),
+  ``EngagedCLPoints``, ``ChangedCLPoints`` (CL points whose edges meet material earlier moves
+  removed), ``StockModelUsed`` (in-process, or initial and why), ``EngineTime`` (s),
+  ``Parameters`` (each value and where it came from),
   ``Warnings``, ``ResultsFile`` (where the results CSV is), ``ResultsDigest``; with forces on,
   ``PeakForce`` (N, largest resultant over the pass) and ``ForceFeedPerTooth`` (mm, the feed the
   forces are for).
@@ -27,6 +31,14 @@ With forces on, ``execute`` also runs ``forces.pass_forces`` and the results CSV
 fz (N), torque (N·mm) and, with a spindle speed, power (W) per instant; they are read back with
 the results (:meth:`EngagementFeature.forces`, a :class:`.stored.PassForces`). Version 3 added
 the helix and the forces; older objects are migrated with straight flutes and forces off.
+
+The stock model is the command line's ``--stock-model`` through the same job-model call
+(``jobs.run.in_process_sweep``): StockModel in-process is its default (in-process where the engine
+has it; with a helical tool or the forces, the stock as given, the reason in StockModelUsed and
+Warnings), initial is ``--stock-model initial``. Against the in-process stock the results CSV gains
+``length_initial`` and its summary ``changed`` (:class:`.stored.InProcess`, read by
+:meth:`EngagementFeature.in_process`). Version 5 added the stock model; older objects were
+computed against the stock as given and are migrated with StockModel initial.
 
 Parameters follow the job model's precedence (:func:`abm_workbench.jobs.resolve`): what an
 APT / CL toolpath file gives (tool diameter, flute length, spindle speed, a constant feed) wins
@@ -66,16 +78,19 @@ from typing import NamedTuple
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
+from ..engine import stocks as _stocks
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, MATERIALS
-from ..formats.results_csv import write_results
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
 from ..jobs import tool_and_settings
 from ..jobs import run as _run
-from ..jobs.run import check_model, in_part_frame
+from ..jobs.job import Prepared
+from ..jobs.parameters import SWEEP_TOLERANCE
+from ..jobs.run import STOCK_MODELS, check_model, in_part_frame, in_process_sweep
 from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_properties, document_or_active
 from .base import remember_relative
-from .stored import PassForces, read_archive, read_engagement, read_forces, write_archive
+from .stored import InProcess, PassForces, read_archive, read_engagement, read_forces, read_in_process, write_archive
+from .stored import write_results_csv
 from .stock import StockFeature
 from .toolpath import POINT_TOL, ToolpathFeature
 
@@ -92,6 +107,7 @@ SETTINGS = {
     **{name: (BY_NAME[name].prop, BY_NAME[name].default)
        for name in ("inclination", "phi_start", "phi_end", "phi_step", "helix", "immersion_start", "immersion_end")},
     "forces": ("Forces", False), "material": ("Material", MATERIAL_CHOICES[0]),
+    "stock_model": ("StockModel", STOCK_MODELS[0]), "sweep_tolerance": ("SweepTolerance", SWEEP_TOLERANCE.default),
     **{name: (COEFFICIENT_PROPERTIES[name], getattr(MATERIALS[MATERIAL_CHOICES[0]][0], name))
        for name in COEFFICIENT_NAMES},
 }
@@ -102,7 +118,8 @@ KEPT = 8
 INPUT_GROUPS = ("Inputs", "Tool", "Cut", "Forces", "Display")
 #: Properties execute sets from the results (restored with kept results).
 KEPT_PROPERTIES = ("DepthOfCutMin", "DepthOfCutMax", "MaxLengthOfCut", "Instants", "EngagedInstants",
-                   "EngagedCLPoints", "EngineTime", "Parameters", "Warnings", "PeakForce", "ForceFeedPerTooth")
+                   "EngagedCLPoints", "ChangedCLPoints", "StockModelUsed", "EngineTime", "Parameters", "Warnings",
+                   "PeakForce", "ForceFeedPerTooth")
 
 
 def _call(function, *args):
@@ -120,9 +137,14 @@ def flute_1(*args):
     return engine_call(_run.flute_1, *args)
 
 
-def pass_forces_of(*args):
+def pass_forces_of(*args, **keywords):
     """``jobs.run.pass_forces_of`` through engine_call."""
-    return engine_call(_run.pass_forces_of, *args)
+    return engine_call(lambda: _run.pass_forces_of(*args, **keywords))
+
+
+def engage_in_process(*args):
+    """``engine.stocks.engage_in_process`` through engine_call."""
+    return engine_call(_stocks.engage_in_process, *args)
 
 
 class EngagementInputs(NamedTuple):
@@ -212,6 +234,7 @@ class EngagementFeature(FeatureProxy):
             ("App::PropertyLength", "FluteLength", "flute length (required; the toolpath file's CUTTER wins)", 0.0),
         ])
         add_version_3_properties(obj)
+        add_version_5_properties(obj, STOCK_MODELS[0])
         add_properties(obj, "Cut", [
             ("App::PropertyLength", "FeedPerTooth", "feed per tooth f (required; a constant FEDRAT in the "
                                                     "toolpath file wins)", 0.0),
@@ -250,6 +273,7 @@ class EngagementFeature(FeatureProxy):
         self._stale = False  # restored without results: touched once the document is restored
         self._toolpath = None  # the Toolpath of the results (for the summary's CL point columns)
         self._forces = None  # the PassForces of the results, with forces on
+        self._in_process = None  # the InProcess of the results, against the in-process stock
         self._kept = {}  # ResultsDigest -> Kept: the last KEPT results, for undo, redo and Cancel
 
     # ---- computing -------------------------------------------------------------------------
@@ -301,36 +325,63 @@ class EngagementFeature(FeatureProxy):
         if self._take_back(obj, key):
             return
 
+        sweep, model_note = self.stock_model(obj, toolpath, hints, parameters, tool, settings, model)
         started = time.perf_counter()
-        result = in_part_frame(flute_1(staircase, tool, toolpath, settings), hints.frame)
+        if sweep is None:
+            engine_result, in_process = flute_1(staircase, tool, toolpath, settings), None
+        else:
+            engine_result, initial, changed = engage_in_process(staircase, tool, toolpath, settings, *sweep)
+            in_process = InProcess(initial, changed)
+        result = in_part_frame(engine_result, hints.frame)
         elapsed = time.perf_counter() - started
         if not result.engaged.any():
+            if in_process is not None and in_process.initial.any():
+                raise InputError(f"{obj.Toolpath.File}: earlier moves of the program already removed all the "
+                                 "material this operation's tool would meet (StockModel initial computes it "
+                                 "against the stock as given)")
             raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "
                              f"engages it (are the toolpath and {obj.Stock.Proxy.source_name(obj.Stock)} in the "
                              "same frame?)")
-        warnings = [*hints.messages(), *parameters.conflicts]
+        warnings = [*hints.messages(), *parameters.conflicts, *([model_note] if model_note else [])]
         for message in warnings:
             FreeCAD.Console.PrintWarning(f"{obj.Label}: {message}\n")
         if model is not None:
-            forces = pass_forces_of(staircase, tool, toolpath, settings, model, result)
+            forces = pass_forces_of(staircase, tool, toolpath, settings, model, engine_result, in_process=sweep)
             self._forces = PassForces.of(forces)
             obj.PeakForce = float(forces.peak.max())
             obj.ForceFeedPerTooth = settings.feed_per_tooth
         else:
             obj.PeakForce, obj.ForceFeedPerTooth = 0.0, 0.0
-        self._result, self._toolpath = result, toolpath
+        self._result, self._toolpath, self._in_process = result, toolpath, in_process
         self._write(obj, results_path(obj))
         self._summary(obj, result)
+        obj.ChangedCLPoints = 0 if in_process is None else int(np.count_nonzero(in_process.changed))
+        obj.StockModelUsed = STOCK_MODELS[0] if in_process is not None else \
+            f"{STOCK_MODELS[1]}: {model_note}" if model_note else STOCK_MODELS[1]
         obj.EngineTime = elapsed
         obj.Parameters = parameters.describe(lambda parameter: parameter.prop)
         obj.Warnings = warnings
         obj.Shape = engaged_outline(result) if obj.ShowSurfaces else Part.Shape()
         self._keep(obj, key, (toolpath, stock))
 
+    def stock_model(self, obj, toolpath, hints, parameters, tool, settings, model):
+        """(The engine's in-process arguments (SweptPieces, (m,) program rows) or None for the stock as
+        given; why in-process is not used, or '') of the engagement `obj`, by the command line's
+        job-model call (jobs.run.in_process_sweep) on the resolved inputs; model: its force model
+        or None. InputError naming SweepTolerance when it is not positive."""
+        try:
+            tolerance = SWEEP_TOLERANCE.check(obj.SweepTolerance.Value)
+        except ParameterError as error:
+            raise InputError(f"{obj.Label}: {label_words(error)[:-1]} (property {SWEEP_TOLERANCE.prop}).") from None
+        job = Job(obj.Stock.Proxy.source_name(obj.Stock), obj.Toolpath.File,
+                  stock_model=None if obj.StockModel == STOCK_MODELS[0] else obj.StockModel,
+                  sweep_tolerance=tolerance)
+        return in_process_sweep(Prepared(job, {}, toolpath, hints, parameters, tool, settings, model))
+
     def _keep(self, obj, key, sources):
         """Keep the results just made under their ResultsDigest (the last KEPT of them)."""
         kept = Kept(key, self._result, self._forces, self._toolpath, obj.Shape, sources,
-                    {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+                    {name: getattr(obj, name) for name in KEPT_PROPERTIES}, self._in_process)
         self._kept.pop(obj.ResultsDigest, None)
         self._kept[obj.ResultsDigest] = kept
         while len(self._kept) > KEPT:
@@ -343,6 +394,7 @@ class EngagementFeature(FeatureProxy):
             return False
         digest, kept = found[-1]
         self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
+        self._in_process = kept.in_process
         self._write(obj, results_path(obj))
         for name, value in kept.properties.items():
             setattr(obj, name, value)
@@ -353,9 +405,11 @@ class EngagementFeature(FeatureProxy):
 
     def migrate(self, obj, saved_version):
         """Version 2 added the y window and the validation report; objects saved before were computed
-        over the whole y range. Version 3 added the helix and the forces (straight flutes, forces off)."""
+        over the whole y range. Version 3 added the helix and the forces (straight flutes, forces off).
+        Version 5 added the stock model; objects saved before were computed against the stock as given."""
         add_version_2_properties(obj, "whole")
         add_version_3_properties(obj)
+        add_version_5_properties(obj, STOCK_MODELS[1])
         super().migrate(obj, saved_version)
 
     def onChanged(self, obj, prop):
@@ -384,7 +438,7 @@ class EngagementFeature(FeatureProxy):
                 toolpath = None
         if toolpath is not None and len(toolpath) != self._result.shape[0]:
             toolpath = None
-        write_results(self._result, path, toolpath=toolpath, forces=self._forces)
+        write_results_csv(path, self._result, toolpath=toolpath, forces=self._forces, in_process=self._in_process)
         self._written = path
         obj.ResultsFile = _relative(obj.Document, path)
         obj.ResultsDigest = _digest(path)
@@ -406,6 +460,12 @@ class EngagementFeature(FeatureProxy):
         kept = self._kept.get(obj.ResultsDigest)
         return kept.forces if kept is not None else None
 
+    def in_process(self, obj):
+        """The InProcess of the results (initial lengths, changed CL points), or None: computed against the
+        stock as given, or before a successful recompute."""
+        kept = self._kept.get(obj.ResultsDigest)
+        return kept.in_process if kept is not None else None
+
     def save_results(self, obj):
         """Put the results the object stands for into the document (ResultsData) and write their CSV
         beside it, unless they are there already (an object restored from an older file gains
@@ -416,10 +476,11 @@ class EngagementFeature(FeatureProxy):
         path, digest = results_path(obj), obj.ResultsDigest
         if not os.path.isfile(path) or _digest(path) != digest:
             self._result, self._forces, self._toolpath = kept.result, kept.forces, kept.toolpath
+            self._in_process = kept.in_process
             self._write(obj, path)
             self._kept[obj.ResultsDigest] = self._kept.pop(digest)  # the same results, written anew
         if "ResultsData" in obj.PropertiesList:
-            embed(obj, kept.result, kept.forces)
+            embed(obj, kept.result, kept.forces, kept.in_process)
 
     def restored_from_document(self, obj):
         """Take the results back from ResultsData (the document's own copy); True if they are the ones
@@ -429,15 +490,15 @@ class EngagementFeature(FeatureProxy):
         if not path or not os.path.isfile(path):
             return False
         try:
-            digest, result, forces = read_archive(path)
+            digest, result, forces, in_process = read_archive(path)
         except InputError as error:
             FreeCAD.Console.PrintWarning(f"{obj.Label}: results in the document not read ({error})\n")
             return False
         if digest != obj.ResultsDigest or result.length.size != obj.Instants:
             return False
-        self._result, self._forces = result, forces
+        self._result, self._forces, self._in_process = result, forces, in_process
         self._kept[digest] = Kept(None, result, forces, None, obj.Shape, (),
-                                  {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+                                  {name: getattr(obj, name) for name in KEPT_PROPERTIES}, in_process)
         return True
 
     def restored(self, obj):
@@ -459,22 +520,25 @@ class EngagementFeature(FeatureProxy):
             forces = read_forces(path, obj.ForceFeedPerTooth.Value) if obj.Forces else None
             if obj.Forces and forces is None:
                 raise InputError(f"{path}: no force columns, but Forces is on")
+            in_process = read_in_process(path)
+            if (in_process is not None) != (obj.StockModelUsed == STOCK_MODELS[0]):
+                raise InputError(f"{path}: not computed against the stock model {obj.StockModelUsed}")
         except (InputError, OSError) as error:
             FreeCAD.Console.PrintWarning(f"{obj.Label}: results not restored ({error}); recompute to compute them\n")
             # FreeCAD 0.20 clears touched flags at the end of a restore and tells Python observers
             # nothing after that but the document's activation: the observer touches it then.
             self._stale = True
             return
-        self._result, self._written, self._forces = result, path, forces
+        self._result, self._written, self._forces, self._in_process = result, path, forces, in_process
         self._kept[obj.ResultsDigest] = Kept(None, result, forces, None, obj.Shape, (),
-                                             {name: getattr(obj, name) for name in KEPT_PROPERTIES})
+                                             {name: getattr(obj, name) for name in KEPT_PROPERTIES}, in_process)
 
 
 class Kept(NamedTuple):
     """Results an engagement object keeps for undo, redo and Cancel: the inputs_key they were computed
     for (None: read back), the Engagement, PassForces (or None), Toolpath (or None), the Shape, the
-    (Toolpath, Stock) they came from (kept alive, so their ids in the key stay theirs) and the
-    values of KEPT_PROPERTIES."""
+    (Toolpath, Stock) they came from (kept alive, so their ids in the key stay theirs), the
+    values of KEPT_PROPERTIES and the InProcess (or None: against the stock as given)."""
 
     key: object
     result: object
@@ -483,6 +547,7 @@ class Kept(NamedTuple):
     shape: object
     sources: tuple
     properties: dict
+    in_process: object = None
 
 
 def inputs_key(obj, toolpath, stock):
@@ -516,13 +581,13 @@ def add_results_data(obj):
     obj.setEditorMode("ResultsData", READ_ONLY)
 
 
-def embed(obj, result, forces):
+def embed(obj, result, forces, in_process):
     """Put the results of the engagement `obj` (its ResultsDigest's) into ResultsData: FreeCAD keeps a
     copy of the file and saves it inside the .FCStd."""
     handle, path = tempfile.mkstemp(prefix=f"{obj.Name}_", suffix=".npz")
     os.close(handle)
     try:
-        write_archive(path, obj.ResultsDigest, result, forces)
+        write_archive(path, obj.ResultsDigest, result, forces, in_process)
         obj.ResultsData = path
     finally:
         if os.path.exists(path):
@@ -585,6 +650,30 @@ def add_version_3_properties(obj):
     obj.Material = list(MATERIAL_CHOICES)
     obj.Material = MATERIAL_CHOICES[0]
     show_material(obj)
+
+
+def add_version_5_properties(obj, model):
+    """Add what version 5 added, if missing: StockModel (group "Inputs", set to `model`, a STOCK_MODELS
+    name), SweepTolerance (group "Inputs", mm) and the in-process results ChangedCLPoints and
+    StockModelUsed (group "Results", read-only)."""
+    if "StockModel" in obj.PropertiesList:
+        return
+    add_properties(obj, "Inputs", [
+        ("App::PropertyEnumeration", "StockModel", "in-process: the stock minus what the program's earlier cutting "
+                                                   "moves removed (where available: straight flutes, no forces); "
+                                                   "initial: the stock as given (the command line's --stock-model)"),
+        ("App::PropertyLength", SWEEP_TOLERANCE.prop, f"{SWEEP_TOLERANCE.help} (the command line's "
+                                                      f"{SWEEP_TOLERANCE.option})", SWEEP_TOLERANCE.default),
+    ])
+    add_properties(obj, "Results", [
+        ("App::PropertyInteger", "ChangedCLPoints", "CL points whose cutting edges meet material that earlier moves "
+                                                    "of the program removed (0 against the stock as given)"),
+        ("App::PropertyString", "StockModelUsed", "the stock the results are against: in-process, or initial and "
+                                                  "why"),
+    ], read_only=True)
+    obj.StockModel = list(STOCK_MODELS)
+    obj.StockModel = model
+    obj.StockModelUsed = model
 
 
 def show_material(obj):
@@ -773,7 +862,8 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
     settings: diameter, flutes, flute_length, feed_per_tooth (mm), spindle_rpm, inclination,
     phi_start, phi_end, phi_step (deg), or phi_range=(start, end); helix (deg); forces (bool),
     material (a forces.MATERIALS name or "custom"), ktc, krc, kac (N/mm²), kte, kre, kae (N/mm),
-    immersion_start, immersion_end (deg), or immersion=(start, end). Those not given come from
+    immersion_start, immersion_end (deg), or immersion=(start, end); stock_model ("in-process" or
+    "initial", jobs.run.STOCK_MODELS), sweep_tolerance (mm). Those not given come from
     the toolpath file where it gives them (read now), else stay unset (0) or at their defaults.
     walls: "stock", "exact" or "quintic". y_window: "auto", "whole", "swept", or (y0, y1) mm
     (custom). Returns the object (not yet recomputed).

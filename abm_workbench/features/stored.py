@@ -10,6 +10,11 @@ forces, :func:`read_forces` gives them back as a :class:`PassForces` (forces wit
 The document keeps its results itself, in a compressed NumPy archive (:func:`write_archive`,
 :func:`read_archive`): every array of the Engagement and of the PassForces as computed, bit for
 bit, and the ResultsDigest of the object they belong to.
+
+Against the in-process stock (docs/ENGINE.md "Whole programs") the results also hold an
+:class:`InProcess`: the length of cut in the stock as given per instant (the results CSV's
+``length_initial``) and which CL points earlier moves changed (the summary's ``changed``);
+:func:`write_results_csv` writes them, :func:`read_in_process` reads them back.
 """
 
 import os
@@ -20,8 +25,9 @@ import numpy as np
 
 from ..engine import CASES, SURFACES, Engagement
 from ..errors import InputError
-from ..formats import results_csv, results_npz
+from ..formats import replacing, results_csv, results_npz
 from ..formats.results_columns import FORCE_COLUMNS, RESULT_COLUMNS
+from ..formats.results_csv import chunk_texts, summary_path, write_text
 from ..forces import ANGLE_EPS
 
 
@@ -156,25 +162,69 @@ def read_forces(path, feed):
                       np.broadcast_to(np.asarray(feed, dtype=float), (m,)).copy())
 
 
+@dataclass(frozen=True)
+class InProcess:
+    """What an engagement against the in-process stock adds, for m CL points × p angles φ.
+
+    initial: (m, p) length of cut (mm) in the stock as given, before earlier moves removed
+    anything. changed: (m,) bool, earlier moves of the program removed material that an edge
+    line of the CL point would meet.
+    """
+
+    initial: np.ndarray
+    changed: np.ndarray
+
+
+def write_results_csv(path, result, *, toolpath=None, forces=None, in_process=None):
+    """Write the results CSV of the Engagement `result` and its summary beside it, both or neither: the
+    command line's bytes (formats.results_csv.chunk_texts), with the force columns for PassForces
+    `forces` and, for an InProcess `in_process`, length_initial and changed. toolpath: the Toolpath,
+    for the summary's CL point columns, or None."""
+    initial, changed = (None, None) if in_process is None else (in_process.initial, in_process.changed)
+    texts = chunk_texts(result, 0, toolpath=toolpath, forces=forces, initial=initial, changed=changed)
+    with replacing(path, summary_path(path)) as temporaries:
+        for temporary, text in zip(temporaries, texts):
+            write_text(temporary, text)
+
+
+def read_in_process(path):
+    """The InProcess of results CSV `path` (its length_initial and its summary's changed column), or None
+    for results against the stock as given; InputError naming the file when only one of them is there."""
+    name, summary = os.fspath(path), summary_path(path)
+    columns = read_results(path)
+    if "length_initial" not in columns:
+        return None
+    m, p = _pass_shape(name, columns["cl"])
+    segments = read_results(summary)
+    if "changed" not in segments:
+        raise InputError(f"{summary}: no column 'changed', but {name} has length_initial")
+    changed = np.zeros(m, dtype=bool)
+    changed[segments["cl"]] = segments["changed"] != 0
+    return InProcess(np.asarray(columns["length_initial"], dtype=float).reshape(m, p), changed)
+
+
 #: Key prefixes of the arrays in an embedded results archive (write_archive).
-_ENGAGEMENT, _FORCES = "engagement.", "forces."
+_ENGAGEMENT, _FORCES, _IN_PROCESS = "engagement.", "forces.", "inprocess."
 
 
-def write_archive(path, digest, result, forces=None):
-    """Write the Engagement `result` (and the PassForces `forces`, if any) to `path` as a compressed
-    NumPy archive (.npz), with `digest`: the ResultsDigest of the object they belong to (text)."""
+def write_archive(path, digest, result, forces=None, in_process=None):
+    """Write the Engagement `result` (and the PassForces `forces` and InProcess `in_process`, if any) to
+    `path` as a compressed NumPy archive (.npz), with `digest`: the ResultsDigest of the object they
+    belong to (text)."""
     arrays = {"digest": np.array(digest)}
     arrays.update({_ENGAGEMENT + field.name: getattr(result, field.name) for field in fields(Engagement)})
     if forces is not None:
         arrays.update({_FORCES + field.name: getattr(forces, field.name) for field in fields(PassForces)
                        if getattr(forces, field.name) is not None})
+    if in_process is not None:
+        arrays.update({_IN_PROCESS + field.name: getattr(in_process, field.name) for field in fields(InProcess)})
     with open(path, "wb") as handle:
         np.savez_compressed(handle, **arrays)
 
 
 def read_archive(path):
-    """(digest, Engagement, PassForces or None) of an archive written by write_archive; InputError
-    naming the file when it is not one."""
+    """(digest, Engagement, PassForces or None, InProcess or None) of an archive written by
+    write_archive; InputError naming the file when it is not one."""
     name = os.fspath(path)
     try:
         with np.load(path, allow_pickle=False) as archive:
@@ -188,4 +238,7 @@ def read_archive(path):
     forces = None
     if _FORCES + "xyz" in arrays:
         forces = PassForces(**{field.name: arrays.get(_FORCES + field.name) for field in fields(PassForces)})
-    return str(arrays["digest"]), result, forces
+    in_process = None
+    if _IN_PROCESS + "initial" in arrays:
+        in_process = InProcess(**{field.name: arrays[_IN_PROCESS + field.name] for field in fields(InProcess)})
+    return str(arrays["digest"]), result, forces, in_process

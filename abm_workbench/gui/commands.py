@@ -358,7 +358,25 @@ class ValidateEngagement(Command):
         return page
 
 
-COMMANDS = (OpenModelTest, ImportStock, ImportToolpath, ComputeEngagement, InspectEngagement, ValidateEngagement)
+class ShowInProcessStock(Command):
+    """The in-process stock at the dock's chosen CL point in the 3D view, following the dock's slider."""
+
+    Name = "ABM_ShowInProcessStock"
+    MenuText = QT_TRANSLATE_NOOP("ABM_ShowInProcessStock", "Show in-process stock")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_ShowInProcessStock",
+                                "Show the stock as it is at the dock's chosen CL point: the stock minus what the "
+                                "program's earlier moves near it removed (OpenCASCADE booleans, a few seconds); it "
+                                "follows the CL point chosen in the dock")
+    Accel = "A, P"
+
+    def activated(self, doc):
+        from .inprocess_view import show_for_dock
+
+        return show_for_dock()
+
+
+COMMANDS = (OpenModelTest, ImportStock, ImportToolpath, ComputeEngagement, InspectEngagement, ValidateEngagement,
+            ShowInProcessStock)
 #: Command names in menu and toolbar order.
 NAMES = tuple(command.Name for command in COMMANDS)
 

@@ -3,10 +3,12 @@
 One ``QDockWidget`` ("ABM engagement", object name ``ABM_EngagementDock``) on the right of
 FreeCAD's main window, showing one engagement object at a time (:func:`show`):
 
-- a slider and a spin box over the CL points (0-based, as in the results CSV); the chosen CL
-  point is drawn on top of the model (``EngagementViewProvider.highlight``) and a line says
-  its depth of cut and engagement segments at once, and its plots follow once the events
-  queued are handled (a timer of 0 ms: a dragged slider plots where it stops);
+- a slider and a spin box over the CL points (0-based, as in the results CSV): every CL point of
+  the toolpath's operation, all its passes; the chosen CL point is drawn on top of the model
+  (``EngagementViewProvider.highlight``) and a line says its depth of cut, engagement segments
+  and whether earlier moves of the program changed it (:func:`in_process_words`) at once, and
+  its plots follow once the events queued are handled (a timer of 0 ms: a dragged slider plots
+  where it stops);
 - "Colour by" (the view property ``ColourBy``) and the legend: for segments, the UEP surface
   kinds and their colours; for a quantity, the colour bar with its minimum and maximum and unit
   (force only for an engagement with forces: otherwise the segments are shown);
@@ -134,7 +136,8 @@ class EngagementDock(QtGui.QDockWidget):
         forces = _forces(obj)
         peak = "" if forces is None else f"; peak force {obj.PeakForce:.4g} N"
         self.title.setText(f"<b>{obj.Label}</b>: {m} CL points × {result.shape[1]} angles φ; depth of cut "
-                           f"{obj.DepthOfCutMin.Value:.2f}–{obj.DepthOfCutMax.Value:.2f} mm{peak}")
+                           f"{obj.DepthOfCutMin.Value:.2f}–{obj.DepthOfCutMax.Value:.2f} mm{peak}; "
+                           f"{stock_model_words(obj)}")
         self.tabs.setTabEnabled(FORCES_TAB, forces is not None)
         self.colour_by.model().item(COLOUR_BY.index("force")).setEnabled(forces is not None)
         self.tabs.setTabToolTip(FORCES_TAB, "" if forces is not None else
@@ -166,9 +169,10 @@ class EngagementDock(QtGui.QDockWidget):
             parts = ", ".join(f"{s['letter']} {s['phi_start']:g}–{s['phi_end']:g}° {s['surface'].replace('_', ' ')}"
                               for s in segments)
             self.about.setText(f"CL {cl}: depth of cut {depth:.3f} mm, max length of cut "
-                               f"{result.length[cl].max():.3f} mm; segments {parts}")
+                               f"{result.length[cl].max():.3f} mm; segments {parts}{in_process_words(obj, result, cl)}")
         else:
-            self.about.setText(f"CL {cl}: the tool does not engage the stock here")
+            self.about.setText(f"CL {cl}: the tool does not engage the stock here"
+                               f"{in_process_words(obj, result, cl)}")
         self.chosen = cl
         self.plots_due.start()
 
@@ -298,6 +302,28 @@ def _lay_out(figure):
     figure.set_layout_engine("constrained")
     figure.canvas.draw()
     figure.set_layout_engine("none")
+
+
+def stock_model_words(obj):
+    """The stock the engagement `obj` was computed against, in plain words (with how many CL points
+    earlier moves changed, against the in-process stock)."""
+    used = getattr(obj, "StockModelUsed", "initial")
+    if used == "in-process":
+        return f"in-process stock: {obj.ChangedCLPoints} CL points changed by earlier moves of the program"
+    return f"stock as given{used[len('initial'):]}"
+
+
+def in_process_words(obj, result, cl):
+    """Whether earlier moves of the program changed CL point `cl` of the engagement `obj` (its Engagement
+    `result`), as '; changed by earlier moves: …' with the longest length of cut against the in-process
+    and the initial stock; '' when it was computed against the stock as given."""
+    in_process = obj.Proxy.in_process(obj)
+    if in_process is None:
+        return ""
+    if not in_process.changed[cl]:
+        return "; not changed by earlier moves"
+    return (f"; changed by earlier moves: longest length of cut in-process {result.length[cl].max():.2f} mm / "
+            f"initial {in_process.initial[cl].max():.2f} mm")
 
 
 def colour_bar(legend):

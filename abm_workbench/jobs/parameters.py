@@ -134,6 +134,11 @@ BY_NAME = {parameter.name: parameter for parameter in PARAMETERS}
 #: toolpath file's tool, spindle and feed winning (jobs.resolve).
 CUTTING = ("diameter", "flutes", "flute_length", "feed_per_tooth", "inclination", "spindle_rpm", "phi_start",
            "phi_end", "phi_step")
+#: The sub-step of five-axis moves for the in-process stock: a run option, not a cutting parameter
+#: (kept out of PARAMETERS, so neither the job file nor the cutting options take it).
+SWEEP_TOLERANCE = Parameter("sweep_tolerance", "sweep tolerance", "mm", 0.05, 0.0, low_open=True,
+                            prop="SweepTolerance", option="--sweep-tolerance",
+                            help="sub-step of five-axis moves at the tool's rim for the in-process stock")
 #: Material choices: the force table's, or custom (the coefficients as given).
 MATERIAL_CHOICES = tuple(MATERIALS) + ("custom",)
 

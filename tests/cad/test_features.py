@@ -72,10 +72,12 @@ def assert_same(result, expected, atol=0.0):
 
 
 def model_test(doc, stock=STOCK_JSON, **options):
-    """Stock, toolpath and engagement of model test 1 in `doc` (not recomputed)."""
+    """Stock, toolpath and engagement of model test 1 in `doc` (not recomputed), against the initial stock
+    unless `options` say otherwise (tests/cad/test_inprocess_feature.py tests the in-process one)."""
     stock_obj = create_stock(doc, stock)
     toolpath = create_toolpath(doc, TOOLPATH)
-    return stock_obj, toolpath, create_engagement(doc, stock_obj, toolpath, **SETTINGS, **options)
+    return stock_obj, toolpath, create_engagement(doc, stock_obj, toolpath, **SETTINGS,
+                                                  **{"stock_model": "initial", **options})
 
 
 def test_factories_raise_without_a_document(monkeypatch):
@@ -279,7 +281,7 @@ def test_stock_from_a_linked_solid_with_exact_walls(doc):
     solid.Shape = Part.read(STOCK_STEP)
     stock = create_stock(doc, solid)
     toolpath = create_toolpath(doc, TOOLPATH)
-    engagement = create_engagement(doc, stock, toolpath, **SETTINGS)
+    engagement = create_engagement(doc, stock, toolpath, **SETTINGS, stock_model="initial")
     engagement.ShowSurfaces = False
     doc.recompute()
     assert all(obj.isValid() for obj in doc.Objects)
@@ -294,6 +296,7 @@ def forbid_the_engine(monkeypatch):
         raise AssertionError("the engine ran on restore")
 
     monkeypatch.setattr(engagement_module, "flute_1", no_engine)
+    monkeypatch.setattr(engagement_module, "engage_in_process", no_engine)
     monkeypatch.setattr(engagement_module, "pass_forces_of", no_engine)
 
 
@@ -303,7 +306,8 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     doc.recompute()
     for name in ("YWindow", "YWindowMin", "YWindowMax", "ValidationReport", "HelixAngle", "Forces", "Material",
                  "Ktc", "Krc", "Kac", "Kte", "Kre", "Kae", "ImmersionStart", "ImmersionEnd", "PeakForce",
-                 "ForceFeedPerTooth", "ResultsData"):  # as saved by version 1
+                 "ForceFeedPerTooth", "ResultsData", "StockModel", "SweepTolerance", "ChangedCLPoints",
+                 "StockModelUsed"):  # as saved by version 1
         engagement.removeProperty(name)
     engagement.Version = 1
     toolpath = doc.getObject("Toolpath")
@@ -318,10 +322,11 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
-        assert engagement.Version == VERSION == 4
+        assert engagement.Version == VERSION == 5
         toolpath = reopened.getObject("Toolpath")
-        assert toolpath.Version == 4 and toolpath.Operation == 0 and toolpath.Operations == []
+        assert toolpath.Version == VERSION and toolpath.Operation == 0 and toolpath.Operations == []
         assert engagement.YWindow == "whole" and engagement.ValidationReport == ""  # what version 1 computed
+        assert engagement.StockModel == "initial" and engagement.StockModelUsed == "initial"
         assert engagement.HelixAngle.Value == 0.0 and not engagement.Forces and engagement.PeakForce == 0.0
         assert "Touched" in engagement.State and engagement.Proxy.result(engagement) is None
         reopened.recompute()
@@ -518,7 +523,7 @@ def test_a_moved_project_reopens_with_its_input_files_and_missing_ones_are_repoi
         shutil.copyfile(os.path.join(MODEL, name), project / "inputs" / name)
     stock = create_stock(doc, str(project / "inputs" / "stock.json"))
     toolpath = create_toolpath(doc, str(project / "inputs" / "toolpath.csv"))
-    create_engagement(doc, stock, toolpath, **SETTINGS)
+    create_engagement(doc, stock, toolpath, **SETTINGS, stock_model="initial")
     doc.recompute()
     doc.saveAs(str(project / "job.FCStd"))
     assert (stock.SourceFileRelative, toolpath.FileRelative) == (os.path.join("inputs", "stock.json"),
