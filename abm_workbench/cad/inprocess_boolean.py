@@ -200,13 +200,37 @@ def _filled(found, source):
     return out
 
 
+def _segment_gaps(p, u, q, v):
+    """(k,) shortest distances (mm) between the segment p + s·u, 0 ≤ s ≤ 1 ((3,) each) and the
+    segments q + t·v ((k, 3) each): the closest points by clamping (Ericson, Real-Time Collision
+    Detection, 5.1.9)."""
+    r = p - q
+    a, b, c = u @ u, v @ u, r @ u
+    e, f = np.einsum("ij,ij->i", v, v), np.einsum("ij,ij->i", v, r)
+    denom = a * e - b * b
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / denom, 0.0, 1.0), 0.0)
+        t = (b * s + f) / e
+    s = np.where(t < 0.0, np.clip(-c / a, 0.0, 1.0), np.where(t > 1.0, np.clip((b - c) / a, 0.0, 1.0), s))
+    t = np.clip(t, 0.0, 1.0)
+    return np.linalg.norm(r + s[:, None] * u - t[:, None] * v, axis=1)
+
+
 def _near_tool(pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i):
-    """(k,) the pieces of moves ending before program row `row` whose bounding spheres reach the
-    bounding sphere of the tool at CL point i of `toolpath`; the tool's axis (3,)."""
+    """(k,) the pieces of moves ending before program row `row` that can reach the tool at CL point i
+    of `toolpath`, and the tool's axis (3,). A piece's volume lies within its radius + |c1 − c0|/2
+    of its axis segment at the middle of the move, the tool within its radius of its own axis
+    segment: the pieces whose axis segments come closer than the sum (and whose bounding spheres
+    reach the tool's, pieces_near)."""
     _, direction = edge_lines(toolpath, tool, [0.0])
     w = direction[i]
     centre = toolpath.cl[i] + 0.5 * tool.flute_length * w
-    return pieces_near(pieces, int(row), centre, np.hypot(tool.radius, 0.5 * tool.flute_length)), w
+    near = pieces_near(pieces, int(row), centre, np.hypot(tool.radius, 0.5 * tool.flute_length))
+    move = pieces.c1[near] - pieces.c0[near]
+    middle = 0.5 * (pieces.c0[near] + pieces.c1[near])
+    gap = _segment_gaps(toolpath.cl[i], tool.flute_length * w, middle, pieces.height[near, None] * pieces.axis[near])
+    reach = tool.radius + pieces.radius[near] + 0.5 * np.linalg.norm(move, axis=1)
+    return near[gap <= reach], w
 
 
 def edge_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, sweep: ProgramSweep, progress=None):

@@ -4,8 +4,8 @@ tests/engine/test_inprocess.py (dense points along each edge line, inside the st
 earlier tool position, changes refined by bisection).
 
 The program: operation 1 (D 10, flute length 12) in two overlapping passes, the second turning
-its axis (five-axis moves); operation 2 (D 7, flute length 16), tilted and turning, crossing
-both. Both operations' passes are validated.
+its axis (five-axis moves, in sub-steps of TOLERANCE); operation 2 (D 7, flute length 16),
+tilted, crossing both. Both operations' passes are validated.
 """
 
 import numpy as np
@@ -21,6 +21,7 @@ from abm_workbench.validation import validate
 from tests.engine.test_inprocess import Program, reference, staircase, straight
 
 AGREE = 0.01  # mm: the issue's bound, for lengths, LEP and UEP
+TOLERANCE = 0.01  # mm: five-axis sub-steps, fine enough that their error stays well inside AGREE
 SETTINGS = CutSettings(0.1, 0.0, 0.0, 180.0, 15.0)
 
 
@@ -30,10 +31,10 @@ def program():
     prog.add_pass(straight(8, 52, -3.0, 3.0, 5), 5.0, 12.0)
     back = straight(52, 8, 4.0, 0.0, 5)
     back[:, 2] = np.linspace(4.5, 2.0, 5)
-    turning = np.column_stack([np.linspace(0.12, -0.1, 5), np.linspace(0.0, 0.08, 5), np.ones(5)])
+    turning = np.column_stack([np.linspace(0.04, -0.02, 5), np.linspace(0.0, 0.02, 5), np.ones(5)])
     second = prog.add_pass(back, 5.0, 12.0, turning)
     cross = np.stack([np.full(5, 30.0), np.linspace(-16, 14, 5), np.full(5, 1.5)], axis=1)
-    lean = np.column_stack([np.linspace(0.15, 0.05, 5), np.full(5, -0.1), np.ones(5)])
+    lean = np.tile([0.1, -0.1, 1.0], (5, 1))
     other = prog.add_pass(cross, 3.5, 16.0, lean)
     return prog, second, other
 
@@ -47,7 +48,7 @@ def check(rows, workers=1):
     path = Toolpath.from_axes(d["cl"][rows], d["axis"][rows])
     stock = staircase()
     result = validate(staircase_solid(stock), stock, tool, path, SETTINGS, workers=workers,
-                      sweep=(swept_pieces(prog.moves()), rows))
+                      sweep=(swept_pieces(prog.moves(), TOLERANCE), rows))
     base, direction = edge_lines(path, tool, SETTINGS.phi)
     found = [[reference(base[i, k], direction[i], flute, d, row) for k in range(SETTINGS.phi.size)]
              for i, row in enumerate(rows)]
