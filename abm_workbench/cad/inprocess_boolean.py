@@ -6,7 +6,12 @@ built as an exact solid: the convex hull of its two end cylinders is the union o
 cylinders and the extrusions, along the move d = c1 − c0, of the cylinder's bottom disc, its
 top disc and its axial rectangle across the move (the rectangle through the axis, ⊥ to d's part
 across the axis). Every line parallel to d that meets the first cylinder meets one of those
-three faces inside it, so the extrusions fill the gap between the two cylinders. Lengths in mm.
+three faces inside it, so the extrusions fill the gap between the two cylinders.
+
+validate's reference against the in-process stock (edge_lengths_in_process) sections each edge
+segment with the stock and with each of those solids of the pieces near the tool, and keeps what
+lies in the stock and in none of them (inprocess_sections); inprocess_solid, the stock actually cut
+by the fused hulls, costs OpenCASCADE seconds per piece and serves small checks. Lengths in mm.
 """
 
 from dataclasses import dataclass

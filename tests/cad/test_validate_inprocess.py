@@ -110,12 +110,17 @@ def test_stock_heights_show_what_earlier_moves_removed():
     path = Toolpath.from_axes(d["cl"][other], d["axis"][other])
     stock = staircase_solid(staircase())
     pieces = swept_pieces(prog.moves())
+    lowered = 0
     for i in (1, 3):
         x, y, z = inprocess_boolean.stock_heights(stock, pieces, other[i], tool, path, i, cells=9)
         for a, b in ((2, 3), (4, 4), (6, 1), (7, 7)):
-            want = reference(np.array([x[b], y[a], -1.0]), np.array([0.0, 0, 1]), 12.0, d, other[i])
+            base = np.array([x[b], y[a], -1.0])
+            want = reference(base, np.array([0.0, 0, 1]), 12.0, d, other[i])
             top = want[-1][1] - 1.0 if want else np.nan
             np.testing.assert_allclose(z[a, b], top, rtol=0, atol=AGREE)
+            before = reference(base, np.array([0.0, 0, 1]), 12.0, d, 0)  # no earlier move
+            lowered += not want or top < before[-1][1] - 1.0 - AGREE
+    assert lowered  # some of the points show what earlier moves removed
 
 
 APT = """UNITS/MM
