@@ -82,7 +82,7 @@ class InProcessCheck:
     """What a validation against the in-process stock adds: initial (m, p) the engine's length of
     cut in the stock as given (mm); changed (m,) bool, earlier moves removed material from some
     edge line of the CL point (the engine's finding); swept (m,) int, the swept pieces of earlier
-    moves the reference cut from the stock at each CL point."""
+    moves near the tool that the reference sectioned at each CL point."""
 
     initial: np.ndarray
     changed: np.ndarray

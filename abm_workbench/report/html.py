@@ -231,7 +231,7 @@ def _inprocess_section(validation, job, cls, views):
         f"<p>Both the engine and the boolean reference work on the <b>in-process stock</b>: at each CL point, "
         f"the stock minus the volumes swept by the cutting moves that end before it. The boolean reference "
         f"sections each cutting-edge line with the stock solid and with exact solids of the volumes swept by "
-        f"the earlier moves near the tool (those whose bounding spheres reach the tool's), and keeps what "
+        f"the earlier moves that can reach the tool, and keeps what "
         f"lies in the stock and in none of them. The pictures show the top of that in-process stock "
         f"around the tool, found the same way along vertical lines. Earlier moves "
         f"changed {int(check.changed.sum())} of {m} CL points ({int(differs.sum())} instants by more than "
@@ -345,7 +345,7 @@ def _files():
         ("segments.csv", "error per CL point and engagement segment"),
         ("surfaces.csv", "error per kind of UEP surface"),
         ("depth.csv", "depth of cut per CL point, both methods (against the in-process stock also changed: "
-                      "whether earlier moves changed the CL point, and swept: the pieces the boolean cut away)"),
+                      "whether earlier moves changed the CL point, and swept: the swept pieces the boolean sectioned)"),
     ]
     body = "".join(f"<tr><td><a href='{name}'><code>{name}</code></a></td><td>{_e(text)}</td></tr>"
                    for name, text in rows)

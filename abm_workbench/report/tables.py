@@ -10,7 +10,7 @@
 
 Against the in-process stock (Validation.in_process), comparison.csv also has l_initial (ABM's
 length in the stock as given) and depth.csv changed (earlier moves changed the CL point: 1/0)
-and swept (the swept pieces the boolean cut from the stock at it).
+and swept (the swept pieces of earlier moves near the tool that the boolean sectioned).
 
 Numbers are written with 12 significant digits; NaN is an empty field.
 """
