@@ -254,13 +254,12 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
         raise NoEngagementError("no CL point of the pass engages the stock")
     started = time.perf_counter()
     if sweep is None:
-        reference = reference_by_workers(edge_lengths_by_boolean, solid, tool, toolpath, engagement.phi, (),
-                                         workers=workers, progress=progress)
+        function, extra = edge_lengths_by_boolean, ()
     else:
+        function, extra = edge_lengths_in_process, (ProgramSweep(pieces, np.asarray(rows), toolpath),)
         workers = 1 if _repeats_cl_point(toolpath) else workers
-        reference = reference_by_workers(edge_lengths_in_process, solid, tool, toolpath, engagement.phi,
-                                         (ProgramSweep(pieces, np.asarray(rows), toolpath),),
-                                         workers=workers, progress=progress)
+    reference = reference_by_workers(function, solid, tool, toolpath, engagement.phi, extra, workers=workers,
+                                     progress=progress)
     boolean_seconds = time.perf_counter() - started
     comparison = compare(engagement, reference, toolpath, tool)
     check = None if sweep is None else InProcessCheck(initial, changed, reference["swept"])
