@@ -4,7 +4,7 @@ PYTHON := /usr/bin/python3
 DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth
 OUT := build
 
-.PHONY: deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 test benchmark scaling models install screenshots compare-peers
+.PHONY: deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -27,6 +27,17 @@ validate-model-test-1 validate-model-test-2 validate-model-test-4: validate-mode
 	$(PYTHON) -m abm_workbench validate --job resources/models/model_test_$*/job.json \
 	  --stock resources/models/model_test_$*/stock.step --toolpath resources/models/model_test_$*/toolpath.csv \
 	  --report $(OUT)/model_test_$*/validation --fcstd $(OUT)/model_test_$*/validation.FCStd --cl 0,22,40
+
+# Model test 3 (a whole program) against OpenCASCADE booleans on the in-process stock: a report per
+# operation (operation 1's later passes meet what its first pass removed, operation 2 what operation 1
+# removed). Several seconds per CL point: the boolean sections the earlier moves' swept solids.
+validate-model-test-3: deps
+	for op in 1 2; do \
+	  $(PYTHON) -m abm_workbench validate --job resources/models/model_test_3/job.json \
+	    --stock resources/models/model_test_3/stock.step --toolpath resources/models/model_test_3/program.apt \
+	    --operation $$op --stock-model in-process --workers 0 --report $(OUT)/model_test_3/validation_op$$op \
+	    || exit 1; \
+	done
 
 test: deps
 	$(PYTHON) -m pytest -q tests

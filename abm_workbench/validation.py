@@ -27,12 +27,13 @@ import contextlib
 import threading
 import time
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 
 from .engine import (SURFACES, Engagement, FluteEngagement, Tool, Toolpath, edge_lines, flute_engagement,
                      rotation_matrix, segment_letter)
-from .engine.stocks import engage_stock
+from .engine.stocks import engage_in_process, engage_stock
 
 #: Below this reference length (mm) the error is absolute, not relative.
 TINY_LENGTH = 1e-3
@@ -79,17 +80,31 @@ class Comparison:
 
 
 @dataclass(frozen=True)
+class InProcessCheck:
+    """What a validation against the in-process stock adds: initial (m, p) the engine's length of
+    cut in the stock as given (mm); changed (m,) bool, earlier moves removed material from some
+    edge line of the CL point (the engine's finding); swept (m,) int, the swept pieces of earlier
+    moves near the tool that the reference sectioned at each CL point."""
+
+    initial: np.ndarray
+    changed: np.ndarray
+    swept: np.ndarray
+
+
+@dataclass(frozen=True)
 class Validation:
     """A validated pass: the engine's Engagement, the reference, their Comparison, the timings.
 
     reference: dict of (m, p) arrays length, lep_l, uep_l, pieces (see cad.boolean).
-    seconds: {"abm": engine time, "boolean": reference time} (s).
+    seconds: {"abm": engine time, "boolean": reference time} (s). in_process: an InProcessCheck
+    when both sides worked against the in-process stock, None against the stock as given.
     """
 
     engagement: Engagement
     reference: dict
     comparison: Comparison
     seconds: dict
+    in_process: Optional[InProcessCheck] = None
 
     @property
     def speed_ratio(self):
@@ -215,29 +230,50 @@ def letters(engagement: Engagement):
 
 
 def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None, workers=1,
-             scheduler=None):
+             scheduler=None, sweep=None):
     """Run the engine and the boolean reference on one pass; a Validation.
 
     solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's (a Staircase or a
-    TerracedStock). progress(done, total) is called after each CL point of the reference. workers:
-    processes computing the reference (1: this one; 0: one per core; see the module docstring);
+    TerracedStock). sweep: (SweptPieces of the whole program, (m,) program row of each CL point), both
+    in the pass's frame, to check against the in-process stock (the engine's engage_in_process against
+    cad.inprocess_boolean.edge_lengths_in_process), or None for the stock as given. progress(done,
+    total) is called after each CL point of the reference. workers: processes computing the reference
+    (1: this one; 0: one per core; see the module docstring; against the in-process stock a pass that
+    repeats a CL point exactly is computed here, its CL points not being told apart in a worker);
     scheduler: a Dask scheduler's address to compute it on instead (reference_by_workers). Raises
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
     """
     from .cad.boolean import edge_lengths_by_boolean
+    from .cad.inprocess_boolean import ProgramSweep, edge_lengths_in_process
 
     started = time.perf_counter()
-    engagement = engage_stock(staircase, tool, toolpath, settings)
+    if sweep is None:
+        engagement = engage_stock(staircase, tool, toolpath, settings)
+    else:
+        pieces, rows = sweep
+        engagement, initial, changed = engage_in_process(staircase, tool, toolpath, settings, pieces, rows)
     abm_seconds = time.perf_counter() - started
     if not engagement.engaged.any():
         raise NoEngagementError("no CL point of the pass engages the stock")
     started = time.perf_counter()
-    reference = reference_by_workers(edge_lengths_by_boolean, solid, tool, toolpath, engagement.phi, (),
-                                     workers=workers, scheduler=scheduler, progress=progress)
+    if sweep is None:
+        function, extra = edge_lengths_by_boolean, ()
+    else:
+        function, extra = edge_lengths_in_process, (ProgramSweep(pieces, np.asarray(rows), toolpath),)
+        workers = 1 if _repeats_cl_point(toolpath) else workers
+    reference = reference_by_workers(function, solid, tool, toolpath, engagement.phi, extra, workers=workers,
+                                     scheduler=scheduler, progress=progress)
     boolean_seconds = time.perf_counter() - started
     comparison = compare(engagement, reference, toolpath, tool)
-    return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds})
+    check = None if sweep is None else InProcessCheck(initial, changed, reference["swept"])
+    return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds}, check)
+
+
+def _repeats_cl_point(toolpath: Toolpath):
+    """Whether two CL points of `toolpath` are equal in position and angles."""
+    values = np.column_stack([toolpath.cl, toolpath.theta_a, toolpath.theta_b])
+    return len(np.unique(values, axis=0)) < len(values)
 
 
 @dataclass(frozen=True)

@@ -6,33 +6,47 @@ built as an exact solid: the convex hull of its two end cylinders is the union o
 cylinders and the extrusions, along the move d = c1 − c0, of the cylinder's bottom disc, its
 top disc and its axial rectangle across the move (the rectangle through the axis, ⊥ to d's part
 across the axis). Every line parallel to d that meets the first cylinder meets one of those
-three faces inside it, so the extrusions fill the gap between the two cylinders. Lengths in mm.
+three faces inside it, so the extrusions fill the gap between the two cylinders.
+
+validate's reference against the in-process stock (edge_lengths_in_process) sections each edge
+segment with the stock and with each of those solids of the pieces near the tool, and keeps what
+lies in the stock and in none of them (inprocess_sections); inprocess_solid, the stock actually cut
+by the fused hulls, costs OpenCASCADE seconds per piece and serves small checks. Lengths in mm.
 """
+
+from dataclasses import dataclass
 
 import numpy as np
 
+from ..engine import Tool, Toolpath, edge_lines
 from ..engine.inprocess import SweptPieces, swept_pieces
-from .boolean import _inside_intervals
+from .boolean import _distinct_angles, _inside_intervals, _merged
 from .freecad_env import FreeCAD, Part
 
 #: A move component below this (mm) is zero: its extrusion would be flat.
 FLAT_EPS = 1e-9
+#: The local stock around a CL point is the stock inside the tool's bounding box grown by this (mm).
+BOX_MARGIN = 1.0
+#: Stock left between two swept solids that meet (OpenCASCADE puts their common face within its
+#: 1e-7 mm confusion of each other) is shorter than this (mm) and dropped.
+SLIVER = 1e-6
 
 
 def _vector(values):
     return FreeCAD.Vector(*(float(v) for v in values))
 
 
-def hull_solid(c0, c1, axis, radius, height):
-    """Part.Shape of the volume a cylinder (radius, height, unit axis, bottom centre c0) sweeps
-    moving straight to c1 with its axis fixed: the convex hull of the two end cylinders (mm)."""
+def hull_parts(c0, c1, axis, radius, height):
+    """Part.Shape solids whose union is the volume a cylinder (radius, height, unit axis, bottom
+    centre c0) sweeps moving straight to c1 with its axis fixed: the two end cylinders and the
+    extrusions of the module docstring (mm). A list of 1 to 5 solids."""
     c0, c1, w = (np.asarray(v, dtype=float) for v in (c0, c1, axis))
     d = c1 - c0
     da = float(d @ w)
     dp = d - da * w
     parts = [Part.makeCylinder(radius, height, _vector(c0), _vector(w))]
     if np.linalg.norm(d) <= FLAT_EPS:
-        return parts[0]
+        return parts
     parts.append(Part.makeCylinder(radius, height, _vector(c1), _vector(w)))
     if abs(da) > FLAT_EPS:
         for base in (c0, c0 + height * w):
@@ -44,19 +58,36 @@ def hull_solid(c0, c1, axis, radius, height):
                    c0 - radius * across + height * w]
         rectangle = Part.Face(Part.makePolygon([_vector(c) for c in corners + corners[:1]]))
         parts.append(rectangle.extrude(_vector(d)))
-    return parts[0].multiFuse(parts[1:]).removeSplitter()
+    return parts
 
 
-def _pieces_near(pieces: SweptPieces, moves, upto, near):
-    """Indices of the pieces of moves ending at or before row upto − 1 whose bounding sphere
-    comes within `near` mm of the tool at row upto (None: the tool's own bounding sphere)."""
-    radius, height = moves.radius[upto], moves.flute_length[upto]
-    centre = moves.cl[upto] + 0.5 * height * moves.axis[upto]
-    reach = np.hypot(radius, 0.5 * height) if near is None else float(near)
+def hull_solid(c0, c1, axis, radius, height):
+    """Part.Shape of the volume a cylinder (radius, height, unit axis, bottom centre c0) sweeps
+    moving straight to c1 with its axis fixed: the convex hull of the two end cylinders (mm),
+    the hull_parts fused."""
+    parts = hull_parts(c0, c1, axis, radius, height)
+    return parts[0] if len(parts) == 1 else parts[0].multiFuse(parts[1:]).removeSplitter()
+
+
+def pieces_near(pieces: SweptPieces, upto, centre, reach):
+    """(k,) indices of the pieces of moves ending at or before program row upto − 1 whose bounding
+    sphere comes within `reach` mm of `centre` (3,) mm: every piece that can touch a body inside
+    that ball."""
     piece_centre = 0.5 * (pieces.c0 + pieces.c1) + 0.5 * pieces.height[:, None] * pieces.axis
     piece_bound = 0.5 * np.linalg.norm(pieces.c1 - pieces.c0, axis=1) + np.hypot(pieces.radius, 0.5 * pieces.height)
-    gap = np.linalg.norm(piece_centre - centre, axis=1) - piece_bound
+    gap = np.linalg.norm(piece_centre - np.asarray(centre, dtype=float), axis=1) - piece_bound
     return np.flatnonzero((pieces.move <= upto - 1) & (gap <= reach))
+
+
+def cut_by_pieces(stock_solid, pieces: SweptPieces, chosen):
+    """`stock_solid` (Part.Shape) minus the hull solids of pieces `chosen` (k,), fused first; the
+    solid itself when none is chosen."""
+    if len(chosen) == 0:
+        return stock_solid
+    tools = [hull_solid(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.height[i])
+             for i in chosen]
+    removal = tools[0].multiFuse(tools[1:]) if len(tools) > 1 else tools[0]
+    return stock_solid.cut(removal)
 
 
 def inprocess_solid(stock_solid, moves, upto, near=None, tolerance=0.05):
@@ -65,13 +96,11 @@ def inprocess_solid(stock_solid, moves, upto, near=None, tolerance=0.05):
     (moves, pieces)), restricted to those near the tool at row `upto` (bounding spheres within
     `near` mm of the tool's; default: touching the tool's own bounding sphere). Part.Shape."""
     moves, pieces = moves if isinstance(moves, tuple) else (moves, swept_pieces(moves, tolerance))
-    chosen = _pieces_near(pieces, moves, int(upto), near)
-    if chosen.size == 0:
-        return stock_solid
-    tools = [hull_solid(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.height[i])
-             for i in chosen]
-    removal = tools[0].multiFuse(tools[1:]) if len(tools) > 1 else tools[0]
-    return stock_solid.cut(removal)
+    upto = int(upto)
+    radius, height = moves.radius[upto], moves.flute_length[upto]
+    centre = moves.cl[upto] + 0.5 * height * moves.axis[upto]
+    reach = np.hypot(radius, 0.5 * height) if near is None else float(near)
+    return cut_by_pieces(stock_solid, pieces, pieces_near(pieces, upto, centre, reach))
 
 
 def inprocess_lengths(stock_solid, moves, upto, origins, direction, length, near=None, tolerance=0.05):
@@ -84,12 +113,165 @@ def inprocess_lengths(stock_solid, moves, upto, origins, direction, length, near
     solid = inprocess_solid(stock_solid, moves, upto, near, tolerance)
     origins = np.asarray(origins, dtype=float).reshape(-1, 3)
     found = _inside_intervals(solid, origins, np.asarray(direction, dtype=float), float(length))
-    p = len(found)
-    out = {"length": np.zeros(p), "lep_l": np.full(p, np.nan), "uep_l": np.full(p, np.nan),
-           "pieces": np.zeros(p, dtype=int), "solid": solid}
-    for k, pieces in enumerate(found):
-        if pieces:
-            out["length"][k] = sum(b - a for a, b in pieces)
-            out["lep_l"][k], out["uep_l"][k] = pieces[0][0], pieces[-1][1]
-            out["pieces"][k] = len(pieces)
+    return {**_filled(found, range(len(found))), "solid": solid}
+
+
+@dataclass(frozen=True)
+class ProgramSweep:
+    """What the in-process reference of a pass needs besides the stock: pieces, the SweptPieces of
+    the whole program (in the pass's frame); rows (m,) int, the program row of each CL point of the
+    pass; toolpath, the whole pass (m CL points), in which a part of it is found again by its values
+    (a worker is handed CL points without their index)."""
+
+    pieces: SweptPieces
+    rows: np.ndarray
+    toolpath: Toolpath
+
+    def rows_of(self, part: Toolpath):
+        """(n,) program rows of the n consecutive CL points `part` of the pass. ValueError when the
+        part is not found in the pass, or found at several places (an exact repeat of CL points)."""
+        whole, n = self.toolpath, len(part)
+        columns = [(whole.cl, part.cl), (whole.theta_a[:, None], part.theta_a[:, None]),
+                   (whole.theta_b[:, None], part.theta_b[:, None])]
+        starts = np.arange(len(whole) - n + 1)
+        for offset in range(n):
+            keep = np.ones(starts.size, dtype=bool)
+            for mine, theirs in columns:
+                keep &= (mine[starts + offset] == theirs[offset]).all(axis=1)
+            starts = starts[keep]
+        if starts.size != 1:
+            raise ValueError(f"the {n} CL points are found {starts.size} times in the pass of {len(whole)}; "
+                             "the in-process reference needs them once")
+        return np.asarray(self.rows)[starts[0]:starts[0] + n]
+
+
+def inprocess_sections(stock_solid, pieces: SweptPieces, chosen, base, direction, length):
+    """Per line (q lists), the merged (l_start, l_end) intervals of the lines base + l·direction,
+    0 ≤ l ≤ length (base (q, 3), direction (3,) unit, mm), inside `stock_solid` and inside none of
+    the swept volumes of pieces `chosen`: the stock's sections (one boolean) minus each line's
+    sections with every hull_parts solid, one boolean per solid with the lines whose bounding boxes
+    meet its own (the union of the parts is the hull, so no solid is fused or cut: OpenCASCADE takes
+    seconds per fuse or cut of these nearly coincident solids, milliseconds per section)."""
+    base = np.asarray(base, dtype=float).reshape(-1, 3)
+    direction = np.asarray(direction, dtype=float)
+    kept = _inside_intervals(stock_solid, base, direction, length)
+    inside = [k for k, found in enumerate(kept) if found]
+    if not inside or len(chosen) == 0:
+        return kept
+    ends = np.stack([base[inside], base[inside] + length * direction])
+    low, high = ends.min(axis=0), ends.max(axis=0)
+    removed = [[] for _ in inside]
+    for i in chosen:
+        for part in hull_parts(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.height[i]):
+            box = part.BoundBox
+            meets = np.flatnonzero(((low <= [box.XMax, box.YMax, box.ZMax]) &
+                                    (high >= [box.XMin, box.YMin, box.ZMin])).all(axis=1))
+            if meets.size:
+                lines = [inside[k] for k in meets]
+                for k, more in zip(meets, _inside_intervals(part, base[lines], direction, length)):
+                    removed[k].extend(more)
+    for k, found in zip(inside, removed):
+        kept[k] = _minus(kept[k], _merged(found))
+    return kept
+
+
+def _minus(kept, removed):
+    """The intervals `kept` less the intervals `removed` (both merged, increasing); pieces shorter
+    than SLIVER dropped."""
+    out = []
+    for start, end in kept:
+        for cut_start, cut_end in removed:
+            if cut_end <= start or cut_start >= end:
+                continue
+            if cut_start - start >= SLIVER:
+                out.append((start, cut_start))
+            start = max(start, cut_end)
+        if end - start >= SLIVER:
+            out.append((start, end))
     return out
+
+
+def _filled(found, source):
+    """{length, lep_l, uep_l, pieces} (p,) arrays of the intervals `found` of the distinct lines, line
+    source[k] for angle k (mm; NaN LEP and UEP without engagement)."""
+    p = len(source)
+    out = {"length": np.zeros(p), "lep_l": np.full(p, np.nan), "uep_l": np.full(p, np.nan),
+           "pieces": np.zeros(p, dtype=int)}
+    for k, j in enumerate(source):
+        if found[j]:
+            out["length"][k] = sum(b - a for a, b in found[j])
+            out["lep_l"][k], out["uep_l"][k] = found[j][0][0], found[j][-1][1]
+            out["pieces"][k] = len(found[j])
+    return out
+
+
+def _segment_gaps(p, u, q, v):
+    """(k,) shortest distances (mm) between the segment p + s·u, 0 ≤ s ≤ 1 ((3,) each) and the
+    segments q + t·v ((k, 3) each): the closest points by clamping (Ericson, Real-Time Collision
+    Detection, 5.1.9)."""
+    r = p - q
+    a, b, c = u @ u, v @ u, r @ u
+    e, f = np.einsum("ij,ij->i", v, v), np.einsum("ij,ij->i", v, r)
+    denom = a * e - b * b
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / denom, 0.0, 1.0), 0.0)
+        t = (b * s + f) / e
+    s = np.where(t < 0.0, np.clip(-c / a, 0.0, 1.0), np.where(t > 1.0, np.clip((b - c) / a, 0.0, 1.0), s))
+    t = np.clip(t, 0.0, 1.0)
+    return np.linalg.norm(r + s[:, None] * u - t[:, None] * v, axis=1)
+
+
+def _near_tool(pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i):
+    """(k,) the pieces of moves ending before program row `row` that can reach the tool at CL point i
+    of `toolpath`, and the tool's axis (3,). A piece's volume lies within its radius + |c1 − c0|/2
+    of its axis segment at the middle of the move, the tool within its radius of its own axis
+    segment: the pieces whose axis segments come closer than the sum (and whose bounding spheres
+    reach the tool's, pieces_near)."""
+    _, direction = edge_lines(toolpath, tool, [0.0])
+    w = direction[i]
+    centre = toolpath.cl[i] + 0.5 * tool.flute_length * w
+    near = pieces_near(pieces, int(row), centre, np.hypot(tool.radius, 0.5 * tool.flute_length))
+    move = pieces.c1[near] - pieces.c0[near]
+    middle = 0.5 * (pieces.c0[near] + pieces.c1[near])
+    gap = _segment_gaps(toolpath.cl[i], tool.flute_length * w, middle, pieces.height[near, None] * pieces.axis[near])
+    reach = tool.radius + pieces.radius[near] + 0.5 * np.linalg.norm(move, axis=1)
+    return near[gap <= reach], w
+
+
+def edge_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, sweep: ProgramSweep, progress=None):
+    """The boolean reference against the in-process stock: at each CL point of `toolpath` (a part of
+    sweep.toolpath) the cutting-edge lines at phi_deg (p,) (deg) inside the stock `shape`
+    (Part.Shape) and in none of the volumes the earlier cutting moves near it swept
+    (inprocess_sections). Returns a dict of (m, p) arrays as cad.boolean.edge_lengths_by_boolean
+    (length, lep_l, uep_l mm, pieces) and "swept" (m,) int: the swept pieces met at each CL point.
+    progress(done, total) after each CL point."""
+    phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    distinct, source = _distinct_angles(phi)
+    base, direction = edge_lines(toolpath, tool, distinct)
+    rows = sweep.rows_of(toolpath)
+    parts = []
+    for i, row in enumerate(rows):
+        chosen, _ = _near_tool(sweep.pieces, row, tool, toolpath, i)
+        found = inprocess_sections(shape, sweep.pieces, chosen, base[i], direction[i], tool.flute_length)
+        parts.append({**_filled(found, source), "swept": len(chosen)})
+        if progress is not None:
+            progress(i + 1, len(rows))
+    return {name: np.array([part[name] for part in parts]) for name in parts[0]}
+
+
+def stock_heights(stock_solid, pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i, cells=40):
+    """The in-process stock around CL point i of `toolpath` (program row `row`) seen from above:
+    (x (c,), y (c,), z (c, c)) mm, z[a, b] the top of the stock minus the earlier moves' swept
+    volumes (inprocess_sections of vertical lines) over (x[b], y[a]), NaN where none is left; the
+    grid of c = `cells` points covers the tool's bounding box grown by BOX_MARGIN."""
+    chosen, w = _near_tool(pieces, row, tool, toolpath, i)
+    centre = toolpath.cl[i] + 0.5 * tool.flute_length * w
+    half = 0.5 * tool.flute_length * np.abs(w) + tool.radius * np.sqrt(np.clip(1.0 - w * w, 0.0, 1.0)) + BOX_MARGIN
+    box = stock_solid.BoundBox
+    x = np.linspace(centre[0] - half[0], centre[0] + half[0], cells)
+    y = np.linspace(centre[1] - half[1], centre[1] + half[1], cells)
+    gx, gy = np.meshgrid(x, y)
+    base = np.column_stack([gx.ravel(), gy.ravel(), np.full(gx.size, box.ZMin - 1.0)])
+    found = inprocess_sections(stock_solid, pieces, chosen, base, np.array([0.0, 0.0, 1.0]), box.ZLength + 2.0)
+    top = np.array([pieces_[-1][1] if pieces_ else np.nan for pieces_ in found]) + box.ZMin - 1.0
+    return x, y, top.reshape(cells, cells)

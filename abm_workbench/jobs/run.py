@@ -141,16 +141,17 @@ def no_engagement(job: Job):
 
 
 def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None, workers=1,
-               scheduler=None):
+               scheduler=None, sweep=None):
     """(Validation of flute 1 or the first checked flute, HelixValidation or None) of the engine against
-    OpenCASCADE booleans: straight edges by ``validation.validate``, a helical tool (or chosen `flutes`,
-    0-based) by ``validation.validate_helix``. validation.NoEngagementError when the tool never touches
-    the stock. workers, scheduler: where the boolean reference runs (``validation.reference_by_workers``)."""
+    OpenCASCADE booleans: straight edges by ``validation.validate`` (against the in-process stock when
+    `sweep` = (SweptPieces, program rows) is given), a helical tool (or chosen `flutes`, 0-based) by
+    ``validation.validate_helix``. validation.NoEngagementError when the tool never touches the stock.
+    workers, scheduler: where the boolean reference runs (``validation.reference_by_workers``)."""
     from ..validation import validate, validate_helix
 
     if tool.helix == 0.0 and flutes is None:
         return validate(solid, staircase, tool, toolpath, settings, progress=progress, workers=workers,
-                        scheduler=scheduler), None
+                        scheduler=scheduler, sweep=sweep), None
     if not isinstance(staircase, Staircase):
         raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
     helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress,
@@ -455,9 +456,6 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
     from ..validation import NoEngagementError
 
     check_method(Method(workers=workers, scheduler=scheduler), forces=False, helix=0.0)
-    if job.stock_model == "in-process":
-        raise ParameterError("stock_model", "validation against the in-process stock is not available yet: it "
-                                            "checks the stock as given (initial)")
     prepared = prepare(job)
     for message in prepared.warnings():
         warn(message)
@@ -468,6 +466,9 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
         if not 1 <= flute <= tool.flutes:
             raise ParameterError("flute", f"must be 1..{tool.flutes} (the tool has {tool.flutes} flutes), got {flute}")
         flutes = [flute - 1]
+    in_process, model_note = _validated_sweep(job, prepared, flutes)
+    if model_note:
+        warn(f"{job.toolpath}: {model_note}; validating against the stock as given")
     check_report_outputs(job, report, fcstd)
     stock, stock_seconds = load_job_stock(prepared)
     check_model(stock, prepared.force_model is not None, helix=tool.helix)
@@ -477,7 +478,8 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
 
     try:
         checked, helix = validation(solid, stock.model, tool, toolpath, settings, flutes=flutes,
-                                    progress=progress, workers=workers, scheduler=scheduler)
+                                    progress=progress, workers=workers, scheduler=scheduler,
+                                    sweep=in_process)
     except NoEngagementError:
         raise no_engagement(job) from None
     engagement = checked.engagement
@@ -492,12 +494,14 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
     description = prepared.description if helix is None else " ".join(filter(None, [
         prepared.description, flutes_text(helix)]))
     report_job = ReportJob(title, description, job.stock, job.toolpath, toolpath, tool, settings,
-                           prepared.parameters.describe(), walls, stock.y_window, stock_seconds)
+                           prepared.parameters.describe(), walls, stock.y_window, stock_seconds,
+                           _stock_model_text(job, prepared, in_process, model_note))
+    views = None if in_process is None else _stock_views(solid, in_process, tool, toolpath, [cl for cl, _ in shown])
 
     for path in [report] + ([fcstd] if fcstd else []):
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with staged(report, folder=True) as folder, (staged(fcstd) if fcstd else contextlib.nullcontext()) as document:
-        page = write_report(folder, checked, report_job, shown, forces)
+        page = write_report(folder, checked, report_job, shown, forces, views)
         if helix is not None:
             write_flutes_csv(os.path.join(folder, "flutes.csv"), helix)
         if document:
@@ -507,6 +511,39 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
                             intersections=[cl for cl, _ in shown])
     written = [os.path.join(report, os.path.basename(page))] + ([fcstd] if fcstd else [])
     return ValidateResult(prepared, stock, checked, helix, forces, written)
+
+
+def _validated_sweep(job, prepared, flutes):
+    """(in_process_sweep's (SweptPieces, rows) or None, why not or '') for validate: the rule of engage,
+    and the stock as given when single flutes of a tool are checked (the helix boolean)."""
+    if flutes is None:
+        return in_process_sweep(prepared)
+    if job.stock_model == "in-process":
+        raise ParameterError("stock_model", "in-process is not available with --flute (the helix boolean) yet: "
+                                            "use initial")
+    return None, "" if job.stock_model == "initial" else "the in-process stock is not available with --flute yet"
+
+
+def _stock_model_text(job, prepared, in_process, model_note):
+    """The stock model the report checked, in words."""
+    if in_process is None:
+        return "initial: the stock as given" + (f" ({model_note})" if model_note else "")
+    pieces, _ = in_process
+    operation = prepared.hints.operation
+    where = f", operation {operation.number}" if operation is not None else ""
+    return (f"in-process: the stock minus the volumes swept by every cutting move of {os.path.basename(job.toolpath)}"
+            f" before each CL point{where} ({len(pieces.c0)} swept pieces, five-axis moves in sub-steps of at most "
+            f"{job.sweep_tolerance:g} mm at the tool's rim)")
+
+
+def _stock_views(solid, in_process, tool, toolpath, cls):
+    """{CL index: (x (c,), y (c,), z (c, c)) mm}: the top of the in-process stock around each CL point of
+    `cls` (cad.inprocess_boolean.stock_heights), for the report's pictures."""
+    from ..cad.inprocess_boolean import stock_heights
+    from ..report.html import STOCK_VIEWS
+
+    pieces, rows = in_process
+    return {cl: stock_heights(solid, pieces, rows[cl], tool, toolpath, cl) for cl in cls[:STOCK_VIEWS]}
 
 
 def flutes_text(helix_validation):

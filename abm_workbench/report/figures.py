@@ -11,6 +11,7 @@ from matplotlib.colors import LogNorm
 from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
+from ..engine import edge_lines
 from .colours import segment_colour
 from .plots import cell_edges
 
@@ -22,6 +23,10 @@ ABM_COLOUR, REF_COLOUR = "tab:blue", "black"
 ERROR_FLOOR = 1e-16
 #: At most this many edge lines per CL point in the 3D view.
 SHAPE_LINES = 60
+#: Direction of the light that shades the in-process stock (unit).
+LIGHT = np.array([-0.4, -0.5, 0.77]) / np.linalg.norm([-0.4, -0.5, 0.77])
+#: Lines drawn around the tool's cylinder in the in-process view.
+TOOL_LINES = 24
 
 
 def _figure(height, rows=1, cols=1, **grid):
@@ -144,6 +149,63 @@ def shape_figure(validation, cls):
         axes.set(xlabel="x (mm)", ylabel="y (mm)", zlabel="z (mm)")
         axes.set_title(f"CL {cl}: engaged edge LEP–UEP (solid line: UEP, dotted: LEP)", fontsize="medium")
         axes.tick_params(labelsize="x-small")
+    return figure
+
+
+def inprocess_figure(validation, views, toolpath, tool):
+    """The in-process stock at the CL points of `views` ({cl: (x (c,), y (c,), z (c, c)) mm}, the top of
+    the stock less what earlier moves removed, around the tool), a row per CL point. Left: that top
+    surface shaded, the tool's cylinder (grey lines) and the engaged part of its cutting edge (ABM,
+    LEP to UEP, blue). Right: the length of cut over φ in the stock as given (ABM, grey), in the
+    in-process stock (ABM, blue) and by the boolean on the in-process stock (black rings)."""
+    engagement, comparison, check = validation.engagement, validation.comparison, validation.in_process
+    cls = sorted(views)
+    figure, grid = _figure(4.6 * len(cls), len(cls), 2, width_ratios=(1.0, 1.2))
+    base, direction = edge_lines(toolpath, tool, np.linspace(0.0, 360.0, TOOL_LINES, endpoint=False))
+    for row, cl in enumerate(cls):
+        x, y, z = views[cl]
+        axes = figure.add_subplot(grid[row, 0], projection="3d")
+        gx, gy = np.meshgrid(x, y)
+        dz_dy, dz_dx = np.gradient(np.nan_to_num(z, nan=np.nanmin(z, initial=0.0)), y, x)
+        normal = np.stack([-dz_dx, -dz_dy, np.ones_like(z)], axis=-1)
+        shade = 0.35 + 0.6 * np.abs(normal @ LIGHT) / np.linalg.norm(normal, axis=-1)
+        colours = np.stack([0.93 * shade, 0.8 * shade, 0.6 * shade, np.ones_like(shade)], axis=-1)
+        axes.plot_surface(gx, gy, z, facecolors=colours, rstride=1, cstride=1, linewidth=0.0, antialiased=False,
+                          shade=False)
+        rim = np.stack([base[cl], base[cl] + tool.flute_length * direction[cl]])
+        for k in range(TOOL_LINES):
+            axes.plot(*rim[:, k].T, color="0.45", linewidth=0.5)
+        for end in rim:
+            axes.plot(*np.vstack([end, end[:1]]).T, color="0.45", linewidth=0.7)
+        engaged = np.flatnonzero(engagement.segment[cl] >= 0)
+        for index in engaged[:: max(1, -(-engaged.size // SHAPE_LINES))]:
+            axes.plot(*np.stack([engagement.lep_xyz[cl, index], engagement.uep_xyz[cl, index]]).T, color=ABM_COLOUR,
+                      linewidth=1.4)
+        points = np.concatenate([np.column_stack([gx.ravel(), gy.ravel(), z.ravel()]), rim.reshape(-1, 3)])
+        low, high = np.nanmin(points, axis=0), np.nanmax(points, axis=0)
+        axes.set(xlim=(low[0], high[0]), ylim=(low[1], high[1]), zlim=(low[2], high[2]),
+                 xlabel="x (mm)", ylabel="y (mm)", zlabel="z (mm)")
+        axes.set_box_aspect(np.maximum(high - low, 1e-3))
+        axes.view_init(elev=28.0, azim=-62.0)
+        axes.tick_params(labelsize="x-small")
+        changed = "changed by earlier moves" if check.changed[cl] else "not changed by earlier moves"
+        axes.set_title(f"CL {cl}: top of the in-process stock around the tool\n({changed}; {check.swept[cl]} swept "
+                       "pieces near)",
+                       fontsize="small", loc="left")
+        along = figure.add_subplot(grid[row, 1])
+        phi = engagement.phi
+        along.plot(phi, check.initial[cl], color="0.55", linestyle="--", label="ABM, stock as given")
+        along.plot(phi, comparison.l_abm[cl], color=ABM_COLOUR, label="ABM, in-process stock")
+        along.plot(phi, comparison.l_ref[cl], "o", markevery=max(1, phi.size // 45), markersize=3.5,
+                   markerfacecolor="none", color=REF_COLOUR, label="boolean, in-process stock")
+        along.set(xlabel="φ (deg)", ylabel="length of cut (mm)",
+                  xlim=(phi[0], phi[-1] if phi.size > 1 else phi[0] + 1.0))
+        along.set_ylim(0.0, 1.15 * max(along.get_ylim()[1], 1e-9))
+        along.grid(True, alpha=0.3)
+        along.set_title(f"CL {cl}: max |l_ABM − l_ref| {np.abs(comparison.difference[cl]).max():.3g} mm",
+                        fontsize="small", loc="left")
+        if row == 0:
+            along.legend(fontsize="small", loc="upper right")
     return figure
 
 

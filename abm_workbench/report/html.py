@@ -30,6 +30,8 @@ PAPER_SECONDS = {"ABM": 713.87, "Z-map (0.2 mm grid)": 2633.65}
 _MODEL_TEST = re.compile(r"\bmodel test ([12])\b", re.IGNORECASE)
 #: At most this many CL points get plots over φ (the 3D view: four).
 DETAIL_PLOTS = 8
+#: At most this many CL points get a picture of the in-process stock.
+STOCK_VIEWS = 4
 
 _CSS = """
 body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", sans-serif; color: #222; background: #f6f7f9;
@@ -62,6 +64,7 @@ class ReportJob:
     files. toolpath, tool, settings: the pass as computed. parameters: one line of parameters
     and their sources (jobs.Parameters.describe). walls: the stock's model in words. y_window:
     (2,) mm, or None for a terraced stock. stock_seconds: time to read or build the stock's solid and model (s).
+    stock_model: which stock both sides checked, in words (the stock as given, or the in-process stock).
     """
 
     title: str
@@ -75,6 +78,7 @@ class ReportJob:
     walls: str
     y_window: tuple
     stock_seconds: float
+    stock_model: str = "initial: the stock as given"
 
 
 def paper_model_test(description):
@@ -97,12 +101,14 @@ def report_cls(validation, requested=None):
     return chosen
 
 
-def write_report(folder, validation, job: ReportJob, cls, forces=None):
+def write_report(folder, validation, job: ReportJob, cls, forces=None, views=None):
     """Write index.html and the four CSV tables of `validation` into `folder` (which exists).
 
     cls: (index, why) of the CL points shown in detail. forces: the pass's Forces (or an
     engagement object's PassForces), for the "Cutting forces" section and forces.png; None: no
-    forces. Returns the path of index.html.
+    forces. views: for a validation against the in-process stock, {cl: (x (c,), y (c,), z (c, c))
+    mm} the top of the in-process stock around those CL points (cad.inprocess_boolean.stock_heights),
+    pictured in the "In-process stock" section. Returns the path of index.html.
     """
     for name, text in report_tables(validation, job.toolpath).items():
         with open(os.path.join(folder, name), "w", encoding="utf-8", newline="") as file:
@@ -116,7 +122,7 @@ def write_report(folder, validation, job: ReportJob, cls, forces=None):
             file.write(force_png)
     page = os.path.join(folder, "index.html")
     with open(page, "w", encoding="utf-8") as file:
-        file.write(report_page(validation, job, cls, forces, force_png))
+        file.write(report_page(validation, job, cls, forces, force_png, views))
     return page
 
 
@@ -126,9 +132,10 @@ def force_figure(forces, cls):
     return force_over_phi_figure(forces, sorted({cl for cl, _ in cls[:SHOWN_CL]}), along=True)
 
 
-def report_page(validation, job: ReportJob, cls, forces=None, force_png=None):
+def report_page(validation, job: ReportJob, cls, forces=None, force_png=None, views=None):
     """The HTML text of the report; with `forces`, the "Cutting forces" section showing `force_png`
-    (force_figure's PNG bytes, made here when not given)."""
+    (force_figure's PNG bytes, made here when not given); against the in-process stock, the
+    "In-process stock" section (pictures of `views`, see write_report)."""
     shown = [cl for cl, _ in cls][:DETAIL_PLOTS]
     model = paper_model_test(job.description)
     paper_range = PAPER_DEPTH.get(model)
@@ -137,6 +144,7 @@ def report_page(validation, job: ReportJob, cls, forces=None, force_png=None):
         f"<p class='lead'>{_e(job.description)}</p>" if job.description else "",
         _headline(validation, paper_range),
         "<h2>Job</h2>", _job_table(validation, job),
+        _inprocess_section(validation, job, cls, views or {}) if validation.in_process is not None else "",
         "<h2>Error by UEP surface, whole pass</h2>", _error_definition(), _surface_table(validation),
         "<p class='note'>The paper (Siemens NX reference): negligible error with the UEP on a top or a straight "
         "wall, below 6 % with the UEP on a curved wall.</p>",
@@ -195,8 +203,43 @@ def _job_table(validation, job):
         ("cutting", f"feed {settings.feed_per_tooth:g} mm/tooth, inclination {settings.inclination:g}°"
                     + (f", {settings.spindle_rpm:g} rpm" if settings.spindle_rpm else "")),
         ("parameters [from]", job.parameters),
+        ("stock model", job.stock_model),
     ]
     return _table(("", ""), rows, header=False)
+
+
+def _inprocess_section(validation, job, cls, views):
+    """What earlier moves changed: counts over the pass, per CL point shown its lengths in the stock as
+    given and in the in-process stock, and the pictures of the in-process stock around the tool."""
+    check, comparison = validation.in_process, validation.comparison
+    m = check.changed.size
+    differs = np.abs(check.initial - comparison.l_abm) > TINY_LENGTH
+    rows = []
+    for cl, why in cls:
+        rows.append([f"{cl} ({why})", "yes" if check.changed[cl] else "no", str(check.swept[cl]),
+                     str(int(differs[cl].sum())), _mm(check.initial[cl].max()), _mm(comparison.l_abm[cl].max()),
+                     _mm(comparison.l_ref[cl].max()), _mm(np.abs(comparison.difference[cl]).max())])
+    head = ("CL", "changed", "swept pieces near", "angles changed", "max l, stock as given (ABM)",
+            "max l, in-process (ABM)", "max l, in-process (boolean)", "max |Δl| (mm)")
+    inside = _table(head, rows, css="wide")
+    picture = ""
+    if views:
+        picture = _image(figures.inprocess_figure(validation, views, job.toolpath, job.tool))
+    changed_rows = check.changed & (comparison.l_abm > 0.0).any(axis=1)
+    return "\n".join([
+        "<h2>In-process stock</h2>",
+        f"<p>Both the engine and the boolean reference work on the <b>in-process stock</b>: at each CL point, "
+        f"the stock minus the volumes swept by the cutting moves that end before it. The boolean reference "
+        f"sections each cutting-edge line with the stock solid and with exact solids of the volumes swept by "
+        f"the earlier moves that can reach the tool, and keeps what "
+        f"lies in the stock and in none of them. The pictures show the top of that in-process stock "
+        f"around the tool, found the same way along vertical lines. Earlier moves "
+        f"changed {int(check.changed.sum())} of {m} CL points ({int(differs.sum())} instants by more than "
+        f"{TINY_LENGTH:g} mm; {int(changed_rows.sum())} of the changed CL points still engage). Per instant, "
+        f"<code>comparison.csv</code> has the length in the stock as given (<code>l_initial</code>) beside "
+        f"both in-process lengths; <code>depth.csv</code> says which CL points changed.</p>",
+        inside, picture,
+    ])
 
 
 def _error_definition():
@@ -297,10 +340,12 @@ def _files():
     """The CSV files beside the page."""
     rows = [
         ("comparison.csv", "one row per instant: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, "
-                           "LEP and UEP of both, pieces of both, segment, uep_surface"),
+                           "LEP and UEP of both, pieces of both, segment, uep_surface (against the in-process "
+                           "stock also l_initial: ABM in the stock as given)"),
         ("segments.csv", "error per CL point and engagement segment"),
         ("surfaces.csv", "error per kind of UEP surface"),
-        ("depth.csv", "depth of cut per CL point, both methods"),
+        ("depth.csv", "depth of cut per CL point, both methods (against the in-process stock also changed: "
+                      "whether earlier moves changed the CL point, and swept: the swept pieces the boolean sectioned)"),
     ]
     body = "".join(f"<tr><td><a href='{name}'><code>{name}</code></a></td><td>{_e(text)}</td></tr>"
                    for name, text in rows)

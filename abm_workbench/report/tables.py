@@ -8,6 +8,10 @@
 - ``surfaces.csv``: one row per kind of UEP surface (validation.surface_summary).
 - ``depth.csv``: one row per CL point: cl, cl_x, cl_y, cl_z, depth_abm, depth_ref, difference.
 
+Against the in-process stock (Validation.in_process), comparison.csv also has l_initial (ABM's
+length in the stock as given) and depth.csv changed (earlier moves changed the CL point: 1/0)
+and swept (the swept pieces of earlier moves near the tool that the boolean sectioned).
+
 Numbers are written with 12 significant digits; NaN is an empty field.
 """
 
@@ -26,6 +30,9 @@ STATISTICS_COLUMNS = (
 SEGMENT_COLUMNS = ("cl", "segment", "phi_start", "phi_end", "surface", "section", "wall", *STATISTICS_COLUMNS)
 SURFACE_COLUMNS = ("surface", *STATISTICS_COLUMNS)
 DEPTH_COLUMNS = ("cl", "cl_x", "cl_y", "cl_z", "depth_abm", "depth_ref", "difference")
+#: The columns added against the in-process stock.
+INPROCESS_COMPARISON_COLUMNS = ("l_initial",)
+INPROCESS_DEPTH_COLUMNS = ("changed", "swept")
 
 
 def report_tables(validation, toolpath):
@@ -47,11 +54,18 @@ def report_tables(validation, toolpath):
         "depth_abm": comparison.depth_abm, "depth_ref": comparison.depth_ref,
         "difference": comparison.depth_abm - comparison.depth_ref,
     }
+    comparison_names, depth_names = COMPARISON_COLUMNS, DEPTH_COLUMNS
+    check = validation.in_process
+    if check is not None:
+        columns["l_initial"] = check.initial
+        depth.update(changed=check.changed.astype(int), swept=check.swept)
+        comparison_names += INPROCESS_COMPARISON_COLUMNS
+        depth_names += INPROCESS_DEPTH_COLUMNS
     return {
-        "comparison.csv": csv_text(COMPARISON_COLUMNS, [np.ravel(columns[c]) for c in COMPARISON_COLUMNS]),
+        "comparison.csv": csv_text(comparison_names, [np.ravel(columns[c]) for c in comparison_names]),
         "segments.csv": records_text(SEGMENT_COLUMNS, segment_summary(engagement, comparison)),
         "surfaces.csv": records_text(SURFACE_COLUMNS, surface_summary(engagement, comparison)),
-        "depth.csv": csv_text(DEPTH_COLUMNS, [depth[c] for c in DEPTH_COLUMNS]),
+        "depth.csv": csv_text(depth_names, [depth[c] for c in depth_names]),
     }
 
 

@@ -167,3 +167,36 @@ def test_validate_command_with_forces(tmp_path, monkeypatch, capsys):
     assert f"; peak force {expected.peak.max():.4g} N at CL {int(np.argmax(expected.peak))}" in out
     assert "forces.png" in os.listdir("report")
     assert "<h2>Cutting forces</h2>" in (tmp_path / "report" / "index.html").read_text(encoding="utf-8")
+
+
+def test_in_process_section(tmp_path, validation):
+    """Against the in-process stock the page names the stock model, counts the changed CL points, shows
+    the stock around the chosen ones, and the CSVs carry the length in the stock as given."""
+    import dataclasses
+
+    from abm_workbench.report import figures
+    from abm_workbench.report.tables import INPROCESS_COMPARISON_COLUMNS, INPROCESS_DEPTH_COLUMNS
+    from abm_workbench.validation import InProcessCheck
+
+    m, _ = validation.engagement.shape
+    initial = validation.engagement.length + np.array([[0.0], [1.5], [0.0]])
+    check = InProcessCheck(initial, np.array([False, True, False]), np.array([0, 7, 2]))
+    inprocess = dataclasses.replace(validation, in_process=check)
+    x = y = np.linspace(-5.0, 5.0, 6)
+    views = {1: (x + PATH.cl[1, 0], y + PATH.cl[1, 1], np.full((6, 6), 3.0))}
+    model = "in-process: the stock minus the volumes swept by every cutting move of p.apt before each CL point"
+    page = open(write_report(tmp_path, inprocess, dataclasses.replace(job(), stock_model=model),
+                             [(1, "chosen")], views=views), encoding="utf-8").read()
+    assert model in page and "<h2>In-process stock</h2>" in page
+    assert "Earlier moves changed 1 of 3 CL points" in page
+    comparison = read_csv(tmp_path / "comparison.csv")
+    assert tuple(comparison) == COMPARISON_COLUMNS + INPROCESS_COMPARISON_COLUMNS
+    np.testing.assert_allclose([float(v) for v in comparison["l_initial"]], initial.ravel(), rtol=1e-11)
+    depth = read_csv(tmp_path / "depth.csv")
+    assert tuple(depth) == DEPTH_COLUMNS + INPROCESS_DEPTH_COLUMNS
+    assert depth["changed"] == ["0", "1", "0"] and depth["swept"] == ["0", "7", "2"]
+    os.makedirs(tmp_path / "plain")
+    plain = open(write_report(tmp_path / "plain", validation, job(), [(1, "chosen")]), encoding="utf-8").read()
+    assert "initial: the stock as given" in plain and "In-process stock" not in plain
+    assert page.count("data:image/png;base64,") == plain.count("data:image/png;base64,") + 1  # the stock picture
+    figures.inprocess_figure(inprocess, views, PATH, TOOL).savefig(tmp_path / "inprocess.png")
