@@ -30,6 +30,8 @@ BOX_MARGIN = 1.0
 #: Stock left between two swept solids that meet (OpenCASCADE puts their common face within its
 #: 1e-7 mm confusion of each other) is shorter than this (mm) and dropped.
 SLIVER = 1e-6
+#: Boxes that come within this (mm) of each other are taken to meet (room for rounding).
+BOX_SLACK = 1e-6
 
 
 def _vector(values):
@@ -158,10 +160,13 @@ def inprocess_sections(stock_solid, pieces: SweptPieces, chosen, base, direction
     inside = [k for k, found in enumerate(kept) if found]
     if not inside or len(chosen) == 0:
         return kept
-    ends = np.stack([base[inside], base[inside] + length * direction])
-    low, high = ends.min(axis=0), ends.max(axis=0)
+    extent = np.array([(found[0][0], found[-1][1]) for found in (kept[k] for k in inside)])
+    ends = np.stack([base[inside] + extent[:, :1] * direction, base[inside] + extent[:, 1:] * direction])
+    low, high = ends.min(axis=0) - BOX_SLACK, ends.max(axis=0) + BOX_SLACK
     removed = [[] for _ in inside]
-    for i in chosen:
+    piece_low, piece_high = _piece_boxes(pieces, chosen)
+    reaching = ((piece_low[:, None, :] <= high[None]) & (piece_high[:, None, :] >= low[None])).all(axis=2).any(axis=1)
+    for i in np.asarray(chosen)[reaching]:
         for part in hull_parts(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.height[i]):
             box = part.BoundBox
             meets = np.flatnonzero(((low <= [box.XMax, box.YMax, box.ZMax]) &
@@ -173,6 +178,17 @@ def inprocess_sections(stock_solid, pieces: SweptPieces, chosen, base, direction
     for k, found in zip(inside, removed):
         kept[k] = _minus(kept[k], _merged(found))
     return kept
+
+
+def _piece_boxes(pieces: SweptPieces, chosen):
+    """(low, high) (k, 3) mm: the axis-aligned boxes of the swept volumes of pieces `chosen` (k,), each
+    the box of its two end cylinders (the volume is their convex hull): a cylinder of unit axis w and
+    radius r reaches r·sqrt(1 − w_i²) beyond its axis segment along coordinate i."""
+    chosen = np.asarray(chosen, dtype=int)
+    w, r, h = pieces.axis[chosen], pieces.radius[chosen, None], pieces.height[chosen, None]
+    ends = np.stack([pieces.c0[chosen], pieces.c0[chosen] + h * w, pieces.c1[chosen], pieces.c1[chosen] + h * w])
+    rim = r * np.sqrt(np.clip(1.0 - w * w, 0.0, 1.0))
+    return ends.min(axis=0) - rim, ends.max(axis=0) + rim
 
 
 def _minus(kept, removed):
