@@ -259,7 +259,7 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     """
     n = span_move.size
     step = np.linalg.norm(s1 - s0, axis=1)
-    run = np.cumsum(np.r_[True, (np.diff(span_move) > 1) | (np.diff(radius) != 0) | (np.diff(height) != 0)]) - 1
+    run = (np.cumsum(np.r_[True, (np.diff(span_move) > 1) | (np.diff(radius) != 0) | (np.diff(height) != 0)]) - 1)[:n]
     run_first = np.flatnonzero(np.r_[True, run[1:] != run[:-1]]) if n else np.zeros(0, dtype=np.intp)
     before = np.cumsum(step) - step
     along = before - before[run_first][run]

@@ -71,7 +71,7 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
 
     started = time.perf_counter()
     model = force_model_of(obj)
-    toolpath, _, parameters, tool, settings, stock = obj.Proxy.inputs(obj)
+    toolpath, hints, parameters, tool, settings, stock = obj.Proxy.inputs(obj)
     solid = stock.solid()
     stock_seconds = time.perf_counter() - started  # the stock object's cache makes this small
     chosen = list(range(len(toolpath))) if cls is None else [int(cl) for cl in cls]
@@ -80,14 +80,18 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
     index = np.array(chosen)
     pass_ = Toolpath(toolpath.cl[index], toolpath.theta_a[index], toolpath.theta_b[index],
                      None if toolpath.cc is None else toolpath.cc[index])
+    sweep, model_note = obj.Proxy.stock_model(obj, toolpath, hints, parameters, tool, settings, model)
+    if sweep is not None:
+        sweep = (sweep[0], np.asarray(sweep[1])[index])
     try:
         validation, helix = checked_validation(solid, stock.model, tool, pass_, settings, progress=progress,
-                                               workers=validation_workers() if workers is None else workers)
+                                               workers=validation_workers() if workers is None else workers,
+                                               sweep=sweep)
     except NoEngagementError:
         raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock at CL points "
                          f"{_cl_list(chosen)}") from None
     forces = None if model is None else pass_forces_of(stock.model, tool, pass_, settings, model,
-                                                         validation.engagement)
+                                                         validation.engagement, in_process=sweep)
     subset = len(chosen) < len(toolpath)
     run = "ABM against booleans" if helix is None else (
         f"Helical edges (β = {tool.helix:g}°), flute 1 of {tool.flutes}, ABM against booleans")
@@ -96,7 +100,9 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
                    if subset else "")
     walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
     job = ReportJob(title, description, stock.source, obj.Toolpath.File, pass_, tool, settings,
-                    parameters.describe(lambda parameter: parameter.prop), walls, stock.y_window, stock_seconds)
+                    parameters.describe(lambda parameter: parameter.prop), walls, stock.y_window, stock_seconds,
+                    stock_model="in-process: the stock minus what earlier cutting moves of the program removed"
+                    if sweep is not None else "initial: the stock as given" + (f" ({model_note})" if model_note else ""))
     shown = [(i, f"pass CL {cl}") for i, cl in enumerate(chosen)][:6]
     os.makedirs(os.path.dirname(os.path.abspath(folder)), exist_ok=True)
     with staged(folder, folder=True) as temporary:

@@ -413,3 +413,17 @@ def test_pass_inprocess_chunks_agree_with_one_call():
     initial = engage(staircase(), tool, first, CutSettings(0.1, 0.0, 0.0, 180.0, 3.0)).length.reshape(-1)
     same = np.repeat(~alone[3], phi.size)
     np.testing.assert_array_equal(alone[2].length[same], initial[same])
+
+
+def test_a_program_without_cutting_moves_removes_nothing():
+    """Only rapids (no swept piece at all): every edge line keeps its stock intervals."""
+    cl = np.array([[20.0, -10.0, 2.0], [20.0, 0.0, 2.0], [20.0, 10.0, 2.0]])
+    moves = ProgramMoves(cl, [[0.0, 0.0, 1.0]] * 3, [False, False, False], [5.0] * 3, [12.0] * 3, [1, 2, 3])
+    pieces = swept_pieces(moves)
+    phi = np.arange(0.0, 181.0, 10.0)
+    program = {"cl": cl, "axis": np.array([[0.0, 0.0, 1.0]] * 3), "radius": np.full(3, 5.0)}
+    origins, directions = edge_lines(program, [1, 2], phi, fixed=True)
+    stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
+    got, changed = inprocess_intervals(stock_iv, pieces, np.array([1, 2]), origins, directions, phi.size)
+    assert stock_iv.rows.size and not changed.any()
+    assert np.array_equal(got.start, stock_iv.start) and np.array_equal(got.end, stock_iv.end)
