@@ -5,25 +5,17 @@ FreeCAD's own process; and Cancel clicked in the progress dialog ending both wor
 writing nothing."""
 
 from tests.conftest import ROOT
+from tests.gui.events import EVENTS
 
 MODEL = f"{ROOT}/resources/models/model_test_1"
 
 BODY = """
 import multiprocessing, os
+import shiboken2
 from PySide import QtCore, QtGui
-def settle():
-    for _ in range(5):
-        FreeCADGui.updateGui()
-        QtGui.QApplication.processEvents()
-def key(widget, code, text="", modifiers=QtCore.Qt.NoModifier):
-    for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
-        QtGui.QApplication.sendEvent(widget, QtGui.QKeyEvent(kind, code, modifiers, text))
-def click(widget):
-    centre = widget.rect().center()
-    for kind in (QtCore.QEvent.MouseButtonPress, QtCore.QEvent.MouseButtonRelease):
-        QtGui.QApplication.sendEvent(widget, QtGui.QMouseEvent(kind, centre, QtCore.Qt.LeftButton,
-                                                               QtCore.Qt.LeftButton, QtCore.Qt.NoModifier))
-
+QtWidgets = QtGui
+window = FreeCADGui.getMainWindow()
+{events}
 FreeCADGui.activateWorkbench("ABMWorkbench")
 from abm_workbench.gui import commands
 from abm_workbench.gui.preferences import GROUP, PreferencesPage
@@ -56,7 +48,7 @@ class Watched(ProgressDialog):
     def __call__(self, done, total):
         seen.append(sorted(p.pid for p in multiprocessing.active_children()))
         if self.cancel:
-            click(self.dialog.findChild(QtGui.QPushButton))
+            press(self.dialog.findChild(QtGui.QPushButton))
         super().__call__(done, total)
 commands.ProgressDialog = Watched
 commands.ValidateEngagement().activated(doc, engagement, "3,11,20,29", os.path.join(out, "two"), open_report=False)
@@ -87,7 +79,7 @@ def test_the_gui_validates_on_the_preferred_workers_and_cancel_ends_them(run_gui
     mods = tmp_path / "home" / ".local" / "share" / "FreeCAD" / "Mod"  # FreeCAD finds the workbench there
     mods.mkdir(parents=True)
     (mods / "ABM").symlink_to(ROOT, target_is_directory=True)
-    verdict = run_gui(BODY.format(model=MODEL, out=str(out)))
+    verdict = run_gui(BODY.format(events=EVENTS, model=MODEL, out=str(out)))
     assert verdict["offered"] == [1, 0, "one per core"] and verdict["stored"] == 2
     assert verdict["workers_seen"] == [2, 2, 2, 2] and verdict["same"] and verdict["left_after_run"] == 0
     assert verdict["cancelled"] and verdict["cancel_calls"] == 1 and verdict["cancel_workers"] == 2
