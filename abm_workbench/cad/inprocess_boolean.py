@@ -275,7 +275,7 @@ def edge_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, swee
     return {name: np.array([part[name] for part in parts]) for name in parts[0]}
 
 
-def stock_heights(stock_solid, pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i, cells=40):
+def stock_heights(stock_solid, pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i, cells=24):
     """The in-process stock around CL point i of `toolpath` (program row `row`) seen from above:
     (x (c,), y (c,), z (c, c)) mm, z[a, b] the top of the stock minus the earlier moves' swept
     volumes (inprocess_sections of vertical lines) over (x[b], y[a]), NaN where none is left; the

@@ -484,7 +484,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
         raise no_engagement(job) from None
     engagement = checked.engagement
     forces = None if prepared.force_model is None else pass_forces_of(
-        stock.model, tool, toolpath, settings, prepared.force_model, engagement)
+        stock.model, tool, toolpath, settings, prepared.force_model, engagement, in_process=in_process)
     shown = report_cls(checked, chosen)
     walls = ("the paper's quintic walls (JSON)" if stock.shape is None and stock.staircase is not None else
              stock.describe())
@@ -496,7 +496,8 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
     report_job = ReportJob(title, description, job.stock, job.toolpath, toolpath, tool, settings,
                            prepared.parameters.describe(), walls, stock.y_window, stock_seconds,
                            _stock_model_text(job, prepared, in_process, model_note))
-    views = None if in_process is None else _stock_views(solid, in_process, tool, toolpath, [cl for cl, _ in shown])
+    views = None if in_process is None else _stock_views(
+        solid, in_process, tool, toolpath, [cl for cl, _ in shown if checked.in_process.changed[cl]])
 
     for path in [report] + ([fcstd] if fcstd else []):
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
@@ -538,7 +539,8 @@ def _stock_model_text(job, prepared, in_process, model_note):
 
 def _stock_views(solid, in_process, tool, toolpath, cls):
     """{CL index: (x (c,), y (c,), z (c, c)) mm}: the top of the in-process stock around each CL point of
-    `cls` (cad.inprocess_boolean.stock_heights), for the report's pictures."""
+    `cls` (cad.inprocess_boolean.stock_heights), for the report's pictures: the shown CL points that
+    earlier moves changed (each picture costs c² lines sectioned against every swept solid near)."""
     from ..cad.inprocess_boolean import stock_heights
     from ..report.html import STOCK_VIEWS
 
