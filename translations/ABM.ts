@@ -52,6 +52,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>one per core</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Processes computing the boolean reference of a validation: 1 in FreeCAD's own process, 0 one per core</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validation workers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Diameter</source>
         <translation type="unfinished"></translation>
     </message>

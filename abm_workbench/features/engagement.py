@@ -78,7 +78,6 @@ from typing import NamedTuple
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
-from ..engine import stocks as _stocks
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
@@ -143,8 +142,8 @@ def pass_forces_of(*args, **keywords):
 
 
 def engage_in_process(*args):
-    """``engine.stocks.engage_in_process`` through engine_call."""
-    return engine_call(_stocks.engage_in_process, *args)
+    """``jobs.run.in_process_1`` (the in-process engine in chunks, with progress) through engine_call."""
+    return engine_call(_run.in_process_1, *args)
 
 
 class EngagementInputs(NamedTuple):

@@ -44,6 +44,25 @@ def flute_1(stock, tool, toolpath, settings, progress=None):
     return flute_engagement(stock, tool, toolpath, settings, progress=progress).as_engagement(0)
 
 
+def in_process_1(stock, tool, toolpath, settings, pieces, rows, progress=None):
+    """(Engagement of flute 1 against the in-process stock, initial length (m, p) mm, changed (m,)) of a pass:
+    engine.stocks.engage_in_process in chunks of about parallel.CHUNK_INSTANTS instants, progress(done, m)
+    after each (a CL point's result depends on its program row alone, so chunks change nothing)."""
+    m = len(toolpath)
+    step = max(1, CHUNK_INSTANTS // max(settings.phi.size, 1))
+    whole, initial, changed = PassAssembly(m), [], []
+    for start in range(0, m, step):
+        stop = min(m, start + step)
+        engagement, chunk_initial, chunk_changed = engage_in_process(stock, tool, toolpath_part(toolpath, start, stop),
+                                                                     settings, pieces, rows[start:stop])
+        whole.add(engagement, start)
+        initial.append(chunk_initial)
+        changed.append(chunk_changed)
+        if progress is not None:
+            progress(stop, m)
+    return whole.engagement(), np.concatenate(initial), np.concatenate(changed)
+
+
 #: Choices of the stock model.
 STOCK_MODELS = ("in-process", "initial")
 
