@@ -173,6 +173,7 @@ def _arrays(name):
             return {key: archive[key] for key in archive.files}
     except OSError as error:
         raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+    # numpy raises NotImplementedError for a zip member stored with a compression it does not read
     except (ValueError, EOFError, KeyError, NotImplementedError, zipfile.BadZipFile, zlib.error) as error:
         what = "holds pickled objects, which are not read" if "pickle" in str(error) else f"damaged ({error})"
         raise InputError(f"{name}: not a results archive: {what}") from None
