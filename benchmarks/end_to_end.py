@@ -100,12 +100,13 @@ def split(folder, model, repeats, environment):
     parts = [result.parts for *_, result in map_chunks(task, [(stock.model, prepared.tool, prepared.toolpath,
                                                                 prepared.settings)])]
     seconds["engine"] = time.perf_counter() - started
+    instants = len(prepared.toolpath) * prepared.settings.phi.size
     started = time.perf_counter()
     target = os.path.join(folder, "split.npz")
     with replacing(target) as temporaries:
-        results_npz.write_chunks(iter(parts), temporaries[0])
+        results_npz.write_chunks(iter(parts), temporaries[0], instants)
     seconds["writing .npz"] = time.perf_counter() - started
-    return seconds, parts, len(prepared.toolpath) * prepared.settings.phi.size
+    return seconds, parts, instants
 
 
 def plain_csv(parts):

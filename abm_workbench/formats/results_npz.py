@@ -14,13 +14,14 @@ The archive holds, as ``.npy`` members stored uncompressed (numpy.load reads the
 Floats are float64 as computed (the CSV rounds them to 10 decimals), NaN where the CSV has an
 empty field; integer and code columns have the dtypes of formats.results_columns.column_dtype.
 
-:func:`write_chunks` streams the columns of a pass chunk by chunk into one raw file per column in
-a scratch folder beside the output and builds the archive from them at the end, so its memory is
-one chunk's; :func:`read_results` reads an archive back as results_csv.read_results reads a CSV,
+:func:`write_chunks` streams the columns of a pass chunk by chunk: each results column straight
+into its place in the archive (formats.stored_zip), the small summary columns through raw files in a
+scratch folder beside the output, so its memory is one chunk's; :func:`read_results` reads an archive back as results_csv.read_results reads a CSV,
 refusing (InputError naming the file) anything else: not a zip, pickled arrays, missing or
 unknown columns, wrong dtypes or lengths, codes without a label, numbers too large.
 """
 
+import io
 import os
 import shutil
 import tempfile
@@ -31,6 +32,7 @@ import numpy as np
 
 from ..errors import InputError
 from . import MAX_MAGNITUDE
+from .stored_zip import StoredZip
 from .results_columns import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS,
                               INT_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS, TEXT_COLUMNS, TOOLPATH_COLUMNS,
                               column_dtype, text_labels)
@@ -48,51 +50,90 @@ _ZIP = b"PK\x03\x04"
 _COPY = 1 << 22
 
 
-def write_chunks(parts, path):
+def write_chunks(parts, path, rows):
     """Write the (results columns, summary columns) pairs of the iterable `parts` (dicts name -> (rows,)
-    array of formats.results_columns, the same names in every pair), in order, as the archive `path`.
-    Returns the number of pairs. Memory: one pair, and a copy buffer.
+    array of formats.results_columns, the same names in every pair), in order, as the archive `path`,
+    the results columns holding `rows` rows in all (CL points × angles). Returns the number of pairs.
+    Memory: one pair, and a copy buffer.
 
-    The columns go to raw files in a scratch folder beside `path` (removed when done or failed);
-    write `path` itself to a temporary (formats.replacing) for all-or-nothing output.
+    Each results column's member is reserved at the first pair and filled in place as the pairs arrive
+    (formats.stored_zip); the summary columns, whose length is only known at the end (a row per CL point
+    and engagement segment, about 1/p of the bytes), go to raw files in a scratch folder beside `path`
+    (removed when done or failed) and are copied in last. ValueError when the pairs do not hold `rows`
+    results rows or change their columns; write `path` itself to a temporary (formats.replacing) for
+    all-or-nothing output.
     """
     path = os.fspath(path)
     # A short name of its own: an output name as long as the folder allows still fits beside it.
     scratch = tempfile.mkdtemp(prefix=".abm-columns-", dir=os.path.dirname(os.path.abspath(path)))
-    columns = _RawColumns(scratch)
+    summary = _RawColumns(scratch)
     try:
-        count = 0
-        for results, summary in parts:
-            columns.add("", results)
-            columns.add(SUMMARY, summary)
-            count += 1
-        columns.close()
-        with zipfile.ZipFile(path, "w", zipfile.ZIP_STORED, allowZip64=True) as archive:
-            _member(archive, "format", np.array(FORMAT))
-            for key in columns.keys:
-                with open(columns.file(key), "rb") as raw, archive.open(key + ".npy", "w", force_zip64=True) as member:
-                    np.lib.format.write_array_header_1_0(member, {
-                        "descr": np.lib.format.dtype_to_descr(columns.dtypes[key]), "fortran_order": False,
-                        "shape": (columns.rows[key],)})
-                    shutil.copyfileobj(raw, member, _COPY)
+        with StoredZip(path) as archive:
+            _add_array(archive, "format", np.array(FORMAT))
+            members, codes, count = None, {}, 0
+            for results, summary_columns in parts:
+                if members is None:
+                    members = {name: _reserve(archive, name, column_dtype(name), rows) for name in results}
+                if list(results) != list(members):
+                    raise ValueError(f"chunk columns {list(results)} differ from the first chunk's {list(members)}")
+                for name, values in results.items():
+                    values = _checked(name, values, column_dtype(name))
+                    archive.append(members[name], values)
+                    if name in TEXT_COLUMNS and values.size:
+                        codes[name] = max(codes.get(name, 0), int(values.max()))
+                summary.add(summary_columns)
+                count += 1
+            summary.close()
+            for key in summary.keys:
+                member = _reserve(archive, SUMMARY + key, summary.dtypes[key], summary.rows[key])
+                with open(summary.file(key), "rb") as raw:
+                    for block in iter(lambda: raw.read(_COPY), b""):
+                        archive.append(member, block)
+            for name, code in summary.codes.items():
+                codes[name] = max(code, codes.get(name, 0))
             for text in TEXT_COLUMNS:
-                if text in columns.codes:
-                    _member(archive, LABELS + text, np.array(text_labels(text, columns.codes[text] + 1), dtype=str))
+                if text in codes:
+                    _add_array(archive, LABELS + text, np.array(text_labels(text, codes[text] + 1), dtype=str))
         return count
     finally:
-        columns.close()
+        summary.close()
         shutil.rmtree(scratch, ignore_errors=True)
 
 
-def _member(archive, key, array):
-    """Write `array` as the member key.npy of the open ZipFile `archive`."""
-    with archive.open(key + ".npy", "w") as member:
-        np.lib.format.write_array(member, array, allow_pickle=False)
+def _npy_header(dtype, rows):
+    """The .npy (format 1.0) header of a C-ordered array (rows,) of `dtype`, as bytes."""
+    header = io.BytesIO()
+    np.lib.format.write_array_header_1_0(header, {"descr": np.lib.format.dtype_to_descr(np.dtype(dtype)),
+                                                  "fortran_order": False, "shape": (int(rows),)})
+    return header.getvalue()
+
+
+def _reserve(archive, key, dtype, rows):
+    """The member key.npy of `archive` reserved for an array (rows,) of `dtype`, its .npy header written."""
+    header = _npy_header(dtype, rows)
+    member = archive.reserve(key + ".npy", len(header) + int(rows) * np.dtype(dtype).itemsize)
+    archive.append(member, header)
+    return member
+
+
+def _add_array(archive, key, array):
+    """The member key.npy of `archive` holding `array` (1-D or a scalar; no objects)."""
+    data = io.BytesIO()
+    np.lib.format.write_array(data, array, allow_pickle=False)
+    archive.add(key + ".npy", data.getbuffer())
+
+
+def _checked(key, values, dtype):
+    """`values` as a contiguous array; ValueError unless it is 1-D of `dtype`."""
+    values = np.ascontiguousarray(values)
+    if values.dtype != dtype or values.ndim != 1:
+        raise ValueError(f"column {key}: {values.dtype} {values.shape}, expected {dtype} (rows,)")
+    return values
 
 
 class _RawColumns:
-    """Columns appended chunk by chunk to raw files (one per key, in the folder `scratch`): their
-    keys in order, dtype, row count and, per text column, the largest code seen."""
+    """Summary columns appended chunk by chunk to raw files (one per column, in the folder `scratch`):
+    their names in order, dtype, row count and, per text column, the largest code seen."""
 
     def __init__(self, scratch):
         self.scratch, self.keys, self.dtypes, self.rows, self.codes, self._files = scratch, [], {}, {}, {}, {}
@@ -101,25 +142,20 @@ class _RawColumns:
         """The raw file of column `key`."""
         return os.path.join(self.scratch, f"{self.keys.index(key)}.raw")
 
-    def add(self, prefix, columns):
-        """Append the arrays of dict `columns` to the columns prefix + name; ValueError when the names
-        or dtypes differ from the first chunk's."""
-        keys = [prefix + name for name in columns]
-        known = [key for key in self.keys if key.startswith(SUMMARY) == (prefix == SUMMARY)]
-        if known and keys != known:
-            raise ValueError(f"chunk columns {keys} differ from the first chunk's {known}")
-        for key, (name, values) in zip(keys, columns.items()):
+    def add(self, columns):
+        """Append the arrays of dict `columns`; ValueError when the names or dtypes differ from the first chunk's."""
+        if self.keys and list(columns) != self.keys:
+            raise ValueError(f"chunk columns {list(columns)} differ from the first chunk's {self.keys}")
+        for key, values in columns.items():
             if key not in self._files:
                 self.keys.append(key)
-                self.dtypes[key], self.rows[key] = column_dtype(name), 0
+                self.dtypes[key], self.rows[key] = column_dtype(key), 0
                 self._files[key] = open(self.file(key), "wb")
-            values = np.ascontiguousarray(values)
-            if values.dtype != self.dtypes[key] or values.ndim != 1:
-                raise ValueError(f"column {key}: {values.dtype} {values.shape}, expected {self.dtypes[key]} (rows,)")
+            values = _checked(SUMMARY + key, values, self.dtypes[key])
             self._files[key].write(values.data)
             self.rows[key] += values.size
-            if name in TEXT_COLUMNS and values.size:
-                self.codes[name] = max(self.codes.get(name, 0), int(values.max()))
+            if key in TEXT_COLUMNS and values.size:
+                self.codes[key] = max(self.codes.get(key, 0), int(values.max()))
 
     def close(self):
         """Close every raw file (again: no effect)."""
