@@ -5,13 +5,19 @@ Run with FreeCAD's Python from the repository root: ``/usr/bin/python3 benchmark
 pass resampled to ceil(instants / 181) CL points (a toolpath CSV written to a temporary folder).
 
 Prints, from one run:
-1. the whole process (wall clock, start to exit; the best and the median of the repeats) for
-   .npz and .csv outputs, against the stock as given (``--stock-model initial``, the default
-   here) or the in-process stock (``--stock-model in-process``: much slower on this pass);
-2. the split of one .npz run measured inside one process: start-up (``import abm_workbench.cli``
-   in a fresh interpreter, interpreter included), reading (job, toolpath, stock), the in-process
-   sweep (with --stock-model in-process), engine (every chunk's columns), writing the .npz;
-3. the results CSV text of the same columns by formats.decimal_text and by a plain writer
+1. start-up: a fresh interpreter doing nothing, importing numpy, importing the command line, and
+   the start-up of a JSON job: the interpreter plus every import of ``engage`` on model test 1's
+   JSON job (.npz, stock as given), summed from ``-X importtime``'s top-level entries;
+2. the whole process (wall clock start to exit, and the CPU time of the child; the best and the
+   median of the repeats) for .npz and .csv outputs, against the stock as given (``--stock-model
+   initial``, the default here) or the in-process stock (``--stock-model in-process``: much slower
+   on this pass); with ``--baseline CHECKOUT``, the same runs of another checkout's command line
+   (e.g. ``git archive main | tar -x -C /tmp/base``) and its time over this one's;
+3. the split of one .npz run measured inside one process: start-up (as in 1), reading (job,
+   toolpath, stock), the in-process sweep (with --stock-model in-process), engine (every chunk's
+   columns), writing the .npz;
+4. the toolpath CSV read column by column and line by line (the reader's two paths, same numbers);
+5. the results CSV text of the same columns by formats.decimal_text and by a plain writer
    (Python's repr of each rounded value, joined row by row), checked to be the same bytes.
 Ratios are printed beside the times, so that a loaded machine's figures still compare.
 """
@@ -19,6 +25,8 @@ Ratios are printed beside the times, so that a loaded machine's figures still co
 import argparse
 import math
 import os
+import re
+import resource
 import subprocess
 import sys
 import tempfile
@@ -55,36 +63,62 @@ def cached_bytecode(folder):
 
 
 def timed_runs(command, repeats, environment=None, root=ROOT):
-    """(best, median) wall-clock seconds of `repeats` runs of `command` (checked to exit 0), in
-    `environment` (default this one's), in the folder `root`."""
-    times = []
+    """(best, median) wall-clock seconds and best CPU seconds (user + system of the child) of `repeats`
+    runs of `command` (checked to exit 0), in `environment` (default this one's), in the folder `root`."""
+    times, cpu = [], []
     for _ in range(repeats):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
         start = time.perf_counter()
         subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=root,
                        env=environment)
         times.append(time.perf_counter() - start)
-    return min(times), float(np.median(times))
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu.append(after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime)
+    return min(times), float(np.median(times)), min(cpu)
+
+
+#: A top-level entry of ``-X importtime`` (a module imported by the program itself): its cumulative µs.
+_TOP_IMPORT = re.compile(r"^import time:\s+\d+ \|\s+(\d+) \| \S", re.MULTILINE)
+
+
+def job_imports(environment, repeats, root=ROOT):
+    """Best seconds, over `repeats` runs, that engage of model test 1's JSON job (.npz, stock as given)
+    spends importing modules, by the command line of the checkout `root`: the sum of ``-X importtime``'s
+    top-level entries."""
+    best = math.inf
+    with tempfile.TemporaryDirectory() as folder:
+        command = [PYTHON, "-X", "importtime", "-m", "abm_workbench", "engage", "--stock",
+                   os.path.join(MODEL, "stock.json"), "--toolpath", os.path.join(MODEL, "toolpath.csv"), "--job",
+                   os.path.join(MODEL, "job.json"), "--stock-model", "initial", "--out", os.path.join(folder, "R.npz")]
+        for _ in range(repeats):
+            done = subprocess.run(command, capture_output=True, text=True, check=True, cwd=root, env=environment)
+            best = min(best, sum(int(entry) for entry in _TOP_IMPORT.findall(done.stderr)) / 1e6)
+    return best
 
 
 def start_up(environment, repeats, root=ROOT):
     """Best seconds of a fresh interpreter that does nothing, imports numpy, imports the command line
-    (of the checkout `root`)."""
-    return {name: timed_runs([PYTHON, "-c", code], repeats, environment, root)[0] for name, code in (
+    (of the checkout `root`); a JSON job's imports (job_imports) and its start-up (the interpreter doing
+    nothing plus those imports)."""
+    times = {name: timed_runs([PYTHON, "-c", code], repeats, environment, root)[0] for name, code in (
         ("python -c pass", "pass"), ("import numpy", "import numpy"),
         ("import abm_workbench.cli", "import abm_workbench.cli"))}
+    times["a JSON job's imports"] = job_imports(environment, repeats, root)
+    times["start-up of a JSON job"] = times["python -c pass"] + times["a JSON job's imports"]
+    return times
 
 
-def split(folder, model, repeats, environment):
+def split(folder, model, start, environment):
     """Seconds of the parts of one .npz engage against stock model `model`, in this process (start-up:
-    importing the command line in a fresh interpreter in `environment`), and the columns of every
-    chunk: (dict part -> seconds, [(results, summary) columns], instants)."""
+    `start` s, a JSON job's as start_up measures it), and the columns of every chunk: (dict part ->
+    seconds, [(results, summary) columns], instants)."""
     from abm_workbench.formats import replacing, results_npz
     from abm_workbench.jobs import Job
     from abm_workbench.jobs.job import load_job_stock, prepare
     from abm_workbench.jobs.run import ResultsChunk, in_process_sweep
     from abm_workbench.parallel import map_chunks
 
-    seconds = {"start-up": timed_runs([PYTHON, "-c", "import abm_workbench.cli"], repeats, environment)[0]}
+    seconds = {"start-up": start}
     started = time.perf_counter()
     job = Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"), os.path.join(MODEL, "job.json"),
               {}, stock_model=model)
@@ -144,16 +178,36 @@ def csv_writers(parts):
     return fast_seconds, time.perf_counter() - started, fast == plain
 
 
+def toolpath_readers(path):
+    """(seconds column by column, seconds line by line, same numbers?) of the toolpath CSV `path`."""
+    from abm_workbench.formats import read_text
+    from abm_workbench.formats.toolpath_csv import _columnwise, _data_lines, _fields, _line_by_line
+
+    lines = _data_lines(read_text(path))
+    header = [field.strip().lower() for field in _fields(lines[0][1], path)]
+    started = time.perf_counter()
+    fast = _columnwise(header, [line for _, line in lines[1:]])
+    fast_seconds = time.perf_counter() - started
+    started = time.perf_counter()
+    slow = _line_by_line(path, header, lines[1:])
+    slow_seconds = time.perf_counter() - started
+    same = fast is not None and all(fast[0][name].tobytes() == slow[0][name].tobytes() for name in header)
+    return fast_seconds, slow_seconds, same
+
+
 def print_start_up(starts):
     """The start-up table of {case: start_up(...)}, with the load average now."""
     load = os.getloadavg()
     print(f"Start-up, best of the repeats (s), load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} after; the "
           "command line's own share is its time less numpy's:")
-    print("| bytecode | python -c pass | import numpy | import abm_workbench.cli | its own |")
-    print("|---|---|---|---|---|")
+    print("| bytecode | python -c pass | import numpy | import abm_workbench.cli | its own | a JSON job's imports | "
+          "start-up of a JSON job |")
+    print("|---|---|---|---|---|---|---|")
     for name, times in starts.items():
-        print(f"| {name} | {' | '.join(f'{value:.3f}' for value in times.values())} | "
-              f"{times['import abm_workbench.cli'] - times['import numpy']:.3f} |")
+        cells = [times[key] for key in ("python -c pass", "import numpy", "import abm_workbench.cli")]
+        cells += [times["import abm_workbench.cli"] - times["import numpy"], times["a JSON job's imports"],
+                  times["start-up of a JSON job"]]
+        print(f"| {name} | {' | '.join(f'{value:.3f}' for value in cells)} |")
 
 
 def main():
@@ -164,39 +218,46 @@ def main():
     parser.add_argument("--stock-model", choices=("initial", "in-process"), default="initial",
                         help="the stock as given (default) or the in-process stock")
     parser.add_argument("--baseline", metavar="CHECKOUT",
-                        help="also the start-up of the command line of another checkout (e.g. the main branch's)")
+                        help="also the start-up and the whole runs of another checkout's command line (e.g. the "
+                             "main branch's), and its time over this one's")
     args = parser.parse_args()
     load = os.getloadavg()
     with tempfile.TemporaryDirectory() as folder:
         resampled_toolpath(os.path.join(MODEL, "toolpath.csv"), os.path.join(folder, "toolpath.csv"),
                            math.ceil(args.instants / 181))
         base = [PYTHON, "-m", "abm_workbench", "engage", "--stock", os.path.join(MODEL, "stock.json"),
-                "--toolpath", os.path.join(folder, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json")]
+                "--toolpath", os.path.join(folder, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json"),
+                "--stock-model", args.stock_model, "--out"]
         cached = cached_bytecode(os.path.join(folder, "bytecode"))
-        timed_runs([PYTHON, "-m", "abm_workbench", "engage", "--help"], 1, cached)  # compiles every module once
+        roots = {"this checkout": ROOT} if not args.baseline else {"this checkout": ROOT, args.baseline: args.baseline}
+        for root in roots.values():  # compiles every module once
+            timed_runs(base + [os.path.join(folder, "warm.npz")], 1, cached, root)
         uncached = {key: value for key, value in os.environ.items() if key != "PYTHONPYCACHEPREFIX"}
         uncached["PYTHONDONTWRITEBYTECODE"] = "1"  # the project compiled at every run (without a __pycache__)
         starts = {"project not cached": start_up(uncached, args.repeats),
                   "bytecode cached": start_up(cached, args.repeats)}
         if args.baseline:
-            timed_runs([PYTHON, "-c", "import abm_workbench.cli"], 1, cached, args.baseline)
             starts[f"bytecode cached, {args.baseline}"] = start_up(cached, args.repeats, args.baseline)
         if args.start_up_only:
             print_start_up(starts)
             return
-        seconds, parts, instants = split(folder, args.stock_model, args.repeats, cached)
-        whole = {suffix: timed_runs(base + ["--stock-model", args.stock_model, "--out",
-                                            os.path.join(folder, f"R.{suffix}")], args.repeats, cached)
-                 for suffix in ("npz", "csv")}
+        seconds, parts, instants = split(folder, args.stock_model, starts["bytecode cached"]["start-up of a JSON job"],
+                                         cached)
+        whole = {(checkout, suffix): timed_runs(base + [os.path.join(folder, f"R.{suffix}")], args.repeats, cached,
+                                                root)
+                 for checkout, root in roots.items() for suffix in ("npz", "csv")}
+        reading = toolpath_readers(os.path.join(folder, "toolpath.csv"))
         fast, plain, same = csv_writers(parts)
     print_start_up(starts)
     print(f"\nWhole command line (bytecode cached), {instants:,} instants (model test 1, JSON stock); load average "
           f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} at the start, {os.cpu_count()} cores")
-    print("| stock model | output | best s | median s | instants/s (best) | .csv time / this |")
-    print("|---|---|---|---|---|---|")
-    for suffix, (best, median) in whole.items():
-        print(f"| {args.stock_model} | .{suffix} | {best:.2f} | {median:.2f} | {instants / best:,.0f} | "
-              f"{whole['csv'][0] / best:.2f} |")
+    print("| checkout | stock model | output | best s | median s | CPU s (best) | instants/s (best) | "
+          ".csv time / this | baseline time / this |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for (checkout, suffix), (best, median, cpu) in whole.items():
+        baseline = f"{whole[args.baseline, suffix][0] / best:.2f}" if args.baseline else "-"
+        print(f"| {checkout} | {args.stock_model} | .{suffix} | {best:.2f} | {median:.2f} | {cpu:.2f} | "
+              f"{instants / best:,.0f} | {whole[checkout, 'csv'][0] / best:.2f} | {baseline} |")
     total = sum(seconds.values())
     print(f"\nSplit of one .npz run ({args.stock_model} stock), sum {total:.2f} s "
           f"({instants / total:,.0f} instants/s):")
@@ -204,6 +265,9 @@ def main():
     print("|---|---|---|")
     for part, value in seconds.items():
         print(f"| {part} | {value:.3f} | {100 * value / total:.0f} % |")
+    column, line, equal = reading
+    print(f"\nToolpath CSV of {math.ceil(args.instants / 181):,} CL points: column by column {column:.3f} s, line by "
+          f"line {line:.3f} s ({line / column:.1f}x slower); same numbers: {equal}")
     print(f"\nResults CSV text of the same {instants:,} rows: decimal_text {fast:.2f} s, plain writer {plain:.2f} s "
           f"({plain / fast:.1f}x slower); same bytes: {same}")
 
