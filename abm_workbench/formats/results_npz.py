@@ -15,15 +15,14 @@ Floats are float64 as computed (the CSV rounds them to 10 decimals), NaN where t
 empty field; integer and code columns have the dtypes of formats.results_columns.column_dtype.
 
 :func:`write_chunks` streams the columns of a pass chunk by chunk: each results column straight
-into its place in the archive (formats.stored_zip), the small summary columns through raw files in a
-scratch folder beside the output, so its memory is one chunk's; :func:`read_results` reads an archive back as results_csv.read_results reads a CSV,
-refusing (InputError naming the file) anything else: not a zip, pickled arrays, missing or
+into its place in the archive (formats.stored_zip), the small summary columns through an unnamed
+temporary file, so its memory is one chunk's; :func:`read_results` reads an archive back as
+results_csv.read_results reads a CSV, refusing (InputError naming the file) anything else: not a zip, pickled arrays, missing or
 unknown columns, wrong dtypes or lengths, codes without a label, numbers too large.
 """
 
 import io
 import os
-import shutil
 import tempfile
 import zipfile
 import zlib
@@ -58,46 +57,37 @@ def write_chunks(parts, path, rows):
 
     Each results column's member is reserved at the first pair and filled in place as the pairs arrive
     (formats.stored_zip); the summary columns, whose length is only known at the end (a row per CL point
-    and engagement segment, about 1/p of the bytes), go to raw files in a scratch folder beside `path`
-    (removed when done or failed) and are copied in last. ValueError when the pairs do not hold `rows`
-    results rows or change their columns; write `path` itself to a temporary (formats.replacing) for
-    all-or-nothing output.
+    and engagement segment, about 1/p of the bytes), go to an unnamed temporary file beside `path` (gone
+    with the process, whatever stops it) and are copied in last. ValueError when the pairs do not hold
+    `rows` results rows or change their columns; write `path` itself to a temporary (formats.replacing)
+    for all-or-nothing output.
     """
     path = os.fspath(path)
-    # A short name of its own: an output name as long as the folder allows still fits beside it.
-    scratch = tempfile.mkdtemp(prefix=".abm-columns-", dir=os.path.dirname(os.path.abspath(path)))
-    summary = _RawColumns(scratch)
-    try:
-        with StoredZip(path) as archive:
-            _add_array(archive, "format", np.array(FORMAT))
-            members, codes, count = None, {}, 0
-            for results, summary_columns in parts:
-                if members is None:
-                    members = {name: _reserve(archive, name, column_dtype(name), rows) for name in results}
-                if list(results) != list(members):
-                    raise ValueError(f"chunk columns {list(results)} differ from the first chunk's {list(members)}")
-                for name, values in results.items():
-                    values = _checked(name, values, column_dtype(name))
-                    archive.append(members[name], values)
-                    if name in TEXT_COLUMNS and values.size:
-                        codes[name] = max(codes.get(name, 0), int(values.max()))
-                summary.add(summary_columns)
-                count += 1
-            summary.close()
-            for key in summary.keys:
-                member = _reserve(archive, SUMMARY + key, summary.dtypes[key], summary.rows[key])
-                with open(summary.file(key), "rb") as raw:
-                    for block in iter(lambda: raw.read(_COPY), b""):
-                        archive.append(member, block)
-            for name, code in summary.codes.items():
-                codes[name] = max(code, codes.get(name, 0))
-            for text in TEXT_COLUMNS:
-                if text in codes:
-                    _add_array(archive, LABELS + text, np.array(text_labels(text, codes[text] + 1), dtype=str))
-        return count
-    finally:
-        summary.close()
-        shutil.rmtree(scratch, ignore_errors=True)
+    with _SpilledColumns(os.path.dirname(os.path.abspath(path))) as summary, StoredZip(path) as archive:
+        _add_array(archive, "format", np.array(FORMAT))
+        members, codes, count = None, {}, 0
+        for results, summary_columns in parts:
+            if members is None:
+                members = {name: _reserve(archive, name, column_dtype(name), rows) for name in results}
+            if list(results) != list(members):
+                raise ValueError(f"chunk columns {list(results)} differ from the first chunk's {list(members)}")
+            for name, values in results.items():
+                values = _checked(name, values, column_dtype(name))
+                archive.append(members[name], values)
+                if name in TEXT_COLUMNS and values.size:
+                    codes[name] = max(codes.get(name, 0), int(values.max()))
+            summary.add(summary_columns)
+            count += 1
+        for key, dtype in summary.dtypes.items():
+            member = _reserve(archive, SUMMARY + key, dtype, summary.rows[key])
+            for block in summary.blocks(key):
+                archive.append(member, block)
+        for name, code in summary.codes.items():
+            codes[name] = max(code, codes.get(name, 0))
+        for text in TEXT_COLUMNS:
+            if text in codes:
+                _add_array(archive, LABELS + text, np.array(text_labels(text, codes[text] + 1), dtype=str))
+    return count
 
 
 def _npy_header(dtype, rows):
@@ -131,36 +121,43 @@ def _checked(key, values, dtype):
     return values
 
 
-class _RawColumns:
-    """Summary columns appended chunk by chunk to raw files (one per column, in the folder `scratch`):
-    their names in order, dtype, row count and, per text column, the largest code seen."""
+class _SpilledColumns:
+    """Summary columns appended chunk by chunk to one unnamed temporary file in `folder`, each chunk's
+    columns one after the other: per column its dtype (in column order), row count, the (offset, bytes)
+    spans it holds and, per text column, the largest code seen. A context manager closing the file."""
 
-    def __init__(self, scratch):
-        self.scratch, self.keys, self.dtypes, self.rows, self.codes, self._files = scratch, [], {}, {}, {}, {}
+    def __init__(self, folder):
+        self.file = tempfile.TemporaryFile(dir=folder)
+        self.dtypes, self.rows, self.codes, self.spans, self._end = {}, {}, {}, {}, 0
 
-    def file(self, key):
-        """The raw file of column `key`."""
-        return os.path.join(self.scratch, f"{self.keys.index(key)}.raw")
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.file.close()
+        return False
 
     def add(self, columns):
         """Append the arrays of dict `columns`; ValueError when the names or dtypes differ from the first chunk's."""
-        if self.keys and list(columns) != self.keys:
-            raise ValueError(f"chunk columns {list(columns)} differ from the first chunk's {self.keys}")
+        if self.dtypes and list(columns) != list(self.dtypes):
+            raise ValueError(f"chunk columns {list(columns)} differ from the first chunk's {list(self.dtypes)}")
         for key, values in columns.items():
-            if key not in self._files:
-                self.keys.append(key)
-                self.dtypes[key], self.rows[key] = column_dtype(key), 0
-                self._files[key] = open(self.file(key), "wb")
+            if key not in self.dtypes:
+                self.dtypes[key], self.rows[key], self.spans[key] = column_dtype(key), 0, []
             values = _checked(SUMMARY + key, values, self.dtypes[key])
-            self._files[key].write(values.data)
+            self.file.write(values.data)
+            self.spans[key].append((self._end, values.nbytes))
+            self._end += values.nbytes
             self.rows[key] += values.size
             if key in TEXT_COLUMNS and values.size:
                 self.codes[key] = max(self.codes.get(key, 0), int(values.max()))
 
-    def close(self):
-        """Close every raw file (again: no effect)."""
-        for handle in self._files.values():
-            handle.close()
+    def blocks(self, key):
+        """The bytes of column `key`, in order, in blocks of at most _COPY bytes."""
+        self.file.flush()
+        for offset, size in self.spans[key]:
+            for start in range(offset, offset + size, _COPY):
+                yield os.pread(self.file.fileno(), min(_COPY, offset + size - start), start)
 
 
 def read_results(path, summary=False):

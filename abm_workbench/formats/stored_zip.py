@@ -54,7 +54,11 @@ class StoredZip:
     """
 
     def __init__(self, path):
-        self._fd = os.open(os.fspath(path), os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o666)
+        # Emptied by ftruncate only when it is not empty already: on ext4, opening with O_TRUNC makes the
+        # close wait for the data to be flushed (its auto_da_alloc), some 30 ms per 100 MB.
+        self._fd = os.open(os.fspath(path), os.O_WRONLY | os.O_CREAT, 0o666)
+        if os.fstat(self._fd).st_size:
+            os.ftruncate(self._fd, 0)
         self._end, self.members = 0, []
 
     def __enter__(self):

@@ -226,8 +226,8 @@ def test_the_longest_output_name_allowed_is_written(tmp_path):
 
 
 def test_a_run_stopped_while_columns_stream_leaves_nothing(tmp_path):
-    """SIGTERM once the scratch columns hold data (mid-stream, ~10⁶ instants): no archive, no scratch
-    folder, no folder made, exit status 128 + 15."""
+    """SIGTERM once the staged archive holds columns (mid-stream, ~10⁶ instants): no archive, no staged
+    or temporary file, no folder made, exit status 128 + 15."""
     import signal
     import subprocess
     import sys
@@ -240,9 +240,8 @@ def test_a_run_stopped_while_columns_stream_leaves_nothing(tmp_path):
     child = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                              text=True)
 
-    def streaming():
-        folders = [entry for entry in os.scandir(out.parent) if entry.name.startswith(".abm-columns-")]
-        return folders and any(entry.stat().st_size for entry in os.scandir(folders[0].path))
+    def streaming():  # the staged archive holds the first chunk's columns
+        return any(entry.name.startswith(".R.npz.") and entry.stat().st_size for entry in os.scandir(out.parent))
 
     deadline = time.monotonic() + 300.0
     while not (out.parent.is_dir() and streaming()):
