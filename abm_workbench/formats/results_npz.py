@@ -45,7 +45,7 @@ _TABLES = {"": (RESULT_COLUMNS, INPROCESS_COLUMNS + FORCE_COLUMNS),
            SUMMARY: (SUMMARY_COLUMNS, TOOLPATH_COLUMNS + FORCE_SUMMARY_COLUMNS + INPROCESS_SUMMARY_COLUMNS)}
 #: The first bytes of a zip file (a local file header).
 _ZIP = b"PK\x03\x04"
-#: Bytes copied at a time from a column's raw file into the archive.
+#: Bytes copied at a time from the summary columns' temporary file into the archive.
 _COPY = 1 << 22
 
 
