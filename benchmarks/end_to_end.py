@@ -23,6 +23,7 @@ Ratios are printed beside the times, so that a loaded machine's figures still co
 """
 
 import argparse
+import contextlib
 import math
 import os
 import re
@@ -62,85 +63,109 @@ def cached_bytecode(folder):
     return environment
 
 
-def timed_runs(command, repeats, environment=None, root=ROOT):
-    """(best, median) wall-clock seconds and best CPU seconds (user + system of the child) of `repeats`
-    runs of `command` (checked to exit 0), in `environment` (default this one's), in the folder `root`."""
-    times, cpu = [], []
+def timed_runs(cases, repeats, environment=None):
+    """{key: (best, median wall-clock seconds, best CPU seconds (user + system of the child))} of `repeats`
+    runs of each case of {key: (command, folder to run it in)}, each checked to exit 0, in `environment`
+    (default this one's). Every repeat runs each case once in turn, so that a load that comes and goes
+    falls on all of them alike."""
+    times = {key: ([], []) for key in cases}
     for _ in range(repeats):
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        start = time.perf_counter()
-        subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=root,
-                       env=environment)
-        times.append(time.perf_counter() - start)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpu.append(after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime)
-    return min(times), float(np.median(times)), min(cpu)
+        for key, (command, root) in cases.items():
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            start = time.perf_counter()
+            subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True, cwd=root,
+                           env=environment)
+            times[key][0].append(time.perf_counter() - start)
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            times[key][1].append(after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime)
+    return {key: (min(wall), float(np.median(wall)), min(cpu)) for key, (wall, cpu) in times.items()}
 
 
 #: A top-level entry of ``-X importtime`` (a module imported by the program itself): its cumulative µs.
 _TOP_IMPORT = re.compile(r"^import time:\s+\d+ \|\s+(\d+) \| \S", re.MULTILINE)
 
 
-def job_imports(environment, repeats, root=ROOT):
-    """Best seconds, over `repeats` runs, that engage of model test 1's JSON job (.npz, stock as given)
-    spends importing modules, by the command line of the checkout `root`: the sum of ``-X importtime``'s
-    top-level entries."""
-    best = math.inf
+def job_imports(roots, environment, repeats):
+    """{checkout: best seconds} that engage of model test 1's JSON job (.npz, stock as given) spends
+    importing modules, by the command line of each checkout of {checkout: folder}: the sum of ``-X
+    importtime``'s top-level entries, best of `repeats` runs taking the checkouts in turn."""
+    best = dict.fromkeys(roots, math.inf)
     with tempfile.TemporaryDirectory() as folder:
         command = [PYTHON, "-X", "importtime", "-m", "abm_workbench", "engage", "--stock",
                    os.path.join(MODEL, "stock.json"), "--toolpath", os.path.join(MODEL, "toolpath.csv"), "--job",
                    os.path.join(MODEL, "job.json"), "--stock-model", "initial", "--out", os.path.join(folder, "R.npz")]
         for _ in range(repeats):
-            done = subprocess.run(command, capture_output=True, text=True, check=True, cwd=root, env=environment)
-            best = min(best, sum(int(entry) for entry in _TOP_IMPORT.findall(done.stderr)) / 1e6)
+            for checkout, root in roots.items():
+                done = subprocess.run(command, capture_output=True, text=True, check=True, cwd=root, env=environment)
+                seconds = sum(int(entry) for entry in _TOP_IMPORT.findall(done.stderr)) / 1e6
+                best[checkout] = min(best[checkout], seconds)
     return best
 
 
-def start_up(environment, repeats, root=ROOT):
-    """Best seconds of a fresh interpreter that does nothing, imports numpy, imports the command line
-    (of the checkout `root`); a JSON job's imports (job_imports) and its start-up (the interpreter doing
-    nothing plus those imports)."""
-    times = {name: timed_runs([PYTHON, "-c", code], repeats, environment, root)[0] for name, code in (
-        ("python -c pass", "pass"), ("import numpy", "import numpy"),
-        ("import abm_workbench.cli", "import abm_workbench.cli"))}
-    times["a JSON job's imports"] = job_imports(environment, repeats, root)
-    times["start-up of a JSON job"] = times["python -c pass"] + times["a JSON job's imports"]
-    return times
+#: The start-up cases: a fresh interpreter running each of these.
+STARTS = (("python -c pass", "pass"), ("import numpy", "import numpy"),
+          ("import abm_workbench.cli", "import abm_workbench.cli"))
 
 
-def split(folder, model, start, environment):
-    """Seconds of the parts of one .npz engage against stock model `model`, in this process (start-up:
-    `start` s, a JSON job's as start_up measures it), and the columns of every chunk: (dict part ->
-    seconds, [(results, summary) columns], instants)."""
+def start_up(roots, environment, repeats):
+    """{checkout: {case: best seconds}} of a fresh interpreter that does nothing, imports numpy, imports
+    the command line, for each checkout of {checkout: folder}; with a JSON job's imports (job_imports)
+    and its start-up (the interpreter doing nothing plus those imports)."""
+    runs = timed_runs({(checkout, name): ([PYTHON, "-c", code], root) for checkout, root in roots.items()
+                       for name, code in STARTS}, repeats, environment)
+    imports = job_imports(roots, environment, repeats)
+    found = {}
+    for checkout in roots:
+        times = {name: runs[checkout, name][0] for name, _ in STARTS}
+        times["a JSON job's imports"] = imports[checkout]
+        times["start-up of a JSON job"] = times["python -c pass"] + imports[checkout]
+        found[checkout] = times
+    return found
+
+
+class _Clock:
+    """Wall-clock and CPU seconds (this process) of each part measured with `part(name)`, in order."""
+
+    def __init__(self):
+        self.wall, self.cpu = {}, {}
+
+    @contextlib.contextmanager
+    def part(self, name):
+        wall, cpu = time.perf_counter(), time.process_time()
+        yield
+        self.wall[name], self.cpu[name] = time.perf_counter() - wall, time.process_time() - cpu
+
+
+def split(folder, model, start):
+    """The parts of one .npz engage against stock model `model`, measured in this process (start-up: `start`
+    s, a JSON job's wall-clock time as start_up measures it, in both clocks), and the columns of every
+    chunk: (_Clock of the parts, [(results, summary) columns], instants)."""
     from abm_workbench.formats import replacing, results_npz
     from abm_workbench.jobs import Job
     from abm_workbench.jobs.job import load_job_stock, prepare
     from abm_workbench.jobs.run import ResultsChunk, in_process_sweep
     from abm_workbench.parallel import map_chunks
 
-    seconds = {"start-up": start}
-    started = time.perf_counter()
-    job = Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"), os.path.join(MODEL, "job.json"),
-              {}, stock_model=model)
-    prepared = prepare(job)
-    stock, _ = load_job_stock(prepared)
-    seconds["reading"] = time.perf_counter() - started
-    started = time.perf_counter()
-    in_process, _ = in_process_sweep(prepared)
-    if in_process is not None:
-        seconds["in-process sweep"] = time.perf_counter() - started
-    started = time.perf_counter()
-    task = ResultsChunk(keep=False, frame=prepared.hints.frame, in_process=in_process, columnar=True)
-    parts = [result.parts for *_, result in map_chunks(task, [(stock.model, prepared.tool, prepared.toolpath,
-                                                                prepared.settings)])]
-    seconds["engine"] = time.perf_counter() - started
+    clock = _Clock()
+    clock.wall["start-up"] = clock.cpu["start-up"] = start
+    with clock.part("reading"):
+        job = Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"),
+                  os.path.join(MODEL, "job.json"), {}, stock_model=model)
+        prepared = prepare(job)
+        stock, _ = load_job_stock(prepared)
+    if model == "in-process":
+        with clock.part("in-process sweep"):
+            in_process, _ = in_process_sweep(prepared)
+    else:
+        in_process = None
+    with clock.part("engine"):
+        task = ResultsChunk(keep=False, frame=prepared.hints.frame, in_process=in_process, columnar=True)
+        parts = [result.parts for *_, result in map_chunks(task, [(stock.model, prepared.tool, prepared.toolpath,
+                                                                    prepared.settings)])]
     instants = len(prepared.toolpath) * prepared.settings.phi.size
-    started = time.perf_counter()
-    target = os.path.join(folder, "split.npz")
-    with replacing(target) as temporaries:
+    with clock.part("writing .npz"), replacing(os.path.join(folder, "split.npz")) as temporaries:
         results_npz.write_chunks(iter(parts), temporaries[0], instants)
-    seconds["writing .npz"] = time.perf_counter() - started
-    return seconds, parts, instants
+    return clock, parts, instants
 
 
 def plain_csv(parts):
@@ -230,22 +255,20 @@ def main():
                 "--stock-model", args.stock_model, "--out"]
         cached = cached_bytecode(os.path.join(folder, "bytecode"))
         roots = {"this checkout": ROOT} if not args.baseline else {"this checkout": ROOT, args.baseline: args.baseline}
-        for root in roots.values():  # compiles every module once
-            timed_runs(base + [os.path.join(folder, "warm.npz")], 1, cached, root)
+        # compiles every module once
+        timed_runs({root: (base + [os.path.join(folder, "warm.npz")], root) for root in roots.values()}, 1, cached)
         uncached = {key: value for key, value in os.environ.items() if key != "PYTHONPYCACHEPREFIX"}
         uncached["PYTHONDONTWRITEBYTECODE"] = "1"  # the project compiled at every run (without a __pycache__)
-        starts = {"project not cached": start_up(uncached, args.repeats),
-                  "bytecode cached": start_up(cached, args.repeats)}
-        if args.baseline:
-            starts[f"bytecode cached, {args.baseline}"] = start_up(cached, args.repeats, args.baseline)
+        starts = {"project not cached": start_up({"this": ROOT}, uncached, args.repeats)["this"]}
+        cached_starts = start_up(roots, cached, args.repeats)
+        starts["bytecode cached"] = cached_starts.pop("this checkout")
+        starts.update({f"bytecode cached, {checkout}": times for checkout, times in cached_starts.items()})
         if args.start_up_only:
             print_start_up(starts)
             return
-        seconds, parts, instants = split(folder, args.stock_model, starts["bytecode cached"]["start-up of a JSON job"],
-                                         cached)
-        whole = {(checkout, suffix): timed_runs(base + [os.path.join(folder, f"R.{suffix}")], args.repeats, cached,
-                                                root)
-                 for checkout, root in roots.items() for suffix in ("npz", "csv")}
+        clock, parts, instants = split(folder, args.stock_model, starts["bytecode cached"]["start-up of a JSON job"])
+        whole = timed_runs({(checkout, suffix): (base + [os.path.join(folder, f"R.{suffix}")], root)
+                            for checkout, root in roots.items() for suffix in ("npz", "csv")}, args.repeats, cached)
         reading = toolpath_readers(os.path.join(folder, "toolpath.csv"))
         fast, plain, same = csv_writers(parts)
     print_start_up(starts)
@@ -258,13 +281,13 @@ def main():
         baseline = f"{whole[args.baseline, suffix][0] / best:.2f}" if args.baseline else "-"
         print(f"| {checkout} | {args.stock_model} | .{suffix} | {best:.2f} | {median:.2f} | {cpu:.2f} | "
               f"{instants / best:,.0f} | {whole[checkout, 'csv'][0] / best:.2f} | {baseline} |")
-    total = sum(seconds.values())
-    print(f"\nSplit of one .npz run ({args.stock_model} stock), sum {total:.2f} s "
-          f"({instants / total:,.0f} instants/s):")
-    print("| part | s | share |")
-    print("|---|---|---|")
-    for part, value in seconds.items():
-        print(f"| {part} | {value:.3f} | {100 * value / total:.0f} % |")
+    wall, cpu = sum(clock.wall.values()), sum(clock.cpu.values())
+    print(f"\nSplit of one .npz run ({args.stock_model} stock), sum {wall:.2f} s wall clock ({instants / wall:,.0f} "
+          f"instants/s), {cpu:.2f} s CPU ({instants / cpu:,.0f} instants/s; the start-up's wall clock time in both):")
+    print("| part | wall s | CPU s | share of the CPU |")
+    print("|---|---|---|---|")
+    for part, value in clock.wall.items():
+        print(f"| {part} | {value:.3f} | {clock.cpu[part]:.3f} | {100 * clock.cpu[part] / cpu:.0f} % |")
     column, line, equal = reading
     print(f"\nToolpath CSV of {math.ceil(args.instants / 181):,} CL points: column by column {column:.3f} s, line by "
           f"line {line:.3f} s ({line / column:.1f}x slower); same numbers: {equal}")
