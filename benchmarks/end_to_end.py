@@ -16,7 +16,9 @@ Prints, from one run:
 3. the split of one .npz run measured inside one process: start-up (as in 1), reading (job,
    toolpath, stock), the in-process sweep (with --stock-model in-process), engine (every chunk's
    columns), writing the .npz;
-4. the toolpath CSV read column by column and line by line (the reader's two paths, same numbers);
+4. with ``--baseline``, the .npz writer of each checkout on the same columns (in this process, the
+   baseline's imported beside this one's), and the toolpath CSV read column by column and line by
+   line (the reader's two paths, same numbers);
 5. the results CSV text of the same columns by formats.decimal_text and by a plain writer
    (Python's repr of each rounded value, joined row by row), checked to be the same bytes.
 Ratios are printed beside the times, so that a loaded machine's figures still compare.
@@ -24,6 +26,9 @@ Ratios are printed beside the times, so that a loaded machine's figures still co
 
 import argparse
 import contextlib
+import importlib
+import importlib.util
+import inspect
 import math
 import os
 import re
@@ -168,6 +173,36 @@ def split(folder, model, start):
     return clock, parts, instants
 
 
+def baseline_module(checkout, name):
+    """Module `name` (e.g. "formats.results_npz") of the checkout `checkout`'s abm_workbench, imported as
+    abm_baseline.<name> beside this checkout's."""
+    package = importlib.util.spec_from_file_location("abm_baseline", os.path.join(checkout, "abm_workbench",
+                                                                                 "__init__.py"),
+                                                     submodule_search_locations=[os.path.join(checkout,
+                                                                                              "abm_workbench")])
+    if "abm_baseline" not in sys.modules:
+        sys.modules["abm_baseline"] = importlib.util.module_from_spec(package)
+        package.loader.exec_module(sys.modules["abm_baseline"])
+    return importlib.import_module(f"abm_baseline.{name}")
+
+
+def npz_writers(folder, parts, instants, checkout, repeats):
+    """{"this checkout" / `checkout`: (best wall-clock s, best CPU s)} of writing the .npz of `parts` by
+    each checkout's results_npz.write_chunks, taken in turn `repeats` times."""
+    from abm_workbench.formats import replacing, results_npz
+
+    writers = {"this checkout": lambda path: results_npz.write_chunks(iter(parts), path, instants)}
+    older = baseline_module(checkout, "formats.results_npz").write_chunks
+    takes_rows = len(inspect.signature(older).parameters) == 3
+    writers[checkout] = lambda path: older(iter(parts), path, *([instants] if takes_rows else []))
+    clocks = {name: _Clock() for name in writers}
+    for repeat in range(repeats):
+        for name, write in writers.items():
+            with clocks[name].part(repeat), replacing(os.path.join(folder, "writer.npz")) as temporaries:
+                write(temporaries[0])
+    return {name: (min(clock.wall.values()), min(clock.cpu.values())) for name, clock in clocks.items()}
+
+
 def plain_csv(parts):
     """The results CSV text of `parts` by a plain writer: each value's text by Python (repr of the
     float rounded to decimal_text.DECIMALS places, '' for NaN, str of an int, a label), rows joined."""
@@ -270,6 +305,7 @@ def main():
         whole = timed_runs({(checkout, suffix): (base + [os.path.join(folder, f"R.{suffix}")], root)
                             for checkout, root in roots.items() for suffix in ("npz", "csv")}, args.repeats, cached)
         reading = toolpath_readers(os.path.join(folder, "toolpath.csv"))
+        writers = npz_writers(folder, parts, instants, args.baseline, args.repeats) if args.baseline else None
         fast, plain, same = csv_writers(parts)
     print_start_up(starts)
     print(f"\nWhole command line (bytecode cached), {instants:,} instants (model test 1, JSON stock); load average "
@@ -288,6 +324,11 @@ def main():
     print("|---|---|---|---|")
     for part, value in clock.wall.items():
         print(f"| {part} | {value:.3f} | {clock.cpu[part]:.3f} | {100 * clock.cpu[part] / cpu:.0f} % |")
+    if writers:
+        (wall, cpu), (old_wall, old_cpu) = writers["this checkout"], writers[args.baseline]
+        print(f"\n.npz writer on the same columns, best of {args.repeats} in turn: this checkout {wall:.3f} s "
+              f"({cpu:.3f} s CPU), {args.baseline} {old_wall:.3f} s ({old_cpu:.3f} s CPU): {old_wall / wall:.2f}x "
+              f"({old_cpu / cpu:.2f}x CPU)")
     column, line, equal = reading
     print(f"\nToolpath CSV of {math.ceil(args.instants / 181):,} CL points: column by column {column:.3f} s, line by "
           f"line {line:.3f} s ({line / column:.1f}x slower); same numbers: {equal}")
