@@ -31,6 +31,7 @@ import numpy as np
 
 from ..errors import InputError
 from . import MAX_MAGNITUDE
+from .overlapped import consume_overlapped
 from .stored_zip import StoredZip
 from .results_columns import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS,
                               INT_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS, TEXT_COLUMNS, TOOLPATH_COLUMNS,
@@ -53,41 +54,57 @@ def write_chunks(parts, path, rows):
     """Write the (results columns, summary columns) pairs of the iterable `parts` (dicts name -> (rows,)
     array of formats.results_columns, the same names in every pair), in order, as the archive `path`,
     the results columns holding `rows` rows in all (CL points × angles). Returns the number of pairs.
-    Memory: one pair, and a copy buffer.
+    Memory: three pairs (one being written, one waiting, one being made), and a copy buffer.
 
     Each results column's member is reserved at the first pair and filled in place as the pairs arrive
-    (formats.stored_zip); the summary columns, whose length is only known at the end (a row per CL point
-    and engagement segment, about 1/p of the bytes), go to an unnamed temporary file beside `path` (gone
-    with the process, whatever stops it) and are copied in last. ValueError when the pairs do not hold
-    `rows` results rows or change their columns; write `path` itself to a temporary (formats.replacing)
-    for all-or-nothing output.
+    (formats.stored_zip), in a second thread while the next pair is being made (formats.overlapped);
+    the summary columns, whose length is only known at the end (a row per CL point and engagement
+    segment, about 1/p of the bytes), go to an unnamed temporary file beside `path` (gone with the
+    process, whatever stops it) and are copied in last. ValueError when the pairs do not hold `rows`
+    results rows or change their columns; write `path` itself to a temporary (formats.replacing) for
+    all-or-nothing output.
     """
     path = os.fspath(path)
     with _SpilledColumns(os.path.dirname(os.path.abspath(path))) as summary, StoredZip(path) as archive:
         _add_array(archive, "format", np.array(FORMAT))
-        members, codes, count = None, {}, 0
-        for results, summary_columns in parts:
-            if members is None:
-                members = {name: _reserve(archive, name, column_dtype(name), rows) for name in results}
-            if list(results) != list(members):
-                raise ValueError(f"chunk columns {list(results)} differ from the first chunk's {list(members)}")
-            for name, values in results.items():
-                values = _checked(name, values, column_dtype(name))
-                archive.append(members[name], values)
-                if name in TEXT_COLUMNS and values.size:
-                    codes[name] = max(codes.get(name, 0), int(values.max()))
-            summary.add(summary_columns)
-            count += 1
+        results = _ResultColumns(archive, rows)
+
+        def write(pair):
+            results.add(pair[0])
+            summary.add(pair[1])
+
+        count = consume_overlapped(parts, write)
         for key, dtype in summary.dtypes.items():
             member = _reserve(archive, SUMMARY + key, dtype, summary.rows[key])
             for block in summary.blocks(key):
                 archive.append(member, block)
+        codes = results.codes
         for name, code in summary.codes.items():
             codes[name] = max(code, codes.get(name, 0))
         for text in TEXT_COLUMNS:
             if text in codes:
                 _add_array(archive, LABELS + text, np.array(text_labels(text, codes[text] + 1), dtype=str))
     return count
+
+
+class _ResultColumns:
+    """The results columns of an archive being written: each one's member reserved for `rows` rows at
+    the first chunk, then filled chunk by chunk; per text column, the largest code seen."""
+
+    def __init__(self, archive, rows):
+        self.archive, self.rows, self.members, self.codes = archive, rows, None, {}
+
+    def add(self, columns):
+        """Append the arrays of dict `columns`; ValueError when the names or dtypes differ from the first chunk's."""
+        if self.members is None:
+            self.members = {name: _reserve(self.archive, name, column_dtype(name), self.rows) for name in columns}
+        if list(columns) != list(self.members):
+            raise ValueError(f"chunk columns {list(columns)} differ from the first chunk's {list(self.members)}")
+        for name, values in columns.items():
+            values = _checked(name, values, column_dtype(name))
+            self.archive.append(self.members[name], values)
+            if name in TEXT_COLUMNS and values.size:
+                self.codes[name] = max(self.codes.get(name, 0), int(values.max()))
 
 
 def _npy_header(dtype, rows):
