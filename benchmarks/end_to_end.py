@@ -17,8 +17,10 @@ Prints, from one run:
    toolpath, stock), the in-process sweep (with --stock-model in-process), engine (every chunk's
    columns), writing the .npz;
 4. with ``--baseline``, the .npz writer of each checkout on the same columns (in this process, the
-   baseline's imported beside this one's), and the toolpath CSV read column by column and line by
-   line (the reader's two paths, same numbers);
+   baseline's imported beside this one's); the engine and the .npz writer of the pass together,
+   chunks written while the next is computed (as a run does) and one after the other (against the
+   stock as given); the toolpath CSV read column by column and line by line (the reader's two
+   paths, same numbers);
 5. the results CSV text of the same columns by formats.decimal_text and by a plain writer
    (Python's repr of each rounded value, joined row by row), checked to be the same bytes.
 Ratios are printed beside the times, so that a loaded machine's figures still compare.
@@ -173,6 +175,43 @@ def split(folder, model, start):
     return clock, parts, instants
 
 
+def overlap(folder, model, repeats):
+    """{"overlapped" / "one after the other": best wall-clock seconds} of the engine and the .npz writer
+    of one pass together, as a run does them (chunks written in a second thread while the next is
+    computed), and with the writer's consumer replaced by a plain loop; taken in turn `repeats` times."""
+    from abm_workbench.formats import replacing, results_npz
+    from abm_workbench.jobs import Job
+    from abm_workbench.jobs.job import load_job_stock, prepare
+    from abm_workbench.jobs.run import ResultsChunk
+    from abm_workbench.parallel import map_chunks
+
+    def one_after_the_other(items, consume):
+        count = 0
+        for item in items:
+            consume(item)
+            count += 1
+        return count
+
+    prepared = prepare(Job(os.path.join(MODEL, "stock.json"), os.path.join(folder, "toolpath.csv"),
+                           os.path.join(MODEL, "job.json"), {}, stock_model=model))
+    stock, _ = load_job_stock(prepared)
+    task = ResultsChunk(keep=False, frame=prepared.hints.frame, columnar=True)
+    job = (stock.model, prepared.tool, prepared.toolpath, prepared.settings)
+    instants = len(prepared.toolpath) * prepared.settings.phi.size
+    consumers = {"overlapped": results_npz.consume_overlapped, "one after the other": one_after_the_other}
+    clocks = {name: _Clock() for name in consumers}
+    try:
+        for repeat in range(repeats):
+            for name, consumer in consumers.items():
+                results_npz.consume_overlapped = consumer
+                with clocks[name].part(repeat), replacing(os.path.join(folder, "overlap.npz")) as temporaries:
+                    results_npz.write_chunks((result.parts for *_, result in map_chunks(task, [job])),
+                                             temporaries[0], instants)
+    finally:
+        results_npz.consume_overlapped = consumers["overlapped"]
+    return {name: min(clock.wall.values()) for name, clock in clocks.items()}
+
+
 def baseline_module(checkout, name):
     """Module `name` (e.g. "formats.results_npz") of the checkout `checkout`'s abm_workbench, imported as
     abm_baseline.<name> beside this checkout's."""
@@ -305,6 +344,7 @@ def main():
         whole = timed_runs({(checkout, suffix): (base + [os.path.join(folder, f"R.{suffix}")], root)
                             for checkout, root in roots.items() for suffix in ("npz", "csv")}, args.repeats, cached)
         reading = toolpath_readers(os.path.join(folder, "toolpath.csv"))
+        together = overlap(folder, args.stock_model, args.repeats) if args.stock_model == "initial" else None
         writers = npz_writers(folder, parts, instants, args.baseline, args.repeats) if args.baseline else None
         fast, plain, same = csv_writers(parts)
     print_start_up(starts)
@@ -329,6 +369,10 @@ def main():
         print(f"\n.npz writer on the same columns, best of {args.repeats} in turn: this checkout {wall:.3f} s "
               f"({cpu:.3f} s CPU), {args.baseline} {old_wall:.3f} s ({old_cpu:.3f} s CPU): {old_wall / wall:.2f}x "
               f"({old_cpu / cpu:.2f}x CPU)")
+    if together:
+        print(f"\nEngine and .npz writer of the pass together, best of {args.repeats} in turn: chunks written while "
+              f"the next is computed {together['overlapped']:.3f} s, one after the other "
+              f"{together['one after the other']:.3f} s ({together['one after the other'] / together['overlapped']:.2f}x)")
     column, line, equal = reading
     print(f"\nToolpath CSV of {math.ceil(args.instants / 181):,} CL points: column by column {column:.3f} s, line by "
           f"line {line:.3f} s ({line / column:.1f}x slower); same numbers: {equal}")
