@@ -535,7 +535,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
             from ..cad.annotate import write_annotated
             name = re.sub(r"[^A-Za-z0-9_]", "_", os.path.splitext(os.path.basename(fcstd))[0])
             write_annotated(document, f"ABM_{name}", solid, engagement, toolpath, tool, cls=chosen,
-                            intersections=[cl for cl, _ in shown])
+                            intersections=[cl for cl, _ in shown], sweep=in_process, tops=views)
     written = [os.path.join(report, os.path.basename(page))] + ([fcstd] if fcstd else [])
     return ValidateResult(prepared, stock, checked, helix, forces, written)
 

@@ -351,7 +351,8 @@ def _force_section(forces, cls, png):
 def _files():
     """The CSV files beside the page."""
     rows = [
-        ("comparison.csv", "one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, "
+        ("comparison.csv", "one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, "
+                           "error, error_kind, "
                            "LEP and UEP of both, pieces of both, segment, uep_surface (against the in-process "
                            "stock also l_initial: ABM in the stock as given)"),
         ("segments.csv", "error per CL point and engagement segment"),
