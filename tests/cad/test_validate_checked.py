@@ -12,6 +12,8 @@ import numpy as np
 import pytest
 
 from abm_workbench import cli
+from abm_workbench.cad.boolean import _inside_intervals
+from abm_workbench.cad.freecad_env import FreeCAD
 from abm_workbench.cad.solids import staircase_solid
 from abm_workbench.engine import Tool, Toolpath
 from abm_workbench.engine.inprocess import swept_pieces
@@ -84,6 +86,20 @@ def test_cli_check_writes_the_checked_cl_points(case, tmp_path, capsys):
     for name in ("CL006_Intersection", "CL006_Removed", "CL006_InProcessTop"):
         assert f'name="{name}"' in document, name
     assert "not the in-process stock" in document
+    reopened = FreeCAD.openDocument(str(tmp_path / "shown.FCStd"))
+    try:
+        removed, top = reopened.getObject("CL006_Removed"), reopened.getObject("CL006_InProcessTop")
+        assert removed.Shape.isValid() and len(removed.Shape.Solids) >= int(depth["swept"][6]) > 0
+        # the in-process top never rises above the stock as given, and lies lower where earlier moves cut
+        points = np.unique([[v.X, v.Y, v.Z] for v in top.Shape.Vertexes], axis=0)
+        stock = reopened.getObject("Stock").Shape
+        low = stock.BoundBox.ZMin - 1.0
+        lines = _inside_intervals(stock, np.column_stack([points[:, :2], np.full(len(points), low)]),
+                                  np.array([0.0, 0.0, 1.0]), stock.BoundBox.ZLength + 2.0)
+        given = np.array([found[-1][1] + low for found in lines])
+        assert (points[:, 2] <= given + AGREE).all() and (points[:, 2] < given - AGREE).any()
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
 
 
 def test_cli_check_every(case, tmp_path, capsys):
