@@ -41,9 +41,10 @@ validate-model-test-1 validate-model-test-2 validate-model-test-4: validate-mode
 
 # Model test 3 (a whole program) against OpenCASCADE booleans on the in-process stock: a report and an
 # annotated document per operation (operation 1's later passes meet what its first passes removed,
-# operation 2 what operation 1 removed). The boolean sections the earlier moves' swept solids, 1-2 min
-# per CL point, so it checks a handful of CL points of each operation (--check; the shown one, --cl,
-# among them; the engine computes all), at φ step 3°: under 10 minutes on 2 cores (docs/MODEL_TESTS.md).
+# operation 2 what operation 1 removed). The boolean sections the earlier moves' swept solids, seconds
+# to a minute per CL point, so it checks a handful of CL points of each operation (--check; the shown
+# one, --cl, among them; the engine computes all), at φ step 3°: about 8 minutes on 2 cores
+# (docs/VALIDATION.md).
 VALIDATE_3 = $(PYTHON) -m abm_workbench validate --job resources/models/model_test_3/job.json \
   --stock resources/models/model_test_3/stock.step --toolpath resources/models/model_test_3/program.apt \
   --stock-model in-process --phi-step 3 --workers 2
