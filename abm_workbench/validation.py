@@ -193,8 +193,8 @@ def _statistics(comparison, mask):
 def segment_summary(engagement: Engagement, comparison: Comparison, cls=None):
     """The error per CL point and engagement segment (the paper's Fig. 8(c), 8(e)): a list of dicts.
 
-    cls: CL indices to summarise (default all the reference checked). Each dict: cl, segment (letter), phi_start,
-    phi_end (deg), surface, section, wall (the UEP's, as Engagement.segments), instants,
+    cls: CL indices to summarise (default those the reference checked). Each dict: cl, segment
+    (letter), phi_start, phi_end (deg), surface, section, wall (the UEP's, as Engagement.segments), instants,
     relative_instants (of them, those with l_ref ≥ TINY_LENGTH), max_rel_error,
     mean_rel_error (|relative error| over those, NaN if none), max_abs_difference
     (max |l_ABM − l_ref| over all instants, mm), max_lep_difference, max_uep_difference (mm),
@@ -250,7 +250,8 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     cad.inprocess_boolean.edge_lengths_in_process), or None for the stock as given. progress(done,
     total) is called after each CL point of the reference. cls: the CL indices (0-based, distinct) the
     reference checks, None: all; elsewhere the reference's arrays are NaN (Comparison.checked) and the
-    statistics leave those CL points out. workers: processes computing the reference
+    statistics leave those CL points out (ValueError, before any work, for a list that is empty, repeats
+    an index or leaves 0..m−1). workers: processes computing the reference
     (1: this one; 0: one per core; see the module docstring; against the in-process stock a pass that
     repeats a CL point exactly is computed here, its CL points not being told apart in a worker);
     scheduler: a Dask scheduler's address to compute it on instead (reference_by_workers). Raises
@@ -260,6 +261,7 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     from .cad.boolean import edge_lengths_by_boolean
     from .cad.inprocess_boolean import ProgramSweep, edge_lengths_in_process
 
+    chosen = _checked_rows(cls, len(toolpath))
     started = time.perf_counter()
     if sweep is None:
         engagement = engage_stock(staircase, tool, toolpath, settings)
@@ -269,7 +271,6 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     abm_seconds = time.perf_counter() - started
     if not engagement.engaged.any():
         raise NoEngagementError("no CL point of the pass engages the stock")
-    chosen = _checked_rows(cls, len(toolpath))
     part = toolpath if chosen is None else _toolpath_rows(toolpath, chosen)
     started = time.perf_counter()
     if sweep is None:

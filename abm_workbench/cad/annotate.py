@@ -30,8 +30,8 @@ import numpy as np
 from ..engine import Engagement, Tool, Toolpath
 from ..report.colours import SURFACE_COLOURS
 from .boolean import cutter_intersection
-from .inprocess_boolean import swept_near_tool
 from .freecad_env import FreeCAD, Part
+from .inprocess_boolean import swept_near_tool
 
 V = FreeCAD.Vector
 #: Consecutive polyline points closer than this (mm) are merged.
