@@ -271,7 +271,7 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     abm_seconds = time.perf_counter() - started
     if not engagement.engaged.any():
         raise NoEngagementError("no CL point of the pass engages the stock")
-    part = toolpath if chosen is None else _toolpath_rows(toolpath, chosen)
+    part = toolpath if chosen is None else toolpath.rows(chosen)
     started = time.perf_counter()
     if sweep is None:
         function, extra = edge_lengths_by_boolean, ()
@@ -297,12 +297,6 @@ def _checked_rows(cls, m):
     if chosen.size == 0 or np.unique(chosen).size != chosen.size or chosen.min() < 0 or chosen.max() >= m:
         raise ValueError(f"cls must be distinct CL indices in 0..{m - 1}, at least one; got {list(cls)!r}")
     return chosen
-
-
-def _toolpath_rows(toolpath: Toolpath, chosen):
-    """The Toolpath of the CL points `chosen` (k,) int, in that order (the CC points too, when given)."""
-    cc = None if toolpath.cc is None else toolpath.cc[chosen]
-    return Toolpath(toolpath.cl[chosen], toolpath.theta_a[chosen], toolpath.theta_b[chosen], cc)
 
 
 def _spread(reference, chosen, m):
