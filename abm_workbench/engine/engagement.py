@@ -17,6 +17,7 @@ from functools import reduce
 
 import numpy as np
 
+from .allocator import keep_freed_memory
 from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
@@ -173,11 +174,12 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
 
     Work is done in chunks of CL points holding about `chunk_instants` instants each, so
     memory stays bounded. `progress(done, total)` is called after each chunk, if given.
-    Returns an Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
+    Freed memory is kept for reuse, process-wide (allocator.keep_freed_memory). Returns an Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
     """
     if tool.helix != 0.0:
         raise ValueError(f"engage is for straight edges; the tool has a helix angle of {tool.helix} deg: "
                          "use flute_engagement")
+    keep_freed_memory()
     phi = settings.phi
     m, p = len(toolpath), phi.size
     out, lep_xyz, uep_xyz = empty_results(m, p)
@@ -440,6 +442,7 @@ def inside_intervals(stock: Staircase, origins, directions, length):
     The start of a piece at l = 0 is labelled flute_end; at the base or a y limit, stock_side.
     Returns an EdgeIntervals.
     """
+    keep_freed_memory()
     origins = np.asarray(origins, dtype=float).reshape(-1, 3)
     directions = np.asarray(directions, dtype=float).reshape(-1, 3)
     if origins.shape != directions.shape:
