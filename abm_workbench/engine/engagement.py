@@ -289,11 +289,8 @@ def _reachable_walls(stock, live, seg_min, seg_max, y_a, y_b):
     segment's y bins still meets it. Returns the pairs rows, walls (P,) (by row, then wall),
     left_of (N,) and steepness (P,): the wall's max |dx/dy| over the segment's y range.
     """
-    # Monotone envelopes of the walls' x ranges (exact bands already are; bounds may not be).
-    reach_low = np.minimum.accumulate(stock.bands.whole[::-1, 0])[::-1]
-    reach_high = np.maximum.accumulate(stock.bands.whole[:, 1])
-    first = np.searchsorted(reach_high, seg_min, side="left")
-    count = np.where(live, np.searchsorted(reach_low, seg_max, side="right") - first, 0).clip(0)
+    first = np.searchsorted(stock.bands.reach_high, seg_min, side="left")
+    count = np.where(live, np.searchsorted(stock.bands.reach_low, seg_max, side="right") - first, 0).clip(0)
     rows = np.repeat(np.arange(seg_min.size), count)
     walls = first[rows] + (np.arange(rows.size) - np.repeat(np.cumsum(count) - count, count))
     low, high, slope = stock.bands.query(y_a[rows], y_b[rows], walls)
@@ -378,22 +375,23 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz, intervals=False):
     pair_rows, pair_walls, left_of, steepness = _reachable_walls(
         stock, live, seg_x.min(axis=0), seg_x.max(axis=0), y0 + dy * lo, y0 + dy * hi)
     quintic = np.array([isinstance(w, Wall) for w in stock.walls], dtype=bool)[pair_walls]
-    crossings = _wall_crossings(stock, pair_rows[quintic], pair_walls[quintic], steepness[quintic],
+    on_quintic = np.flatnonzero(quintic)  # indices: gathering by them is cheaper than by the mask
+    crossings = _wall_crossings(stock, pair_rows[on_quintic], pair_walls[on_quintic], steepness[on_quintic],
                                 lo, hi, x0, y0, dx, dy)
     reach = np.bincount(pair_rows, minlength=n)
     # Per pair: the first crossing (NaN without one), whether it is the only one, and the
     # line's side of the wall at lo and at hi.
     root = np.full(pair_rows.size, np.nan)
     single, at_lo, at_hi = (np.zeros(pair_rows.size, dtype=bool) for _ in range(3))
-    solved = [(np.flatnonzero(quintic), crossings)]
+    solved = [(on_quintic, crossings)]
     exact = np.flatnonzero(~quintic)
     if exact.size:
         solved.append((exact, _exact_crossings(stock, pair_rows[exact], pair_walls[exact], lo, hi, x0, y0, dx, dy)))
     for pairs, (found, once, lo_side, hi_side) in solved:
         root[pairs], single[pairs], at_lo[pairs], at_hi[pairs] = found[:, 0], once, lo_side, hi_side
     # Lines whose candidate walls are each crossed at most once go in closed form.
-    simple = (reach > 0) & (np.bincount(pair_rows[~single], minlength=n) == 0)
-    rank = np.arange(pair_rows.size) - np.searchsorted(pair_rows, pair_rows)  # pairs come grouped by row
+    simple = (reach > 0) & (np.bincount(pair_rows[np.flatnonzero(~single)], minlength=n) == 0)
+    rank = np.arange(pair_rows.size) - (np.cumsum(reach) - reach)[pair_rows]  # pairs come grouped by row
     lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
     result, found = {}, []
     # (One wall and several apart: a line with one wall needs no sorting.)
@@ -403,13 +401,14 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz, intervals=False):
         if rows.size == 0:
             continue
         renumber = np.cumsum(subset) - 1
-        pairs = subset[pair_rows]
+        in_subset = subset[pair_rows]
+        pairs = np.flatnonzero(in_subset)
         starts = (lo_surface[rows], lo_wall[rows]) if intervals else None
         if solve is _single_crossings:
             part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], rank[pairs], pair_walls[pairs] + 1,
                          root[pairs], at_lo[pairs], at_hi[pairs], starts=starts)
         else:
-            on = pairs[quintic]
+            on = np.flatnonzero(in_subset[on_quintic])
             part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], pair_walls[pairs],
                          quintic[pairs], tuple(c[on] for c in crossings), starts=starts)
         if intervals:
