@@ -398,9 +398,10 @@ class SplineTable:
         h_hi = self._knot_side(knot_hi, x0, y0, dx, dy)
         cross = np.sign(h_lo) * np.sign(h_hi) <= 0.0
         r = np.flatnonzero(cross)
-        x0r, y0r, dxr, dyr = x0[r], y0[r], dx[r], dy[r]
-        a, f_lo, f_hi = self._bracketing_knots(x0r, y0r, dxr, dyr, knot_lo[r], knot_hi[r], h_lo[r], h_hi[r], key[r])
-        wr = walls[r]
+        every = r.size == cross.size  # the usual case: no gathering
+        x0r, y0r, dxr, dyr, knot_a, knot_b, f_a, f_b, key_r, wr = (
+            v if every else v[r] for v in (x0, y0, dx, dy, knot_lo, knot_hi, h_lo, h_hi, key, walls))
+        a, f_lo, f_hi = self._bracketing_knots(x0r, y0r, dxr, dyr, knot_a, knot_b, f_a, f_b, key_r)
         span = a - self.first_end[wr] + self.first_span[wr]
         if self.rational:
             sx, sy, sw = self.span_columns.take(span, axis=2)
@@ -414,8 +415,12 @@ class SplineTable:
         if self.rational:
             w = horner(sw.T, u)
             px, py = px / w, py / w
-        at = np.full(x0.size, np.nan)
-        at[r] = ((px - x0r) * dxr + (py - y0r) * dyr) / (dxr * dxr + dyr * dyr)
+        along = ((px - x0r) * dxr + (py - y0r) * dyr) / (dxr * dxr + dyr * dyr)
+        if every:
+            at = along
+        else:
+            at = np.full(x0.size, np.nan)
+            at[r] = along
         with np.errstate(invalid="ignore"):
             root = np.where((at >= lo) & (at <= hi), at, np.nan)
             ahead = h_lo * dy < 0.0
