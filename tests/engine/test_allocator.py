@@ -20,12 +20,18 @@ _MEASURE = textwrap.dedent(
     """
     import json, resource, sys
     import numpy as np
-    from abm_workbench.engine import engagement
+    from abm_workbench.engine import CutSettings, Tool, engagement
     from abm_workbench.engine.engagement import edge_lines, engage, inside_intervals
-    from benchmarks.engine_throughput import MODEL, load_model
+    from abm_workbench.formats.staircase_json import load_staircase
+    from abm_workbench.formats.toolpath_csv import load_toolpath
     if sys.argv[1] == "defaults":
         engagement.keep_freed_memory = lambda: None
-    stock, tool, path, settings = load_model(MODEL)
+    folder = "resources/models/model_test_1/"
+    with open(folder + "job.json") as handle:
+        job = json.load(handle)
+    stock, path = load_staircase(folder + "stock.json"), load_toolpath(folder + "toolpath.csv")
+    tool = Tool(job["diameter"], job["flutes"], job["flute_length"])
+    settings = CutSettings(job["feed_per_tooth"], job["inclination"], *job["phi_range"], job["phi_step"])
     base, direction = edge_lines(path, tool, settings.phi)
     origins, directions = base.reshape(-1, 3), np.repeat(direction, settings.phi.size, axis=0)
 
