@@ -4,8 +4,8 @@ By default glibc's malloc gives every block of 128 KiB or more its own mapping a
 when it is freed, and it hands the free top of its heap back to the kernel as soon as that
 exceeds 128 KiB. The engine makes hundreds of temporary arrays of 10 KiB to a few MiB per chunk
 of instants; with those defaults each new one is fresh memory from the kernel, and touching it
-costs one page fault (a zeroed 4 KiB page) per page. On a 53-point pass that was about a third
-of the engine's time.
+costs one page fault (a zeroed 4 KiB page) per page. On a model test's 53-point pass that was
+a quarter to 40 % of the engine's time.
 
 keep_freed_memory() raises both thresholds once for the whole process (the command line, the
 GUI and any other code that shares it): freed blocks up to KEPT_BYTES stay mapped and are reused

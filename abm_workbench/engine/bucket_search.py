@@ -2,9 +2,10 @@
 
 Bisection costs 15–50 ns per query when the queries come in little order (the more out of
 order, the more cache misses); the engine asks thousands per chunk of instants, always into the
-same knot keys of a stock's B-spline walls. Here the range of the keys is cut into equal buckets once; a query's
-bucket comes from one subtraction and one multiplication, and the count of keys below it from
-the keys of earlier buckets (stored) plus comparisons with the few keys in its own bucket.
+same knot keys of a stock's B-spline walls. Here the range of the keys is cut into equal
+buckets once; a query's bucket comes from one subtraction and one multiplication, and the count
+of keys below it from the keys of earlier buckets (stored) plus comparisons with the few keys
+in its own bucket.
 The bucket of a value is a non-decreasing function of the value, and a key is put in the
 bucket that function gives it, so the answer is exactly np.searchsorted's, NaN included
 (NaN sorts last).
@@ -19,14 +20,15 @@ MOST_PER_BUCKET = 6
 
 
 class BucketSearch:
-    """keys: (K,) float, sorted ascending, finite. search(v, side) equals
-    np.searchsorted(keys, v, side=side) for v of any shape."""
+    """keys: (K,) float, sorted ascending. search(v, side) equals np.searchsorted(keys, v,
+    side=side) for v of any shape. Keys that are not finite and sorted (which np.searchsorted
+    does not expect either) or bunched together are searched by np.searchsorted itself."""
 
     def __init__(self, keys):
         keys = np.asarray(keys, dtype=float).reshape(-1)
-        if not np.isfinite(keys).all() or (np.diff(keys) < 0.0).any():
-            raise ValueError("BucketSearch: keys must be finite and sorted ascending")
         self.keys = keys
+        if not np.isfinite(keys).all() or (np.diff(keys) < 0.0).any():
+            keys = np.zeros(0)  # no buckets: bisect
         self.buckets = max(1, BUCKETS_PER_KEY * keys.size)
         self.origin = float(keys[0]) if keys.size else 0.0
         width = float(keys[-1]) - self.origin if keys.size else 0.0
@@ -36,7 +38,7 @@ class BucketSearch:
         #: (buckets,) number of keys in earlier buckets.
         self.below = np.cumsum(counts) - counts
         depth = int(counts.max()) if keys.size else 0
-        self.bisect = depth > MOST_PER_BUCKET
+        self.bisect = depth > MOST_PER_BUCKET or keys.size != self.keys.size
         #: (depth, buckets): the keys of each bucket in order, NaN-padded (NaN compares false).
         self.columns = np.full((depth, self.buckets), np.nan)
         self.columns[np.arange(keys.size) - self.below[bucket], bucket] = keys

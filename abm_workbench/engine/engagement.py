@@ -174,7 +174,8 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
 
     Work is done in chunks of CL points holding about `chunk_instants` instants each, so
     memory stays bounded. `progress(done, total)` is called after each chunk, if given.
-    Freed memory is kept for reuse, process-wide (allocator.keep_freed_memory). Returns an Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
+    Freed memory is kept for reuse, process-wide (allocator.keep_freed_memory). Returns an
+    Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
     """
     if tool.helix != 0.0:
         raise ValueError(f"engage is for straight edges; the tool has a helix angle of {tool.helix} deg: "
@@ -205,7 +206,7 @@ def _edge_components(base, direction):
     Contiguous, because every later step does arithmetic on them: on a column of an (N, 3)
     array (a stride of 3) numpy's element-wise operations take several times as long.
     """
-    x0, y0, z0 = np.moveaxis(base, -1, 0).reshape(3, -1)
+    x0, y0, z0 = np.ascontiguousarray(np.moveaxis(base, -1, 0).reshape(3, -1))
     dx, dy, dz = np.repeat(direction.T, base.shape[1], axis=1)
     return x0, y0, z0, dx, dy, dz
 
