@@ -22,7 +22,8 @@ The results (CSV, or an .npz of columns) are written chunk by chunk, so memory s
 however long the pass.
 
 This module only parses arguments and prints: the options of the cutting parameters come from
-their declarations (``jobs.parameters``), the runs from ``jobs.run``, shared with the GUI.
+their declarations (``jobs.parameters``), the runs from ``jobs.run``, shared with the GUI and imported
+only by the command that runs (``--help`` and a usage error import none of the run machinery).
 Errors in the input print ``abm: error: <message>`` on stderr and exit with status 2,
 leaving no output behind (an existing one is replaced only on success); a failure to write
 exits with 1, an interrupt (Ctrl-C) with 130, under the same rule. Missing output folders are
@@ -41,8 +42,7 @@ import numpy as np
 
 from .errors import InputError, ParameterError
 from .forces import COEFFICIENT_NAMES, MATERIALS
-from .jobs import BY_NAME, CUTTING, REQUIRED, WALL_MODELS, WALL_POINTS, Job, option_words
-from .jobs import run as runs
+from .jobs import BY_NAME, CUTTING, REQUIRED, WALL_MODELS, WALL_POINTS, option_words
 from .parallel import ChunkError
 
 PROG = "abm"
@@ -233,6 +233,7 @@ def _build_parser():
 def _run_toolpath(args):
     """The toolpath command: the program's summary, and with --out its CSV; returns 0."""
     from .formats.cl import read_program
+    from .jobs import run as runs
     from .formats.cl.summary import summary_lines, write_toolpath_csv
 
     if args.out:
@@ -331,6 +332,8 @@ def _input_arguments(parser):
 
 def _job(args):
     """The Job of the parsed arguments: the cutting and force options by parameter name."""
+    from .jobs import Job
+
     given = {name: getattr(args, name, None) for name in BY_NAME if name not in
              ("phi_start", "phi_end", "immersion_start", "immersion_end")}
     if args.phi_range is not None:
@@ -376,6 +379,8 @@ def _parameters_line(prepared, stock):
 
 def _run_engage(args):
     """The engage command; returns 0 or raises InputError."""
+    from .jobs import run as runs
+
     method = runs.Method(args.method, args.grid, args.edge_step, args.workers, args.scheduler)
     progress = _engine_progress() if sys.stderr.isatty() else None
     result = runs.engage(_job(args), args.out, plot=args.plot, method=method, warn=_warn, progress=progress)
@@ -401,6 +406,7 @@ def _run_engage(args):
 
 def _run_validate(args):
     """The validate command; returns 0 or raises InputError."""
+    from .jobs import run as runs
     from .validation import overall
 
     label = "boolean reference" if not args.helix and args.flute is None else "helix boolean reference"
@@ -428,6 +434,8 @@ def _run_validate(args):
 
 def _run_schedule(args):
     """The schedule command; returns 0 or raises InputError."""
+    from .jobs import run as runs
+
     result = runs.schedule(_job(args), args.out, max_force=args.max_force, max_area=args.max_area,
                            min_feed=args.min_feed, report=args.report, warn=_warn)
     plan, kind = result.plan, result.kind

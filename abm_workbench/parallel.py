@@ -18,7 +18,6 @@ processes (``0``: one per core); ``scheduler="tcp://host:port"`` on the Dask clu
 scheduler (its workers must be able to import ``abm_workbench``).
 """
 
-import concurrent.futures
 import dataclasses
 import os
 
@@ -199,8 +198,23 @@ def _result(future, chunk, n_jobs):
         raise ChunkError(*chunk, error, jobs=n_jobs) from error
 
 
+class _Done:
+    """A task already run in this process: result() gives its value or raises its error, as a future's does."""
+
+    __slots__ = ("value", "error")
+
+    def __init__(self, value=None, error=None):
+        self.value, self.error = value, error
+
+    def result(self):
+        if self.error is not None:
+            raise self.error
+        return self.value
+
+
 class _InlinePool:
-    """Runs each task at once, in this process (futures already done), one chunk at a time."""
+    """Runs each task at once, in this process (results already there), one chunk at a time; no
+    concurrent.futures machinery (nor its import)."""
 
     in_flight = 1
 
@@ -214,14 +228,12 @@ class _InlinePool:
         return False
 
     def submit(self, task, j, start, stop):
-        future = concurrent.futures.Future()
         try:
-            future.set_result(task(self.jobs[j], start, stop))
+            return _Done(task(self.jobs[j], start, stop))
         except (KeyboardInterrupt, SystemExit):
             raise
         except BaseException as error:
-            future.set_exception(error)
-        return future
+            return _Done(error=error)
 
     @staticmethod
     def wait_first(futures):
@@ -244,7 +256,10 @@ class _ProcessPool:
     """Local worker processes; the jobs are sent to each once, tasks name them by index."""
 
     def __init__(self, workers, jobs):
+        import concurrent.futures  # here: a run in this process needs none of it
+
         self.in_flight = workers * IN_FLIGHT_PER_WORKER
+        self.futures = concurrent.futures
         self.executor = concurrent.futures.ProcessPoolExecutor(workers, initializer=_set_jobs, initargs=(jobs,))
 
     def __enter__(self):
@@ -257,9 +272,8 @@ class _ProcessPool:
     def submit(self, task, j, start, stop):
         return self.executor.submit(_run_local, task, j, start, stop)
 
-    @staticmethod
-    def wait_first(futures):
-        return concurrent.futures.wait(futures, return_when=concurrent.futures.FIRST_COMPLETED).done
+    def wait_first(self, futures):
+        return self.futures.wait(futures, return_when=self.futures.FIRST_COMPLETED).done
 
 
 def map_cl_points(task, shared, m, scheduler):

@@ -14,15 +14,15 @@ The archive holds, as ``.npy`` members stored uncompressed (numpy.load reads the
 Floats are float64 as computed (the CSV rounds them to 10 decimals), NaN where the CSV has an
 empty field; integer and code columns have the dtypes of formats.results_columns.column_dtype.
 
-:func:`write_chunks` streams the columns of a pass chunk by chunk into one raw file per column in
-a scratch folder beside the output and builds the archive from them at the end, so its memory is
-one chunk's; :func:`read_results` reads an archive back as results_csv.read_results reads a CSV,
-refusing (InputError naming the file) anything else: not a zip, pickled arrays, missing or
+:func:`write_chunks` streams the columns of a pass chunk by chunk: each results column straight
+into its place in the archive (formats.stored_zip), the small summary columns through an unnamed
+temporary file, so its memory is one chunk's; :func:`read_results` reads an archive back as
+results_csv.read_results reads a CSV, refusing (InputError naming the file) anything else: not a zip, pickled arrays, missing or
 unknown columns, wrong dtypes or lengths, codes without a label, numbers too large.
 """
 
+import io
 import os
-import shutil
 import tempfile
 import zipfile
 import zlib
@@ -31,6 +31,8 @@ import numpy as np
 
 from ..errors import InputError
 from . import MAX_MAGNITUDE
+from .overlapped import consume_overlapped
+from .stored_zip import StoredZip
 from .results_columns import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS,
                               INT_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS, TEXT_COLUMNS, TOOLPATH_COLUMNS,
                               column_dtype, text_labels)
@@ -44,87 +46,135 @@ _TABLES = {"": (RESULT_COLUMNS, INPROCESS_COLUMNS + FORCE_COLUMNS),
            SUMMARY: (SUMMARY_COLUMNS, TOOLPATH_COLUMNS + FORCE_SUMMARY_COLUMNS + INPROCESS_SUMMARY_COLUMNS)}
 #: The first bytes of a zip file (a local file header).
 _ZIP = b"PK\x03\x04"
-#: Bytes copied at a time from a column's raw file into the archive.
+#: Bytes copied at a time from the summary columns' temporary file into the archive.
 _COPY = 1 << 22
 
 
-def write_chunks(parts, path):
+def write_chunks(parts, path, rows):
     """Write the (results columns, summary columns) pairs of the iterable `parts` (dicts name -> (rows,)
-    array of formats.results_columns, the same names in every pair), in order, as the archive `path`.
-    Returns the number of pairs. Memory: one pair, and a copy buffer.
+    array of formats.results_columns, the same names in every pair), in order, as the archive `path`,
+    the results columns holding `rows` rows in all (CL points × angles). Returns the number of pairs.
+    Memory: three pairs (one being written, one waiting, one being made), and a copy buffer.
 
-    The columns go to raw files in a scratch folder beside `path` (removed when done or failed);
-    write `path` itself to a temporary (formats.replacing) for all-or-nothing output.
+    Each results column's member is reserved at the first pair and filled in place as the pairs arrive
+    (formats.stored_zip), in a second thread while the next pair is being made (formats.overlapped);
+    the summary columns, whose length is only known at the end (a row per CL point and engagement
+    segment, about 1/p of the bytes), go to an unnamed temporary file beside `path` (gone with the
+    process, whatever stops it) and are copied in last. ValueError when the pairs do not hold `rows`
+    results rows or change their columns; write `path` itself to a temporary (formats.replacing) for
+    all-or-nothing output.
     """
     path = os.fspath(path)
-    # A short name of its own: an output name as long as the folder allows still fits beside it.
-    scratch = tempfile.mkdtemp(prefix=".abm-columns-", dir=os.path.dirname(os.path.abspath(path)))
-    columns = _RawColumns(scratch)
-    try:
-        count = 0
-        for results, summary in parts:
-            columns.add("", results)
-            columns.add(SUMMARY, summary)
-            count += 1
-        columns.close()
-        with zipfile.ZipFile(path, "w", zipfile.ZIP_STORED, allowZip64=True) as archive:
-            _member(archive, "format", np.array(FORMAT))
-            for key in columns.keys:
-                with open(columns.file(key), "rb") as raw, archive.open(key + ".npy", "w", force_zip64=True) as member:
-                    np.lib.format.write_array_header_1_0(member, {
-                        "descr": np.lib.format.dtype_to_descr(columns.dtypes[key]), "fortran_order": False,
-                        "shape": (columns.rows[key],)})
-                    shutil.copyfileobj(raw, member, _COPY)
-            for text in TEXT_COLUMNS:
-                if text in columns.codes:
-                    _member(archive, LABELS + text, np.array(text_labels(text, columns.codes[text] + 1), dtype=str))
-        return count
-    finally:
-        columns.close()
-        shutil.rmtree(scratch, ignore_errors=True)
+    with _SpilledColumns(os.path.dirname(os.path.abspath(path))) as summary, StoredZip(path) as archive:
+        _add_array(archive, "format", np.array(FORMAT))
+        results = _ResultColumns(archive, rows)
+
+        def write(pair):
+            results.add(pair[0])
+            summary.add(pair[1])
+
+        count = consume_overlapped(parts, write)
+        for key, dtype in summary.dtypes.items():
+            member = _reserve(archive, SUMMARY + key, dtype, summary.rows[key])
+            for block in summary.blocks(key):
+                archive.append(member, block)
+        codes = results.codes
+        for name, code in summary.codes.items():
+            codes[name] = max(code, codes.get(name, 0))
+        for text in TEXT_COLUMNS:
+            if text in codes:
+                _add_array(archive, LABELS + text, np.array(text_labels(text, codes[text] + 1), dtype=str))
+    return count
 
 
-def _member(archive, key, array):
-    """Write `array` as the member key.npy of the open ZipFile `archive`."""
-    with archive.open(key + ".npy", "w") as member:
-        np.lib.format.write_array(member, array, allow_pickle=False)
+class _ResultColumns:
+    """The results columns of an archive being written: each one's member reserved for `rows` rows at
+    the first chunk, then filled chunk by chunk; per text column, the largest code seen."""
 
+    def __init__(self, archive, rows):
+        self.archive, self.rows, self.members, self.codes = archive, rows, None, {}
 
-class _RawColumns:
-    """Columns appended chunk by chunk to raw files (one per key, in the folder `scratch`): their
-    keys in order, dtype, row count and, per text column, the largest code seen."""
-
-    def __init__(self, scratch):
-        self.scratch, self.keys, self.dtypes, self.rows, self.codes, self._files = scratch, [], {}, {}, {}, {}
-
-    def file(self, key):
-        """The raw file of column `key`."""
-        return os.path.join(self.scratch, f"{self.keys.index(key)}.raw")
-
-    def add(self, prefix, columns):
-        """Append the arrays of dict `columns` to the columns prefix + name; ValueError when the names
-        or dtypes differ from the first chunk's."""
-        keys = [prefix + name for name in columns]
-        known = [key for key in self.keys if key.startswith(SUMMARY) == (prefix == SUMMARY)]
-        if known and keys != known:
-            raise ValueError(f"chunk columns {keys} differ from the first chunk's {known}")
-        for key, (name, values) in zip(keys, columns.items()):
-            if key not in self._files:
-                self.keys.append(key)
-                self.dtypes[key], self.rows[key] = column_dtype(name), 0
-                self._files[key] = open(self.file(key), "wb")
-            values = np.ascontiguousarray(values)
-            if values.dtype != self.dtypes[key] or values.ndim != 1:
-                raise ValueError(f"column {key}: {values.dtype} {values.shape}, expected {self.dtypes[key]} (rows,)")
-            self._files[key].write(values.data)
-            self.rows[key] += values.size
+    def add(self, columns):
+        """Append the arrays of dict `columns`; ValueError when the names or dtypes differ from the first chunk's."""
+        if self.members is None:
+            self.members = {name: _reserve(self.archive, name, column_dtype(name), self.rows) for name in columns}
+        if list(columns) != list(self.members):
+            raise ValueError(f"chunk columns {list(columns)} differ from the first chunk's {list(self.members)}")
+        for name, values in columns.items():
+            values = _checked(name, values, column_dtype(name))
+            self.archive.append(self.members[name], values)
             if name in TEXT_COLUMNS and values.size:
                 self.codes[name] = max(self.codes.get(name, 0), int(values.max()))
 
-    def close(self):
-        """Close every raw file (again: no effect)."""
-        for handle in self._files.values():
-            handle.close()
+
+def _npy_header(dtype, rows):
+    """The .npy (format 1.0) header of a C-ordered array (rows,) of `dtype`, as bytes."""
+    header = io.BytesIO()
+    np.lib.format.write_array_header_1_0(header, {"descr": np.lib.format.dtype_to_descr(np.dtype(dtype)),
+                                                  "fortran_order": False, "shape": (int(rows),)})
+    return header.getvalue()
+
+
+def _reserve(archive, key, dtype, rows):
+    """The member key.npy of `archive` reserved for an array (rows,) of `dtype`, its .npy header written."""
+    header = _npy_header(dtype, rows)
+    member = archive.reserve(key + ".npy", len(header) + int(rows) * np.dtype(dtype).itemsize)
+    archive.append(member, header)
+    return member
+
+
+def _add_array(archive, key, array):
+    """The member key.npy of `archive` holding `array` (1-D or a scalar; no objects)."""
+    data = io.BytesIO()
+    np.lib.format.write_array(data, array, allow_pickle=False)
+    archive.add(key + ".npy", data.getbuffer())
+
+
+def _checked(key, values, dtype):
+    """`values` as a contiguous array; ValueError unless it is 1-D of `dtype`."""
+    values = np.ascontiguousarray(values)
+    if values.dtype != dtype or values.ndim != 1:
+        raise ValueError(f"column {key}: {values.dtype} {values.shape}, expected {dtype} (rows,)")
+    return values
+
+
+class _SpilledColumns:
+    """Summary columns appended chunk by chunk to one unnamed temporary file in `folder`, each chunk's
+    columns one after the other: per column its dtype (in column order), row count, the (offset, bytes)
+    spans it holds and, per text column, the largest code seen. A context manager closing the file."""
+
+    def __init__(self, folder):
+        self.file = tempfile.TemporaryFile(dir=folder)
+        self.dtypes, self.rows, self.codes, self.spans, self._end = {}, {}, {}, {}, 0
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.file.close()
+        return False
+
+    def add(self, columns):
+        """Append the arrays of dict `columns`; ValueError when the names or dtypes differ from the first chunk's."""
+        if self.dtypes and list(columns) != list(self.dtypes):
+            raise ValueError(f"chunk columns {list(columns)} differ from the first chunk's {list(self.dtypes)}")
+        for key, values in columns.items():
+            if key not in self.dtypes:
+                self.dtypes[key], self.rows[key], self.spans[key] = column_dtype(key), 0, []
+            values = _checked(SUMMARY + key, values, self.dtypes[key])
+            self.file.write(values.data)
+            self.spans[key].append((self._end, values.nbytes))
+            self._end += values.nbytes
+            self.rows[key] += values.size
+            if key in TEXT_COLUMNS and values.size:
+                self.codes[key] = max(self.codes.get(key, 0), int(values.max()))
+
+    def blocks(self, key):
+        """The bytes of column `key`, in order, in blocks of at most _COPY bytes."""
+        self.file.flush()
+        for offset, size in self.spans[key]:
+            for start in range(offset, offset + size, _COPY):
+                yield os.pread(self.file.fileno(), min(_COPY, offset + size - start), start)
 
 
 def read_results(path, summary=False):

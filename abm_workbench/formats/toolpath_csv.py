@@ -20,15 +20,17 @@ asked for, or the only one.
 """
 
 import csv
+import itertools
 import math
 import os
+import re
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..engine import Toolpath
 from ..errors import CLPointError, InputError
-from . import parse_number, read_text
+from . import MAX_MAGNITUDE, parse_number, read_text
 
 _POSITION = ("x", "y", "z")
 _ANGLES = ("theta_a", "theta_b")
@@ -57,26 +59,26 @@ class Table:
 
 
 def load_table(path):
-    """The :class:`Table` of a toolpath CSV; InputError naming the file and line."""
+    """The :class:`Table` of a toolpath CSV; InputError naming the file and line.
+
+    The rows are read column by column where they only hold numbers (:func:`_columnwise`); any other
+    block (text columns, quotes, a bad field, an oversized value) is read line by line, which names the
+    bad line.
+    """
     name = os.fspath(path)
-    rows = _rows(read_text(path), name)
-    if not rows:
+    lines = _data_lines(read_text(path))
+    if not lines:
         raise InputError(f"{name}: empty file; expected a header such as {_EXAMPLE!r}")
-    header_line, fields = rows[0]
-    header = [field.strip().lower() for field in fields]
+    header_line, header_text = lines[0]
+    header = [field.strip().lower() for field in _fields(header_text, f"{name}:{header_line}")]
     _columns(header, f"{name}:{header_line}")
-    if len(rows) == 1:
+    if len(lines) == 1:
         raise InputError(f"{name}: no CL points: the file has a header but no rows")
-    lines = np.array([line for line, _ in rows[1:]], dtype=int)
-    texts = {column: [] for column in header if column in OPERATION_TEXTS}
-    numeric = [column for column in header if column not in OPERATION_TEXTS]
-    values = []
-    for line, fields in rows[1:]:
-        values.append(_numbers(fields, header, f"{name}:{line}"))
-        for column in texts:
-            texts[column].append(fields[header.index(column)].strip())
-    table = np.array(values, dtype=float).reshape(len(values), len(numeric))
-    return Table(name, header, lines, {column: table[:, k] for k, column in enumerate(numeric)}, texts)
+    numbers = np.array([number for number, _ in lines[1:]], dtype=int)
+    found = _columnwise(header, [line for _, line in lines[1:]])
+    if found is None:
+        found = _line_by_line(name, header, lines[1:])
+    return Table(name, header, numbers, *found)
 
 
 def load_toolpath(path, operation=None):
@@ -138,25 +140,77 @@ def _describe(table, number):
     return f"{number:g}: {name}, {tool}{size}, {rows.size} CL points"
 
 
-def _rows(text, name):
-    """(line number, fields) of every line of file `name` that is not blank or a # comment;
-    InputError naming the line for a line longer than MAX_LINE, a field longer than MAX_FIELD or
-    a line csv cannot split."""
-    rows = []
-    for number, line in enumerate(text.splitlines(), start=1):
-        stripped = line.strip()
-        if stripped and not stripped.startswith("#"):
-            if len(line) > MAX_LINE:
-                raise InputError(f"{name}:{number}: a line of {len(line):,} characters; at most {MAX_LINE:,} are read")
-            try:
-                fields = next(csv.reader([line]))
-            except csv.Error as error:
-                raise InputError(f"{name}:{number}: not a CSV line: {error}") from None
-            longest = max(map(len, fields))
-            if longest > MAX_FIELD:
-                raise InputError(f"{name}:{number}: a field of {longest:,} characters; at most {MAX_FIELD:,} are read")
-            rows.append((number, fields))
-    return rows
+def _data_lines(text):
+    """(line number, line) of every line of `text` that is not blank or a # comment."""
+    return [(number, line) for number, line in enumerate(text.splitlines(), start=1)
+            if line.strip() and not line.strip().startswith("#")]
+
+
+def _fields(line, where):
+    """The CSV fields of one `line`; InputError naming `where` (file:line) for a line longer than
+    MAX_LINE, a field longer than MAX_FIELD or a line csv cannot split."""
+    if len(line) > MAX_LINE:
+        raise InputError(f"{where}: a line of {len(line):,} characters; at most {MAX_LINE:,} are read")
+    try:
+        fields = next(csv.reader([line]))
+    except csv.Error as error:
+        raise InputError(f"{where}: not a CSV line: {error}") from None
+    longest = max(map(len, fields))
+    if longest > MAX_FIELD:
+        raise InputError(f"{where}: a field of {longest:,} characters; at most {MAX_FIELD:,} are read")
+    return fields
+
+
+def _line_by_line(name, header, lines):
+    """({numeric column: (n,) float}, {text column: list of n str}) of the (line number, line) `lines`,
+    each line split and each number parsed on its own; InputError naming the first bad line."""
+    texts = {column: [] for column in header if column in OPERATION_TEXTS}
+    numeric = [column for column in header if column not in OPERATION_TEXTS]
+    values = []
+    for number, line in lines:
+        fields = _fields(line, f"{name}:{number}")
+        values.append(_numbers(fields, header, f"{name}:{number}"))
+        for column in texts:
+            texts[column].append(fields[header.index(column)].strip())
+    table = np.array(values, dtype=float).reshape(len(values), len(numeric))
+    return {column: table[:, k] for k, column in enumerate(numeric)}, texts
+
+
+#: A block the column-wise reader takes holds only these characters: those of numbers, blanks (spaces,
+#: tabs), commas and newlines. On them Python's float() takes exactly the NUMBER grammar (blanks around a
+#: number dropped, as parse_number does; no words such as nan, no '_', no other scripts' digits), and
+#: csv splits a line at every comma, as str.split does.
+_NUMERIC_BLOCK = re.compile(r"[0-9.eE+\- \t,\n]*")
+
+
+def _columnwise(header, lines):
+    """({numeric column: (n,) float}, {}) of the data `lines` (n str) read column by column: one match of
+    the whole block's characters, one split, every number converted in one pass; None when the
+    block has a text column or another character, a line without one field per column, a field that is
+    not a number (or, in a column that may be empty, nothing), or a line, field or number over its limit
+    (the line-by-line reader then names the line)."""
+    width = len(header)
+    if any(column in OPERATION_TEXTS for column in header):
+        return None
+    block = "\n".join(lines)
+    if (not _NUMERIC_BLOCK.fullmatch(block) or max(map(len, lines)) > MAX_LINE
+            or set(map(str.count, lines, itertools.repeat(","))) != {width - 1}):
+        return None
+    fields = block.replace("\n", ",").split(",")
+    if max(map(len, fields)) > MAX_FIELD:
+        return None
+    may_be_empty = [k for k, column in enumerate(header) if column in _MAY_BE_EMPTY]
+    for k in may_be_empty:
+        fields[k::width] = [field if field.strip() else "nan" for field in fields[k::width]]
+    try:
+        table = np.array(list(map(float, fields)), dtype=float).reshape(len(lines), width)
+    except ValueError:
+        return None
+    small = np.abs(table) <= MAX_MAGNITUDE
+    small[:, may_be_empty] |= np.isnan(table[:, may_be_empty])
+    if not small.all():
+        return None
+    return {column: table[:, k] for k, column in enumerate(header)}, {}
 
 
 def _columns(header, where):

@@ -9,11 +9,32 @@
 - :mod:`.run`: engage, validate and schedule, for the command line and the GUI alike.
 """
 
-from .inputs import (SOLID_SUFFIXES, SWEPT_MARGIN, WALL_MODELS, WALL_POINTS, PathHints, Stock,
-                     load_job, load_path, load_stock, swept_y_window)
-from .job import Job, Prepared, cl_indices, force_model, is_solid, load_job_stock, prepare
-from .parameters import BY_NAME, CUTTING, MATERIAL_CHOICES, PARAMETERS, REQUIRED, Parameter, label_words, option_words
-from .resolve import Parameters, resolve, tool_and_settings
+#: The names this package gives, by the module that defines them (imported when a name is first asked for,
+#: so that a front end importing one part, e.g. the parameters for its options, does not import the rest).
+_NAMES = {
+    "inputs": ("SOLID_SUFFIXES", "SWEPT_MARGIN", "WALL_MODELS", "WALL_POINTS", "PathHints", "Stock", "load_job",
+               "load_path", "load_stock", "swept_y_window"),
+    "job": ("Job", "Prepared", "cl_indices", "force_model", "is_solid", "load_job_stock", "prepare"),
+    "parameters": ("BY_NAME", "CUTTING", "MATERIAL_CHOICES", "PARAMETERS", "REQUIRED", "Parameter", "label_words",
+                   "option_words"),
+}
+# Imported at once: the function resolve shares its name with its module, which importing any other
+# part would otherwise put in its place.
+from .resolve import Parameters, resolve, tool_and_settings  # noqa: E402
+
+
+def __getattr__(name):
+    """A name of :data:`_NAMES` from its module (submodules such as ``run`` are imported as usual)."""
+    if name in _NAMES["inputs"]:
+        from . import inputs as module
+    elif name in _NAMES["job"]:
+        from . import job as module
+    elif name in _NAMES["parameters"]:
+        from . import parameters as module
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(module, name)
+
 
 __all__ = [
     "BY_NAME", "CUTTING", "Job", "MATERIAL_CHOICES", "PARAMETERS", "Parameter", "Parameters",

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..engine import CutSettings, Tool
 from ..errors import MissingParameter
-from ..formats.apt import MM_PER_INCH
+from ..formats.cl.units import MM_PER_INCH
 from .parameters import BY_NAME, CUTTING, REQUIRED, check_pairs
 
 #: A feed that varies by less than this fraction along the pass counts as constant.

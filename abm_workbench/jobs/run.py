@@ -425,7 +425,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
             chunks = [(0, 0, len(toolpath), ChunkResult(parts, engagement.depth_of_cut, engagement))]
         kept = _kept(chunks, depth, peak, changed, whole, force_parts)
         if columnar:
-            results_npz.write_chunks(kept, temporaries[0])
+            results_npz.write_chunks(kept, temporaries[0], len(toolpath) * settings.phi.size)
         else:
             write_chunks(kept, temporaries[0], temporaries[1])
         if np.isnan(depth).all():

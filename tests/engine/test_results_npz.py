@@ -88,12 +88,13 @@ def test_forces_read_back_from_the_archive_are_the_csvs_unrounded(written):
 def test_chunks_write_the_same_archive_as_the_whole_pass(tmp_path):
     stock, tool, toolpath, settings = model_job(1)
     whole = engage(stock, tool, toolpath, settings)
-    assert results_npz.write_chunks([chunk_columns(whole, 0, toolpath=toolpath)], tmp_path / "whole.npz") == 1
+    rows = len(toolpath) * settings.phi.size
+    assert results_npz.write_chunks([chunk_columns(whole, 0, toolpath=toolpath)], tmp_path / "whole.npz", rows) == 1
     parts = []
     for start, stop in zip(BOUNDS[:-1], BOUNDS[1:]):
         part = toolpath_part(toolpath, start, stop)
         parts.append(chunk_columns(engage(stock, tool, part, settings), start, toolpath=part))
-    assert results_npz.write_chunks(iter(parts), tmp_path / "R.npz") == 4
+    assert results_npz.write_chunks(iter(parts), tmp_path / "R.npz", rows) == 4
     for summary in (False, True):
         a = results_npz.read_results(tmp_path / "whole.npz", summary)
         b = results_npz.read_results(tmp_path / "R.npz", summary)
@@ -114,7 +115,7 @@ def test_an_error_in_a_late_chunk_leaves_no_file(tmp_path):
 
     with pytest.raises(KeyboardInterrupt):
         with replacing(tmp_path / "R.npz") as temporaries:
-            results_npz.write_chunks(failing(), temporaries[0])
+            results_npz.write_chunks(failing(), temporaries[0], len(toolpath) * settings.phi.size)
     assert os.listdir(tmp_path) == ["R.npz"] and (tmp_path / "R.npz").read_bytes() == b"old"
 
 
@@ -193,6 +194,18 @@ def test_a_file_that_is_not_a_results_archive_is_refused(written, members, tmp_p
         read_engagement(path)
 
 
+def test_a_byte_changed_in_a_column_is_refused_as_damaged(written, tmp_path):
+    """Each member's CRC-32 is checked as it is read: one byte changed in the middle of the data is found."""
+    data = bytearray((written / "R.npz").read_bytes())
+    with zipfile.ZipFile(written / "R.npz") as archive:
+        info = archive.getinfo("length.npy")
+    data[info.header_offset + 30 + len(info.filename) + info.file_size // 2] ^= 0x40
+    path = tmp_path / "bad.npz"
+    path.write_bytes(bytes(data))
+    with pytest.raises(InputError, match=f"^{path}: not a results archive: damaged .*CRC"):
+        results_npz.read_results(path)
+
+
 def test_the_archive_is_stored_uncompressed_with_every_column(written):
     with zipfile.ZipFile(written / "R.npz") as archive:
         infos = archive.infolist()
@@ -213,8 +226,8 @@ def test_the_longest_output_name_allowed_is_written(tmp_path):
 
 
 def test_a_run_stopped_while_columns_stream_leaves_nothing(tmp_path):
-    """SIGTERM once the scratch columns hold data (mid-stream, ~10⁶ instants): no archive, no scratch
-    folder, no folder made, exit status 128 + 15."""
+    """SIGTERM once the staged archive holds columns (mid-stream, ~10⁶ instants): no archive, no staged
+    or temporary file, no folder made, exit status 128 + 15."""
     import signal
     import subprocess
     import sys
@@ -227,9 +240,8 @@ def test_a_run_stopped_while_columns_stream_leaves_nothing(tmp_path):
     child = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                              text=True)
 
-    def streaming():
-        folders = [entry for entry in os.scandir(out.parent) if entry.name.startswith(".abm-columns-")]
-        return folders and any(entry.stat().st_size for entry in os.scandir(folders[0].path))
+    def streaming():  # the staged archive holds the first chunk's columns
+        return any(entry.name.startswith(".R.npz.") and entry.stat().st_size for entry in os.scandir(out.parent))
 
     deadline = time.monotonic() + 300.0
     while not (out.parent.is_dir() and streaming()):

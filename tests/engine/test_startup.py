@@ -60,3 +60,33 @@ def test_a_plot_imports_matplotlib(tmp_path):
     status, heavy = imported(tmp_path, *json_job(tmp_path, "R.npz", "--stock-model", "initial", "--plot",
                                                  str(tmp_path / "R.png")))
     assert status == 0 and heavy == {"matplotlib"}
+
+
+def modules(tmp_path, *argv):
+    """(exit status, every module imported) of ``abm_workbench argv``."""
+    listing = tmp_path / "modules.json"
+    done = subprocess.run([sys.executable, "-c", WRAPPER, str(listing), *argv], cwd=ROOT, capture_output=True,
+                          text=True, timeout=600)
+    return done.returncode, set(json.loads(listing.read_text()))
+
+
+#: What a toolpath CSV job run in this process never needs: the CL file reader, the APT wrapper, and
+#: the machinery of worker processes.
+NOT_FOR_A_CSV_JOB = {"abm_workbench.formats.cl.reader", "abm_workbench.formats.apt", "concurrent.futures"}
+
+
+def test_a_json_job_with_a_toolpath_csv_imports_no_cl_reader_nor_process_pool(tmp_path):
+    status, found = modules(tmp_path, *json_job(tmp_path, "R.npz", "--stock-model", "initial"))
+    assert status == 0 and "abm_workbench.jobs.run" in found and not found & NOT_FOR_A_CSV_JOB
+
+
+def test_a_cl_file_imports_the_cl_reader(tmp_path):
+    """The listing sees the lazy imports: an APT file needs the CL reader."""
+    status, found = modules(tmp_path, "toolpath", os.path.join(ROOT, "tests", "fuzz", "model_test_1.apt"))
+    assert status == 0 and "abm_workbench.formats.cl.reader" in found
+
+
+@pytest.mark.parametrize("argv", [("--help",), ("engage", "--help"), ("engage",)])
+def test_help_and_usage_errors_import_no_run_machinery(tmp_path, argv):
+    status, found = modules(tmp_path, *argv)
+    assert status in (0, 2) and not found & ({"abm_workbench.jobs.run", "abm_workbench.jobs.job"} | NOT_FOR_A_CSV_JOB)

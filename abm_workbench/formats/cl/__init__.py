@@ -15,12 +15,7 @@ import os
 from dataclasses import replace
 
 from ...errors import InputError
-from .csv_program import read_csv_program
-from .program import Moves, Operation, OperationChoiceError, Program
-from .reader import read_cl_text
-from .rewrite import rewritten_text, write_rescheduled_program
 from .sniff import read_file
-from .tools import ToolSpec
 
 #: Default chordal tolerance (mm) of interpolated arcs and curves.
 TOLERANCE = 0.001
@@ -34,8 +29,25 @@ def read_program(path, tolerance=TOLERANCE):
         raise InputError(f"{name}: the chordal tolerance must be positive, got {tolerance:g} mm")
     kind, text, encoding = read_file(name)
     if kind == "csv":
+        from .csv_program import read_csv_program
+
         return read_csv_program(name, text)
+    from .reader import read_cl_text  # here: a toolpath CSV needs none of the CL state machine
+
     return replace(read_cl_text(text, name, tolerance), encoding=encoding)
+
+
+def __getattr__(name):
+    """The names this package gives from its modules, each module imported when first asked for."""
+    if name in ("Moves", "Operation", "OperationChoiceError", "Program"):
+        from . import program as module
+    elif name in ("rewritten_text", "write_rescheduled_program"):
+        from . import rewrite as module
+    elif name == "ToolSpec":
+        from . import tools as module
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(module, name)
 
 
 __all__ = ["Moves", "Operation", "OperationChoiceError", "Program", "TOLERANCE", "ToolSpec", "read_program",
