@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .engagement import SURFACES
+from .inprocess_reach import capsule_spheres, group_capsules
 from .intervals import EdgeIntervals
 from .swept import line_hull_interval
 from .tolerances import LENGTH_EPS
@@ -419,9 +420,10 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     sizes = np.bincount(group, minlength=present.size)
     before = program_index[line // p] - 1
     group_before = program_index[present // _GROUPS] - 1
-    centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
-    # (group, chain) pairs: a group's sphere meets a ball of the chain, the chain's first move
-    # ends before the CL point, and the sphere is not surely apart from the chain.
+    capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
+    centre, radius = capsule_spheres(*capsules)
+    # (group, chain) pairs: a group's bounding sphere meets a ball of the chain, the chain's first move
+    # ends before the CL point, and the group's capsule is not surely apart from the chain.
     from scipy.spatial import cKDTree
 
     near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
@@ -432,7 +434,7 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     pair = np.unique(g[keep] * chains + pieces.ball_chain[ball[keep]])
     g, k = pair // chains, pair % chains
     keep = pieces.chain_move[k] <= group_before[g]
-    g, k = _near_groups(g[keep], k[keep], centre, radius, pieces)
+    g, k = _near_groups(g[keep], k[keep], capsules, pieces)
     lines = (members, starts, sizes, envelope, line_origins, line_directions, before, pieces)
     if (sizes[g] * pieces.chain_count[k]).sum() <= _PROBE_PAIRS * line.size:
         # Few (line, span) pairs: straight to (group, span) pairs, no test of chains per line.
@@ -440,8 +442,9 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         g, span = g[owner], pieces.chain_first[k][owner] + rank
         keep = pieces.span_move[span] <= group_before[g]
         g, span = g[keep], span[keep]
-        keep = ~_apart(centre[g], centre[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                       pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + radius[g])
+        a, b, thick = capsules
+        keep = ~_apart(a[g], b[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                       pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + thick[g])
         found = [_expanded(g[keep], span[keep], *lines, chained=False)]
         g = k = np.zeros(0, dtype=np.intp)
     else:
@@ -453,8 +456,9 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
         found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
                                *lines, chained=False))
-        centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
-        g, k = _near_groups(g, k, centre, radius, pieces)
+        capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
+        centre, radius = capsule_spheres(*capsules)
+        g, k = _near_groups(g, k, capsules, pieces)
         if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
             break
     found.append(_expanded(g, k, *lines, chained=True))
@@ -490,27 +494,12 @@ def _probe(g, k, centre, radius, direction, group_before, pieces):
     return g[pick], span[pick]
 
 
-def _group_spheres(group, n, envelope, origins, directions):
-    """Bounding spheres (centre (n, 3), radius (n,)) of the envelopes of each group's lines
-    that still hold material (group (L,) of each line, non-decreasing); radius −inf for a
-    group without any."""
-    alive = np.flatnonzero(envelope[0] < envelope[1])
-    a, b = _ends(alive, envelope, origins, directions)
-    low, high = np.zeros((n, 3)), np.zeros((n, 3))
-    owner = group[alive]  # non-decreasing: the lines are in row order
-    first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=np.intp)
-    empty = np.ones(n, dtype=bool)
-    empty[owner[first]] = False
-    if first.size:
-        low[owner[first]] = np.minimum.reduceat(np.minimum(a, b), first, axis=0)
-        high[owner[first]] = np.maximum.reduceat(np.maximum(a, b), first, axis=0)
-    return 0.5 * (low + high), np.where(empty, -np.inf, 0.5 * np.linalg.norm(high - low, axis=1))
-
-
-def _near_groups(g, k, centre, radius, pieces):
-    """The pairs (group g, chain k) whose group sphere (centre, radius) is not surely apart from the chain."""
-    keep = ~_apart(centre[g], centre[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
-                   pieces.chain_radius[k], pieces.chain_height[k], pieces.chain_slack[k] + radius[g],
+def _near_groups(g, k, capsules, pieces):
+    """The pairs (group g, chain k) whose group capsule (a, b, radius: inprocess_reach.group_capsules)
+    is not surely apart from the chain."""
+    a, b, thick = capsules
+    keep = ~_apart(a[g], b[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
+                   pieces.chain_radius[k], pieces.chain_height[k], pieces.chain_slack[k] + thick[g],
                    pieces.chain_lean[k])
     return g[keep], k[keep]
 
