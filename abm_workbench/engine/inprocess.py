@@ -31,6 +31,8 @@ _MACHINED = SURFACES.index("machined")
 _OPPOSITE_EPS = 1e-12
 #: Spans per chain at most.
 _CHAIN = 16
+#: Sub-steps per span at most (a turning move is cut into more spans rather than more sub-steps per span).
+_SPAN_PIECES = 8
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
 _PAIR_BATCH = 1 << 16
 #: Runs of angles per CL point, each with its own bounding sphere for the spatial index.
@@ -47,9 +49,10 @@ _PROBE_GAIN = 0.8
 _PROBE_PAIRS = 8
 
 
-def _float_array(name, value, shape):
-    """A finite float array of `shape` (None matches any length); ValueError naming `name`."""
-    array = np.array(value, dtype=float)
+def _float_array(name, value, shape, copy=True):
+    """A finite float array of `shape` (None matches any length), a copy unless `copy` is False;
+    ValueError naming `name`."""
+    array = np.array(value, dtype=float, copy=copy)
     if array.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, array.shape)):
         raise ValueError(f"{name} must have shape {shape}, got {array.shape}")
     bad = np.argwhere(~np.isfinite(array))
@@ -211,8 +214,9 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     distance from the bottom centre to a point of the cutting part, √(r² + H²)) at equal angles
     of the interpolated axis; sub-step i keeps the axis at its middle angle and runs between the
     interpolated positions at its ends. Moves are also cut into spans no longer than about ρ
-    (exact: the hulls of consecutive parts of a straight move make up the hull of the move),
-    each span a whole number of sub-steps, so that bounding volumes stay small.
+    (exact: the hulls of consecutive parts of a straight move make up the hull of the move)
+    and of at most _SPAN_PIECES sub-steps, each span a whole number of sub-steps, so that
+    bounding volumes stay small and a span that comes near a line hands it few pieces.
     """
     tolerance = float(tolerance)
     if not tolerance > 0.0:
@@ -223,8 +227,10 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     radius, height = moves.radius[j], moves.flute_length[j]
     rho = np.hypot(radius, height)
     turn = np.arccos(np.clip(np.einsum("ij,ij->i", w0, w1), -1.0, 1.0))
-    spans = np.maximum(np.ceil(np.linalg.norm(p1 - p0, axis=1) / rho), 1).astype(np.intp)
-    per_span = np.maximum(np.ceil(np.ceil(turn * rho / tolerance) / spans), 1).astype(np.intp)
+    steps = np.ceil(turn * rho / tolerance)
+    spans = np.maximum(np.maximum(np.ceil(np.linalg.norm(p1 - p0, axis=1) / rho), np.ceil(steps / _SPAN_PIECES)),
+                       1).astype(np.intp)
+    per_span = np.maximum(np.ceil(steps / spans), 1).astype(np.intp)
     # Spans: equal turning steps of their move.
     span_of, span_index = _csr(spans)
     s0, s1, s_axis = _steps(p0[span_of], p1[span_of], w0[span_of], w1[span_of], turn[span_of], span_index,
@@ -388,8 +394,8 @@ def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, or
     program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
     if program_index.shape != (m,):
         raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
-    origins = _float_array("origins", origins, (n, 3))
-    directions = _float_array("directions", directions, (n, 3))
+    origins = _float_array("origins", origins, (n, 3), copy=False)
+    directions = _float_array("directions", directions, (n, 3), copy=False)
     rows, enter, leave = _removals(stock_intervals, pieces, program_index, origins, directions, p)
     result = subtract(stock_intervals, rows, enter, leave)
     lost = result.length != stock_intervals.length
@@ -412,12 +418,13 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     line_origins, line_directions = origins[line], directions[line]
     # Lines in groups: a CL point's angles in _GROUPS runs, all with the tool axis of that
     # point as direction.
+    # The lines are in row order, so their groups are too: each group is a run of lines.
     cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
-    present = np.unique(cl)
-    group = np.searchsorted(present, cl)
-    members = np.argsort(group, kind="stable")
-    starts = np.searchsorted(group[members], np.arange(present.size))
-    sizes = np.bincount(group, minlength=present.size)
+    starts = np.flatnonzero(np.r_[True, cl[1:] != cl[:-1]])
+    present = cl[starts]
+    group = np.repeat(np.arange(starts.size), np.diff(np.r_[starts, cl.size]))
+    members = np.arange(line.size)
+    sizes = np.diff(np.r_[starts, cl.size])
     before = program_index[line // p] - 1
     group_before = program_index[present // _GROUPS] - 1
     capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
@@ -445,10 +452,10 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         a, b, thick = capsules
         keep = ~_apart(a[g], b[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                        pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + thick[g])
-        found = [_expanded(g[keep], span[keep], *lines, chained=False)]
+        found = [empty, _expanded(g[keep], span[keep], *lines, chained=False)]
         g = k = np.zeros(0, dtype=np.intp)
     else:
-        found = []
+        found = [empty]
     # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
     # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
     # meet far fewer chains.
@@ -461,7 +468,8 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         g, k = _near_groups(g, k, capsules, pieces)
         if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
             break
-    found.append(_expanded(g, k, *lines, chained=True))
+    if g.size:
+        found.append(_expanded(g, k, *lines, chained=True))
     dead = envelope[0] >= envelope[1]
     seg, enter, leave = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]

@@ -24,30 +24,35 @@ def group_capsules(group, n, envelope, origins, directions):
     """
     a, b = np.zeros((n, 3)), np.zeros((n, 3))
     radius = np.full(n, -np.inf)
-    alive = np.flatnonzero(envelope[0] < envelope[1])
-    if alive.size == 0:
+    live = envelope[0] < envelope[1]
+    if not live.any():
         return a, b, radius
-    lo_end = origins[alive] + envelope[0, alive, None] * directions[alive]
-    hi_end = origins[alive] + envelope[1, alive, None] * directions[alive]
+    every = live.all()
+    alive = slice(None) if every else np.flatnonzero(live)
+    lo, hi, u = envelope[0, alive], envelope[1, alive], directions[alive]
+    lo_end = origins[alive] + lo[:, None] * u
+    hi_end = lo_end + (hi - lo)[:, None] * u
     owner = group[alive]
     first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
     count = np.diff(np.r_[first, owner.size])
     groups = owner[first]
-    mean_dir = np.add.reduceat(directions[alive], first, axis=0)
-    norm = np.linalg.norm(mean_dir, axis=1)
+    mean_dir = np.add.reduceat(u, first, axis=0)
+    norm = np.sqrt(np.einsum("ij,ij->i", mean_dir, mean_dir))
     # Opposite directions cancel: any axis will do there, the radius then grows to hold the ends.
     axis = np.where(norm[:, None] > 1e-9, mean_dir / np.where(norm > 1e-9, norm, 1.0)[:, None], [1.0, 0.0, 0.0])
     centre = np.add.reduceat(lo_end + hi_end, first, axis=0) / (2.0 * count)[:, None]
     slot = np.repeat(np.arange(first.size), count)
     w, m = axis[slot], centre[slot]
-    along_lo, along_hi = (np.einsum("ij,ij->i", end - m, w) for end in (lo_end, hi_end))
-    across = np.maximum(np.linalg.norm(lo_end - m - along_lo[:, None] * w, axis=1),
-                        np.linalg.norm(hi_end - m - along_hi[:, None] * w, axis=1))
+    low_gap, high_gap = lo_end - m, hi_end - m
+    along_lo, along_hi = np.einsum("ij,ij->i", low_gap, w), np.einsum("ij,ij->i", high_gap, w)
+    # Squared distances from the axis line: |e − m|² − along², never below 0.
+    across = np.maximum(np.einsum("ij,ij->i", low_gap, low_gap) - along_lo * along_lo,
+                        np.einsum("ij,ij->i", high_gap, high_gap) - along_hi * along_hi)
     low = np.minimum.reduceat(np.minimum(along_lo, along_hi), first)
     high = np.maximum.reduceat(np.maximum(along_lo, along_hi), first)
     a[groups] = centre + low[:, None] * axis
     b[groups] = centre + high[:, None] * axis
-    radius[groups] = np.maximum.reduceat(across, first)
+    radius[groups] = np.sqrt(np.maximum(np.maximum.reduceat(across, first), 0.0))
     return a, b, radius
 
 
