@@ -35,8 +35,8 @@ _CHAIN = 4
 _SPAN_PIECES = 8
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
 _PAIR_BATCH = 1 << 16
-#: Runs of angles per CL point, each with its own bounding sphere for the spatial index.
-_GROUPS = 12
+#: Runs of angles per CL point, each bounded by its own capsule (inprocess_reach.group_capsules).
+_GROUPS = 18
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
 #: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
@@ -284,9 +284,10 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     d = ch1[piece_chain] - ch0[piece_chain]
     zero = np.zeros_like(d)
     off = np.maximum(_segment_distance(c0, zero, ch0[piece_chain], d), _segment_distance(c1, zero, ch0[piece_chain], d))
-    slack, lean = np.zeros(first.size), np.zeros(first.size)
-    np.maximum.at(slack, piece_chain, off)
-    np.maximum.at(lean, piece_chain, np.linalg.norm(axis - chain_axis[piece_chain], axis=1))
+    # Pieces come span by span and spans chain by chain, each chain with at least one piece.
+    piece_first = np.flatnonzero(np.r_[True, piece_chain[1:] != piece_chain[:-1]]) if n else np.zeros(0, np.intp)
+    slack = np.maximum.reduceat(off, piece_first) if n else np.zeros(0)
+    lean = np.maximum.reduceat(np.linalg.norm(axis - chain_axis[piece_chain], axis=1), piece_first) if n else np.zeros(0)
     r, h = radius[first], height[first]
     slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
     ball_chain, ball_index = _csr(slices)
