@@ -37,6 +37,8 @@ _SPAN_PIECES = 8
 _PAIR_BATCH = 1 << 16
 #: Runs of angles per CL point, each bounded by its own capsule (inprocess_reach.group_capsules).
 _GROUPS = 18
+#: Largest key range for which _distinct marks keys in a bool array rather than sorting them.
+_MARK_LIMIT = 1 << 24
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
 #: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
@@ -439,7 +441,7 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
     keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
     chains = pieces.chain_first.size
-    pair = np.unique(g[keep] * chains + pieces.ball_chain[ball[keep]])
+    pair = _distinct(g[keep] * chains + pieces.ball_chain[ball[keep]], present.size * chains)
     g, k = pair // chains, pair % chains
     keep = pieces.chain_move[k] <= group_before[g]
     g, k = _near_groups(g[keep], k[keep], capsules, pieces)
@@ -476,6 +478,16 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     alive = ~dead[seg]
     return (np.concatenate([line[dead], line[seg[alive]]]), np.concatenate([lo[dead], enter[alive]]),
             np.concatenate([hi[dead], leave[alive]]))
+
+
+def _distinct(keys, bound):
+    """The distinct values of keys (K,) int in 0 … bound − 1, sorted: by marking them when
+    bound is small enough (a pass over a bool array instead of a sort), else np.unique."""
+    if bound > _MARK_LIMIT:
+        return np.unique(keys)
+    seen = np.zeros(bound, dtype=bool)
+    seen[keys] = True
+    return np.flatnonzero(seen)
 
 
 def _probe(g, k, centre, radius, direction, group_before, pieces):
