@@ -170,6 +170,12 @@ def _build_parser():
     outputs.add_argument("--cl", metavar="I,J,...",
                          help="CL points (0-based) shown in detail and annotated in the FCStd "
                               "(default: deepest, shallowest, middle and largest error; the FCStd all)")
+    checking = validate_parser.add_argument_group(
+        "CL points checked by the boolean (default all; those of --cl always; the engine computes all)")
+    checking.add_argument("--check", metavar="I,J,A-B",
+                          help="check these CL points (0-based; A-B a range, both ends included)")
+    checking.add_argument("--check-every", type=int, metavar="N",
+                          help="check every N-th CL point from 0 (with --check: both)")
     helical = validate_parser.add_argument_group("helical edges (docs/HELIX.md)")
     helical.add_argument("--helix", type=float, default=0.0, metavar="DEG",
                          help="helix angle β (deg), default 0: straight edges; otherwise every checked flute's "
@@ -400,7 +406,8 @@ def _run_validate(args):
     label = "boolean reference" if not args.helix and args.flute is None else "helix boolean reference"
     if args.workers < 0:
         raise ParameterError("workers", f"must be 0 (all cores) or a positive number of processes, got {args.workers}")
-    result = runs.validate(_job(args), args.report, fcstd=args.fcstd, cls=args.cl, flute=args.flute,
+    result = runs.validate(_job(args), args.report, fcstd=args.fcstd, cls=args.cl, check=args.check,
+                           check_every=args.check_every, flute=args.flute,
                            workers=args.workers, scheduler=args.scheduler, warn=_warn,
                            progress=_Progress(label, sys.stderr))
     validation, forces = result.validation, result.forces

@@ -24,7 +24,7 @@ import os
 
 import numpy as np
 
-from .engine import Engagement, Toolpath, engage
+from .engine import Engagement, engage
 from .errors import InputError
 
 #: Instants per chunk (CL points × angles): the engine's default chunk, about 3 MiB of results.
@@ -70,8 +70,7 @@ def cl_ranges(m, p, chunk_instants=None):
 
 def toolpath_part(toolpath, start, stop):
     """The Toolpath of CL points start:stop (the CC points too, when given)."""
-    cc = None if toolpath.cc is None else toolpath.cc[start:stop]
-    return Toolpath(toolpath.cl[start:stop], toolpath.theta_a[start:stop], toolpath.theta_b[start:stop], cc)
+    return toolpath.rows(slice(start, stop))
 
 
 def engage_chunk(job, start, stop, chunk_instants=None):

@@ -74,9 +74,14 @@ class Comparison:
         return np.where(self.relative, self.error, np.nan)
 
     @property
+    def checked(self):
+        """(m, p) bool: the reference was computed at the instant (validate's cls); NaN l_ref elsewhere."""
+        return ~np.isnan(self.l_ref)
+
+    @property
     def mismatched(self):
-        """(m, p) bool: exactly one of ABM and the reference engages."""
-        return (self.l_abm > 0.0) != (self.l_ref > 0.0)
+        """(m, p) bool: exactly one of ABM and the reference engages (checked instants only)."""
+        return self.checked & ((self.l_abm > 0.0) != (self.l_ref > 0.0))
 
 
 @dataclass(frozen=True)
@@ -105,6 +110,11 @@ class Validation:
     comparison: Comparison
     seconds: dict
     in_process: Optional[InProcessCheck] = None
+
+    @property
+    def checked(self):
+        """(m,) bool: the CL points the reference was computed at (all unless validate's cls chose)."""
+        return self.comparison.checked.any(axis=1)
 
     @property
     def speed_ratio(self):
@@ -162,7 +172,8 @@ def _depth(z_lep, z_uep):
 
 
 def _statistics(comparison, mask):
-    """Error statistics over the instants of bool `mask` (m, p): a dict (see segment_summary)."""
+    """Error statistics over the checked instants of bool `mask` (m, p): a dict (see segment_summary)."""
+    mask = mask & comparison.checked
     relative = mask & comparison.relative
     rel = np.abs(comparison.error[relative])
     lep = np.abs(comparison.lep_difference[mask])
@@ -182,8 +193,8 @@ def _statistics(comparison, mask):
 def segment_summary(engagement: Engagement, comparison: Comparison, cls=None):
     """The error per CL point and engagement segment (the paper's Fig. 8(c), 8(e)): a list of dicts.
 
-    cls: CL indices to summarise (default all). Each dict: cl, segment (letter), phi_start,
-    phi_end (deg), surface, section, wall (the UEP's, as Engagement.segments), instants,
+    cls: CL indices to summarise (default those the reference checked). Each dict: cl, segment
+    (letter), phi_start, phi_end (deg), surface, section, wall (the UEP's, as Engagement.segments), instants,
     relative_instants (of them, those with l_ref ≥ TINY_LENGTH), max_rel_error,
     mean_rel_error (|relative error| over those, NaN if none), max_abs_difference
     (max |l_ABM − l_ref| over all instants, mm), max_lep_difference, max_uep_difference (mm),
@@ -191,7 +202,7 @@ def segment_summary(engagement: Engagement, comparison: Comparison, cls=None):
     segment). Instants without an ABM segment are counted in surface_summary's "none".
     """
     rows = []
-    for cl in range(engagement.shape[0]) if cls is None else cls:
+    for cl in np.flatnonzero(comparison.checked.any(axis=1)) if cls is None else cls:
         for index, segment in enumerate(engagement.segments(cl)):
             mask = np.zeros(engagement.shape, dtype=bool)
             mask[cl] = engagement.segment[cl] == index
@@ -230,14 +241,17 @@ def letters(engagement: Engagement):
 
 
 def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None, workers=1,
-             scheduler=None, sweep=None):
-    """Run the engine and the boolean reference on one pass; a Validation.
+             scheduler=None, sweep=None, cls=None):
+    """Run the engine on one pass and the boolean reference at its CL points `cls`; a Validation.
 
     solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's (a Staircase or a
     TerracedStock). sweep: (SweptPieces of the whole program, (m,) program row of each CL point), both
     in the pass's frame, to check against the in-process stock (the engine's engage_in_process against
     cad.inprocess_boolean.edge_lengths_in_process), or None for the stock as given. progress(done,
-    total) is called after each CL point of the reference. workers: processes computing the reference
+    total) is called after each CL point of the reference. cls: the CL indices (0-based, distinct) the
+    reference checks, None: all; elsewhere the reference's arrays are NaN (Comparison.checked) and the
+    statistics leave those CL points out (ValueError, before any work, for a list that is empty, repeats
+    an index or leaves 0..m−1). workers: processes computing the reference
     (1: this one; 0: one per core; see the module docstring; against the in-process stock a pass that
     repeats a CL point exactly is computed here, its CL points not being told apart in a worker);
     scheduler: a Dask scheduler's address to compute it on instead (reference_by_workers). Raises
@@ -247,6 +261,7 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     from .cad.boolean import edge_lengths_by_boolean
     from .cad.inprocess_boolean import ProgramSweep, edge_lengths_in_process
 
+    chosen = _checked_rows(cls, len(toolpath))
     started = time.perf_counter()
     if sweep is None:
         engagement = engage_stock(staircase, tool, toolpath, settings)
@@ -256,18 +271,44 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     abm_seconds = time.perf_counter() - started
     if not engagement.engaged.any():
         raise NoEngagementError("no CL point of the pass engages the stock")
+    part = toolpath if chosen is None else toolpath.rows(chosen)
     started = time.perf_counter()
     if sweep is None:
         function, extra = edge_lengths_by_boolean, ()
     else:
-        function, extra = edge_lengths_in_process, (ProgramSweep(pieces, np.asarray(rows), toolpath),)
-        workers = 1 if _repeats_cl_point(toolpath) else workers
-    reference = reference_by_workers(function, solid, tool, toolpath, engagement.phi, extra, workers=workers,
+        part_rows = np.asarray(rows) if chosen is None else np.asarray(rows)[chosen]
+        function, extra = edge_lengths_in_process, (ProgramSweep(pieces, part_rows, part),)
+        workers = 1 if _repeats_cl_point(part) else workers
+    reference = reference_by_workers(function, solid, tool, part, engagement.phi, extra, workers=workers,
                                      scheduler=scheduler, progress=progress)
+    if chosen is not None:
+        reference = _spread(reference, chosen, len(toolpath))
     boolean_seconds = time.perf_counter() - started
     comparison = compare(engagement, reference, toolpath, tool)
     check = None if sweep is None else InProcessCheck(initial, changed, reference["swept"])
     return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds}, check)
+
+
+def _checked_rows(cls, m):
+    """(k,) int CL indices of `cls` (distinct, each in 0..m−1, at least one), or None for all."""
+    if cls is None:
+        return None
+    chosen = np.asarray(cls, dtype=int).reshape(-1)
+    if chosen.size == 0 or np.unique(chosen).size != chosen.size or chosen.min() < 0 or chosen.max() >= m:
+        raise ValueError(f"cls must be distinct CL indices in 0..{m - 1}, at least one; got {list(cls)!r}")
+    return chosen
+
+
+def _spread(reference, chosen, m):
+    """The reference dict of k checked CL points (arrays over k first) spread over the m CL points of
+    the pass: row chosen[i] holds row i, the other rows NaN (integer arrays become float)."""
+    spread = {}
+    for name, values in reference.items():
+        values = np.asarray(values)
+        full = np.full((m,) + values.shape[1:], np.nan)
+        full[chosen] = values
+        spread[name] = full
+    return spread
 
 
 def _repeats_cl_point(toolpath: Toolpath):

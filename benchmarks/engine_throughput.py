@@ -9,6 +9,8 @@ The walls table reads each stock.step twice, as the command line does: `--walls 
 solid's own B-spline walls, over the whole strip) and `--walls quintic` (the paper's quintics,
 fitted over the y range the pass sweeps); the two are timed in alternation, so that a change in
 the machine's load falls on both, and their ratio is printed from the same run.
+`--steps` prints where one exact and one quintic 53-point pass of each model test spend their
+CPU time, step by step (the engine's own functions, each timed inclusively where it is called).
 """
 
 import argparse
@@ -95,6 +97,64 @@ def walls_table(repeats, large):
     print(f"load average after: {' '.join(f'{v:.2f}' for v in os.getloadavg())}")
 
 
+#: (label, function name in engagement.py) of the steps --steps times, in the order a chunk runs them.
+#: The three solvers call _table1_case; its time is also inside theirs.
+STEPS = (("edge lines", "edge_lines"), ("clip to the bounding box", "_clip"),
+         ("candidate walls (bands)", "_reachable_walls"), ("quintic crossings", "_wall_crossings"),
+         ("exact crossings", "_exact_crossings"), ("one section", "_single_section"),
+         ("single crossings", "_single_crossings"), ("breakpoints", "_broken_lines"),
+         ("  of which Table 1 cases", "_table1_case"), ("results (area, depth, segments)", "finished_engagement"))
+
+
+def step_times(stock, tool, path, settings, repeats):
+    """Mean CPU seconds per engage() call of each STEPS function and of the whole call, over
+    `repeats` calls: {name: seconds}, "engage" the whole. The functions are wrapped with a
+    timer for the measurement only."""
+    from abm_workbench.engine import engagement
+
+    spent = {name: 0.0 for _, name in STEPS}
+    originals = {name: getattr(engagement, name) for _, name in STEPS}
+
+    def timed(name):
+        def call(*args, **kwargs):
+            start = time.process_time()
+            try:
+                return originals[name](*args, **kwargs)
+            finally:
+                spent[name] += time.process_time() - start
+        return call
+
+    engage(stock, tool, path, settings)
+    for name in originals:
+        setattr(engagement, name, timed(name))
+    try:
+        start = time.process_time()
+        for _ in range(repeats):
+            engage(stock, tool, path, settings)
+        whole = time.process_time() - start
+    finally:
+        for name, function in originals.items():
+            setattr(engagement, name, function)
+    return {"engage": whole / repeats, **{name: value / repeats for name, value in spent.items()}}
+
+
+def steps_table(repeats):
+    """Per-step CPU ms of one 53-point pass, exact against quintic walls, on both model tests' STEP solids."""
+    print(f"\nload average before: {' '.join(f'{v:.2f}' for v in os.getloadavg())}")
+    for number in (1, 2):
+        folder = MODEL.replace("model_test_1", f"model_test_{number}")
+        _, tool, path, settings = load_model(folder)
+        exact, quintic = (step_times(stock, tool, path, settings, repeats) for stock in step_stocks(folder, path, tool))
+        print(f"\nmodel test {number}, 53 CL x {settings.phi.size} phi: mean CPU ms per pass over {repeats} passes")
+        print(f"{'step':<34} {'exact':>7} {'quintic':>8}")
+        for label, name in STEPS + (("whole engage call", "engage"),):
+            print(f"{label:<34} {exact[name] * 1e3:>7.2f} {quintic[name] * 1e3:>8.2f}")
+        outside = {k: t["engage"] - sum(t[name] for _, name in STEPS if name != "_table1_case") for k, t in
+                   (("exact", exact), ("quintic", quintic))}
+        print(f"{'outside the steps':<34} {outside['exact'] * 1e3:>7.2f} {outside['quintic'] * 1e3:>8.2f}")
+    print(f"load average after: {' '.join(f'{v:.2f}' for v in os.getloadavg())}")
+
+
 def measure(stock, tool, path, settings, repeats, chunk):
     """(best seconds, median seconds, peak MiB) of engage() over `repeats` runs."""
     engage(stock, tool, path, settings, chunk_instants=chunk)
@@ -115,7 +175,11 @@ def main():
     parser.add_argument("--repeats", type=int, default=50, help="runs of each 53-point pass")
     parser.add_argument("--large", type=int, default=1_000_000, help="instants in the large toolpath")
     parser.add_argument("--walls-only", action="store_true", help="only the exact against quintic walls table")
+    parser.add_argument("--steps", action="store_true", help="only the per-step CPU time of exact and quintic passes")
     args = parser.parse_args()
+    if args.steps:
+        steps_table(args.repeats)
+        return
     if args.walls_only:
         walls_table(args.repeats, args.large)
         return

@@ -8,8 +8,12 @@ Objects (all Part::Feature unless said), per CL point i in a group ``CL<i>`` (ze
 - ``CL<i>_Seg_<letter>_<surface>``: per engagement segment, the engaged part of the cutter
   surface, the ruled surface between the LEP and UEP polylines over the segment's φ range
   (a line LEP–UEP for a segment of one angle);
-- ``CL<i>_Intersection``: the stock material inside the cutter (cad.boolean.cutter_intersection),
-  for the CL points asked for.
+- ``CL<i>_Intersection``: the material of the stock as given inside the cutter
+  (cad.boolean.cutter_intersection), for the CL points asked for;
+- validated against the in-process stock, for the CL points given: ``CL<i>_Removed``, the solids
+  of the volumes that the earlier moves near the tool swept (what they removed is the stock
+  inside them; the reference sections the edges with each), and ``CL<i>_InProcessTop``, the top
+  of the in-process stock around the tool as a wire grid (cad.inprocess_boolean.stock_heights).
 
 Each segment object carries, in the property group "ABM", its CL point, letter, UEP surface,
 φ range (deg) and its colour (App::PropertyColor ``Colour``, by UEP surface kind). With the
@@ -27,6 +31,7 @@ from ..engine import Engagement, Tool, Toolpath
 from ..report.colours import SURFACE_COLOURS
 from .boolean import cutter_intersection
 from .freecad_env import FreeCAD, Part
+from .inprocess_boolean import swept_near_tool
 
 V = FreeCAD.Vector
 #: Consecutive polyline points closer than this (mm) are merged.
@@ -34,11 +39,15 @@ POINT_TOL = 1e-7
 
 
 def annotated_document(name, solid, engagement: Engagement, toolpath: Toolpath, tool: Tool, *, cls=None,
-                       intersections=()):
+                       intersections=(), sweep=None, tops=None):
     """A new FreeCAD document `name` holding the annotated pass (see the module docstring).
 
     solid: the stock (Part.Shape). cls: CL indices to annotate (default all). intersections:
-    CL indices that also get the boolean intersection solid. Returns (document, styles):
+    CL indices that also get the boolean intersection solid. sweep: for a validation against the
+    in-process stock, (SweptPieces of the program, (m,) program row of each CL point): the
+    intersection CL points then also get CL<i>_Removed (cad.inprocess_boolean.swept_near_tool); tops:
+    {CL index: (x (c,), y (c,), z (c, c))} mm, the in-process stock's top around those CL points (NaN
+    where none is left), for CL<i>_InProcessTop. Returns (document, styles):
     styles maps object names to their view properties ({"ShapeColor": (r, g, b), ...}). The
     caller saves and closes the document.
     """
@@ -55,8 +64,16 @@ def annotated_document(name, solid, engagement: Engagement, toolpath: Toolpath, 
                 group.addObject(obj)
             if cl in intersections:
                 shape = cutter_intersection(solid, tool, toolpath, int(cl))
-                group.addObject(builder.feature(f"{prefix}_Intersection", shape,
-                                                "stock material inside the cutter (boolean)", transparency=40))
+                against = "the stock as given" if sweep is None else (
+                    "the stock as given, not the in-process stock (earlier moves removed what lies in "
+                    f"{prefix}_Removed)")
+                group.addObject(builder.feature(f"{prefix}_Intersection", shape, "material inside the cutter "
+                                                f"(boolean) of {against}", transparency=40))
+                if sweep is not None:
+                    pieces, rows = sweep
+                    removed = swept_near_tool(pieces, rows[cl], tool, toolpath, int(cl))
+                    for obj in _inprocess_objects(builder, prefix, removed, (tops or {}).get(cl)):
+                        group.addObject(obj)
         document.recompute()
     except BaseException:
         FreeCAD.closeDocument(document.Name)
@@ -147,6 +164,37 @@ def _cl_objects(builder, prefix, engagement, cl):
             obj.setEditorMode(prop, 1)
         objects.append(obj)
     return objects
+
+
+def _inprocess_objects(builder, prefix, removed, top):
+    """CL<i>_Removed (Part.Shape or None) and CL<i>_InProcessTop (from (x, y, z) or None), as present."""
+    objects = []
+    if removed is not None:
+        objects.append(builder.feature(
+            f"{prefix}_Removed", removed, "volumes swept by the earlier cutting moves near the tool (one solid "
+            "per constant-axis piece, not fused): the material of the stock inside them is gone",
+            colour=(0.85, 0.3, 0.2), transparency=85))
+    if top is not None and np.isfinite(top[2]).any():
+        objects.append(builder.feature(
+            f"{prefix}_InProcessTop", _height_grid(*top), "top of the in-process stock around the tool "
+            "(the stock minus the earlier moves' swept volumes, along vertical lines)",
+            colour=(0.2, 0.45, 0.8), line_width=1.0))
+    return objects
+
+
+def _height_grid(x, y, z):
+    """Part.Compound of polylines through the heights z (c, c) over (x[b], y[a]) along each grid row and
+    column, broken where z is NaN (mm); lone points are left out."""
+    x, y, z = (np.asarray(v, dtype=float) for v in (x, y, z))
+    gx, gy = np.meshgrid(x, y)
+    points = np.stack([gx, gy, z], axis=-1)
+    lines = []
+    for grid in (points, points.transpose(1, 0, 2)):
+        for row in grid:
+            for start, stop in _runs(np.isfinite(row[:, 2])):
+                if stop - start > 1:
+                    lines.append(_polyline(row[start:stop]))
+    return Part.Compound(lines)
 
 
 def _runs(mask):

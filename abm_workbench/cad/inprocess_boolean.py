@@ -275,6 +275,17 @@ def edge_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, swee
     return {name: np.array([part[name] for part in parts]) for name in parts[0]}
 
 
+def swept_near_tool(pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i):
+    """Part.Compound of the solids (hull_parts, not fused) of the volumes that the earlier moves' pieces
+    near the tool at CL point i of `toolpath` (program row `row`) swept: those the in-process
+    reference sections there; None when no earlier piece comes near."""
+    chosen, _ = _near_tool(pieces, row, tool, toolpath, i)
+    if len(chosen) == 0:
+        return None
+    return Part.Compound([solid for k in chosen for solid in hull_parts(
+        pieces.c0[k], pieces.c1[k], pieces.axis[k], pieces.radius[k], pieces.height[k])])
+
+
 def stock_heights(stock_solid, pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i, cells=24):
     """The in-process stock around CL point i of `toolpath` (program row `row`) seen from above:
     (x (c,), y (c,), z (c, c)) mm, z[a, b] the top of the stock minus the earlier moves' swept

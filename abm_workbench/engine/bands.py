@@ -19,6 +19,9 @@ class WallBands:
 
     low, high, slope: (levels, n_w, BINS) sparse tables: entry [k, j, b] covers bins
     b .. b + 2^k − 1. whole: (n_w, 2) x range of each wall over the whole window.
+    reach_low, reach_high: (n_w,) monotone envelopes of whole (the least low of walls j and
+    after, the greatest high of walls j and before), so that the walls whose x range meets an
+    interval are a run found by bisection (whole itself need not be monotone for bounds).
     """
 
     def __init__(self, walls, y_min, y_max):
@@ -30,17 +33,21 @@ class WallBands:
         self.high = _sparse_table(per_bin[:, 1], np.maximum)
         self.slope = _sparse_table(per_bin[:, 2], np.maximum)
         self.whole = np.column_stack([per_bin[:, 0].min(axis=1), per_bin[:, 1].max(axis=1)]).reshape(-1, 2)
+        self.reach_low = np.minimum.accumulate(self.whole[::-1, 0])[::-1]
+        self.reach_high = np.maximum.accumulate(self.whole[:, 1])
+        # The same tables flat, and the scale from y to bins, for query's look-ups.
+        self._flat = tuple(table.reshape(-1) for table in (self.low, self.high, self.slope))
+        self._scale = BINS / (self.y_max - self.y_min)
 
     def query(self, y_a, y_b, walls):
         """(low, high, slope), each (P,): x range and max |dx/dy| of wall walls[i] over y between
         y_a[i] and y_b[i]."""
-        scale = BINS / (self.y_max - self.y_min)
-        first, last = (np.minimum(np.maximum(np.floor((y - self.y_min) * scale), 0.0), BINS - 1.0).astype(np.intp)
+        first, last = (np.minimum(np.maximum(np.floor((y - self.y_min) * self._scale), 0.0), BINS - 1.0).astype(np.intp)
                        for y in (np.minimum(y_a, y_b), np.maximum(y_a, y_b)))
         level = _FLOOR_LOG2[last - first + 1]
         row = (level * self.n_walls + walls) * BINS
         at_first, at_second = row + first, row + last - (1 << level) + 1
-        low, high, slope = (table.reshape(-1) for table in (self.low, self.high, self.slope))
+        low, high, slope = self._flat
         return (np.minimum(low.take(at_first), low.take(at_second)),
                 np.maximum(high.take(at_first), high.take(at_second)),
                 np.maximum(slope.take(at_first), slope.take(at_second)))

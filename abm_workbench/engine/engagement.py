@@ -17,6 +17,7 @@ from functools import reduce
 
 import numpy as np
 
+from .allocator import keep_freed_memory
 from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
@@ -173,11 +174,13 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
 
     Work is done in chunks of CL points holding about `chunk_instants` instants each, so
     memory stays bounded. `progress(done, total)` is called after each chunk, if given.
-    Returns an Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
+    Freed memory is kept for reuse, process-wide (allocator.keep_freed_memory). Returns an
+    Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
     """
     if tool.helix != 0.0:
         raise ValueError(f"engage is for straight edges; the tool has a helix angle of {tool.helix} deg: "
                          "use flute_engagement")
+    keep_freed_memory()
     phi = settings.phi
     m, p = len(toolpath), phi.size
     out, lep_xyz, uep_xyz = empty_results(m, p)
@@ -186,9 +189,7 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
         stop = min(m, start + step)
         base, direction = edge_lines(_slice(toolpath, start, stop), tool, phi)
         n_cl = stop - start
-        x0, y0, z0 = (base[..., i].reshape(-1) for i in range(3))
-        d = np.repeat(direction, p, axis=0)
-        chunk = _solve_lines(stock, tool.flute_length, x0, y0, z0, d[:, 0], d[:, 1], d[:, 2])
+        chunk = _solve_lines(stock, tool.flute_length, *_edge_components(base, direction))
         for name in out:
             out[name][start:stop] = chunk[name].reshape(n_cl, p)
         lep_xyz[start:stop] = (base + chunk["lep_l"].reshape(n_cl, p, 1) * direction[:, None, :])
@@ -196,6 +197,18 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
         if progress is not None:
             progress(stop, m)
     return finished_engagement(phi, settings, out, lep_xyz, uep_xyz)
+
+
+def _edge_components(base, direction):
+    """x0, y0, z0, dx, dy, dz: the N = m·p edge lines of base points (m, p, 3) and directions
+    (m, 3) (edge_lines), each component one contiguous (N,) array, lines by CL point then φ.
+
+    Contiguous, because every later step does arithmetic on them: on a column of an (N, 3)
+    array (a stride of 3) numpy's element-wise operations take several times as long.
+    """
+    x0, y0, z0 = np.ascontiguousarray(np.moveaxis(base, -1, 0).reshape(3, -1))
+    dx, dy, dz = np.repeat(direction.T, base.shape[1], axis=1)
+    return x0, y0, z0, dx, dy, dz
 
 
 def finished_engagement(phi, settings, out, lep_xyz, uep_xyz):
@@ -287,11 +300,8 @@ def _reachable_walls(stock, live, seg_min, seg_max, y_a, y_b):
     segment's y bins still meets it. Returns the pairs rows, walls (P,) (by row, then wall),
     left_of (N,) and steepness (P,): the wall's max |dx/dy| over the segment's y range.
     """
-    # Monotone envelopes of the walls' x ranges (exact bands already are; bounds may not be).
-    reach_low = np.minimum.accumulate(stock.bands.whole[::-1, 0])[::-1]
-    reach_high = np.maximum.accumulate(stock.bands.whole[:, 1])
-    first = np.searchsorted(reach_high, seg_min, side="left")
-    count = np.where(live, np.searchsorted(reach_low, seg_max, side="right") - first, 0).clip(0)
+    first = np.searchsorted(stock.bands.reach_high, seg_min, side="left")
+    count = np.where(live, np.searchsorted(stock.bands.reach_low, seg_max, side="right") - first, 0).clip(0)
     rows = np.repeat(np.arange(seg_min.size), count)
     walls = first[rows] + (np.arange(rows.size) - np.repeat(np.cumsum(count) - count, count))
     low, high, slope = stock.bands.query(y_a[rows], y_b[rows], walls)
@@ -376,22 +386,23 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz, intervals=False):
     pair_rows, pair_walls, left_of, steepness = _reachable_walls(
         stock, live, seg_x.min(axis=0), seg_x.max(axis=0), y0 + dy * lo, y0 + dy * hi)
     quintic = np.array([isinstance(w, Wall) for w in stock.walls], dtype=bool)[pair_walls]
-    crossings = _wall_crossings(stock, pair_rows[quintic], pair_walls[quintic], steepness[quintic],
+    on_quintic = np.flatnonzero(quintic)  # indices: gathering by them is cheaper than by the mask
+    crossings = _wall_crossings(stock, pair_rows[on_quintic], pair_walls[on_quintic], steepness[on_quintic],
                                 lo, hi, x0, y0, dx, dy)
     reach = np.bincount(pair_rows, minlength=n)
     # Per pair: the first crossing (NaN without one), whether it is the only one, and the
     # line's side of the wall at lo and at hi.
     root = np.full(pair_rows.size, np.nan)
     single, at_lo, at_hi = (np.zeros(pair_rows.size, dtype=bool) for _ in range(3))
-    solved = [(np.flatnonzero(quintic), crossings)]
+    solved = [(on_quintic, crossings)]
     exact = np.flatnonzero(~quintic)
     if exact.size:
         solved.append((exact, _exact_crossings(stock, pair_rows[exact], pair_walls[exact], lo, hi, x0, y0, dx, dy)))
     for pairs, (found, once, lo_side, hi_side) in solved:
         root[pairs], single[pairs], at_lo[pairs], at_hi[pairs] = found[:, 0], once, lo_side, hi_side
     # Lines whose candidate walls are each crossed at most once go in closed form.
-    simple = (reach > 0) & (np.bincount(pair_rows[~single], minlength=n) == 0)
-    rank = np.arange(pair_rows.size) - np.searchsorted(pair_rows, pair_rows)  # pairs come grouped by row
+    simple = (reach > 0) & (np.bincount(pair_rows[np.flatnonzero(~single)], minlength=n) == 0)
+    rank = np.arange(pair_rows.size) - (np.cumsum(reach) - reach)[pair_rows]  # pairs come grouped by row
     lines = (x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of)
     result, found = {}, []
     # (One wall and several apart: a line with one wall needs no sorting.)
@@ -401,13 +412,14 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz, intervals=False):
         if rows.size == 0:
             continue
         renumber = np.cumsum(subset) - 1
-        pairs = subset[pair_rows]
+        in_subset = subset[pair_rows]
+        pairs = np.flatnonzero(in_subset)
         starts = (lo_surface[rows], lo_wall[rows]) if intervals else None
         if solve is _single_crossings:
             part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], rank[pairs], pair_walls[pairs] + 1,
                          root[pairs], at_lo[pairs], at_hi[pairs], starts=starts)
         else:
-            on = pairs[quintic]
+            on = np.flatnonzero(in_subset[on_quintic])
             part = solve(stock, *(v[rows] for v in lines), renumber[pair_rows[pairs]], pair_walls[pairs],
                          quintic[pairs], tuple(c[on] for c in crossings), starts=starts)
         if intervals:
@@ -440,11 +452,14 @@ def inside_intervals(stock: Staircase, origins, directions, length):
     The start of a piece at l = 0 is labelled flute_end; at the base or a y limit, stock_side.
     Returns an EdgeIntervals.
     """
+    keep_freed_memory()
     origins = np.asarray(origins, dtype=float).reshape(-1, 3)
     directions = np.asarray(directions, dtype=float).reshape(-1, 3)
     if origins.shape != directions.shape:
         raise ValueError(f"origins {origins.shape} and directions {directions.shape} must have the same shape (N, 3)")
-    return _solve_lines(stock, float(length), *origins.T, *directions.T, intervals=True)["intervals"]
+    # Each component contiguous (a column's stride slows every later step: see _edge_components).
+    return _solve_lines(stock, float(length), *np.ascontiguousarray(origins.T), *np.ascontiguousarray(directions.T),
+                        intervals=True)["intervals"]
 
 
 def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):

@@ -228,6 +228,11 @@ class Toolpath:
         if self.cc is not None:
             object.__setattr__(self, "cc", _array("cc", self.cc, (cl.shape[0], 3)))
 
+    def rows(self, index):
+        """The Toolpath of the CL points `index` (a slice or an int array), in that order (CC points too)."""
+        cc = None if self.cc is None else self.cc[index]
+        return Toolpath(self.cl[index], self.theta_a[index], self.theta_b[index], cc)
+
     @classmethod
     def from_axes(cls, cl, axes, cc=None):
         """Toolpath from tool-axis vectors (m, 3) of any nonzero finite length (normalised; k must be > 0).

@@ -12,6 +12,7 @@ from typing import Optional
 import numpy as np
 
 from .bands import _sparse_table
+from .bucket_search import BucketSearch
 from .polynomials import (bernstein_unit, bracketed_root, compose_linear, derivative, horner, monotone_root_unit,
                           product, proved_monotone_unit, real_roots_unit)
 from .rows import row_sum
@@ -261,6 +262,7 @@ class SplineTable:
         self.shift = max((e[-1] for e in ends), default=0.0) - self.base + 1.0
         self.keys = np.concatenate([e - self.base + k * self.shift for k, e in enumerate(ends)]) if ends else np.empty(0)
         self.knot_y = np.concatenate(ends) if ends else np.empty(0)
+        self.key_search = BucketSearch(self.keys)  # np.searchsorted into keys, without bisection
         # The curve's homogeneous point (X, Y, Ω) at every span end, in the order of keys: (3, E);
         # the spans' coefficients as columns: (3, p+1, S); Ω ≡ 1 unless some wall is rational.
         self.knot_points = np.array([np.concatenate([np.append(getattr(w, name)[:, 0], getattr(w, name)[-1].sum())
@@ -282,7 +284,7 @@ class SplineTable:
         "left") or at or below ("right") y[i], y clipped to the wall's ends; may be −1 or n."""
         y = np.clip(y, self.y_first[walls], self.y_last[walls])
         key = y - self.base + self.slot[walls] * self.shift
-        return np.searchsorted(self.keys, key, side=side) - 1 - self.first_end[walls]
+        return self.key_search.search(key, side) - 1 - self.first_end[walls]
 
     def span_parameter(self, walls, y):
         """Span (index into the stacked spans) and local u ∈ [0, 1] where wall walls[i] has
@@ -323,8 +325,8 @@ class SplineTable:
         y_lo, y_hi = np.minimum(y_a, y_b), np.maximum(y_a, y_b)
         y_first, y_last, first_end = self.y_first[walls], self.y_last[walls], self.first_end[walls]
         key = self.slot[walls] * self.shift - self.base  # + y: the key of y on wall walls[i]
-        first = np.searchsorted(self.keys, np.minimum(np.maximum(y_lo, y_first), y_last) + key, side="left") - 1
-        last = np.searchsorted(self.keys, np.minimum(np.maximum(y_hi, y_first), y_last) + key, side="right") - 1
+        first = self.key_search.search(np.minimum(np.maximum(y_lo, y_first), y_last) + key, "left") - 1
+        last = self.key_search.search(np.minimum(np.maximum(y_hi, y_first), y_last) + key, "right") - 1
         first = np.maximum(first - first_end, 0)
         last = np.minimum(last - first_end, self.n_spans[walls] - 1)
         meets = (y_hi >= y_first) & (y_lo <= y_last)
@@ -396,9 +398,10 @@ class SplineTable:
         h_hi = self._knot_side(knot_hi, x0, y0, dx, dy)
         cross = np.sign(h_lo) * np.sign(h_hi) <= 0.0
         r = np.flatnonzero(cross)
-        x0r, y0r, dxr, dyr = x0[r], y0[r], dx[r], dy[r]
-        a, f_lo, f_hi = self._bracketing_knots(x0r, y0r, dxr, dyr, knot_lo[r], knot_hi[r], h_lo[r], h_hi[r], key[r])
-        wr = walls[r]
+        every = r.size == cross.size  # the usual case: no gathering
+        x0r, y0r, dxr, dyr, knot_a, knot_b, f_a, f_b, key_r, wr = (
+            v if every else v[r] for v in (x0, y0, dx, dy, knot_lo, knot_hi, h_lo, h_hi, key, walls))
+        a, f_lo, f_hi = self._bracketing_knots(x0r, y0r, dxr, dyr, knot_a, knot_b, f_a, f_b, key_r)
         span = a - self.first_end[wr] + self.first_span[wr]
         if self.rational:
             sx, sy, sw = self.span_columns.take(span, axis=2)
@@ -412,8 +415,12 @@ class SplineTable:
         if self.rational:
             w = horner(sw.T, u)
             px, py = px / w, py / w
-        at = np.full(x0.size, np.nan)
-        at[r] = ((px - x0r) * dxr + (py - y0r) * dyr) / (dxr * dxr + dyr * dyr)
+        along = ((px - x0r) * dxr + (py - y0r) * dyr) / (dxr * dxr + dyr * dyr)
+        if every:
+            at = along
+        else:
+            at = np.full(x0.size, np.nan)
+            at[r] = along
         with np.errstate(invalid="ignore"):
             root = np.where((at >= lo) & (at <= hi), at, np.nan)
             ahead = h_lo * dy < 0.0
@@ -432,7 +439,7 @@ class SplineTable:
         """
         with np.errstate(divide="ignore", invalid="ignore"):
             guess = self.knot_y[a] + (self.knot_y[b] - self.knot_y[a]) * (f_a / (f_a - f_b))
-        probe = np.searchsorted(self.keys, guess + key, side="right") - 1
+        probe = self.key_search.search(guess + key, "right") - 1
         probe = np.minimum(np.maximum(probe, a), b - 1)  # a NaN guess (f_a = f_b = 0) searches to the end
         f_p = self._knot_side(probe, x0, y0, dx, dy)
         f_q = self._knot_side(probe + 1, x0, y0, dx, dy)

@@ -26,6 +26,7 @@ from ..formats.results_columns import chunk_columns
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
 from ..forces import joined_forces, pass_forces
 from ..parallel import CHUNK_INSTANTS, PassAssembly, map_chunks, toolpath_part, worker_count
+from .checked import checked_cls
 from .job import Job, cl_indices, load_job_stock, prepare
 
 
@@ -160,17 +161,18 @@ def no_engagement(job: Job):
 
 
 def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None, workers=1,
-               scheduler=None, sweep=None):
+               scheduler=None, sweep=None, cls=None):
     """(Validation of flute 1 or the first checked flute, HelixValidation or None) of the engine against
     OpenCASCADE booleans: straight edges by ``validation.validate`` (against the in-process stock when
     `sweep` = (SweptPieces, program rows) is given), a helical tool (or chosen `flutes`, 0-based) by
     ``validation.validate_helix``. validation.NoEngagementError when the tool never touches the stock.
-    workers, scheduler: where the boolean reference runs (``validation.reference_by_workers``)."""
+    workers, scheduler: where the boolean reference runs (``validation.reference_by_workers``). cls: the
+    CL points the boolean checks (None: all; straight edges only)."""
     from ..validation import validate, validate_helix
 
     if tool.helix == 0.0 and flutes is None:
         return validate(solid, staircase, tool, toolpath, settings, progress=progress, workers=workers,
-                        scheduler=scheduler, sweep=sweep), None
+                        scheduler=scheduler, sweep=sweep, cls=cls), None
     if not isinstance(staircase, Staircase):
         raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
     helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress,
@@ -462,12 +464,14 @@ class ValidateResult:
     written: list
 
 
-def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, scheduler=None, warn=print,
-             progress=None):
+def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=None, flute=None, workers=1,
+             scheduler=None, warn=print, progress=None):
     """Validate a job against OpenCASCADE booleans: the HTML report folder `report` and, with `fcstd`, an
     annotated FreeCAD document. cls: CL indices shown in detail ('0,22,40'), None: chosen. flute: check
-    only this flute (1-based) of a helical tool. workers: processes computing the boolean reference
-    (1 this one, 0 one per core); scheduler: a Dask scheduler's address to compute it on instead.
+    only this flute (1-based) of a helical tool. check ('0,27,80-100'), check_every (N): the CL points the
+    boolean checks besides those of cls (jobs.checked.checked_cls), default all. workers: processes
+    computing the boolean reference (1 this one, 0 one per core); scheduler: a Dask scheduler's address
+    to compute it on instead.
     Returns a ValidateResult."""
     from ..report.html import ReportJob, report_cls, write_report
     from ..report.staging import staged
@@ -480,11 +484,14 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
         warn(message)
     toolpath, tool, settings = prepared.toolpath, prepared.tool, prepared.settings
     chosen = cl_indices(cls, len(toolpath)) if cls else None
+    checking = checked_cls(check, check_every, chosen, len(toolpath))
     flutes = None
     if flute is not None:
         if not 1 <= flute <= tool.flutes:
             raise ParameterError("flute", f"must be 1..{tool.flutes} (the tool has {tool.flutes} flutes), got {flute}")
         flutes = [flute - 1]
+    if checking is not None and (tool.helix or flutes):
+        raise ParameterError("check", "is not available with helical edges (--helix, --flute) yet")
     in_process, model_note = _validated_sweep(job, prepared, flutes)
     if model_note:
         warn(f"{job.toolpath}: {model_note}; validating against the stock as given")
@@ -498,7 +505,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
     try:
         checked, helix = validation(solid, stock.model, tool, toolpath, settings, flutes=flutes,
                                     progress=progress, workers=workers, scheduler=scheduler,
-                                    sweep=in_process)
+                                    sweep=in_process, cls=checking)
     except NoEngagementError:
         raise no_engagement(job) from None
     engagement = checked.engagement
@@ -528,7 +535,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, flute=None, workers=1, s
             from ..cad.annotate import write_annotated
             name = re.sub(r"[^A-Za-z0-9_]", "_", os.path.splitext(os.path.basename(fcstd))[0])
             write_annotated(document, f"ABM_{name}", solid, engagement, toolpath, tool, cls=chosen,
-                            intersections=[cl for cl, _ in shown])
+                            intersections=[cl for cl, _ in shown], sweep=in_process, tops=views)
     written = [os.path.join(report, os.path.basename(page))] + ([fcstd] if fcstd else [])
     return ValidateResult(prepared, stock, checked, helix, forces, written)
 

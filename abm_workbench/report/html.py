@@ -89,10 +89,10 @@ def paper_model_test(description):
 
 def report_cls(validation, requested=None):
     """The CL points shown in detail, as (index, why): `requested`, or the deepest, shallowest and
-    middle engaged CL points and the one with the largest relative error."""
+    middle engaged CL points and the one with the largest relative error, among those the boolean checked."""
     if requested:
         return [(int(cl), "chosen") for cl in requested]
-    chosen = representative_cl(validation.comparison.depth_abm)
+    chosen = representative_cl(np.where(validation.checked, validation.comparison.depth_abm, np.nan))
     error = np.abs(validation.comparison.relative_error)
     if np.isfinite(error).any():
         worst = int(np.unravel_index(np.nanargmax(error), error.shape)[0])
@@ -196,6 +196,7 @@ def _job_table(validation, job):
         ("stock", f"{job.stock} ({job.walls}" + ("" if job.y_window is None else
                                                 f"; y window {job.y_window[0]:.6g}..{job.y_window[1]:.6g} mm") + ")"),
         ("toolpath", f"{job.path}: {m} CL points"),
+        ("CL points checked", _checked_words(validation.checked)),
         ("rotation angles", f"φ {settings.phi_start:g}..{settings.phi_end:g}° step {settings.phi_step:g}°: "
                             f"{p} angles, {m * p} instants"),
         ("tool", f"flat end mill D {job.tool.diameter:g} mm, {job.tool.flutes} flutes, flute length "
@@ -206,6 +207,17 @@ def _job_table(validation, job):
         ("stock model", job.stock_model),
     ]
     return _table(("", ""), rows, header=False)
+
+
+def _checked_words(checked):
+    """Which CL points the boolean checked ((m,) bool), in words: 'all 53', or 'k of m: 0, 27, 80–82'."""
+    m, chosen = checked.size, np.flatnonzero(checked)
+    if chosen.size == m:
+        return f"all {m} (the statistics are over every instant)"
+    runs = np.split(chosen, np.flatnonzero(np.diff(chosen) > 1) + 1)
+    spans = ", ".join(str(run[0]) if run.size == 1 else f"{run[0]}–{run[-1]}" for run in runs)
+    return (f"{chosen.size} of {m}: {spans} (the statistics, comparison.csv and segments.csv are over these; "
+            f"the engine computed all {m})")
 
 
 def _inprocess_section(validation, job, cls, views):
@@ -339,13 +351,15 @@ def _force_section(forces, cls, png):
 def _files():
     """The CSV files beside the page."""
     rows = [
-        ("comparison.csv", "one row per instant: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, "
+        ("comparison.csv", "one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, "
+                           "error, error_kind, "
                            "LEP and UEP of both, pieces of both, segment, uep_surface (against the in-process "
                            "stock also l_initial: ABM in the stock as given)"),
         ("segments.csv", "error per CL point and engagement segment"),
         ("surfaces.csv", "error per kind of UEP surface"),
-        ("depth.csv", "depth of cut per CL point, both methods (against the in-process stock also changed: "
-                      "whether earlier moves changed the CL point, and swept: the swept pieces the boolean sectioned)"),
+        ("depth.csv", "depth of cut per CL point, both methods, and checked (1 where the boolean checked it; "
+                      "against the in-process stock also changed: whether earlier moves changed the "
+                      "CL point, and swept: the swept pieces the boolean sectioned)"),
     ]
     body = "".join(f"<tr><td><a href='{name}'><code>{name}</code></a></td><td>{_e(text)}</td></tr>"
                    for name, text in rows)

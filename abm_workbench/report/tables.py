@@ -6,7 +6,11 @@
   uep_abm, uep_ref (along the edge), pieces_abm, pieces_ref, segment, uep_surface (ABM's).
 - ``segments.csv``: one row per CL point and engagement segment (validation.segment_summary).
 - ``surfaces.csv``: one row per kind of UEP surface (validation.surface_summary).
-- ``depth.csv``: one row per CL point: cl, cl_x, cl_y, cl_z, depth_abm, depth_ref, difference.
+- ``depth.csv``: one row per CL point: cl, cl_x, cl_y, cl_z, depth_abm, depth_ref, difference,
+  checked (1: the boolean checked the CL point, 0: not, its depth_ref empty).
+
+When the boolean checked only some CL points (validate's --check, --check-every), comparison.csv
+and segments.csv hold those CL points only, and the statistics are over them.
 
 Against the in-process stock (Validation.in_process), comparison.csv also has l_initial (ABM's
 length in the stock as given) and depth.csv changed (earlier moves changed the CL point: 1/0)
@@ -29,7 +33,7 @@ STATISTICS_COLUMNS = (
 )
 SEGMENT_COLUMNS = ("cl", "segment", "phi_start", "phi_end", "surface", "section", "wall", *STATISTICS_COLUMNS)
 SURFACE_COLUMNS = ("surface", *STATISTICS_COLUMNS)
-DEPTH_COLUMNS = ("cl", "cl_x", "cl_y", "cl_z", "depth_abm", "depth_ref", "difference")
+DEPTH_COLUMNS = ("cl", "cl_x", "cl_y", "cl_z", "depth_abm", "depth_ref", "difference", "checked")
 #: The columns added against the in-process stock.
 INPROCESS_COMPARISON_COLUMNS = ("l_initial",)
 INPROCESS_DEPTH_COLUMNS = ("changed", "swept")
@@ -52,7 +56,7 @@ def report_tables(validation, toolpath):
     depth = {
         "cl": np.arange(m), "cl_x": toolpath.cl[:, 0], "cl_y": toolpath.cl[:, 1], "cl_z": toolpath.cl[:, 2],
         "depth_abm": comparison.depth_abm, "depth_ref": comparison.depth_ref,
-        "difference": comparison.depth_abm - comparison.depth_ref,
+        "difference": comparison.depth_abm - comparison.depth_ref, "checked": validation.checked.astype(int),
     }
     comparison_names, depth_names = COMPARISON_COLUMNS, DEPTH_COLUMNS
     check = validation.in_process
@@ -61,8 +65,9 @@ def report_tables(validation, toolpath):
         depth.update(changed=check.changed.astype(int), swept=check.swept)
         comparison_names += INPROCESS_COMPARISON_COLUMNS
         depth_names += INPROCESS_DEPTH_COLUMNS
+    rows = np.ravel(comparison.checked)
     return {
-        "comparison.csv": csv_text(comparison_names, [np.ravel(columns[c]) for c in comparison_names]),
+        "comparison.csv": csv_text(comparison_names, [np.ravel(columns[c])[rows] for c in comparison_names]),
         "segments.csv": records_text(SEGMENT_COLUMNS, segment_summary(engagement, comparison)),
         "surfaces.csv": records_text(SURFACE_COLUMNS, surface_summary(engagement, comparison)),
         "depth.csv": csv_text(depth_names, [depth[c] for c in depth_names]),
