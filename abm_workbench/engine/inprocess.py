@@ -30,7 +30,7 @@ _MACHINED = SURFACES.index("machined")
 #: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
 _OPPOSITE_EPS = 1e-12
 #: Spans per chain at most.
-_CHAIN = 4
+_CHAIN = 8
 #: Sub-steps per span at most (a turning move is cut into more spans rather than more sub-steps per span).
 _SPAN_PIECES = 8
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
