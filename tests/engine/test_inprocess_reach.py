@@ -5,8 +5,9 @@ line's CL point in closed form and subtracts all of them: what the engine's boun
 capsules, chains, spans, sure-miss tests, narrowed envelopes) leave out must change nothing.
 The closed form itself is checked against the brute-force sampler in test_inprocess. The
 angles are 1° apart, as in a real run, so that the groups of neighbouring lines are those a
-run makes. A bound made 1 mm too tight (a group capsule's radius, tried by hand) makes the
-curving, adjacent, recrossing and five-axis cases fail.
+run makes. A bound made 1 mm too tight, tried by hand: a group capsule's radius makes the
+curving, adjacent, recrossing and five-axis cases fail; a chain's radius (a level these small
+programs reach less often) makes the recrossing case fail.
 """
 
 import numpy as np
