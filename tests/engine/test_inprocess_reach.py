@@ -6,8 +6,8 @@ capsules, chains, spans, sure-miss tests, narrowed envelopes) leave out must cha
 The closed form itself is checked against the brute-force sampler in test_inprocess. The
 angles are 1° apart, as in a real run, so that the groups of neighbouring lines are those a
 run makes. A bound made 1 mm too tight, tried by hand: a group capsule's radius makes the
-curving, adjacent, recrossing and five-axis cases fail; a chain's radius (a level these small
-programs reach less often) makes the recrossing case fail.
+curving, adjacent, recrossing, five-axis and dense cases fail; a chain's radius (the per-line
+chain test, which only many nearby moves reach) makes the dense case fail.
 """
 
 import numpy as np
@@ -106,6 +106,19 @@ def test_five_axis_moves_against_full():
     rows = program.add_pass(straight(12, 48, 4.0, 2.0, n), 5.0, 12.0,
                             np.stack([np.zeros(n), np.sin(tilt), np.cos(tilt)], axis=1))
     assert against_full(program, rows[1:16:2]).any()
+
+
+def test_dense_curved_passes_against_full():
+    """Two curved passes 0.25 mm between CL points, 4 mm apart, the first with a tilted tool:
+    many lines meet many chains, so the per-line chain test is used."""
+    n = 145
+    angle = np.radians(np.linspace(-35.0, 35.0, n))
+    program = Program()
+    tilt = np.radians(8.0)
+    for centre_y, z, axes in ((-20.0, 3.0, np.tile([0.0, np.sin(tilt), np.cos(tilt)], (n, 1))), (-24.0, 2.0, None)):
+        arc = np.stack([30.0 + 30.0 * np.sin(angle), centre_y + 30.0 * np.cos(angle), np.full(n, z)], axis=1)
+        rows = program.add_pass(arc, 5.0, 12.0, axes)
+    assert against_full(program, rows[[40, 60, 100]], fixed=True).all()
 
 
 def test_untouched_instants_keep_the_initial_result():
