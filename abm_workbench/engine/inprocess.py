@@ -401,6 +401,8 @@ def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, or
     directions = _float_array("directions", directions, (n, 3), copy=False)
     rows, enter, leave = _removals(stock_intervals, pieces, program_index, origins, directions, p)
     result = subtract(stock_intervals, rows, enter, leave)
+    if result is stock_intervals:  # no removal: nothing changed
+        return result, np.zeros(m, dtype=bool)
     lost = result.length != stock_intervals.length
     return result, lost.reshape(m, p).any(axis=1)
 
@@ -579,6 +581,8 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
+    if seg.size == 0:
+        return np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0)
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving.
     slack, h = pieces.span_slack[span], pieces.span_height[span]
