@@ -284,8 +284,8 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     ch0, ch1 = s0[first], s1[last]
     piece_chain = chain[piece_span]
     d = ch1[piece_chain] - ch0[piece_chain]
-    zero = np.zeros_like(d)
-    off = np.maximum(_segment_distance(c0, zero, ch0[piece_chain], d), _segment_distance(c1, zero, ch0[piece_chain], d))
+    start = ch0[piece_chain]
+    off = np.maximum(_point_distance(c0 - start, d), _point_distance(c1 - start, d))
     # Pieces come span by span and spans chain by chain, each chain with at least one piece.
     piece_first = np.flatnonzero(np.r_[True, piece_chain[1:] != piece_chain[:-1]]) if n else np.zeros(0, np.intp)
     slack = np.maximum.reduceat(off, piece_first) if n else np.zeros(0)
@@ -321,7 +321,8 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
     slack = np.broadcast_to(slack, aa.shape)
     if lean is not None:
-        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0, height)
+        reach = np.minimum(np.maximum(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0),
+                           height)
         slack = slack + lean * np.hypot(radius, reach)
     below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack + grain
     above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack - grain
@@ -358,6 +359,19 @@ def _inside(x, c0, c1, axis, radius, low, high):
     return np.maximum(np.maximum(lo, r_lo), 0.0) <= np.minimum(np.minimum(hi, r_hi), 1.0)
 
 
+def _unit(x):
+    """x (K,) clamped to 0 … 1 (np.clip's overhead per call is several times this one's)."""
+    return np.minimum(np.maximum(x, 0.0), 1.0)
+
+
+def _point_distance(q, d):
+    """(K,) distance from points q to the segments t·d, t ∈ [0, 1] ((K, 3) each, mm)."""
+    dd = np.einsum("ij,ij->i", d, d)
+    t = _unit(np.einsum("ij,ij->i", q, d) / np.where(dd > 0.0, dd, 1.0))
+    gap = q - t[:, None] * d
+    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+
+
 def _segment_distance(p1, d1, p2, d2):
     """(K,) shortest distance between the segments p1 + s·d1 and p2 + t·d2, s, t ∈ [0, 1] ((K, 3) each)."""
     r = p1 - p2
@@ -365,10 +379,10 @@ def _segment_distance(p1, d1, p2, d2):
     b, c, f = np.einsum("ij,ij->i", d1, d2), np.einsum("ij,ij->i", d1, r), np.einsum("ij,ij->i", d2, r)
     safe_a, safe_e = np.where(a > 0.0, a, 1.0), np.where(e > 0.0, e, 1.0)
     denom = a * e - b * b
-    s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / np.where(denom > 0.0, denom, 1.0), 0.0, 1.0), 0.0)
+    s = np.where(denom > 1e-12 * a * e, _unit((b * f - c * e) / np.where(denom > 0.0, denom, 1.0)), 0.0)
     t = (b * s + f) / safe_e
-    s = np.where(t < 0.0, np.clip(-c / safe_a, 0.0, 1.0), np.where(t > 1.0, np.clip((b - c) / safe_a, 0.0, 1.0), s))
-    t = np.clip(t, 0.0, 1.0)
+    s = np.where(t < 0.0, _unit(-c / safe_a), np.where(t > 1.0, _unit((b - c) / safe_a), s))
+    t = _unit(t)
     gap = r + s[:, None] * d1 - t[:, None] * d2
     return np.sqrt(np.einsum("ij,ij->i", gap, gap))
 
@@ -701,10 +715,7 @@ def _across(x, c0, c1, axis):
     q, d = x - c0, c1 - c0
     q = q - np.einsum("ij,ij->i", q, axis)[:, None] * axis
     d = d - np.einsum("ij,ij->i", d, axis)[:, None] * axis
-    dd = np.einsum("ij,ij->i", d, d)
-    t = np.clip(np.einsum("ij,ij->i", q, d) / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
-    gap = q - t[:, None] * d
-    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+    return _point_distance(q, d)
 
 
 def _narrow(envelope, seg, enter, leave):
