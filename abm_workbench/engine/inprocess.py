@@ -57,9 +57,10 @@ def _float_array(name, value, shape, copy=True):
     array = np.array(value, dtype=float, copy=copy)
     if array.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, array.shape)):
         raise ValueError(f"{name} must have shape {shape}, got {array.shape}")
-    bad = np.argwhere(~np.isfinite(array))
-    if bad.size:
-        raise ValueError(f"{name}{list(int(i) for i in bad[0])} is not a finite number")
+    finite = np.isfinite(array)
+    if not finite.all():
+        bad = np.argwhere(~finite)[0]
+        raise ValueError(f"{name}{list(int(i) for i in bad)} is not a finite number")
     return array
 
 

@@ -11,6 +11,7 @@ chain test, which only many nearby moves reach) makes the dense case fail.
 """
 
 import numpy as np
+import pytest
 
 from abm_workbench.engine import CutSettings, Tool, Toolpath
 from abm_workbench.engine.engagement import inside_intervals
@@ -189,3 +190,14 @@ def test_rapids_only_remove_nothing():
     stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
     got, changed = inprocess_intervals(stock_iv, moves, np.array([1]), origins, directions, PHI.size)
     assert stock_iv.rows.size and not changed.any() and np.array_equal(got.length, stock_iv.length)
+
+
+def test_a_non_finite_edge_line_is_named():
+    """A NaN in the edge lines is refused with the item that holds it, before any work."""
+    cl = np.array([[5.0, 0.0, 2.0], [45.0, 0.0, 2.0]])
+    moves = ProgramMoves(cl, np.tile([0.0, 0.0, 1.0], (2, 1)), [False, True], [5.0, 5.0], [12.0, 12.0], [1, 2])
+    origins, directions = edge_lines({"cl": cl, "axis": moves.axis, "radius": moves.radius}, [1], PHI)
+    stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
+    origins[7, 2] = np.nan
+    with pytest.raises(ValueError, match=r"origins\[7, 2\] is not a finite number"):
+        inprocess_intervals(stock_iv, moves, np.array([1]), origins, directions, PHI.size)
