@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .engagement import SURFACES
+from .inprocess_reach import capsule_spheres, group_capsules
 from .intervals import EdgeIntervals
 from .swept import line_hull_interval
 from .tolerances import LENGTH_EPS
@@ -29,11 +30,15 @@ _MACHINED = SURFACES.index("machined")
 #: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
 _OPPOSITE_EPS = 1e-12
 #: Spans per chain at most.
-_CHAIN = 16
+_CHAIN = 8
+#: Sub-steps per span at most (a turning move is cut into more spans rather than more sub-steps per span).
+_SPAN_PIECES = 8
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
 _PAIR_BATCH = 1 << 16
-#: Runs of angles per CL point, each with its own bounding sphere for the spatial index.
-_GROUPS = 12
+#: Runs of angles per CL point, each bounded by its own capsule (inprocess_reach.group_capsules).
+_GROUPS = 18
+#: Largest key range for which _distinct marks keys in a bool array rather than sorting them.
+_MARK_LIMIT = 1 << 24
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
 #: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
@@ -46,14 +51,16 @@ _PROBE_GAIN = 0.8
 _PROBE_PAIRS = 8
 
 
-def _float_array(name, value, shape):
-    """A finite float array of `shape` (None matches any length); ValueError naming `name`."""
-    array = np.array(value, dtype=float)
+def _float_array(name, value, shape, copy=True):
+    """A finite float array of `shape` (None matches any length), a copy unless `copy` is False;
+    ValueError naming `name`."""
+    array = np.array(value, dtype=float, copy=copy)
     if array.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, array.shape)):
         raise ValueError(f"{name} must have shape {shape}, got {array.shape}")
-    bad = np.argwhere(~np.isfinite(array))
-    if bad.size:
-        raise ValueError(f"{name}{list(int(i) for i in bad[0])} is not a finite number")
+    finite = np.isfinite(array)
+    if not finite.all():
+        bad = np.argwhere(~finite)[0]
+        raise ValueError(f"{name}{list(int(i) for i in bad)} is not a finite number")
     return array
 
 
@@ -210,8 +217,9 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     distance from the bottom centre to a point of the cutting part, √(r² + H²)) at equal angles
     of the interpolated axis; sub-step i keeps the axis at its middle angle and runs between the
     interpolated positions at its ends. Moves are also cut into spans no longer than about ρ
-    (exact: the hulls of consecutive parts of a straight move make up the hull of the move),
-    each span a whole number of sub-steps, so that bounding volumes stay small.
+    (exact: the hulls of consecutive parts of a straight move make up the hull of the move)
+    and of at most _SPAN_PIECES sub-steps, each span a whole number of sub-steps, so that
+    bounding volumes stay small and a span that comes near a line hands it few pieces.
     """
     tolerance = float(tolerance)
     if not tolerance > 0.0:
@@ -222,8 +230,10 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     radius, height = moves.radius[j], moves.flute_length[j]
     rho = np.hypot(radius, height)
     turn = np.arccos(np.clip(np.einsum("ij,ij->i", w0, w1), -1.0, 1.0))
-    spans = np.maximum(np.ceil(np.linalg.norm(p1 - p0, axis=1) / rho), 1).astype(np.intp)
-    per_span = np.maximum(np.ceil(np.ceil(turn * rho / tolerance) / spans), 1).astype(np.intp)
+    steps = np.ceil(turn * rho / tolerance)
+    spans = np.maximum(np.maximum(np.ceil(np.linalg.norm(p1 - p0, axis=1) / rho), np.ceil(steps / _SPAN_PIECES)),
+                       1).astype(np.intp)
+    per_span = np.maximum(np.ceil(steps / spans), 1).astype(np.intp)
     # Spans: equal turning steps of their move.
     span_of, span_index = _csr(spans)
     s0, s1, s_axis = _steps(p0[span_of], p1[span_of], w0[span_of], w1[span_of], turn[span_of], span_index,
@@ -275,11 +285,12 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     ch0, ch1 = s0[first], s1[last]
     piece_chain = chain[piece_span]
     d = ch1[piece_chain] - ch0[piece_chain]
-    zero = np.zeros_like(d)
-    off = np.maximum(_segment_distance(c0, zero, ch0[piece_chain], d), _segment_distance(c1, zero, ch0[piece_chain], d))
-    slack, lean = np.zeros(first.size), np.zeros(first.size)
-    np.maximum.at(slack, piece_chain, off)
-    np.maximum.at(lean, piece_chain, np.linalg.norm(axis - chain_axis[piece_chain], axis=1))
+    start = ch0[piece_chain]
+    off = np.maximum(_point_distance(c0 - start, d), _point_distance(c1 - start, d))
+    # Pieces come span by span and spans chain by chain, each chain with at least one piece.
+    piece_first = np.flatnonzero(np.r_[True, piece_chain[1:] != piece_chain[:-1]]) if n else np.zeros(0, np.intp)
+    slack = np.maximum.reduceat(off, piece_first) if n else np.zeros(0)
+    lean = np.maximum.reduceat(np.linalg.norm(axis - chain_axis[piece_chain], axis=1), piece_first) if n else np.zeros(0)
     r, h = radius[first], height[first]
     slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
     ball_chain, ball_index = _csr(slices)
@@ -311,7 +322,8 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
     slack = np.broadcast_to(slack, aa.shape)
     if lean is not None:
-        reach = np.clip(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0, height)
+        reach = np.minimum(np.maximum(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0),
+                           height)
         slack = slack + lean * np.hypot(radius, reach)
     below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack + grain
     above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack - grain
@@ -348,6 +360,19 @@ def _inside(x, c0, c1, axis, radius, low, high):
     return np.maximum(np.maximum(lo, r_lo), 0.0) <= np.minimum(np.minimum(hi, r_hi), 1.0)
 
 
+def _unit(x):
+    """x (K,) clamped to 0 … 1 (np.clip's overhead per call is several times this one's)."""
+    return np.minimum(np.maximum(x, 0.0), 1.0)
+
+
+def _point_distance(q, d):
+    """(K,) distance from points q to the segments t·d, t ∈ [0, 1] ((K, 3) each, mm)."""
+    dd = np.einsum("ij,ij->i", d, d)
+    t = _unit(np.einsum("ij,ij->i", q, d) / np.where(dd > 0.0, dd, 1.0))
+    gap = q - t[:, None] * d
+    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+
+
 def _segment_distance(p1, d1, p2, d2):
     """(K,) shortest distance between the segments p1 + s·d1 and p2 + t·d2, s, t ∈ [0, 1] ((K, 3) each)."""
     r = p1 - p2
@@ -355,10 +380,10 @@ def _segment_distance(p1, d1, p2, d2):
     b, c, f = np.einsum("ij,ij->i", d1, d2), np.einsum("ij,ij->i", d1, r), np.einsum("ij,ij->i", d2, r)
     safe_a, safe_e = np.where(a > 0.0, a, 1.0), np.where(e > 0.0, e, 1.0)
     denom = a * e - b * b
-    s = np.where(denom > 1e-12 * a * e, np.clip((b * f - c * e) / np.where(denom > 0.0, denom, 1.0), 0.0, 1.0), 0.0)
+    s = np.where(denom > 1e-12 * a * e, _unit((b * f - c * e) / np.where(denom > 0.0, denom, 1.0)), 0.0)
     t = (b * s + f) / safe_e
-    s = np.where(t < 0.0, np.clip(-c / safe_a, 0.0, 1.0), np.where(t > 1.0, np.clip((b - c) / safe_a, 0.0, 1.0), s))
-    t = np.clip(t, 0.0, 1.0)
+    s = np.where(t < 0.0, _unit(-c / safe_a), np.where(t > 1.0, _unit((b - c) / safe_a), s))
+    t = _unit(t)
     gap = r + s[:, None] * d1 - t[:, None] * d2
     return np.sqrt(np.einsum("ij,ij->i", gap, gap))
 
@@ -387,10 +412,12 @@ def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, or
     program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
     if program_index.shape != (m,):
         raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
-    origins = _float_array("origins", origins, (n, 3))
-    directions = _float_array("directions", directions, (n, 3))
+    origins = _float_array("origins", origins, (n, 3), copy=False)
+    directions = _float_array("directions", directions, (n, 3), copy=False)
     rows, enter, leave = _removals(stock_intervals, pieces, program_index, origins, directions, p)
     result = subtract(stock_intervals, rows, enter, leave)
+    if result is stock_intervals:  # no removal: nothing changed
+        return result, np.zeros(m, dtype=bool)
     lost = result.length != stock_intervals.length
     return result, lost.reshape(m, p).any(axis=1)
 
@@ -411,17 +438,19 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     line_origins, line_directions = origins[line], directions[line]
     # Lines in groups: a CL point's angles in _GROUPS runs, all with the tool axis of that
     # point as direction.
+    # The lines are in row order, so their groups are too: each group is a run of lines.
     cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
-    present = np.unique(cl)
-    group = np.searchsorted(present, cl)
-    members = np.argsort(group, kind="stable")
-    starts = np.searchsorted(group[members], np.arange(present.size))
-    sizes = np.bincount(group, minlength=present.size)
+    starts = np.flatnonzero(np.r_[True, cl[1:] != cl[:-1]])
+    present = cl[starts]
+    group = np.repeat(np.arange(starts.size), np.diff(np.r_[starts, cl.size]))
+    members = np.arange(line.size)
+    sizes = np.diff(np.r_[starts, cl.size])
     before = program_index[line // p] - 1
     group_before = program_index[present // _GROUPS] - 1
-    centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
-    # (group, chain) pairs: a group's sphere meets a ball of the chain, the chain's first move
-    # ends before the CL point, and the sphere is not surely apart from the chain.
+    capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
+    centre, radius = capsule_spheres(*capsules)
+    # (group, chain) pairs: a group's bounding sphere meets a ball of the chain, the chain's first move
+    # ends before the CL point, and the group's capsule is not surely apart from the chain.
     from scipy.spatial import cKDTree
 
     near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
@@ -429,10 +458,10 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
     keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
     chains = pieces.chain_first.size
-    pair = np.unique(g[keep] * chains + pieces.ball_chain[ball[keep]])
+    pair = _distinct(g[keep] * chains + pieces.ball_chain[ball[keep]], present.size * chains)
     g, k = pair // chains, pair % chains
     keep = pieces.chain_move[k] <= group_before[g]
-    g, k = _near_groups(g[keep], k[keep], centre, radius, pieces)
+    g, k = _near_groups(g[keep], k[keep], capsules, pieces)
     lines = (members, starts, sizes, envelope, line_origins, line_directions, before, pieces)
     if (sizes[g] * pieces.chain_count[k]).sum() <= _PROBE_PAIRS * line.size:
         # Few (line, span) pairs: straight to (group, span) pairs, no test of chains per line.
@@ -440,12 +469,13 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         g, span = g[owner], pieces.chain_first[k][owner] + rank
         keep = pieces.span_move[span] <= group_before[g]
         g, span = g[keep], span[keep]
-        keep = ~_apart(centre[g], centre[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                       pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + radius[g])
-        found = [_expanded(g[keep], span[keep], *lines, chained=False)]
+        a, b, thick = capsules
+        keep = ~_apart(a[g], b[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                       pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + thick[g])
+        found = [empty, _expanded(g[keep], span[keep], *lines, chained=False)]
         g = k = np.zeros(0, dtype=np.intp)
     else:
-        found = []
+        found = [empty]
     # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
     # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
     # meet far fewer chains.
@@ -453,16 +483,28 @@ def _removals(stock, pieces, program_index, origins, directions, p):
         remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
         found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
                                *lines, chained=False))
-        centre, radius = _group_spheres(group, present.size, envelope, line_origins, line_directions)
-        g, k = _near_groups(g, k, centre, radius, pieces)
+        capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
+        centre, radius = capsule_spheres(*capsules)
+        g, k = _near_groups(g, k, capsules, pieces)
         if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
             break
-    found.append(_expanded(g, k, *lines, chained=True))
+    if g.size:
+        found.append(_expanded(g, k, *lines, chained=True))
     dead = envelope[0] >= envelope[1]
     seg, enter, leave = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]
     return (np.concatenate([line[dead], line[seg[alive]]]), np.concatenate([lo[dead], enter[alive]]),
             np.concatenate([hi[dead], leave[alive]]))
+
+
+def _distinct(keys, bound):
+    """The distinct values of keys (K,) int in 0 … bound − 1, sorted: by marking them when
+    bound is small enough (a pass over a bool array instead of a sort), else np.unique."""
+    if bound > _MARK_LIMIT:
+        return np.unique(keys)
+    seen = np.zeros(bound, dtype=bool)
+    seen[keys] = True
+    return np.flatnonzero(seen)
 
 
 def _probe(g, k, centre, radius, direction, group_before, pieces):
@@ -490,27 +532,12 @@ def _probe(g, k, centre, radius, direction, group_before, pieces):
     return g[pick], span[pick]
 
 
-def _group_spheres(group, n, envelope, origins, directions):
-    """Bounding spheres (centre (n, 3), radius (n,)) of the envelopes of each group's lines
-    that still hold material (group (L,) of each line, non-decreasing); radius −inf for a
-    group without any."""
-    alive = np.flatnonzero(envelope[0] < envelope[1])
-    a, b = _ends(alive, envelope, origins, directions)
-    low, high = np.zeros((n, 3)), np.zeros((n, 3))
-    owner = group[alive]  # non-decreasing: the lines are in row order
-    first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]]) if owner.size else np.zeros(0, dtype=np.intp)
-    empty = np.ones(n, dtype=bool)
-    empty[owner[first]] = False
-    if first.size:
-        low[owner[first]] = np.minimum.reduceat(np.minimum(a, b), first, axis=0)
-        high[owner[first]] = np.maximum.reduceat(np.maximum(a, b), first, axis=0)
-    return 0.5 * (low + high), np.where(empty, -np.inf, 0.5 * np.linalg.norm(high - low, axis=1))
-
-
-def _near_groups(g, k, centre, radius, pieces):
-    """The pairs (group g, chain k) whose group sphere (centre, radius) is not surely apart from the chain."""
-    keep = ~_apart(centre[g], centre[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
-                   pieces.chain_radius[k], pieces.chain_height[k], pieces.chain_slack[k] + radius[g],
+def _near_groups(g, k, capsules, pieces):
+    """The pairs (group g, chain k) whose group capsule (a, b, radius: inprocess_reach.group_capsules)
+    is not surely apart from the chain."""
+    a, b, thick = capsules
+    keep = ~_apart(a[g], b[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
+                   pieces.chain_radius[k], pieces.chain_height[k], pieces.chain_slack[k] + thick[g],
                    pieces.chain_lean[k])
     return g[keep], k[keep]
 
@@ -569,6 +596,8 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
+    if seg.size == 0:
+        return np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0)
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving.
     slack, h = pieces.span_slack[span], pieces.span_height[span]
@@ -687,10 +716,7 @@ def _across(x, c0, c1, axis):
     q, d = x - c0, c1 - c0
     q = q - np.einsum("ij,ij->i", q, axis)[:, None] * axis
     d = d - np.einsum("ij,ij->i", d, axis)[:, None] * axis
-    dd = np.einsum("ij,ij->i", d, d)
-    t = np.clip(np.einsum("ij,ij->i", q, d) / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
-    gap = q - t[:, None] * d
-    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+    return _point_distance(q, d)
 
 
 def _narrow(envelope, seg, enter, leave):
