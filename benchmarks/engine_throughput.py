@@ -106,14 +106,17 @@ STEPS = (("edge lines", "edge_lines"), ("clip to the bounding box", "_clip"),
          ("  of which Table 1 cases", "_table1_case"), ("results (area, depth, segments)", "finished_engagement"))
 
 
-def step_times(stock, tool, path, settings, repeats):
-    """Mean CPU seconds per engage() call of each STEPS function and of the whole call, over
-    `repeats` calls: {name: seconds}, "engage" the whole. The functions are wrapped with a
-    timer for the measurement only."""
+def step_times(stocks, tool, path, settings, repeats):
+    """Mean CPU seconds per engage() call of each STEPS function and of the whole call, for each
+    of `stocks`, over `repeats` calls of each: a list of {name: seconds}, "engage" the whole. The
+    functions are wrapped with a timer for the measurement only. The stocks take turns call by
+    call, after ten calls of each: a process's first engine calls are slower (the allocator and
+    numpy's caches settling), which would otherwise bias whichever stock runs first."""
     from abm_workbench.engine import engagement
 
-    spent = {name: 0.0 for _, name in STEPS}
+    spent = [{name: 0.0 for _, name in STEPS + (("", "engage"),)} for _ in stocks]
     originals = {name: getattr(engagement, name) for _, name in STEPS}
+    current = [None]
 
     def timed(name):
         def call(*args, **kwargs):
@@ -121,21 +124,25 @@ def step_times(stock, tool, path, settings, repeats):
             try:
                 return originals[name](*args, **kwargs)
             finally:
-                spent[name] += time.process_time() - start
+                current[0][name] += time.process_time() - start
         return call
 
-    engage(stock, tool, path, settings)
+    for _ in range(10):
+        for stock in stocks:
+            engage(stock, tool, path, settings)
     for name in originals:
         setattr(engagement, name, timed(name))
     try:
-        start = time.process_time()
         for _ in range(repeats):
-            engage(stock, tool, path, settings)
-        whole = time.process_time() - start
+            for stock, times in zip(stocks, spent):
+                current[0] = times
+                start = time.process_time()
+                engage(stock, tool, path, settings)
+                times["engage"] += time.process_time() - start
     finally:
         for name, function in originals.items():
             setattr(engagement, name, function)
-    return {"engage": whole / repeats, **{name: value / repeats for name, value in spent.items()}}
+    return [{name: value / repeats for name, value in times.items()} for times in spent]
 
 
 def steps_table(repeats):
@@ -144,7 +151,7 @@ def steps_table(repeats):
     for number in (1, 2):
         folder = MODEL.replace("model_test_1", f"model_test_{number}")
         _, tool, path, settings = load_model(folder)
-        exact, quintic = (step_times(stock, tool, path, settings, repeats) for stock in step_stocks(folder, path, tool))
+        exact, quintic = step_times(step_stocks(folder, path, tool), tool, path, settings, repeats)
         print(f"\nmodel test {number}, 53 CL x {settings.phi.size} phi: mean CPU ms per pass over {repeats} passes")
         print(f"{'step':<34} {'exact':>7} {'quintic':>8}")
         for label, name in STEPS + (("whole engage call", "engage"),):
