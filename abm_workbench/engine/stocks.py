@@ -90,17 +90,10 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
 def in_process_lengths(stock, tool, toolpath, phi_deg, pieces, program_index):
     """(m, p) length of cut (mm) against the in-process stock at angles phi_deg (p,) (any, e.g.
     another flute's φ + 360·k/Z) of the m CL points of `toolpath`; pieces and program_index as
-    for engage_in_process."""
-    _, remaining, _, _, _ = _in_process(stock, tool, toolpath, phi_deg, pieces, program_index)
-    return remaining.length.reshape(len(toolpath), -1)
-
-
-def _in_process(stock, tool, toolpath, phi_deg, pieces, program_index):
-    """The edge lines at phi_deg (p,) of every CL point (origins, directions (m·p, 3)) and their
-    EdgeIntervals in the stock and in the in-process stock, with changed (m,)."""
+    for engage_in_process. Every edge line's intervals in the stock, less the removals."""
     phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     base, direction = edge_lines(toolpath, tool, phi)
     origins, directions = base.reshape(-1, 3), np.repeat(direction, phi.size, axis=0)
-    initial = stock_intervals(stock, origins, directions, tool.flute_length)
-    remaining, changed = inprocess_intervals(initial, pieces, program_index, origins, directions, phi.size)
-    return initial, remaining, changed, origins, directions
+    inside = stock_intervals(stock, origins, directions, tool.flute_length)
+    remaining, _ = inprocess_intervals(inside, pieces, program_index, origins, directions, phi.size)
+    return remaining.length.reshape(len(toolpath), -1)
