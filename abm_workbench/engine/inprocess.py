@@ -424,44 +424,40 @@ def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, or
 
 def _removals(stock, pieces, program_index, origins, directions, p):
     """Intervals (rows, enter, leave) of the lines inside the pieces that precede their CL point."""
-    empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
-    if stock.rows.size == 0 or pieces.move.size == 0:
-        return empty
-    # Per line with stock material: the range lo … hi from its first start to its last end,
-    # and the envelope of its remaining material, which narrows as removals are found
-    # (lo ≥ hi: nothing remains, the line is removed whole).
+    if stock.rows.size == 0:
+        return np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0)
+    # Per line with stock material: the range lo … hi from its first start to its last end.
     first = np.flatnonzero(np.r_[True, stock.rows[1:] != stock.rows[:-1]])
     last = np.r_[first[1:], stock.rows.size] - 1
-    line = stock.rows[first]
-    lo, hi = stock.start[first], stock.end[last]
+    return removal_intervals(pieces, program_index, stock.rows[first], stock.start[first], stock.end[last], origins,
+                             directions, p)
+
+
+def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins, directions, p):
+    """Removal intervals (rows (R,) int, enter, leave (R,) mm) of the edge lines `line` inside the
+    pieces of the cutting moves that end before their CL point.
+
+    line: (L,) int ascending, the lines holding material (row i·p + k: CL point i, angle k),
+    all of it within lo … hi (L,) mm along the line; origins, directions: (N, 3) every line at
+    l = 0, unit; program_index: (m,) the program row of each CL point. Only removals that overlap
+    lo … hi by more than LENGTH_EPS are given, and a line whose lo … hi is covered whole gets
+    one removal [lo, hi]: a line without a removal keeps its material as it is.
+    """
+    empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
+    line = np.asarray(line, dtype=np.intp).reshape(-1)
+    if line.size == 0 or pieces.move.size == 0:
+        return empty
+    lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
+    # The envelope of each line's remaining material narrows as removals are found (lo ≥ hi:
+    # nothing remains, the line is removed whole).
     envelope = np.stack([lo, hi])
     line_origins, line_directions = origins[line], directions[line]
-    # Lines in groups: a CL point's angles in _GROUPS runs, all with the tool axis of that
-    # point as direction.
-    # The lines are in row order, so their groups are too: each group is a run of lines.
-    cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
-    starts = np.flatnonzero(np.r_[True, cl[1:] != cl[:-1]])
-    present = cl[starts]
-    group = np.repeat(np.arange(starts.size), np.diff(np.r_[starts, cl.size]))
+    starts, present, group, sizes = _line_groups(line, p)
     members = np.arange(line.size)
-    sizes = np.diff(np.r_[starts, cl.size])
     before = program_index[line // p] - 1
     group_before = program_index[present // _GROUPS] - 1
-    capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
-    centre, radius = capsule_spheres(*capsules)
-    # (group, chain) pairs: a group's bounding sphere meets a ball of the chain, the chain's first move
-    # ends before the CL point, and the group's capsule is not surely apart from the chain.
-    from scipy.spatial import cKDTree
-
-    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
-                                                  output_type="ndarray")
-    g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
-    chains = pieces.chain_first.size
-    pair = _distinct(g[keep] * chains + pieces.ball_chain[ball[keep]], present.size * chains)
-    g, k = pair // chains, pair % chains
-    keep = pieces.chain_move[k] <= group_before[g]
-    g, k = _near_groups(g[keep], k[keep], capsules, pieces)
+    g, k, capsules, centre, radius = _group_chains(group, present.size, group_before, envelope, line_origins,
+                                                   line_directions, pieces)
     lines = (members, starts, sizes, envelope, line_origins, line_directions, before, pieces)
     if (sizes[g] * pieces.chain_count[k]).sum() <= _PROBE_PAIRS * line.size:
         # Few (line, span) pairs: straight to (group, span) pairs, no test of chains per line.
@@ -495,6 +491,37 @@ def _removals(stock, pieces, program_index, origins, directions, p):
     alive = ~dead[seg]
     return (np.concatenate([line[dead], line[seg[alive]]]), np.concatenate([lo[dead], enter[alive]]),
             np.concatenate([hi[dead], leave[alive]]))
+
+
+def _line_groups(line, p):
+    """The lines (L,) (rows i·p + k, ascending) in groups: a CL point's angles in _GROUPS runs,
+    all with that point's tool axis as direction. Returns starts (G,) each group's first line,
+    present (G,) its key (CL point · _GROUPS + run), group (L,) each line's group, sizes (G,)."""
+    cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
+    starts = np.flatnonzero(np.r_[True, cl[1:] != cl[:-1]])
+    sizes = np.diff(np.r_[starts, cl.size])
+    return starts, cl[starts], np.repeat(np.arange(starts.size), sizes), sizes
+
+
+def _group_chains(group, n_groups, group_before, envelope, origins, directions, pieces):
+    """The pairs (group g, chain k) (K,) that may remove material from the groups' lines: the
+    group's bounding sphere meets a ball of the chain, the chain's first move ends by the
+    group's CL point (group_before (G,) its last earlier program row), and the group's capsule
+    is not surely apart from the chain. group (L,), envelope (2, L) mm, origins, directions
+    (L, 3): the lines. Returns g, k, the capsules and their spheres (centre (G, 3), radius (G,))."""
+    capsules = group_capsules(group, n_groups, envelope, origins, directions)
+    centre, radius = capsule_spheres(*capsules)
+    from scipy.spatial import cKDTree
+
+    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
+                                                  output_type="ndarray")
+    g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
+    keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
+    chains = pieces.chain_first.size
+    pair = _distinct(g[keep] * chains + pieces.ball_chain[ball[keep]], n_groups * chains)
+    g, k = pair // chains, pair % chains
+    keep = pieces.chain_move[k] <= group_before[g]
+    return (*_near_groups(g[keep], k[keep], capsules, pieces), capsules, centre, radius)
 
 
 def _distinct(keys, bound):

@@ -9,10 +9,12 @@ moves of the program removed, :mod:`.inprocess`), :func:`in_process_lengths` jus
 of cut at any angles (the other flutes' for the forces).
 """
 
+import dataclasses
+
 import numpy as np
 
 from .engagement import edge_lines, engage, inside_intervals
-from .inprocess import inprocess_intervals
+from .inprocess import inprocess_intervals, removal_intervals, subtract
 from .interval_engagement import engagement_from_intervals
 from .model import Staircase
 from .terraced import engage_terraced, terraced_intervals
@@ -46,27 +48,52 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
     LEP and UEP are those of the stock minus what every cutting move ending before a CL point
     removed (docs/ENGINE.md); `initial` is the length of cut in the stock itself; `changed[i]`
     says whether earlier moves removed material from any edge line of CL point i.
+
+    The stock's own Engagement (engage_stock) comes first; its LEP … UEP per instant bound
+    each edge line's material for the search of removals (inprocess.removal_intervals). Only
+    the CL points with a removal get their lines' intervals in the stock, less the removals
+    (the same intervals as in_process_lengths finds). A CL point whose lines lost material
+    (changed) takes that result in every per-instant and per-CL field (case "2.5D"); every
+    other CL point keeps the stock's Engagement as it is (the staircase's Table 1 cases).
     """
-    initial, remaining, changed, origins, directions = _in_process(stock, tool, toolpath, settings.phi, pieces,
-                                                                   program_index)
-    engagement = engagement_from_intervals(remaining, toolpath, tool, settings, origins, directions)
-    return engagement, initial.length.reshape(len(toolpath), -1), changed
+    initial = engage_stock(stock, tool, toolpath, settings)
+    m, p = initial.shape
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    if program_index.shape != (m,):
+        raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
+    base, direction = edge_lines(toolpath, tool, settings.phi)
+    line = np.flatnonzero(initial.engaged.reshape(-1))
+    rows, enter, leave = removal_intervals(pieces, program_index, line, initial.lep_l.reshape(-1)[line],
+                                           initial.uep_l.reshape(-1)[line], base.reshape(-1, 3),
+                                           np.repeat(direction, p, axis=0), p)
+    changed = np.zeros(m, dtype=bool)
+    touched = np.unique(rows // p)
+    if touched.size == 0:
+        return initial, initial.length, changed
+    # Rows of the touched CL points' lines, numbered within them.
+    local = np.searchsorted(touched, rows // p) * p + rows % p
+    lines = (base[touched].reshape(-1, 3), np.repeat(direction[touched], p, axis=0))
+    inside = stock_intervals(stock, *lines, tool.flute_length)
+    remaining = subtract(inside, local, enter, leave)
+    lost = (remaining.length != inside.length).reshape(-1, p).any(axis=1)
+    if not lost.any():
+        return initial, initial.length, changed
+    changed[touched[lost]] = True
+    in_process = engagement_from_intervals(remaining, toolpath.rows(touched), tool, settings, *lines)
+    per_cl = {field.name: getattr(initial, field.name).copy() for field in dataclasses.fields(initial)
+              if field.name not in ("phi", "h")}
+    for name, values in per_cl.items():
+        values[touched[lost]] = getattr(in_process, name)[lost]
+    return dataclasses.replace(initial, **per_cl), initial.length, changed
 
 
 def in_process_lengths(stock, tool, toolpath, phi_deg, pieces, program_index):
     """(m, p) length of cut (mm) against the in-process stock at angles phi_deg (p,) (any, e.g.
     another flute's φ + 360·k/Z) of the m CL points of `toolpath`; pieces and program_index as
-    for engage_in_process."""
-    _, remaining, _, _, _ = _in_process(stock, tool, toolpath, phi_deg, pieces, program_index)
-    return remaining.length.reshape(len(toolpath), -1)
-
-
-def _in_process(stock, tool, toolpath, phi_deg, pieces, program_index):
-    """The edge lines at phi_deg (p,) of every CL point (origins, directions (m·p, 3)) and their
-    EdgeIntervals in the stock and in the in-process stock, with changed (m,)."""
+    for engage_in_process. Every edge line's intervals in the stock, less the removals."""
     phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     base, direction = edge_lines(toolpath, tool, phi)
     origins, directions = base.reshape(-1, 3), np.repeat(direction, phi.size, axis=0)
-    initial = stock_intervals(stock, origins, directions, tool.flute_length)
-    remaining, changed = inprocess_intervals(initial, pieces, program_index, origins, directions, phi.size)
-    return initial, remaining, changed, origins, directions
+    inside = stock_intervals(stock, origins, directions, tool.flute_length)
+    remaining, _ = inprocess_intervals(inside, pieces, program_index, origins, directions, phi.size)
+    return remaining.length.reshape(len(toolpath), -1)
