@@ -512,8 +512,9 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
     forces = None if prepared.force_model is None else pass_forces_of(
         stock.model, tool, toolpath, settings, prepared.force_model, engagement, in_process=in_process)
     shown = report_cls(checked, chosen)
+    # The report adds the staircase's y window itself.
     walls = ("the paper's quintic walls (JSON)" if stock.shape is None and stock.staircase is not None else
-             stock.describe())
+             f"{stock.walls} walls" if stock.staircase is not None else stock.describe())
     run = "ABM against booleans" if helix is None else (
         f"Helical edges (β = {tool.helix:g}°), flute {helix.flutes[0] + 1} of {tool.flutes}, ABM against booleans")
     title = f"{run}: {os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}"
