@@ -229,7 +229,7 @@ def _inprocess_section(validation, job, cls, views):
     differs = np.abs(check.initial - comparison.l_abm) > TINY_LENGTH
     rows = []
     for cl, why in cls:
-        rows.append([f"{cl} ({why})", "yes" if check.changed[cl] else "no", str(check.swept[cl]),
+        rows.append([f"{cl} ({why})", "yes" if check.changed[cl] else "no", f"{check.swept[cl]:.0f}",
                      str(int(differs[cl].sum())), _mm(check.initial[cl].max()), _mm(comparison.l_abm[cl].max()),
                      _mm(comparison.l_ref[cl].max()), _mm(np.abs(comparison.difference[cl]).max())])
     head = ("CL", "changed", "swept pieces near", "angles changed", "max l, stock as given (ABM)",
