@@ -347,7 +347,9 @@ class EngagementFeature(FeatureProxy):
         if model is not None:
             forces = pass_forces_of(staircase, tool, toolpath, settings, model, engine_result, in_process=sweep)
             self._forces = PassForces.of(forces)
-            obj.PeakForce = float(forces.peak.max())
+            # From the forces kept (part frame), which the dock and the results file show: the tool
+            # frame's norms can differ from theirs in the last bit.
+            obj.PeakForce = float(self._forces.peak.max())
             obj.ForceFeedPerTooth = settings.feed_per_tooth
         else:
             obj.PeakForce, obj.ForceFeedPerTooth = 0.0, 0.0
