@@ -27,7 +27,8 @@ from .tables import report_tables
 PAPER_DEPTH = {1: (1.78, 7.32), 2: (2.68, 6.38)}
 #: The paper's times for one pass of 53 CC points (MATLAB, Core i7 2.7 GHz), s.
 PAPER_SECONDS = {"ABM": 713.87, "Z-map (0.2 mm grid)": 2633.65}
-_MODEL_TEST = re.compile(r"\bmodel test ([12])\b(?! stock)", re.IGNORECASE)
+_MODEL_TEST = re.compile(r"\bmodel test ([12])\b", re.IGNORECASE)
+_OWN_MODEL_TEST = re.compile(r"\s*model test (\d+)\b", re.IGNORECASE)
 #: At most this many CL points get plots over φ (the 3D view: four).
 DETAIL_PLOTS = 8
 #: At most this many CL points get a picture of the in-process stock.
@@ -83,9 +84,11 @@ class ReportJob:
 
 def paper_model_test(description):
     """1 or 2 when `description` names the paper's model test 1 or 2 ('Model test 1 …'), else None;
-    'the model test 1 stock' (model test 3: other passes over that stock) is not the paper's pass."""
-    match = _MODEL_TEST.search(description or "")
-    return int(match.group(1)) if match else None
+    a description that starts by naming another model test ('Model test 3: the model test 1 stock
+    machined by …') is not the paper's pass."""
+    own = _OWN_MODEL_TEST.match(description or "")
+    match = own if own else _MODEL_TEST.search(description or "")
+    return int(match.group(1)) if match and match.group(1) in ("1", "2") else None
 
 
 def report_cls(validation, requested=None):

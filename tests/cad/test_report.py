@@ -87,7 +87,8 @@ def test_paper_model_tests():
     assert paper_model_test("Model test 2 (after Hendriko 2020): ...") == 2
     assert paper_model_test("A pass of model test 1") == 1
     assert paper_model_test("model test 12") is None and paper_model_test("") is None
-    assert paper_model_test("Model test 3: the model test 1 stock machined by two operations") is None
+    assert paper_model_test("Model test 3: the model test 1 stock machined by two operations, five-axis tool "
+                            "axes as in model test 1.") is None
 
 
 def test_cl_points_shown(validation):
