@@ -58,6 +58,10 @@ def axis_to_angles(axes):
             i, f"tool axis {axes[i].tolist()} has k <= 0; only axes pointing up (k > 0) can be "
             "expressed as (theta_a, theta_b)"
         )
-    theta_b = np.degrees(np.arcsin(np.clip(unit[:, 0], -1.0, 1.0)))
-    theta_a = np.degrees(np.arctan2(-unit[:, 1], unit[:, 2]))
+    # Contiguous columns: numpy picks its vectorised or its scalar arctan2 (which can differ in the last
+    # bit) by whether the output's memory may overlap the inputs' span, and a strided column's span
+    # runs past its array's end, into memory that a fresh output may occupy.
+    i, j, k = np.ascontiguousarray(unit.T)
+    theta_b = np.degrees(np.arcsin(np.clip(i, -1.0, 1.0)))
+    theta_a = np.degrees(np.arctan2(-j, k))
     return theta_a, theta_b
