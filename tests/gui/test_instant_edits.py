@@ -105,7 +105,7 @@ def watch():
     if seen["ticks"] < 4000:
         QtCore.QTimer.singleShot(25, watch)
 panel = open_panel()
-retype("PhiStep", "0.02")
+retype("PhiStep", "0.005")
 QtCore.QTimer.singleShot(25, watch)
 started = time.perf_counter()
 click("OK")
