@@ -23,6 +23,11 @@ Cancel aborts it, which for a new engagement removes the object; for an existing
 back its properties and, with them, the results it had (kept by the feature, so the recompute
 after Cancel does not run the engine again) and its view.
 
+Its widgets are looked up by name (:meth:`EngagementPanel.field`) once the wrappers that deleted
+widgets left at their addresses are let go (:mod:`.wrappers`): without that, a panel opened right
+after another closed was now and then refused (its field or line edit found as the old dialog's
+button box).
+
 The panel fits FreeCAD's combo view: rows too long for a label and a field side by side wrap
 the field under its label, and the text wraps.
 """
@@ -37,7 +42,7 @@ from ..errors import InputError, ParameterError
 from ..features.engagement import COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings
 from ..forces import MATERIALS
 from ..jobs import BY_NAME, label_words, resolve, tool_and_settings
-from . import preferences, state, view_providers
+from . import preferences, state, view_providers, wrappers
 from .i18n import noop, translate
 from .progress import busy
 from .reporting import CommandError, message_of, recompute_checked, report_error
@@ -115,9 +120,11 @@ class EngagementPanel:
                 layout.addRow(translate("y window"), self._combo("YWindow", Y_WINDOWS))
             layout.addRow(translate(label), widget)
             _set_value(widget, _property_value(obj, name))
-            _connect(widget, self.check)
-        self.field("SpindleSpeed").setSpecialValueText("none")
         self._force_fields(layout)
+        wrappers.let_go_stale(self.form)  # before any lookup: the fields may sit where deleted widgets were
+        for name, *_ in FIELDS + FORCE_FIELDS:
+            _connect(self.field(name), self.check)
+        self.field("SpindleSpeed").setSpecialValueText("none")
         self.hints = self._hints()
         self.check()
 
@@ -140,7 +147,6 @@ class EngagementPanel:
             self.names.append(name)
             layout.addRow(label, widget)
             _set_value(widget, _property_value(obj, name))
-            _connect(widget, self.check)
 
     def _combo(self, name, choices):
         combo = QtGui.QComboBox()
@@ -306,6 +312,7 @@ class EngagementPanel:
 
     def modifyStandardButtons(self, buttons):
         """FreeCAD hands over the dialog's button box once it is made: OK follows the check."""
+        wrappers.let_go_stale(buttons)  # its buttons too may sit where deleted widgets were
         self.buttons = buttons
         self.check()
 
