@@ -619,6 +619,9 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     and drops the pairs whose piece is then surely apart from the envelope (it can remove
     nothing more), so that a line cut by many pieces solves few of them.
     """
+    # By segment (stable: each segment's pairs keep their order), as _smallest needs.
+    order = np.argsort(seg, kind="stable")
+    seg, span = seg[order], span[order]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
@@ -637,8 +640,9 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     first = _reaching(seg, origins[seg], directions[seg], pieces.span_c0[span], pieces.span_c1[span],
                       pieces.span_axis[span], pieces.span_radius[span] + pieces.span_slack[span],
                       pieces.span_height[span], 1)
-    out = [_solved(*_near_pieces(*_span_pieces(seg[first], span[first], pieces), envelope, origins, directions,
-                                 pieces), envelope, origins, directions, pieces)]
+    seg_first, piece_first = _span_pieces(seg[first], span[first], pieces)
+    near = _near_pieces(seg_first, piece_first, envelope, origins, directions, pieces)
+    out = [_solved(seg_first[near], piece_first[near], envelope, origins, directions, pieces)]
     rest = np.ones(seg.size, dtype=bool)
     rest[first] = False
     seg, span = seg[rest], span[rest]
@@ -647,31 +651,56 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, piece = _span_pieces(seg[keep], span[keep], pieces)
+    # Each segment's pairs ranked once by how low and how high their pieces reach along its
+    # line; every round solves the `take` first of each ranking among the pairs still open.
+    lower, upper = _extent(origins[seg], directions[seg], pieces.c0[piece], pieces.c1[piece], pieces.axis[piece],
+                           pieces.radius[piece], pieces.height[piece])
+    rankings = [_Ranking(seg, lower), _Ranking(seg, -upper)]
+    open_ = np.ones(seg.size, dtype=bool)
     take = 1
-    while seg.size:
-        seg, piece = _near_pieces(seg, piece, envelope, origins, directions, pieces)
-        chosen = _reaching(seg, origins[seg], directions[seg], pieces.c0[piece], pieces.c1[piece], pieces.axis[piece],
-                           pieces.radius[piece], pieces.height[piece], take)
+    while open_.any():
+        at = np.flatnonzero(open_)
+        open_[at[~_near_pieces(seg[at], piece[at], envelope, origins, directions, pieces)]] = False
+        chosen = np.flatnonzero(rankings[0].first(open_, take) | rankings[1].first(open_, take))
         out.append(_solved(seg[chosen], piece[chosen], envelope, origins, directions, pieces))
-        rest = np.ones(seg.size, dtype=bool)
-        rest[chosen] = False
-        seg, piece = seg[rest], piece[rest]
+        open_[chosen] = False
         take *= 2
     return tuple(np.concatenate(part) for part in zip(*out))
 
 
+class _Ranking:
+    """The rows (K,) of each owner (K,) ordered by a key (K,), ties to the earlier row,
+    sorted once for rounds that each take the first few rows still open."""
+
+    def __init__(self, owner, key):
+        self.order = np.lexsort((key, owner))
+        ranked = owner[self.order]
+        self.start = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
+        self.count = np.diff(np.r_[self.start, owner.size])
+
+    def first(self, open_, take):
+        """(K,) bool: of each owner's rows with open_ (K,) True, the `take` first in the order."""
+        still = open_[self.order]
+        seen = np.cumsum(still)
+        before = np.repeat(seen[self.start] - still[self.start], self.count)
+        chosen = np.zeros(open_.size, dtype=bool)
+        chosen[self.order[still & (seen - before <= take)]] = True
+        return chosen
+
+
 def _near_pieces(seg, piece, envelope, origins, directions, pieces):
-    """The pairs (seg, piece) (K,) whose segment's envelope is open and from which the piece may
-    remove more than LENGTH_EPS."""
-    open_ = envelope[0, seg] < envelope[1, seg]
-    seg, piece = seg[open_], piece[open_]
+    """(K,) bool: the pairs (seg, piece) (K,) whose segment's envelope is open and from which the
+    piece may remove more than LENGTH_EPS."""
+    near = envelope[0, seg] < envelope[1, seg]
+    at = np.flatnonzero(near)
+    seg, piece = seg[at], piece[at]
     a, b = _ends(seg, envelope, origins, directions)
     # A piece reaching less than LENGTH_EPS·|u·w| into the segment's axial range removes less
     # than LENGTH_EPS of it along the line: _solved would keep nothing of it.
     grain = LENGTH_EPS * np.abs(np.einsum("ij,ij->i", directions[seg], pieces.axis[piece]))
-    near = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
-                   pieces.height[piece], 0.0, grain=grain)
-    return seg[near], piece[near]
+    near[at] = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
+                       pieces.height[piece], 0.0, grain=grain)
+    return near
 
 
 def _span_pieces(seg, span, pieces):
@@ -696,7 +725,7 @@ def _solved(seg, piece, envelope, origins, directions, pieces):
 
 
 def _reaching(owner, origin, direction, c0, c1, axis, radius, height, take):
-    """Indices of the pairs (one per row, all (K, 3) or (K,)) of each owner (K,) whose hull
+    """Indices of the pairs (one per row, all (K, 3) or (K,)) of each owner (K,, ascending) whose hull
     (c0, c1, axis, radius, height) reaches lowest along the line origin + l·direction (the
     `take` lowest per owner) or highest (the `take` highest), by its extent along the line:
     l ∈ [lower, upper] for every point of the hull (mm)."""
@@ -728,13 +757,19 @@ def _extent(origin, direction, c0, c1, axis, radius, height):
 
 
 def _smallest(owner, key, take):
-    """(K,) bool: the `take` rows of smallest key (K,) of each owner (K,)."""
-    order = np.lexsort((key, owner))
-    ranked = owner[order]
-    first = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
-    rank = np.arange(owner.size) - np.repeat(first, np.diff(np.r_[first, owner.size]))
+    """(K,) bool: the `take` rows of smallest key (K,) of each owner (K,, ascending), ties to the
+    earlier row: `take` rounds of a minimum per owner (no sort)."""
     chosen = np.zeros(owner.size, dtype=bool)
-    chosen[order[rank < take]] = True
+    if owner.size == 0:
+        return chosen
+    start = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
+    count = np.diff(np.r_[start, owner.size])
+    left = np.array(key, dtype=float)  # a copy: chosen rows become NaN, which fmin passes over
+    for _ in range(take):
+        hit = np.flatnonzero(left == np.repeat(np.fmin.reduceat(left, start), count))
+        first = hit[np.r_[True, owner[hit[1:]] != owner[hit[:-1]]]] if hit.size else hit
+        chosen[first] = True
+        left[first] = np.nan
     return chosen
 
 
