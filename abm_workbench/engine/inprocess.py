@@ -330,9 +330,7 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     apart = below | above
     # The distance seen along the axis only where the cheaper test left it open.
     i = np.flatnonzero(~apart)
-    w = axis[i]
-    pa, pb, pd = qa[i] - aa[i, None] * w, qb[i] - ab[i, None] * w, d[i] - da[i, None] * w
-    apart[i] = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius[i] + slack[i]
+    apart[i] = _seen_along(qa[i], qb[i] - qa[i], d[i], aa[i], ab[i] - aa[i], da[i]) > radius[i] + slack[i]
     return apart
 
 
@@ -373,19 +371,28 @@ def _point_distance(q, d):
     return np.sqrt(np.einsum("ij,ij->i", gap, gap))
 
 
-def _segment_distance(p1, d1, p2, d2):
-    """(K,) shortest distance between the segments p1 + s·d1 and p2 + t·d2, s, t ∈ [0, 1] ((K, 3) each)."""
-    r = p1 - p2
-    a, e = np.einsum("ij,ij->i", d1, d1), np.einsum("ij,ij->i", d2, d2)
-    b, c, f = np.einsum("ij,ij->i", d1, d2), np.einsum("ij,ij->i", d1, r), np.einsum("ij,ij->i", d2, r)
-    safe_a, safe_e = np.where(a > 0.0, a, 1.0), np.where(e > 0.0, e, 1.0)
-    denom = a * e - b * b
-    s = np.where(denom > 1e-12 * a * e, _unit((b * f - c * e) / np.where(denom > 0.0, denom, 1.0)), 0.0)
-    t = (b * s + f) / safe_e
+def _dot_across(x, y, xw, yw):
+    """(K,) dot products of the components of x and y (K, 3) across unit axes w, from their
+    components xw, yw (K,) along w."""
+    return np.einsum("ij,ij->i", x, y) - xw * yw
+
+
+def _seen_along(q, e, d, qw, ew, dw):
+    """(K,) shortest distance between the segments q + s·e and t·d (s, t ∈ [0, 1]) seen along
+    unit axes w: their components across w, from the vectors q, e, d (K, 3) and their
+    components qw, ew, dw (K,) along w (mm). Closest points of two segments, clamped to their
+    ends, computed from the six dot products of the components across w."""
+    a, c, f = _dot_across(e, e, ew, ew), _dot_across(e, q, ew, qw), _dot_across(d, q, dw, qw)
+    b, g, h = _dot_across(e, d, ew, dw), _dot_across(d, d, dw, dw), _dot_across(q, q, qw, qw)
+    safe_a, safe_g = np.where(a > 0.0, a, 1.0), np.where(g > 0.0, g, 1.0)
+    denom = a * g - b * b
+    s = np.where(denom > 1e-12 * a * g, _unit((b * f - c * g) / np.where(denom > 0.0, denom, 1.0)), 0.0)
+    t = (b * s + f) / safe_g
     s = np.where(t < 0.0, _unit(-c / safe_a), np.where(t > 1.0, _unit((b - c) / safe_a), s))
     t = _unit(t)
-    gap = r + s[:, None] * d1 - t[:, None] * d2
-    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+    # |q + s·e − t·d|² across w, expanded in the dot products.
+    gap = h + 2.0 * s * c - 2.0 * t * f + s * s * a - 2.0 * s * t * b + t * t * g
+    return np.sqrt(np.maximum(gap, 0.0))
 
 
 def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, origins, directions, p, *,
