@@ -310,27 +310,31 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm.
 
     lean (K,): the volume is made of pieces whose bottom centres lie within slack of the
-    hull's path and whose axes differ from its axis by at most lean (the length of the
-    difference of the unit vectors); turning a piece about its bottom centre moves a point
-    at height h by at most lean·√(radius² + h²), and only the part up to the height the
-    segment reaches can come near it, so that much is added to slack.
+    hull's path and whose axes w_p differ from its axis w by at most lean (|w_p − w|). A point
+    c + h·w_p + e of a piece (e ⊥ w_p, |e| ≤ radius) then lies, along w, within lean·radius of
+    where it would with w_p = w (|e·w| = |e·(w − w_p)|, and h·(w_p·w) ≤ h), and across w within
+    radius + lean·h of c (|e| ≤ radius, h·|w_p − w| ≤ lean·h). So the axial range grows by
+    slack + lean·radius, and the distance seen along the axis by slack + lean·h, h up to the
+    height at which a piece point can be level with the segment (h·(w_p·w) ≥ h·(1 − lean²/2)).
 
     grain (K,) or scalar, mm: also apart when the segment reaches less than that into the
     hull's axial range (it can then share only a sliver with the hull).
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
-    slack = np.broadcast_to(slack, aa.shape)
+    axial = across = np.broadcast_to(slack, aa.shape)
     if lean is not None:
-        reach = np.minimum(np.maximum(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0),
-                           height)
-        slack = slack + lean * np.hypot(radius, reach)
-    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack + grain
-    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack - grain
+        axial = axial + lean * radius
+        level = 1.0 - 0.5 * lean * lean
+        rise = np.maximum(np.maximum(aa, ab) - np.minimum(da, 0.0) + axial, 0.0)
+        reach = np.where(level > 0.0, np.minimum(rise / np.where(level > 0.0, level, 1.0), height), height)
+        across = across + lean * reach
+    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - axial + grain
+    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + axial - grain
     apart = below | above
     # The distance seen along the axis only where the cheaper test left it open.
     i = np.flatnonzero(~apart)
-    apart[i] = _seen_along(qa[i], qb[i] - qa[i], d[i], aa[i], ab[i] - aa[i], da[i]) > radius[i] + slack[i]
+    apart[i] = _seen_along(qa[i], qb[i] - qa[i], d[i], aa[i], ab[i] - aa[i], da[i]) > radius[i] + across[i]
     return apart
 
 
