@@ -42,11 +42,9 @@ _MARK_LIMIT = 1 << 24
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
 #: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
-_PROBE = 2
-#: Rounds of that first solving, at most; they stop when a round leaves more than this
-#: share of the envelopes' length.
-_PROBE_ROUNDS = 3
-_PROBE_GAIN = 0.8
+_PROBE = 1
+#: Chains per group whose spans _line_probe weighs for each of the group's lines.
+_GUESSED_CHAINS = 3
 #: (edge line, span) pairs per line above which chains are tested per line and probes made.
 _PROBE_PAIRS = 8
 
@@ -479,24 +477,25 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
         a, b, thick = capsules
         keep = ~_apart(a[g], b[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                        pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + thick[g])
-        found = [empty, _expanded(g[keep], span[keep], *lines, chained=False)]
+        found = [empty, _expanded(g[keep], span[keep], *lines, _spans_solved)]
         g = k = np.zeros(0, dtype=np.intp)
     else:
         found = [empty]
-    # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
-    # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
-    # meet far fewer chains.
-    for _ in range(_PROBE_ROUNDS if g.size else 0):
-        remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
-        found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
-                               *lines, chained=False))
-        capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
-        centre, radius = capsule_spheres(*capsules)
-        g, k = _near_groups(g, k, capsules, pieces)
-        if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
-            break
     if g.size:
-        found.append(_expanded(g, k, *lines, chained=True))
+        # Where the lines meet many chains: first a span or two per group (_probe), which
+        # usually removes most of the lines; then per line a first guess among the spans of
+        # the chains its group seems to enter first (_line_probe), which usually finds what
+        # is left of it; each time the narrowed envelopes meet far fewer chains; then the rest.
+        found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
+                               *lines, _spans_solved))
+        capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
+        g, k = _near_groups(g, k, capsules, pieces)
+        a, b, _ = capsules
+        pick = _entered_first(g, a[g], b[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
+                              pieces.chain_radius[k], _GUESSED_CHAINS)
+        found.append(_expanded(g[pick], k[pick], *lines, _line_probe))
+        g, k = _near_groups(g, k, group_capsules(group, present.size, envelope, line_origins, line_directions), pieces)
+        found.append(_expanded(g, k, *lines, _chains_solved))
     dead = envelope[0] >= envelope[1]
     seg, enter, leave = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]
@@ -580,10 +579,12 @@ def _near_groups(g, k, capsules, pieces):
     return g[keep], k[keep]
 
 
-def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, *, chained):
-    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k: `chained`),
-    expanded to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most
-    _EXPAND_BATCH; before (L,) the last program row that precedes each line's CL point."""
+def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, solve):
+    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k), expanded
+    to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most _EXPAND_BATCH
+    and given to solve(seg, k, envelope, origins, directions, before, pieces) (_spans_solved,
+    _chains_solved or _line_probe); before (L,) the last program row that precedes each
+    line's CL point."""
     order = np.argsort(g, kind="stable")
     g, k = g[order], k[order]
     count = sizes[g]
@@ -593,10 +594,56 @@ def _expanded(g, k, members, starts, sizes, envelope, origins, directions, befor
     for first, stop in zip(cuts[:-1], cuts[1:]):
         pair, rank = _csr(count[first:stop])
         seg, item = members[starts[g[first:stop]][pair] + rank], k[first:stop][pair]
-        if chained:
-            seg, item = _chain_spans(seg, item, envelope, origins, directions, before, pieces)
-        found.append(_line_span_pairs(seg, item, envelope, origins, directions, pieces))
+        found.append(solve(seg, item, envelope, origins, directions, before, pieces))
     return tuple(np.concatenate(part) for part in zip(*found))
+
+
+def _spans_solved(seg, span, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave) from the (segment, span) pairs (_line_span_pairs)."""
+    return _line_span_pairs(seg, span, envelope, origins, directions, pieces)
+
+
+def _chains_solved(seg, chain, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave) from the (segment, chain) pairs: the spans of the
+    chains near each segment (_chain_spans), solved."""
+    return _line_span_pairs(*_chain_spans(seg, chain, envelope, origins, directions, before, pieces), envelope,
+                            origins, directions, pieces)
+
+
+def _entered_first(owner, a, b, c0, c1, axis, radius, take):
+    """(K,) bool: per owner (K,, ascending), the `take` hulls (c0, c1, axis, radius) that the
+    segment a … b (K, 3) seems to enter first going from a to b; none that it seems not to
+    enter. The guess: its distance from the hull's path seen along the axis, interpolated
+    linearly between the ends, falls to the radius, after it crosses the hull's bottom plane."""
+    near, far = _across(a, c0, c1, axis) - radius, _across(b, c0, c1, axis) - radius
+    qa, d = a - c0, c1 - c0
+    aa, da = np.einsum("ij,ij->i", qa, axis), np.einsum("ij,ij->i", d, axis)
+    rise = np.einsum("ij,ij->i", b - a, axis)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        side = np.where(near > 0.0, near / (near - far), 0.0)
+        bottom = np.where(rise > 0.0, (np.minimum(da, 0.0) - aa) / rise, 0.0)
+    entry = np.maximum(side, bottom)
+    ok = (np.minimum(near, far) < 0.0) & (entry < 1.0)
+    return _smallest(owner, np.where(ok, entry, np.inf), take) & ok
+
+
+def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave) of a first guess per segment from its chains (seg,
+    chain (K,)): of their spans before the segment's CL point, the one its line seems to enter
+    first (_entered_first), its pieces solved."""
+    open_ = envelope[0, seg] < envelope[1, seg]
+    seg, chain = seg[open_], chain[open_]
+    order = np.argsort(seg, kind="stable")
+    seg, chain = seg[order], chain[order]
+    owner, rank = _csr(pieces.chain_count[chain])
+    seg, span = seg[owner], pieces.chain_first[chain][owner] + rank
+    keep = pieces.span_move[span] <= before[seg]
+    seg, span = seg[keep], span[keep]
+    pick = _entered_first(seg, *_ends(seg, envelope, origins, directions), pieces.span_c0[span], pieces.span_c1[span],
+                          pieces.span_axis[span], pieces.span_radius[span], 1)
+    seg, piece = _span_pieces(seg[pick], span[pick], pieces)
+    near = _near_pieces(seg, piece, envelope, origins, directions, pieces)
+    return _solved(seg[near], piece[near], envelope, origins, directions, pieces)
 
 
 def _chain_spans(seg, chain, envelope, origins, directions, before, pieces):
