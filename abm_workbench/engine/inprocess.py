@@ -832,11 +832,13 @@ def _smallest(owner, key, take):
 
 
 def _across(x, c0, c1, axis):
-    """(K,) distance from points x to the segments c0 … c1 seen along the unit axis (all (K, 3), mm)."""
+    """(K,) distance from points x to the segments c0 … c1 seen along the unit axis (all (K, 3),
+    mm), from dot products of the components across the axis."""
     q, d = x - c0, c1 - c0
-    q = q - np.einsum("ij,ij->i", q, axis)[:, None] * axis
-    d = d - np.einsum("ij,ij->i", d, axis)[:, None] * axis
-    return _point_distance(q, d)
+    qw, dw = np.einsum("ij,ij->i", q, axis), np.einsum("ij,ij->i", d, axis)
+    qd, dd = _dot_across(q, d, qw, dw), _dot_across(d, d, dw, dw)
+    t = _unit(qd / np.where(dd > 0.0, dd, 1.0))
+    return np.sqrt(np.maximum(_dot_across(q, q, qw, qw) - t * (2.0 * qd - t * dd), 0.0))
 
 
 def _narrow(envelope, seg, enter, leave):
