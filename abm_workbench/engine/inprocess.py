@@ -677,9 +677,6 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
     and drops the pairs whose piece is then surely apart from the envelope (it can remove
     nothing more), so that a line cut by many pieces solves few of them.
     """
-    # By segment (stable: each segment's pairs keep their order), as _smallest needs.
-    order = np.argsort(seg, kind="stable")
-    seg, span = seg[order], span[order]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
@@ -693,28 +690,14 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
             slack, h - slack)
     inside = _inside(a[keep], *hull) & _inside(b[keep], *hull)
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
-    # A first round at the level of spans: per segment, the span reaching lowest along its
-    # line and the one reaching highest; then the other spans against the narrowed envelopes.
-    first = _reaching(seg, origins[seg], directions[seg], pieces.span_c0[span], pieces.span_c1[span],
-                      pieces.span_axis[span], pieces.span_radius[span] + pieces.span_slack[span],
-                      pieces.span_height[span], 1)
-    seg_first, piece_first = _span_pieces(seg[first], span[first], pieces)
-    near = _near_pieces(seg_first, piece_first, envelope, origins, directions, pieces)
-    out = [_solved(seg_first[near], piece_first[near], envelope, origins, directions, pieces)]
-    rest = np.ones(seg.size, dtype=bool)
-    rest[first] = False
-    seg, span = seg[rest], span[rest]
-    seg, span = seg[envelope[0, seg] < envelope[1, seg]], span[envelope[0, seg] < envelope[1, seg]]
-    a, b = _ends(seg, envelope, origins, directions)
-    keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                   pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
-    seg, piece = _span_pieces(seg[keep], span[keep], pieces)
+    seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
     # Each segment's pairs ranked once by how low and how high their pieces reach along its
     # line; every round solves the `take` first of each ranking among the pairs still open.
     lower, upper = _extent(origins[seg], directions[seg], pieces.c0[piece], pieces.c1[piece], pieces.axis[piece],
                            pieces.radius[piece], pieces.height[piece])
     rankings = [_Ranking(seg, lower), _Ranking(seg, -upper)]
     open_ = np.ones(seg.size, dtype=bool)
+    out = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     take = 1
     while open_.any():
         at = np.flatnonzero(open_)
@@ -780,15 +763,6 @@ def _solved(seg, piece, envelope, origins, directions, pieces):
         found.append((s[hit], enter[hit], leave[hit]))
         _narrow(envelope, *found[-1])
     return tuple(np.concatenate(part) for part in zip(*found))
-
-
-def _reaching(owner, origin, direction, c0, c1, axis, radius, height, take):
-    """Indices of the pairs (one per row, all (K, 3) or (K,)) of each owner (K,, ascending) whose hull
-    (c0, c1, axis, radius, height) reaches lowest along the line origin + l·direction (the
-    `take` lowest per owner) or highest (the `take` highest), by its extent along the line:
-    l ∈ [lower, upper] for every point of the hull (mm)."""
-    lower, upper = _extent(origin, direction, c0, c1, axis, radius, height)
-    return np.flatnonzero(_smallest(owner, lower, take) | _smallest(owner, -upper, take))
 
 
 def _extent(origin, direction, c0, c1, axis, radius, height):
