@@ -23,10 +23,13 @@ import numpy as np
 from .engagement import SURFACES
 from .inprocess_reach import capsule_spheres, group_capsules
 from .intervals import EdgeIntervals
-from .swept import line_hull_interval
+from .swept import FEASIBLE_EPS, line_hull_interval
 from .tolerances import LENGTH_EPS
 
 _MACHINED = SURFACES.index("machined")
+#: A sure miss clears the hull by more than this (mm): the closed form counts points within
+#: FEASIBLE_EPS of its boundary as inside, and the sure-miss test's rounding is far smaller.
+_CLEAR = 2.0 * FEASIBLE_EPS
 #: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
 _OPPOSITE_EPS = 1e-12
 #: Spans per chain at most.
@@ -305,7 +308,8 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
 def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
-    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm.
+    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm. Both
+    by more than _CLEAR, so that rounding never drops a pair the closed form would count.
 
     lean (K,): the volume is made of pieces whose bottom centres lie within slack of the
     hull's path and whose axes w_p differ from its axis w by at most lean (|w_p − w|). A point
@@ -320,7 +324,7 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
-    axial = across = np.broadcast_to(slack, aa.shape)
+    axial = across = np.broadcast_to(slack + _CLEAR, aa.shape)
     if lean is not None:
         axial = axial + lean * radius
         level = 1.0 - 0.5 * lean * lean
