@@ -23,10 +23,13 @@ import numpy as np
 from .engagement import SURFACES
 from .inprocess_reach import capsule_spheres, group_capsules
 from .intervals import EdgeIntervals
-from .swept import line_hull_interval
+from .swept import FEASIBLE_EPS, line_hull_interval
 from .tolerances import LENGTH_EPS
 
 _MACHINED = SURFACES.index("machined")
+#: A sure miss clears the hull by more than this (mm): the closed form counts points within
+#: FEASIBLE_EPS of its boundary as inside, and the sure-miss test's rounding is far smaller.
+_CLEAR = 2.0 * FEASIBLE_EPS
 #: Tool axes closer than this to opposite (1 − |cos|) have no defined interpolation.
 _OPPOSITE_EPS = 1e-12
 #: Spans per chain at most.
@@ -42,11 +45,9 @@ _MARK_LIMIT = 1 << 24
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
 #: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
-_PROBE = 2
-#: Rounds of that first solving, at most; they stop when a round leaves more than this
-#: share of the envelopes' length.
-_PROBE_ROUNDS = 3
-_PROBE_GAIN = 0.8
+_PROBE = 1
+#: Chains per group whose spans _line_probe weighs for each of the group's lines.
+_GUESSED_CHAINS = 3
 #: (edge line, span) pairs per line above which chains are tested per line and probes made.
 _PROBE_PAIRS = 8
 
@@ -307,32 +308,35 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
 def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
-    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm.
+    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm. Both
+    by more than _CLEAR, so that rounding never drops a pair the closed form would count.
 
     lean (K,): the volume is made of pieces whose bottom centres lie within slack of the
-    hull's path and whose axes differ from its axis by at most lean (the length of the
-    difference of the unit vectors); turning a piece about its bottom centre moves a point
-    at height h by at most lean·√(radius² + h²), and only the part up to the height the
-    segment reaches can come near it, so that much is added to slack.
+    hull's path and whose axes w_p differ from its axis w by at most lean (|w_p − w|). A point
+    c + h·w_p + e of a piece (e ⊥ w_p, |e| ≤ radius) then lies, along w, within lean·radius of
+    where it would with w_p = w (|e·w| = |e·(w − w_p)|, and h·(w_p·w) ≤ h), and across w within
+    radius + lean·h of c (|e| ≤ radius, h·|w_p − w| ≤ lean·h). So the axial range grows by
+    slack + lean·radius, and the distance seen along the axis by slack + lean·h, h up to the
+    height at which a piece point can be level with the segment (h·(w_p·w) ≥ h·(1 − lean²/2)).
 
     grain (K,) or scalar, mm: also apart when the segment reaches less than that into the
     hull's axial range (it can then share only a sliver with the hull).
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
-    slack = np.broadcast_to(slack, aa.shape)
+    axial = across = np.broadcast_to(slack + _CLEAR, aa.shape)
     if lean is not None:
-        reach = np.minimum(np.maximum(np.maximum(aa, ab) + np.abs(da) + slack + lean * np.hypot(radius, height), 0.0),
-                           height)
-        slack = slack + lean * np.hypot(radius, reach)
-    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - slack + grain
-    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + slack - grain
+        axial = axial + lean * radius
+        level = 1.0 - 0.5 * lean * lean
+        rise = np.maximum(np.maximum(aa, ab) - np.minimum(da, 0.0) + axial, 0.0)
+        reach = np.where(level > 0.0, np.minimum(rise / np.where(level > 0.0, level, 1.0), height), height)
+        across = across + lean * reach
+    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - axial + grain
+    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + axial - grain
     apart = below | above
     # The distance seen along the axis only where the cheaper test left it open.
     i = np.flatnonzero(~apart)
-    w = axis[i]
-    pa, pb, pd = qa[i] - aa[i, None] * w, qb[i] - ab[i, None] * w, d[i] - da[i, None] * w
-    apart[i] = _segment_distance(pa, pb - pa, np.zeros_like(pd), pd) > radius[i] + slack[i]
+    apart[i] = _seen_along(qa[i], qb[i] - qa[i], d[i], aa[i], ab[i] - aa[i], da[i]) > radius[i] + across[i]
     return apart
 
 
@@ -373,19 +377,28 @@ def _point_distance(q, d):
     return np.sqrt(np.einsum("ij,ij->i", gap, gap))
 
 
-def _segment_distance(p1, d1, p2, d2):
-    """(K,) shortest distance between the segments p1 + s·d1 and p2 + t·d2, s, t ∈ [0, 1] ((K, 3) each)."""
-    r = p1 - p2
-    a, e = np.einsum("ij,ij->i", d1, d1), np.einsum("ij,ij->i", d2, d2)
-    b, c, f = np.einsum("ij,ij->i", d1, d2), np.einsum("ij,ij->i", d1, r), np.einsum("ij,ij->i", d2, r)
-    safe_a, safe_e = np.where(a > 0.0, a, 1.0), np.where(e > 0.0, e, 1.0)
-    denom = a * e - b * b
-    s = np.where(denom > 1e-12 * a * e, _unit((b * f - c * e) / np.where(denom > 0.0, denom, 1.0)), 0.0)
-    t = (b * s + f) / safe_e
+def _dot_across(x, y, xw, yw):
+    """(K,) dot products of the components of x and y (K, 3) across unit axes w, from their
+    components xw, yw (K,) along w."""
+    return np.einsum("ij,ij->i", x, y) - xw * yw
+
+
+def _seen_along(q, e, d, qw, ew, dw):
+    """(K,) shortest distance between the segments q + s·e and t·d (s, t ∈ [0, 1]) seen along
+    unit axes w: their components across w, from the vectors q, e, d (K, 3) and their
+    components qw, ew, dw (K,) along w (mm). Closest points of two segments, clamped to their
+    ends, computed from the six dot products of the components across w."""
+    a, c, f = _dot_across(e, e, ew, ew), _dot_across(e, q, ew, qw), _dot_across(d, q, dw, qw)
+    b, g, h = _dot_across(e, d, ew, dw), _dot_across(d, d, dw, dw), _dot_across(q, q, qw, qw)
+    safe_a, safe_g = np.where(a > 0.0, a, 1.0), np.where(g > 0.0, g, 1.0)
+    denom = a * g - b * b
+    s = np.where(denom > 1e-12 * a * g, _unit((b * f - c * g) / np.where(denom > 0.0, denom, 1.0)), 0.0)
+    t = (b * s + f) / safe_g
     s = np.where(t < 0.0, _unit(-c / safe_a), np.where(t > 1.0, _unit((b - c) / safe_a), s))
     t = _unit(t)
-    gap = r + s[:, None] * d1 - t[:, None] * d2
-    return np.sqrt(np.einsum("ij,ij->i", gap, gap))
+    # |q + s·e − t·d|² across w, expanded in the dot products.
+    gap = h + 2.0 * s * c - 2.0 * t * f + s * s * a - 2.0 * s * t * b + t * t * g
+    return np.sqrt(np.maximum(gap, 0.0))
 
 
 def inprocess_intervals(stock_intervals: EdgeIntervals, moves, program_index, origins, directions, p, *,
@@ -468,24 +481,25 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
         a, b, thick = capsules
         keep = ~_apart(a[g], b[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                        pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + thick[g])
-        found = [empty, _expanded(g[keep], span[keep], *lines, chained=False)]
+        found = [empty, _expanded(g[keep], span[keep], *lines, _spans_solved)]
         g = k = np.zeros(0, dtype=np.intp)
     else:
         found = [empty]
-    # Where the lines meet many chains, first, in a few rounds (while they pay), a few spans
-    # per group (_probe). They usually remove most of the lines, whose narrowed envelopes then
-    # meet far fewer chains.
-    for _ in range(_PROBE_ROUNDS if g.size else 0):
-        remaining = np.sum(np.maximum(envelope[1] - envelope[0], 0.0))
-        found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
-                               *lines, chained=False))
-        capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
-        centre, radius = capsule_spheres(*capsules)
-        g, k = _near_groups(g, k, capsules, pieces)
-        if np.sum(np.maximum(envelope[1] - envelope[0], 0.0)) > _PROBE_GAIN * remaining:
-            break
     if g.size:
-        found.append(_expanded(g, k, *lines, chained=True))
+        # Where the lines meet many chains: first a span or two per group (_probe), which
+        # usually removes most of the lines; then per line a first guess among the spans of
+        # the chains its group seems to enter first (_line_probe), which usually finds what
+        # is left of it; each time the narrowed envelopes meet far fewer chains; then the rest.
+        found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
+                               *lines, _spans_solved))
+        capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
+        g, k = _near_groups(g, k, capsules, pieces)
+        a, b, _ = capsules
+        pick = _entered_first(g, a[g], b[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
+                              pieces.chain_radius[k], _GUESSED_CHAINS)
+        found.append(_expanded(g[pick], k[pick], *lines, _line_probe))
+        g, k = _near_groups(g, k, group_capsules(group, present.size, envelope, line_origins, line_directions), pieces)
+        found.append(_expanded(g, k, *lines, _chains_solved))
     dead = envelope[0] >= envelope[1]
     seg, enter, leave = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]
@@ -569,10 +583,12 @@ def _near_groups(g, k, capsules, pieces):
     return g[keep], k[keep]
 
 
-def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, *, chained):
-    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k: `chained`),
-    expanded to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most
-    _EXPAND_BATCH; before (L,) the last program row that precedes each line's CL point."""
+def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, solve):
+    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k), expanded
+    to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most _EXPAND_BATCH
+    and given to solve(seg, k, envelope, origins, directions, before, pieces) (_spans_solved,
+    _chains_solved or _line_probe); before (L,) the last program row that precedes each
+    line's CL point."""
     order = np.argsort(g, kind="stable")
     g, k = g[order], k[order]
     count = sizes[g]
@@ -582,10 +598,56 @@ def _expanded(g, k, members, starts, sizes, envelope, origins, directions, befor
     for first, stop in zip(cuts[:-1], cuts[1:]):
         pair, rank = _csr(count[first:stop])
         seg, item = members[starts[g[first:stop]][pair] + rank], k[first:stop][pair]
-        if chained:
-            seg, item = _chain_spans(seg, item, envelope, origins, directions, before, pieces)
-        found.append(_line_span_pairs(seg, item, envelope, origins, directions, pieces))
+        found.append(solve(seg, item, envelope, origins, directions, before, pieces))
     return tuple(np.concatenate(part) for part in zip(*found))
+
+
+def _spans_solved(seg, span, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave) from the (segment, span) pairs (_line_span_pairs)."""
+    return _line_span_pairs(seg, span, envelope, origins, directions, pieces)
+
+
+def _chains_solved(seg, chain, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave) from the (segment, chain) pairs: the spans of the
+    chains near each segment (_chain_spans), solved."""
+    return _line_span_pairs(*_chain_spans(seg, chain, envelope, origins, directions, before, pieces), envelope,
+                            origins, directions, pieces)
+
+
+def _entered_first(owner, a, b, c0, c1, axis, radius, take):
+    """(K,) bool: per owner (K,, ascending), the `take` hulls (c0, c1, axis, radius) that the
+    segment a … b (K, 3) seems to enter first going from a to b; none that it seems not to
+    enter. The guess: its distance from the hull's path seen along the axis, interpolated
+    linearly between the ends, falls to the radius, after it crosses the hull's bottom plane."""
+    near, far = _across(a, c0, c1, axis) - radius, _across(b, c0, c1, axis) - radius
+    qa, d = a - c0, c1 - c0
+    aa, da = np.einsum("ij,ij->i", qa, axis), np.einsum("ij,ij->i", d, axis)
+    rise = np.einsum("ij,ij->i", b - a, axis)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        side = np.where(near > 0.0, near / (near - far), 0.0)
+        bottom = np.where(rise > 0.0, (np.minimum(da, 0.0) - aa) / rise, 0.0)
+    entry = np.maximum(side, bottom)
+    ok = (np.minimum(near, far) < 0.0) & (entry < 1.0)
+    return _smallest(owner, np.where(ok, entry, np.inf), take) & ok
+
+
+def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave) of a first guess per segment from its chains (seg,
+    chain (K,)): of their spans before the segment's CL point, the one its line seems to enter
+    first (_entered_first), its pieces solved."""
+    open_ = envelope[0, seg] < envelope[1, seg]
+    seg, chain = seg[open_], chain[open_]
+    order = np.argsort(seg, kind="stable")
+    seg, chain = seg[order], chain[order]
+    owner, rank = _csr(pieces.chain_count[chain])
+    seg, span = seg[owner], pieces.chain_first[chain][owner] + rank
+    keep = pieces.span_move[span] <= before[seg]
+    seg, span = seg[keep], span[keep]
+    pick = _entered_first(seg, *_ends(seg, envelope, origins, directions), pieces.span_c0[span], pieces.span_c1[span],
+                          pieces.span_axis[span], pieces.span_radius[span], 1)
+    seg, piece = _span_pieces(seg[pick], span[pick], pieces)
+    near = _near_pieces(seg, piece, envelope, origins, directions, pieces)
+    return _solved(seg[near], piece[near], envelope, origins, directions, pieces)
 
 
 def _chain_spans(seg, chain, envelope, origins, directions, before, pieces):
@@ -632,46 +694,58 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
             slack, h - slack)
     inside = _inside(a[keep], *hull) & _inside(b[keep], *hull)
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
-    # A first round at the level of spans: per segment, the span reaching lowest along its
-    # line and the one reaching highest; then the other spans against the narrowed envelopes.
-    first = _reaching(seg, origins[seg], directions[seg], pieces.span_c0[span], pieces.span_c1[span],
-                      pieces.span_axis[span], pieces.span_radius[span] + pieces.span_slack[span],
-                      pieces.span_height[span], 1)
-    out = [_solved(*_near_pieces(*_span_pieces(seg[first], span[first], pieces), envelope, origins, directions,
-                                 pieces), envelope, origins, directions, pieces)]
-    rest = np.ones(seg.size, dtype=bool)
-    rest[first] = False
-    seg, span = seg[rest], span[rest]
-    seg, span = seg[envelope[0, seg] < envelope[1, seg]], span[envelope[0, seg] < envelope[1, seg]]
-    a, b = _ends(seg, envelope, origins, directions)
-    keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                   pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
-    seg, piece = _span_pieces(seg[keep], span[keep], pieces)
+    seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
+    # Each segment's pairs ranked once by how low and how high their pieces reach along its
+    # line; every round solves the `take` first of each ranking among the pairs still open.
+    lower, upper = _extent(origins[seg], directions[seg], pieces.c0[piece], pieces.c1[piece], pieces.axis[piece],
+                           pieces.radius[piece], pieces.height[piece])
+    rankings = [_Ranking(seg, lower), _Ranking(seg, -upper)]
+    open_ = np.ones(seg.size, dtype=bool)
+    out = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     take = 1
-    while seg.size:
-        seg, piece = _near_pieces(seg, piece, envelope, origins, directions, pieces)
-        chosen = _reaching(seg, origins[seg], directions[seg], pieces.c0[piece], pieces.c1[piece], pieces.axis[piece],
-                           pieces.radius[piece], pieces.height[piece], take)
+    while open_.any():
+        at = np.flatnonzero(open_)
+        open_[at[~_near_pieces(seg[at], piece[at], envelope, origins, directions, pieces)]] = False
+        chosen = np.flatnonzero(rankings[0].first(open_, take) | rankings[1].first(open_, take))
         out.append(_solved(seg[chosen], piece[chosen], envelope, origins, directions, pieces))
-        rest = np.ones(seg.size, dtype=bool)
-        rest[chosen] = False
-        seg, piece = seg[rest], piece[rest]
+        open_[chosen] = False
         take *= 2
     return tuple(np.concatenate(part) for part in zip(*out))
 
 
+class _Ranking:
+    """The rows (K,) of each owner (K,) ordered by a key (K,), ties to the earlier row,
+    sorted once for rounds that each take the first few rows still open."""
+
+    def __init__(self, owner, key):
+        self.order = np.lexsort((key, owner))
+        ranked = owner[self.order]
+        self.start = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
+        self.count = np.diff(np.r_[self.start, owner.size])
+
+    def first(self, open_, take):
+        """(K,) bool: of each owner's rows with open_ (K,) True, the `take` first in the order."""
+        still = open_[self.order]
+        seen = np.cumsum(still)
+        before = np.repeat(seen[self.start] - still[self.start], self.count)
+        chosen = np.zeros(open_.size, dtype=bool)
+        chosen[self.order[still & (seen - before <= take)]] = True
+        return chosen
+
+
 def _near_pieces(seg, piece, envelope, origins, directions, pieces):
-    """The pairs (seg, piece) (K,) whose segment's envelope is open and from which the piece may
-    remove more than LENGTH_EPS."""
-    open_ = envelope[0, seg] < envelope[1, seg]
-    seg, piece = seg[open_], piece[open_]
+    """(K,) bool: the pairs (seg, piece) (K,) whose segment's envelope is open and from which the
+    piece may remove more than LENGTH_EPS."""
+    near = envelope[0, seg] < envelope[1, seg]
+    at = np.flatnonzero(near)
+    seg, piece = seg[at], piece[at]
     a, b = _ends(seg, envelope, origins, directions)
     # A piece reaching less than LENGTH_EPS·|u·w| into the segment's axial range removes less
     # than LENGTH_EPS of it along the line: _solved would keep nothing of it.
     grain = LENGTH_EPS * np.abs(np.einsum("ij,ij->i", directions[seg], pieces.axis[piece]))
-    near = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
-                   pieces.height[piece], 0.0, grain=grain)
-    return seg[near], piece[near]
+    near[at] = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
+                       pieces.height[piece], 0.0, grain=grain)
+    return near
 
 
 def _span_pieces(seg, span, pieces):
@@ -693,15 +767,6 @@ def _solved(seg, piece, envelope, origins, directions, pieces):
         found.append((s[hit], enter[hit], leave[hit]))
         _narrow(envelope, *found[-1])
     return tuple(np.concatenate(part) for part in zip(*found))
-
-
-def _reaching(owner, origin, direction, c0, c1, axis, radius, height, take):
-    """Indices of the pairs (one per row, all (K, 3) or (K,)) of each owner (K,) whose hull
-    (c0, c1, axis, radius, height) reaches lowest along the line origin + l·direction (the
-    `take` lowest per owner) or highest (the `take` highest), by its extent along the line:
-    l ∈ [lower, upper] for every point of the hull (mm)."""
-    lower, upper = _extent(origin, direction, c0, c1, axis, radius, height)
-    return np.flatnonzero(_smallest(owner, lower, take) | _smallest(owner, -upper, take))
 
 
 def _extent(origin, direction, c0, c1, axis, radius, height):
@@ -728,22 +793,30 @@ def _extent(origin, direction, c0, c1, axis, radius, height):
 
 
 def _smallest(owner, key, take):
-    """(K,) bool: the `take` rows of smallest key (K,) of each owner (K,)."""
-    order = np.lexsort((key, owner))
-    ranked = owner[order]
-    first = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
-    rank = np.arange(owner.size) - np.repeat(first, np.diff(np.r_[first, owner.size]))
+    """(K,) bool: the `take` rows of smallest key (K,) of each owner (K,, ascending), ties to the
+    earlier row: `take` rounds of a minimum per owner (no sort)."""
     chosen = np.zeros(owner.size, dtype=bool)
-    chosen[order[rank < take]] = True
+    if owner.size == 0:
+        return chosen
+    start = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
+    count = np.diff(np.r_[start, owner.size])
+    left = np.array(key, dtype=float)  # a copy: chosen rows become NaN, which fmin passes over
+    for _ in range(take):
+        hit = np.flatnonzero(left == np.repeat(np.fmin.reduceat(left, start), count))
+        first = hit[np.r_[True, owner[hit[1:]] != owner[hit[:-1]]]] if hit.size else hit
+        chosen[first] = True
+        left[first] = np.nan
     return chosen
 
 
 def _across(x, c0, c1, axis):
-    """(K,) distance from points x to the segments c0 … c1 seen along the unit axis (all (K, 3), mm)."""
+    """(K,) distance from points x to the segments c0 … c1 seen along the unit axis (all (K, 3),
+    mm), from dot products of the components across the axis."""
     q, d = x - c0, c1 - c0
-    q = q - np.einsum("ij,ij->i", q, axis)[:, None] * axis
-    d = d - np.einsum("ij,ij->i", d, axis)[:, None] * axis
-    return _point_distance(q, d)
+    qw, dw = np.einsum("ij,ij->i", q, axis), np.einsum("ij,ij->i", d, axis)
+    qd, dd = _dot_across(q, d, qw, dw), _dot_across(d, d, dw, dw)
+    t = _unit(qd / np.where(dd > 0.0, dd, 1.0))
+    return np.sqrt(np.maximum(_dot_across(q, q, qw, qw) - t * (2.0 * qd - t * dd), 0.0))
 
 
 def _narrow(envelope, seg, enter, leave):

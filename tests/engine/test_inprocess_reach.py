@@ -109,6 +109,23 @@ def test_five_axis_moves_against_full():
     assert against_full(program, rows[1:16:2]).any()
 
 
+@pytest.mark.parametrize("y, z", [(9.0, 4.0), (3.0, 0.5)], ids=["tops", "rims"])
+def test_swinging_tool_against_full(y, z):
+    """A tool swinging its axis by 70° while it creeps 2 mm, so that a chain's pieces lean far
+    from the chain's mean axis; then a pass beside it at height z, y mm to the side: its lines
+    meet the swung tops (y = 9: the lean's bound across the axis) or pass under and along the
+    dipping rims (y = 3: the bound along the axis, and pairs that graze a side, which only
+    the sure-miss test's clearance keeps from being dropped by rounding). Each of these three
+    bounds, left out by hand, makes its case fail."""
+    program = Program()
+    n = 15
+    swing = np.radians(np.linspace(-35.0, 35.0, n))
+    program.add_pass(straight(8.0, 10.0, 0.0, 1.0, n), 5.0, 12.0,
+                     np.stack([np.zeros(n), np.sin(swing), np.cos(swing)], axis=1))
+    rows = program.add_pass(straight(4.0, 14.0, y, z, 11), 5.0, 12.0)
+    assert against_full(program, rows[1:11]).any()
+
+
 def test_dense_curved_passes_against_full():
     """Two curved passes 0.25 mm between CL points, 4 mm apart, the first with a tilted tool:
     many lines meet many chains, so the per-line chain test is used."""
