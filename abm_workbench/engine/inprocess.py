@@ -486,8 +486,8 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     else:
         found = [empty]
     if g.size:
-        # Where the lines meet many chains: first a span or two per group (_probe), which
-        # usually removes most of the lines; then per line a first guess among the spans of
+        # Where the lines meet many chains: first a few spans per group (_probe), which
+        # usually remove most of the lines; then per line a first guess among the spans of
         # the chains its group seems to enter first (_line_probe), which usually finds what
         # is left of it; each time the narrowed envelopes meet far fewer chains; then the rest.
         found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
