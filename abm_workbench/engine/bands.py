@@ -29,9 +29,9 @@ class WallBands:
         self.n_walls = len(walls)
         edges = np.linspace(self.y_min, self.y_max, BINS + 1)
         per_bin = np.array([w.bins(edges) for w in walls]).reshape(self.n_walls, 3, BINS)
-        self.low = _sparse_table(per_bin[:, 0], np.minimum)
-        self.high = _sparse_table(per_bin[:, 1], np.maximum)
-        self.slope = _sparse_table(per_bin[:, 2], np.maximum)
+        self.low = sparse_table(per_bin[:, 0], np.minimum)
+        self.high = sparse_table(per_bin[:, 1], np.maximum)
+        self.slope = sparse_table(per_bin[:, 2], np.maximum)
         self.whole = np.column_stack([per_bin[:, 0].min(axis=1), per_bin[:, 1].max(axis=1)]).reshape(-1, 2)
         self.reach_low = np.minimum.accumulate(self.whole[::-1, 0])[::-1]
         self.reach_high = np.maximum.accumulate(self.whole[:, 1])
@@ -57,8 +57,9 @@ class WallBands:
 _FLOOR_LOG2 = np.concatenate([[0], np.floor(np.log2(np.arange(1, BINS + 1)))]).astype(np.intp)
 
 
-def _sparse_table(per_bin, combine):
-    """(levels, n_w, BINS): level k combines bins b .. b + 2^k − 1 (clamped at the last bin)."""
+def sparse_table(per_bin, combine):
+    """Range look-ups of per_bin (n_w, n_bins), by `combine` (np.minimum or np.maximum): (levels, n_w,
+    n_bins), level k combining bins b .. b + 2^k − 1 (clamped at the last bin)."""
     levels, width = [per_bin], 1
     while 2 * width <= per_bin.shape[1]:
         previous = levels[-1]

@@ -22,7 +22,7 @@ MIN_WIDTH of each other and the piece between them is below LENGTH_EPS.
 import numpy as np
 
 from .helix_roots import safeguarded_root
-from .polynomials import compose_linear, derivative, horner, real_roots_unit
+from .polynomials import compose_linear, derivative, horner, product, real_roots_unit
 from .walls import SplineTable, SplineWall
 
 #: Pieces narrower than this (mm) are no longer split (see the module docstring).
@@ -51,14 +51,6 @@ def _min_abs_unit(coefficients):
         low = np.nanmin(np.abs(horner(c[:, None, :], u)), axis=1)
         low = np.where((~np.isnan(real_roots_unit(c))).any(axis=1), 0.0, low)
     return low
-
-
-def _times(p, q):
-    """Row-wise products of polynomials (S, a) and (S, b), ascending -> (S, a + b − 1)."""
-    out = np.zeros((p.shape[0], p.shape[1] + q.shape[1] - 1))
-    for i in range(p.shape[1]):
-        out[:, i:i + q.shape[1]] += p[:, i:i + 1] * q
-    return out
 
 
 def _minus(p, q):
@@ -92,13 +84,13 @@ def spline_bounds(wall):
     vanishes on a span (the curve has a vertical tangent in y and W″ is unbounded).
     """
     x, y, w = wall.spans_x, wall.spans_y, wall.spans_w
-    a = _minus(_times(_slope_rows(x), w), _times(x, _slope_rows(w)))
-    b = _minus(_times(_slope_rows(y), w), _times(y, _slope_rows(w)))
+    a = _minus(product(_slope_rows(x), w), product(x, _slope_rows(w)))
+    b = _minus(product(_slope_rows(y), w), product(y, _slope_rows(w)))
     low = _min_abs_unit(b)
     if (low <= 0.0).any():
         j = int(np.flatnonzero(low <= 0.0)[0])
         raise ValueError(f"B-spline wall: dy/du vanishes on span {j}; a helical edge needs a wall with bounded curvature")
-    curl = _times(_minus(_times(_slope_rows(a), b), _times(a, _slope_rows(b))), _times(w, w))
+    curl = product(_minus(product(_slope_rows(a), b), product(a, _slope_rows(b))), product(w, w))
     return float((_max_abs_unit(a) / low).max()), float((_max_abs_unit(curl) / low ** 3).max())
 
 

@@ -11,7 +11,7 @@ from typing import Optional
 
 import numpy as np
 
-from .bands import _sparse_table
+from .bands import sparse_table
 from .bucket_search import BucketSearch
 from .polynomials import (bernstein_unit, bracketed_root, compose_linear, derivative, horner, monotone_root_unit,
                           product, proved_monotone_unit, real_roots_unit)
@@ -272,8 +272,8 @@ class SplineTable:
         self.rational = bool((self.spans_w[:, 1:] != 0.0).any() or (self.spans_w[:, 0] != 1.0).any())
         # Sparse tables of the spans' slope bounds: entry [k, s] covers spans s .. s + 2^k − 1.
         slopes = stacked("span_slopes", 2)
-        self.slope_low = _sparse_table(slopes[None, :, 0], np.minimum)[:, 0]
-        self.slope_high = _sparse_table(slopes[None, :, 1], np.maximum)[:, 0]
+        self.slope_low = sparse_table(slopes[None, :, 0], np.minimum)[:, 0]
+        self.slope_high = sparse_table(slopes[None, :, 1], np.maximum)[:, 0]
         # Least and greatest dx/dy of each wall over all its spans, (2, walls).
         self.wall_slopes = np.array([[-np.inf, np.inf]] * len(walls)).reshape(-1, 2).T.copy()
         self.wall_slopes[:, index] = [[w.span_slopes[:, 0].min() for w in splines],
