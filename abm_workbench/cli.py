@@ -481,4 +481,7 @@ class _Progress:
             print(f"\r{PROG}: {self.label} [{bar}] {done}/{total} CL points, {timing}", end=end, file=self.stream,
                   flush=True)
         else:
-            print(f"{PROG}: {self.label}: CL point {done}/{total}, {timing}", file=self.stream, flush=True)
+            # One write with its newline: print's separate write of the newline could be cut off
+            # by SIGTERM, and the stop message would then continue this line.
+            self.stream.write(f"{PROG}: {self.label}: CL point {done}/{total}, {timing}\n")
+            self.stream.flush()
