@@ -13,7 +13,9 @@ Each edge line's inside intervals in the stock (an EdgeIntervals, as the stairca
 `inside_intervals` gives them) lose their parts inside those volumes. The pieces are grouped
 in spans; a KD tree over bounding spheres of slices of the spans gives each CL point the spans near it, and
 tests that prove a miss drop most pairs before the closed form, so the cost grows with the
-moves near a point, not with the program's length (docs/ENGINE.md). Lengths in mm.
+moves near a point, not with the program's length (docs/ENGINE.md). Neighbouring CL points of a
+pass meet nearly the same earlier moves: most are searched guided by the moves that bounded a
+neighbour's material, then proved. Lengths in mm.
 """
 
 from dataclasses import dataclass
@@ -34,6 +36,10 @@ _CLEAR = 2.0 * FEASIBLE_EPS
 _OPPOSITE_EPS = 1e-12
 #: Spans per chain at most.
 _CHAIN = 8
+#: A chain whose pieces all lie within this (mm) of its hull is rigid: solved as one hull. The
+#: hull of a straight run of moves with one axis is the union of theirs; rounding puts its
+#: pieces some 1e-15 mm off it.
+_RIGID = 1e-12
 #: Sub-steps per span at most (a turning move is cut into more spans rather than more sub-steps per span).
 _SPAN_PIECES = 8
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
@@ -54,6 +60,9 @@ _GUESSED_CHAINS = 3
 _PROBE_PAIRS = 8
 #: Spans near a CL point above which a call's lines are searched in waves (_waves).
 _FEW_SPANS = 128
+#: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
+#: others follow in waves, each guided by a CL point of an earlier wave (_waves).
+_SEED_EVERY = 16
 
 
 def _float_array(name, value, shape, copy=True):
@@ -148,7 +157,10 @@ class SweptPieces:
     chain_count (C,) their spans; chain_move (C,) the first move; chain_c0, chain_c1,
     chain_axis (C, 3), chain_radius, chain_height (C,): one constant-axis hull from the first
     span's start to the last one's end; chain_slack (C,): the pieces' bottom centres lie
-    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|).
+    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|);
+    chain_rigid (C,) bool: slack and lean put every piece within _RIGID of the chain's hull, which
+    is then the union of its pieces (a straight run with a constant axis) and is solved whole;
+    chain_last (C,): its last move.
     Balls: each chain's height cut in slices about as tall as its radius, each in a bounding
     sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: cKDTree
     over the balls' centres.
@@ -182,11 +194,18 @@ class SweptPieces:
     chain_height: np.ndarray
     chain_slack: np.ndarray
     chain_lean: np.ndarray
+    chain_rigid: np.ndarray
+    chain_last: np.ndarray
     ball_chain: np.ndarray
     ball_centre: np.ndarray
     ball_bound: np.ndarray
     tree: object  # scipy.spatial.cKDTree
     tolerance: float
+
+    @property
+    def any_rigid(self):
+        """Whether some chain is rigid (chain_rigid)."""
+        return bool(self.chain_rigid.any())
 
 
 def _turned(theta, fraction):
@@ -297,6 +316,7 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     slack = np.maximum.reduceat(off, piece_first) if n else np.zeros(0)
     lean = np.maximum.reduceat(np.linalg.norm(axis - chain_axis[piece_chain], axis=1), piece_first) if n else np.zeros(0)
     r, h = radius[first], height[first]
+    rigid = slack + lean * np.hypot(r, h) <= _RIGID
     slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
     ball_chain, ball_index = _csr(slices)
     tall = (h / slices)[ball_chain]
@@ -305,8 +325,8 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     # point (c0 + c1)/2 + a_mid·w; the pieces lie within slack + lean·√(r² + H²) of the hull.
     grown = 0.5 * np.linalg.norm(ch1 - ch0, axis=1) + slack + lean * np.hypot(r, h)
     ball_bound = grown[ball_chain] + np.hypot(r[ball_chain], 0.5 * tall)
-    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, ball_chain, ball_centre,
-            ball_bound)
+    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, rigid, span_move[last],
+            ball_chain, ball_centre, ball_bound)
 
 
 def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None):
@@ -455,14 +475,20 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     all of it within lo … hi (L,) mm along the line; origins, directions: (N, 3) every line at
     l = 0, unit; program_index: (m,) the program row of each CL point. Only removals that overlap
     lo … hi by more than LENGTH_EPS are given, and a line whose lo … hi is covered whole gets
-    one removal [lo, hi]: a line without a removal keeps its material as it is.
+    one removal [lo, hi]: a line without a removal keeps its material as it is. Which removals
+    are given depends only on the line, not on the other lines of the call nor on the order
+    the search finds them in (docs/ENGINE.md, "Same input, same bits").
+
+    Where many earlier moves come near the CL points, the lines are searched in waves: every
+    _SEED_EVERY-th CL point in full, each other one first guided by the CL point of an earlier
+    wave nearest before it (_waves_searched).
     """
     line = np.asarray(line, dtype=np.intp).reshape(-1)
     if line.size == 0 or pieces.move.size == 0:
         return _none()[:3]
     lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
-    # The envelope of each line's remaining material narrows as removals are found (lo ≥ hi:
-    # nothing remains, the line is removed whole).
+    # Rows 0, 1: the envelope of each line's remaining material, narrowed as removals are found
+    # (lo ≥ hi: nothing remains, the line is removed whole); rows 2, 3: lo, hi as given.
     envelope = np.stack([lo, hi, lo, hi])
     state = (envelope, origins[line], directions[line], program_index[line // p] - 1, pieces)
     group, group_before = _line_groups(line, p, program_index)
@@ -476,7 +502,7 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
         found = [_spans_near(every, _subset(every, group, None, None, group_before, *state[:3], pieces), group_before,
                              *state)]
     else:
-        found = _waves_searched(*_waves(line % p, cl[new], rank, p), group, None, None, group_before, state)
+        found = _waves_searched(*_waves(line % p, cl[new], rank, p), group, group_before, state)
     dead = envelope[0] >= envelope[1]
     seg, enter, leave, _ = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]
@@ -487,10 +513,6 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
 def _none():
     """No removal intervals: (seg, enter, leave, span), each empty."""
     return np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.intp)
-
-
-#: Every _SEED_EVERY-th CL point of a call is searched first (a power of 2); the others follow in waves.
-_SEED_EVERY = 16
 
 
 def _waves(angle, present, rank, p):
@@ -509,9 +531,9 @@ def _waves(angle, present, rank, p):
 
 
 def _astray(follower, source, envelope):
-    """(F,) bool: followers (F,) whose envelope the guess left less narrowed than their source's
-    (F,): open where the source's closed, or an end unmoved from `initial` (2, L) where the
-    source's end moved."""
+    """(F,) bool: followers (F,) whose envelope (envelope (4, L): rows 0, 1 now, rows 2, 3 at
+    first) the guess left less narrowed than their source's (F,): open where the source's
+    closed, or with an end where it was at first while the source's end moved."""
     now, was = envelope[:2, follower], envelope[2:, follower]
     model, model_was = envelope[:2, source], envelope[2:, source]
     open_ = now[0] < now[1]
@@ -533,14 +555,14 @@ def _followed(follower, source, found, envelope, origins, directions, before, pi
     step = np.rint(np.einsum("ij,ij->i", shift, d) / np.where(dd > 0.0, dd, 1.0)).astype(np.intp)
     w = np.clip(w + step, 0, pieces.span_move.size - 1)
     keep = pieces.span_move[w] <= before[who]
-    return _line_span_pairs(who[keep], w[keep], envelope, origins, directions, pieces)
+    return _line_span_pairs(who[keep], w[keep], envelope, origins, directions, before, pieces)
 
 
 def _witnesses(found, envelope):
     """(seg, span) sorted by seg: for each line whose search is done, the spans whose removals
     (found: seg, enter, leave, span) bound what is left of it: where its envelope (4, L) is
-    open, those ending at its lower end or starting at its upper one; where it closed, of the
-    removals over its first range the one reaching highest from its start, the one reaching
+    open, those ending at its lower end or starting at its upper one; where it closed, of
+    the removals over its first range the one reaching highest from its start, the one reaching
     lowest from its end and the one covering most of it."""
     order = np.argsort(found[0], kind="stable")
     seg, enter, leave, span = (part[order] for part in found)
@@ -567,7 +589,8 @@ def _spans_per_point(cl, seed, envelope, origins, directions, program_index, pie
     count = np.diff(np.r_[first, at.size])
     centre = np.add.reduceat(low + high, first, axis=0) / (2.0 * count)[:, None]
     middle = np.repeat(centre, count, axis=0)
-    far = np.maximum(np.einsum("ij,ij->i", low - middle, low - middle), np.einsum("ij,ij->i", high - middle, high - middle))
+    low, high = low - middle, high - middle
+    far = np.maximum(np.einsum("ij,ij->i", low, low), np.einsum("ij,ij->i", high, high))
     radius = np.sqrt(np.maximum.reduceat(far, first))
     from scipy.spatial import cKDTree
 
@@ -582,13 +605,14 @@ def _spans_per_point(cl, seed, envelope, origins, directions, program_index, pie
     return int(np.bincount(i[keep], pieces.chain_count[k[keep]], minlength=first.size).max())
 
 
-def _waves_searched(wave, source, group, g, k, group_before, state):
+def _waves_searched(wave, source, group, group_before, state):
     """Removal intervals (a list of (seg, enter, leave, span)) of all lines, wave by wave
-    (_waves; g, k the pairs of wave 0's groups): each follower first gets the spans that bound
-    what was left of its source line, shifted (_followed), then the search without probes;
-    leads, and followers the guess left astray, get the whole search (_searched)."""
+    (_waves): the seeds (wave 0) get the whole search (_searched); each follower of a later
+    wave first the spans that bound what is left of its source line, shifted (_followed), then
+    the search without probes; followers without a source line, and those the guess left
+    astray (_astray), the whole search."""
     envelope = state[0]
-    found = [_searched(np.flatnonzero(wave == 0), group, g, k, group_before, *state)]
+    found = [_searched(np.flatnonzero(wave == 0), group, None, None, group_before, *state)]
     for level in range(1, int(wave.max()) + 1):
         mine = wave == level
         follower = np.flatnonzero(mine & (source >= 0))
@@ -683,8 +707,8 @@ def _group_chains(capsules, group_before, pieces):
         return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
     from scipy.spatial import cKDTree
 
-    near = cKDTree(centre[live]).sparse_distance_matrix(pieces.tree, float(radius[live].max() + pieces.ball_bound.max()),
-                                                        output_type="ndarray")
+    reach = float(radius[live].max() + pieces.ball_bound.max())
+    near = cKDTree(centre[live]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
     g, ball = live[near["i"]], near["j"].astype(np.intp)
     keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
     chains, n_groups = pieces.chain_first.size, radius.size
@@ -740,7 +764,7 @@ def _near_groups(g, k, capsules, pieces):
 
 
 def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, solve):
-    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k), expanded
+    """Removal intervals (seg, enter, leave, span) from the pairs (group g, chain or span k), expanded
     to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most _EXPAND_BATCH
     and given to solve(seg, k, envelope, origins, directions, before, pieces) (_spans_solved,
     _chains_solved or _line_probe); before (L,) the last program row that precedes each
@@ -759,15 +783,20 @@ def _expanded(g, k, members, starts, sizes, envelope, origins, directions, befor
 
 
 def _spans_solved(seg, span, envelope, origins, directions, before, pieces):
-    """Removal intervals (seg, enter, leave) from the (segment, span) pairs (_line_span_pairs)."""
-    return _line_span_pairs(seg, span, envelope, origins, directions, pieces)
+    """Removal intervals (seg, enter, leave, span) from the (segment, span) pairs (_line_span_pairs)."""
+    return _line_span_pairs(seg, span, envelope, origins, directions, before, pieces)
 
 
 def _chains_solved(seg, chain, envelope, origins, directions, before, pieces):
-    """Removal intervals (seg, enter, leave) from the (segment, chain) pairs: the spans of the
-    chains near each segment (_chain_spans), solved."""
-    return _line_span_pairs(*_chain_spans(seg, chain, envelope, origins, directions, before, pieces), envelope,
-                            origins, directions, pieces)
+    """Removal intervals (seg, enter, leave, span) from the (segment, chain) pairs: the chains
+    near each segment; a rigid one that ends before the segment's CL point solved whole (its
+    hull is the union of its pieces), of the others their spans (_line_span_pairs)."""
+    seg, chain = _chains_near(seg, chain, envelope, origins, directions, pieces)
+    whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
+    found = _solved(seg[whole], chain[whole], envelope, origins, directions, pieces, whole=True)
+    seg, span = _chain_spans(seg[~whole], chain[~whole], before, pieces)
+    return tuple(np.concatenate(part) for part in zip(found, _line_span_pairs(seg, span, envelope, origins,
+                                                                              directions, before, pieces)))
 
 
 def _entered_first(owner, a, b, c0, c1, axis, radius, take):
@@ -788,7 +817,7 @@ def _entered_first(owner, a, b, c0, c1, axis, radius, take):
 
 
 def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
-    """Removal intervals (seg, enter, leave) of a first guess per segment from its chains (seg,
+    """Removal intervals (seg, enter, leave, span) of a first guess per segment from its chains (seg,
     chain (K,)): of their spans before the segment's CL point, the one its line seems to enter
     first (_entered_first), its pieces solved."""
     open_ = envelope[0, seg] < envelope[1, seg]
@@ -801,55 +830,89 @@ def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
     seg, span = seg[keep], span[keep]
     pick = _entered_first(seg, *_ends(seg, envelope, origins, directions), pieces.span_c0[span], pieces.span_c1[span],
                           pieces.span_axis[span], pieces.span_radius[span], 1)
-    seg, piece = _span_pieces(seg[pick], span[pick], pieces)
+    (whole, chain), (seg, span) = _whole_chains(seg[pick], span[pick], before, pieces)
+    found = _solved(whole, chain, envelope, origins, directions, pieces, whole=True)
+    seg, piece = _span_pieces(seg, span, pieces)
     near = _near_pieces(seg, piece, envelope, origins, directions, pieces)
-    return _solved(seg[near], piece[near], envelope, origins, directions, pieces)
+    return tuple(np.concatenate(part) for part in zip(found, _solved(seg[near], piece[near], envelope, origins,
+                                                                     directions, pieces)))
 
 
-def _chain_spans(seg, chain, envelope, origins, directions, before, pieces):
-    """The pairs (segment seg, chain) (K,) as (segment, span) pairs: the chains not surely apart
-    from the segment's envelope, each span of them that ends before the segment's CL point."""
+def _chains_near(seg, chain, envelope, origins, directions, pieces):
+    """The pairs (segment seg, chain) (K,) whose segment is open and not surely apart from the
+    chain."""
     open_ = envelope[0, seg] < envelope[1, seg]
     seg, chain = seg[open_], chain[open_]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.chain_c0[chain], pieces.chain_c1[chain], pieces.chain_axis[chain],
                    pieces.chain_radius[chain], pieces.chain_height[chain], pieces.chain_slack[chain],
                    pieces.chain_lean[chain])
-    owner, rank = _csr(pieces.chain_count[chain[keep]])
-    seg, span = seg[keep][owner], pieces.chain_first[chain[keep]][owner] + rank
+    return seg[keep], chain[keep]
+
+
+def _chain_spans(seg, chain, before, pieces):
+    """The pairs (segment seg, chain) (K,) as (segment, span) pairs: each span of the chain that
+    ends before the segment's CL point (before (L,) its last earlier program row)."""
+    owner, rank = _csr(pieces.chain_count[chain])
+    seg, span = seg[owner], pieces.chain_first[chain][owner] + rank
     keep = pieces.span_move[span] <= before[seg]
     return seg[keep], span[keep]
 
 
 def _ends(seg, envelope, origins, directions):
-    """The ends (K, 3) of the current envelopes of segments `seg` (K,)."""
-    return (origins[seg] + envelope[0, seg, None] * directions[seg],
-            origins[seg] + envelope[1, seg, None] * directions[seg])
+    """The ends (K, 3) of the current envelopes of segments `seg` (K,): per segment once, then
+    gathered, where segments repeat."""
+    if seg.size > 2 * envelope.shape[1]:
+        low = origins + envelope[0, :, None] * directions
+        high = origins + envelope[1, :, None] * directions
+        return low[seg], high[seg]
+    origin, direction = origins[seg], directions[seg]
+    return origin + envelope[0, seg, None] * direction, origin + envelope[1, seg, None] * direction
 
 
-def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
-    """Removal intervals (seg, enter, leave) from the pairs (segment seg[i], span span[i]).
+def _whole_chains(seg, span, before, pieces):
+    """The pairs (segment seg, span) (K,) split: ((segments, chains), distinct) where the span's
+    chain is rigid and ends before the segment's CL point (before (L,) its last earlier program
+    row), so that it is solved whole, never piece by piece, for that segment; (segments,
+    spans) for the others."""
+    if not pieces.any_rigid:
+        return (seg[:0], seg[:0]), (seg, span)
+    chain = np.searchsorted(pieces.chain_first, span, side="right") - 1
+    whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
+    count = pieces.chain_first.size
+    pair = np.unique(seg[whole] * count + chain[whole])
+    return (pair // count, pair % count), (seg[~whole], span[~whole])
 
-    envelope: (2, L) the range lo … hi (mm along the line) holding each segment's remaining
-    material, narrowed in place by the removals found; origins, directions: (L, 3) the
-    segments' lines. Pairs are solved in rounds: each round solves, per segment, the pieces
+
+def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave, span) from the pairs (segment seg[i], span span[i]);
+    span: the span each removal comes from.
+
+    envelope: (4, L), rows 0, 1 the range lo … hi (mm along the line) holding each segment's
+    remaining material, narrowed in place by the removals found (rows 2, 3: as it was at
+    first); origins, directions: (L, 3) the segments' lines. A segment found to lie inside a
+    span's hull is removed whole: its envelope as it was then is given as one removal. Pairs
+    are solved in rounds: each round solves, per segment, the pieces
     reaching lowest and highest along its line (1, 2, 4, … of each), narrows the envelopes,
     and drops the pairs whose piece is then surely apart from the envelope (it can remove
     nothing more), so that a line cut by many pieces solves few of them.
     """
+    (whole, chain), (seg, span) = _whole_chains(seg, span, before, pieces)
+    open_ = envelope[0, whole] < envelope[1, whole]
+    out = [_solved(whole[open_], chain[open_], envelope, origins, directions, pieces, whole=True)]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
     if seg.size == 0:
-        return _none()
+        return out[0]
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving.
     slack, h = pieces.span_slack[span], pieces.span_height[span]
     hull = (pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span] - slack,
             slack, h - slack)
     inside = _inside(a[keep], *hull) & _inside(b[keep], *hull)
-    out = [(seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside])]
+    out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
     seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
     # Each segment's pairs ranked once by how low and how high their pieces reach along its
@@ -907,20 +970,24 @@ def _span_pieces(seg, span, pieces):
     return seg[owner], pieces.span_first[span][owner] + rank
 
 
-def _solved(seg, piece, envelope, origins, directions, pieces):
-    """Removal intervals (seg, enter, leave) of the segments seg (K,) inside pieces piece (K,)
-    that overlap their envelopes (2, L), closed form in batches; the envelopes are narrowed."""
+def _solved(seg, piece, envelope, origins, directions, pieces, whole=False):
+    """Removal intervals (seg, enter, leave, span) of the segments seg (K,) inside pieces piece (K,)
+    (with `whole`, inside the hulls of rigid chains piece (K,)) that overlap their first ranges
+    (envelope (4, L), rows 2, 3) by more than LENGTH_EPS, closed form in batches; the envelopes
+    (rows 0, 1) are narrowed; span: the span of each piece (of a chain, its first)."""
+    hulls = ((pieces.chain_c0, pieces.chain_c1, pieces.chain_axis, pieces.chain_radius, pieces.chain_height)
+             if whole else (pieces.c0, pieces.c1, pieces.axis, pieces.radius, pieces.height))
     found = [_none()]
     for begin in range(0, seg.size, _PAIR_BATCH):
         s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
-        enter, leave = line_hull_interval(origins[s], directions[s], pieces.c0[q], pieces.c1[q], pieces.axis[q],
-                                          pieces.radius[q], pieces.height[q])
+        enter, leave = line_hull_interval(origins[s], directions[s], *(column[q] for column in hulls))
         # Kept when it overlaps the line's first range by more than LENGTH_EPS, not the
         # current one: which removals are kept then does not depend on the order they are
         # found in (docs/ENGINE.md, "Same input, same bits").
         with np.errstate(invalid="ignore"):
             hit = (np.minimum(leave, envelope[3, s]) - np.maximum(enter, envelope[2, s])) > LENGTH_EPS
-        found.append((s[hit], enter[hit], leave[hit], np.searchsorted(pieces.span_first, q[hit], side="right") - 1))
+        span = pieces.chain_first[q[hit]] if whole else np.searchsorted(pieces.span_first, q[hit], side="right") - 1
+        found.append((s[hit], enter[hit], leave[hit], span))
         _narrow(envelope, *found[-1][:3])
     return tuple(np.concatenate(part) for part in zip(*found))
 
