@@ -56,9 +56,8 @@ _EXPAND_BATCH = 1 << 17
 _PROBE = 1
 #: Chains per group whose spans _line_probe weighs for each of the group's lines.
 _GUESSED_CHAINS = 3
-#: (edge line, span) pairs per line above which chains are tested per line and probes made.
-_PROBE_PAIRS = 8
-#: Spans near a CL point above which a call's lines are searched in waves (_waves).
+#: Spans near a CL point above which chains are tested per line, probes made and the lines
+#: searched in waves (_waves); at most that many, chains go straight to (group, span) pairs.
 _FEW_SPANS = 128
 #: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
 #: others follow in waves, each guided by a CL point of an earlier wave (_waves).
@@ -633,9 +632,11 @@ def _subset(sub, group, g, k, group_before, envelope, origins, directions, piece
     pairs (group g, chain k) of their groups not surely apart from those capsules: of the pairs
     g, k given, or, with g None, from the KD tree (_group_chains)."""
     n = group[-1] + 1
-    mine = group[sub]
+    every = sub.size == group.size  # then sub is every line, in order: no copies
+    mine = group if every else group[sub]
     starts, sizes = np.searchsorted(mine, np.arange(n)), np.bincount(mine, minlength=n)
-    capsules = group_capsules(mine, n, envelope[:, sub], origins[sub], directions[sub])
+    capsules = group_capsules(mine, n, *((envelope, origins, directions) if every else
+                                         (envelope[:, sub], origins[sub], directions[sub])))
     if g is None:
         g, k = _group_chains(capsules, group_before, pieces)
     else:
