@@ -11,7 +11,9 @@ Cases (engine CPU time, `time.process_time`, only; files are loaded before the c
   heights and tool axes, each pass shifted by `--stepover` in y) with `--points` CL points in
   all, at 1°, in chunks of `--chunk` instants: `engage` against `engage_in_process` over
   `--evaluate` CL points from the middle of the middle pass. The whole program is swept and
-  indexed once, timed apart (a program pays it once, not per evaluated CL point).
+  indexed once, timed apart (a program pays it once, not per evaluated CL point). With
+  `--upright` the program's tool axis is vertical throughout (a three-axis program: straight
+  runs of moves with one axis, whose chains are rigid).
 Prints a table: case, instants, CPU seconds, instants/s; then the ratios, measured in this one
 run: in-process over initial for each case, and the program's in-process time per instant over
 the single pass's; and the load average. `--profile` adds, for the program's evaluation, the
@@ -127,6 +129,7 @@ def main():
     parser.add_argument("--chunk", type=int, default=1 << 15, help="instants per chunk")
     parser.add_argument("--evaluate", type=int, default=300, help="CL points of the program evaluated")
     parser.add_argument("--tolerance", type=float, default=0.05, help="five-axis sub-step tolerance (mm)")
+    parser.add_argument("--upright", action="store_true", help="the program with a vertical tool axis (three-axis)")
     parser.add_argument("--profile", action="store_true", help="profile the program's in-process evaluation")
     args = parser.parse_args()
     stock, tool, path, settings = load_model(MODEL)
@@ -139,6 +142,8 @@ def main():
     per_pass = args.points // args.passes
     base = densified(path, per_pass)
     offsets = (np.arange(args.passes) - 0.5 * (args.passes - 1)) * args.stepover
+    if args.upright:
+        base = Toolpath(base.cl, np.zeros(len(base)), np.zeros(len(base)))
     passes = [Toolpath(base.cl + [0.0, y, 0.0], base.theta_a, base.theta_b) for y in offsets]
     program = program_of(passes, tool)
     first = (args.passes // 2) * per_pass + max(0, (per_pass - args.evaluate) // 2)
@@ -149,7 +154,8 @@ def main():
     start = time.process_time()
     pieces = swept_pieces(program, args.tolerance)
     sweep = time.process_time() - start
-    name = (f"{args.passes * per_pass}-point program ({args.passes} passes, stepover {args.stepover} mm)")
+    name = (f"{args.passes * per_pass}-point {'three-axis ' if args.upright else ''}program ({args.passes} passes, "
+            f"stepover {args.stepover} mm)")
     rows.append((f"{name}: swept pieces of the whole program (once)", len(program), sweep, "CL points swept"))
     (initial, _), (inproc, (_, changed)) = best_of(
         1, lambda: timed_engage(stock, tool, chosen, settings, args.chunk),

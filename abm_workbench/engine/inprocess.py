@@ -13,7 +13,9 @@ Each edge line's inside intervals in the stock (an EdgeIntervals, as the stairca
 `inside_intervals` gives them) lose their parts inside those volumes. The pieces are grouped
 in spans; a KD tree over bounding spheres of slices of the spans gives each CL point the spans near it, and
 tests that prove a miss drop most pairs before the closed form, so the cost grows with the
-moves near a point, not with the program's length (docs/ENGINE.md). Lengths in mm.
+moves near a point, not with the program's length (docs/ENGINE.md). Neighbouring CL points of a
+pass meet nearly the same earlier moves: most are searched guided by the moves that bounded a
+neighbour's material, then proved. Lengths in mm.
 """
 
 from dataclasses import dataclass
@@ -34,6 +36,10 @@ _CLEAR = 2.0 * FEASIBLE_EPS
 _OPPOSITE_EPS = 1e-12
 #: Spans per chain at most.
 _CHAIN = 8
+#: A chain whose pieces all lie within this (mm) of its hull is rigid: solved as one hull. The
+#: hull of a straight run of moves with one axis is the union of theirs; rounding puts its
+#: pieces some 1e-15 mm off it.
+_RIGID = 1e-12
 #: Sub-steps per span at most (a turning move is cut into more spans rather than more sub-steps per span).
 _SPAN_PIECES = 8
 #: Pairs of (edge line, swept piece) solved per batch, to bound memory.
@@ -42,14 +48,20 @@ _PAIR_BATCH = 1 << 16
 _GROUPS = 18
 #: Largest key range for which _distinct marks keys in a bool array rather than sorting them.
 _MARK_LIMIT = 1 << 24
+#: … and is at most this many times the number of keys (else sorting them is cheaper).
+_MARK_SPARSE = 64
 #: (edge line, span) pairs examined per batch, to bound memory.
 _EXPAND_BATCH = 1 << 17
 #: Chains, then spans, per group of edge lines and per criterion solved first (_probe).
 _PROBE = 1
 #: Chains per group whose spans _line_probe weighs for each of the group's lines.
 _GUESSED_CHAINS = 3
-#: (edge line, span) pairs per line above which chains are tested per line and probes made.
-_PROBE_PAIRS = 8
+#: Spans near a CL point above which chains are tested per line, probes made and the lines
+#: searched in waves (_waves); at most that many, chains go straight to (group, span) pairs.
+_FEW_SPANS = 128
+#: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
+#: others follow in waves, each guided by a CL point of an earlier wave (_waves).
+_SEED_EVERY = 16
 
 
 def _float_array(name, value, shape, copy=True):
@@ -144,7 +156,10 @@ class SweptPieces:
     chain_count (C,) their spans; chain_move (C,) the first move; chain_c0, chain_c1,
     chain_axis (C, 3), chain_radius, chain_height (C,): one constant-axis hull from the first
     span's start to the last one's end; chain_slack (C,): the pieces' bottom centres lie
-    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|).
+    within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|);
+    chain_rigid (C,) bool: slack and lean put every piece within _RIGID of the chain's hull, which
+    is then the union of its pieces (a straight run with a constant axis) and is solved whole;
+    chain_last (C,): its last move.
     Balls: each chain's height cut in slices about as tall as its radius, each in a bounding
     sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: cKDTree
     over the balls' centres.
@@ -178,11 +193,18 @@ class SweptPieces:
     chain_height: np.ndarray
     chain_slack: np.ndarray
     chain_lean: np.ndarray
+    chain_rigid: np.ndarray
+    chain_last: np.ndarray
     ball_chain: np.ndarray
     ball_centre: np.ndarray
     ball_bound: np.ndarray
     tree: object  # scipy.spatial.cKDTree
     tolerance: float
+
+    @property
+    def any_rigid(self):
+        """Whether some chain is rigid (chain_rigid)."""
+        return bool(self.chain_rigid.any())
 
 
 def _turned(theta, fraction):
@@ -293,6 +315,7 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     slack = np.maximum.reduceat(off, piece_first) if n else np.zeros(0)
     lean = np.maximum.reduceat(np.linalg.norm(axis - chain_axis[piece_chain], axis=1), piece_first) if n else np.zeros(0)
     r, h = radius[first], height[first]
+    rigid = slack + lean * np.hypot(r, h) <= _RIGID
     slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
     ball_chain, ball_index = _csr(slices)
     tall = (h / slices)[ball_chain]
@@ -301,11 +324,11 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
     # point (c0 + c1)/2 + a_mid·w; the pieces lie within slack + lean·√(r² + H²) of the hull.
     grown = 0.5 * np.linalg.norm(ch1 - ch0, axis=1) + slack + lean * np.hypot(r, h)
     ball_bound = grown[ball_chain] + np.hypot(r[ball_chain], 0.5 * tall)
-    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, ball_chain, ball_centre,
-            ball_bound)
+    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, rigid, span_move[last],
+            ball_chain, ball_centre, ball_bound)
 
 
-def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
+def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
     it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm. Both
@@ -318,9 +341,6 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
     radius + lean·h of c (|e| ≤ radius, h·|w_p − w| ≤ lean·h). So the axial range grows by
     slack + lean·radius, and the distance seen along the axis by slack + lean·h, h up to the
     height at which a piece point can be level with the segment (h·(w_p·w) ≥ h·(1 − lean²/2)).
-
-    grain (K,) or scalar, mm: also apart when the segment reaches less than that into the
-    hull's axial range (it can then share only a sliver with the hull).
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (np.einsum("ij,ij->i", v, axis) for v in (qa, qb, d))
@@ -331,8 +351,8 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, grain=0.0):
         rise = np.maximum(np.maximum(aa, ab) - np.minimum(da, 0.0) + axial, 0.0)
         reach = np.where(level > 0.0, np.minimum(rise / np.where(level > 0.0, level, 1.0), height), height)
         across = across + lean * reach
-    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - axial + grain
-    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + axial - grain
+    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - axial
+    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + axial
     apart = below | above
     # The distance seen along the axis only where the cheaper test left it open.
     i = np.flatnonzero(~apart)
@@ -454,94 +474,255 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     all of it within lo … hi (L,) mm along the line; origins, directions: (N, 3) every line at
     l = 0, unit; program_index: (m,) the program row of each CL point. Only removals that overlap
     lo … hi by more than LENGTH_EPS are given, and a line whose lo … hi is covered whole gets
-    one removal [lo, hi]: a line without a removal keeps its material as it is.
+    one removal [lo, hi]: a line without a removal keeps its material as it is. Which removals
+    are given depends only on the line, not on the other lines of the call nor on the order
+    the search finds them in (docs/ENGINE.md, "Same input, same bits").
+
+    Where many earlier moves come near the CL points, the lines are searched in waves: every
+    _SEED_EVERY-th CL point in full, each other one first guided by the CL point of an earlier
+    wave nearest before it (_waves_searched).
     """
-    empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
     line = np.asarray(line, dtype=np.intp).reshape(-1)
     if line.size == 0 or pieces.move.size == 0:
-        return empty
+        return _none()[:3]
     lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
-    # The envelope of each line's remaining material narrows as removals are found (lo ≥ hi:
-    # nothing remains, the line is removed whole).
-    envelope = np.stack([lo, hi])
-    line_origins, line_directions = origins[line], directions[line]
-    starts, present, group, sizes = _line_groups(line, p)
-    members = np.arange(line.size)
-    before = program_index[line // p] - 1
-    group_before = program_index[present // _GROUPS] - 1
-    g, k, capsules, centre, radius = _group_chains(group, present.size, group_before, envelope, line_origins,
-                                                   line_directions, pieces)
-    lines = (members, starts, sizes, envelope, line_origins, line_directions, before, pieces)
-    if (sizes[g] * pieces.chain_count[k]).sum() <= _PROBE_PAIRS * line.size:
-        # Few (line, span) pairs: straight to (group, span) pairs, no test of chains per line.
-        owner, rank = _csr(pieces.chain_count[k])
-        g, span = g[owner], pieces.chain_first[k][owner] + rank
-        keep = pieces.span_move[span] <= group_before[g]
-        g, span = g[keep], span[keep]
-        a, b, thick = capsules
-        keep = ~_apart(a[g], b[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
-                       pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + thick[g])
-        found = [empty, _expanded(g[keep], span[keep], *lines, _spans_solved)]
-        g = k = np.zeros(0, dtype=np.intp)
+    # Rows 0, 1: the envelope of each line's remaining material, narrowed as removals are found
+    # (lo ≥ hi: nothing remains, the line is removed whole); rows 2, 3: lo, hi as given.
+    envelope = np.stack([lo, hi, lo, hi])
+    state = (envelope, origins[line], directions[line], program_index[line // p] - 1, pieces)
+    group, group_before = _line_groups(line, p, program_index)
+    cl = line // p
+    new = np.r_[True, cl[1:] != cl[:-1]]
+    rank = np.cumsum(new) - 1
+    if _spans_per_point(cl, rank % _SEED_EVERY == 0, *state[:3], program_index, pieces) <= _FEW_SPANS:
+        # Few spans near the CL points (as in a single pass, whose own earlier moves are far
+        # from its leading edge): every line straight to its spans.
+        every = np.arange(line.size)
+        found = [_spans_near(every, _subset(every, group, None, None, group_before, *state[:3], pieces), group_before,
+                             *state)]
     else:
-        found = [empty]
-    if g.size:
-        # Where the lines meet many chains: first a few spans per group (_probe), which
-        # usually remove most of the lines; then per line a first guess among the spans of
-        # the chains its group seems to enter first (_line_probe), which usually finds what
-        # is left of it; each time the narrowed envelopes meet far fewer chains; then the rest.
-        found.append(_expanded(*_probe(g, k, centre, radius, line_directions[members[starts]], group_before, pieces),
-                               *lines, _spans_solved))
-        capsules = group_capsules(group, present.size, envelope, line_origins, line_directions)
-        g, k = _near_groups(g, k, capsules, pieces)
-        a, b, _ = capsules
-        pick = _entered_first(g, a[g], b[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
-                              pieces.chain_radius[k], _GUESSED_CHAINS)
-        found.append(_expanded(g[pick], k[pick], *lines, _line_probe))
-        g, k = _near_groups(g, k, group_capsules(group, present.size, envelope, line_origins, line_directions), pieces)
-        found.append(_expanded(g, k, *lines, _chains_solved))
+        found = _waves_searched(*_waves(line % p, cl[new], rank, p), group, group_before, state)
     dead = envelope[0] >= envelope[1]
-    seg, enter, leave = (np.concatenate(part) for part in zip(*found))
+    seg, enter, leave, _ = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]
     return (np.concatenate([line[dead], line[seg[alive]]]), np.concatenate([lo[dead], enter[alive]]),
             np.concatenate([hi[dead], leave[alive]]))
 
 
-def _line_groups(line, p):
-    """The lines (L,) (rows i·p + k, ascending) in groups: a CL point's angles in _GROUPS runs,
-    all with that point's tool axis as direction. Returns starts (G,) each group's first line,
-    present (G,) its key (CL point · _GROUPS + run), group (L,) each line's group, sizes (G,)."""
-    cl = (line // p) * _GROUPS + (line % p) * _GROUPS // p
-    starts = np.flatnonzero(np.r_[True, cl[1:] != cl[:-1]])
-    sizes = np.diff(np.r_[starts, cl.size])
-    return starts, cl[starts], np.repeat(np.arange(starts.size), sizes), sizes
+def _none():
+    """No removal intervals: (seg, enter, leave, span), each empty."""
+    return np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0), np.zeros(0, dtype=np.intp)
 
 
-def _group_chains(group, n_groups, group_before, envelope, origins, directions, pieces):
-    """The pairs (group g, chain k) (K,) that may remove material from the groups' lines: the
-    group's bounding sphere meets a ball of the chain, the chain's first move ends by the
-    group's CL point (group_before (G,) its last earlier program row), and the group's capsule
-    is not surely apart from the chain. group (L,), envelope (2, L) mm, origins, directions
-    (L, 3): the lines. Returns g, k, the capsules and their spheres (centre (G, 3), radius (G,))."""
-    capsules = group_capsules(group, n_groups, envelope, origins, directions)
-    centre, radius = capsule_spheres(*capsules)
+def _waves(angle, present, rank, p):
+    """(wave (L,), source (L,)) of the lines at angles `angle` (L,) (indices 0 … p − 1) of the
+    CL points present (ascending) at `rank` (L,) among them: the lines of every _SEED_EVERY-th
+    CL point are wave 0; a CL point at rank r with r mod _SEED_EVERY = h·(odd) is in the wave
+    whose step is h, and its lines follow those at the same angle on the CL point h ranks
+    before (source: index into the lines, −1 for wave 0 and where that line holds no material)."""
+    offset = rank % _SEED_EVERY
+    step = offset & -offset  # the lowest set bit: the distance to a CL point of an earlier wave
+    wave = np.where(offset == 0, 0, np.log2(_SEED_EVERY // np.maximum(step, 1)).astype(np.intp))
+    line = present[rank] * p + angle
+    row = present[rank - step] * p + angle
+    at = np.minimum(np.searchsorted(line, row), line.size - 1)
+    return wave, np.where((line[at] == row) & (offset != 0), at, -1)
+
+
+def _astray(follower, source, envelope):
+    """(F,) bool: followers (F,) whose envelope (envelope (4, L): rows 0, 1 now, rows 2, 3 at
+    first) the guess left less narrowed than their source's (F,): open where the source's
+    closed, or with an end where it was at first while the source's end moved."""
+    now, was = envelope[:2, follower], envelope[2:, follower]
+    model, model_was = envelope[:2, source], envelope[2:, source]
+    open_ = now[0] < now[1]
+    return open_ & ((model[0] >= model[1]) | ((model != model_was) & (now == was)).any(axis=0))
+
+
+def _followed(follower, source, found, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave, span) of the follower lines (F,) from the spans that
+    bound what was left of their source lines (F,) (_witnesses), each shifted along the earlier
+    moves by the lines' distance."""
+    seg, span = _witnesses(found, envelope)
+    first = np.searchsorted(seg, source)
+    count = np.searchsorted(seg, source, side="right") - first
+    owner, rank = _csr(count)
+    who, w = follower[owner], span[first[owner] + rank]
+    shift = origins[who] - origins[source[owner]]
+    d = pieces.span_c1[w] - pieces.span_c0[w]
+    dd = np.einsum("ij,ij->i", d, d)
+    step = np.rint(np.einsum("ij,ij->i", shift, d) / np.where(dd > 0.0, dd, 1.0)).astype(np.intp)
+    w = np.clip(w + step, 0, pieces.span_move.size - 1)
+    keep = pieces.span_move[w] <= before[who]
+    return _line_span_pairs(who[keep], w[keep], envelope, origins, directions, before, pieces)
+
+
+def _witnesses(found, envelope):
+    """(seg, span) sorted by seg: for each line whose search is done, the spans whose removals
+    (found: seg, enter, leave, span) bound what is left of it: where its envelope (4, L) is
+    open, those ending at its lower end or starting at its upper one; where it closed, of
+    the removals over its first range the one reaching highest from its start, the one reaching
+    lowest from its end and the one covering most of it."""
+    order = np.argsort(found[0], kind="stable")
+    seg, enter, leave, span = (part[order] for part in found)
+    low, high, first_low, first_high = envelope[:, seg]
+    closed = low >= high
+    pick = ~closed & ((leave == low) | (enter == high))
+    cover = np.minimum(leave, first_high) - np.maximum(enter, first_low)
+    for key in (np.where(enter <= first_low, -leave, np.inf), np.where(leave >= first_high, enter, np.inf), -cover):
+        pick |= closed & _smallest(seg, np.where(closed, key, np.inf), 1)
+    return seg[pick], span[pick]
+
+
+def _spans_per_point(cl, seed, envelope, origins, directions, program_index, pieces):
+    """The largest number of spans ending before their CL point whose chains' balls meet the
+    sphere around the envelopes of a seed CL point's lines (cl (L,) their CL points,
+    non-decreasing; seed (L,) bool); 0 without a seed line."""
+    at = np.flatnonzero(seed & (envelope[0] < envelope[1]))
+    if at.size == 0:
+        return 0
+    low = origins[at] + envelope[0, at, None] * directions[at]
+    high = origins[at] + envelope[1, at, None] * directions[at]
+    owner = cl[at]
+    first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
+    count = np.diff(np.r_[first, at.size])
+    centre = np.add.reduceat(low + high, first, axis=0) / (2.0 * count)[:, None]
+    middle = np.repeat(centre, count, axis=0)
+    low, high = low - middle, high - middle
+    far = np.maximum(np.einsum("ij,ij->i", low, low), np.einsum("ij,ij->i", high, high))
+    radius = np.sqrt(np.maximum.reduceat(far, first))
     from scipy.spatial import cKDTree
 
     near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
                                                   output_type="ndarray")
-    g, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
+    i, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
+    keep = near["v"] <= radius[i] + pieces.ball_bound[ball]
     chains = pieces.chain_first.size
+    pair = np.unique(i[keep] * chains + pieces.ball_chain[ball[keep]])
+    i, k = pair // chains, pair % chains
+    keep = pieces.chain_move[k] <= program_index[owner[first][i]] - 1
+    return int(np.bincount(i[keep], pieces.chain_count[k[keep]], minlength=first.size).max())
+
+
+def _waves_searched(wave, source, group, group_before, state):
+    """Removal intervals (a list of (seg, enter, leave, span)) of all lines, wave by wave
+    (_waves): the seeds (wave 0) get the whole search (_searched); each follower of a later
+    wave first the spans that bound what is left of its source line, shifted (_followed), then
+    the search without probes; followers without a source line, and those the guess left
+    astray (_astray), the whole search."""
+    envelope = state[0]
+    found = [_searched(np.flatnonzero(wave == 0), group, None, None, group_before, *state)]
+    for level in range(1, int(wave.max()) + 1):
+        mine = wave == level
+        follower = np.flatnonzero(mine & (source >= 0))
+        astray = np.zeros(follower.size, dtype=bool)
+        if follower.size:
+            done = tuple(np.concatenate(part) for part in zip(*found))
+            found.append(_followed(follower, source[follower], done, *state))
+            astray = _astray(follower, source[follower], envelope)
+            found.append(_searched(follower[~astray], group, None, None, group_before, *state, probe=False))
+        lead = np.union1d(np.flatnonzero(mine & (source < 0)), follower[astray])
+        found.append(_searched(lead, group, None, None, group_before, *state))
+    return found
+
+
+def _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces):
+    """The lines `sub` (ascending indices into the lines) as groups of their own: (starts,
+    sizes) per group (of all n groups; size 0 without a line of sub), their capsules, and the
+    pairs (group g, chain k) of their groups not surely apart from those capsules: of the pairs
+    g, k given, or, with g None, from the KD tree (_group_chains)."""
+    n = group[-1] + 1
+    every = sub.size == group.size  # then sub is every line, in order: no copies
+    mine = group if every else group[sub]
+    starts, sizes = np.searchsorted(mine, np.arange(n)), np.bincount(mine, minlength=n)
+    capsules = group_capsules(mine, n, *((envelope, origins, directions) if every else
+                                         (envelope[:, sub], origins[sub], directions[sub])))
+    if g is None:
+        g, k = _group_chains(capsules, group_before, pieces)
+    else:
+        keep = sizes[g] > 0
+        g, k = _near_groups(g[keep], k[keep], capsules, pieces)
+    return starts, sizes, capsules, g, k
+
+
+def _spans_near(sub, near, group_before, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave, span) of the lines `sub` where they meet few spans,
+    near = _subset(sub, …): the chains straight to (group, span) pairs, no test of chains per line."""
+    starts, sizes, (a, b, thick), g, k = near
+    owner, rank = _csr(pieces.chain_count[k])
+    g, span = g[owner], pieces.chain_first[k][owner] + rank
+    keep = pieces.span_move[span] <= group_before[g]
+    g, span = g[keep], span[keep]
+    keep = ~_apart(a[g], b[g], pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
+                   pieces.span_radius[span], pieces.span_height[span], pieces.span_slack[span] + thick[g])
+    return _expanded(g[keep], span[keep], sub, starts, sizes, envelope, origins, directions, before, pieces,
+                     _spans_solved)
+
+
+def _searched(sub, group, g, k, group_before, envelope, origins, directions, before, pieces, probe=True):
+    """Removal intervals (seg, enter, leave, span) of the lines `sub` (ascending indices into the
+    lines) from the pairs (group g, chain k) of their groups: with `probe` first a few spans per
+    group and a guess per line, then every chain near each line (docs/ENGINE.md)."""
+    if sub.size == 0:
+        return _none()
+    starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
+    lines = (sub, starts, sizes, envelope, origins, directions, before, pieces)
+    found = [_none()]
+    if probe:
+        # Where the lines meet many chains: first a few spans per group (_probe), which
+        # usually remove most of the lines; then per line a first guess among the spans of
+        # the chains its group seems to enter first (_line_probe), which usually finds what
+        # is left of it; each time the narrowed envelopes meet far fewer chains; then the rest.
+        centre, radius = capsule_spheres(*capsules)
+        found.append(_expanded(*_probe(g, k, centre, radius, directions[sub[np.minimum(starts, sub.size - 1)]],
+                                       group_before, pieces), *lines, _spans_solved))
+        starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
+        a, b, _ = capsules
+        pick = _entered_first(g, a[g], b[g], pieces.chain_c0[k], pieces.chain_c1[k], pieces.chain_axis[k],
+                              pieces.chain_radius[k], _GUESSED_CHAINS)
+        found.append(_expanded(g[pick], k[pick], *lines, _line_probe))
+        starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
+    found.append(_expanded(g, k, *lines, _chains_solved))
+    return tuple(np.concatenate(part) for part in zip(*found))
+
+
+def _line_groups(line, p, program_index):
+    """The lines (L,) (rows i·p + k, ascending) in groups: a CL point's angles in _GROUPS runs,
+    all with that point's tool axis as direction. Returns group (L,) each line's group
+    (non-decreasing, 0 … G − 1) and each group's last earlier program row (G,) (its CL point's
+    program_index − 1)."""
+    key = (line // p) * _GROUPS + (line % p) * _GROUPS // p
+    new = np.r_[True, key[1:] != key[:-1]]
+    group = np.cumsum(new) - 1
+    return group, program_index[key[new] // _GROUPS] - 1
+
+
+def _group_chains(capsules, group_before, pieces):
+    """The pairs (group g, chain k) (K,) that may remove material from the groups' lines: the
+    group's bounding sphere meets a ball of the chain, the chain's first move ends by the
+    group's CL point (group_before (G,) its last earlier program row), and the group's capsule
+    (inprocess_reach.group_capsules, G of them) is not surely apart from the chain."""
+    centre, radius = capsule_spheres(*capsules)
+    live = np.flatnonzero(radius > -np.inf)
+    if live.size == 0:
+        return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
+    from scipy.spatial import cKDTree
+
+    reach = float(radius[live].max() + pieces.ball_bound.max())
+    near = cKDTree(centre[live]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
+    g, ball = live[near["i"]], near["j"].astype(np.intp)
+    keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
+    chains, n_groups = pieces.chain_first.size, radius.size
     pair = _distinct(g[keep] * chains + pieces.ball_chain[ball[keep]], n_groups * chains)
     g, k = pair // chains, pair % chains
     keep = pieces.chain_move[k] <= group_before[g]
-    return (*_near_groups(g[keep], k[keep], capsules, pieces), capsules, centre, radius)
+    return _near_groups(g[keep], k[keep], capsules, pieces)
 
 
 def _distinct(keys, bound):
     """The distinct values of keys (K,) int in 0 … bound − 1, sorted: by marking them when
     bound is small enough (a pass over a bool array instead of a sort), else np.unique."""
-    if bound > _MARK_LIMIT:
+    if bound > min(_MARK_LIMIT, _MARK_SPARSE * keys.size):
         return np.unique(keys)
     seen = np.zeros(bound, dtype=bool)
     seen[keys] = True
@@ -584,7 +765,7 @@ def _near_groups(g, k, capsules, pieces):
 
 
 def _expanded(g, k, members, starts, sizes, envelope, origins, directions, before, pieces, solve):
-    """Removal intervals (seg, enter, leave) from the pairs (group g, chain or span k), expanded
+    """Removal intervals (seg, enter, leave, span) from the pairs (group g, chain or span k), expanded
     to the group's lines (members[starts[g] …] of sizes[g]) in batches of at most _EXPAND_BATCH
     and given to solve(seg, k, envelope, origins, directions, before, pieces) (_spans_solved,
     _chains_solved or _line_probe); before (L,) the last program row that precedes each
@@ -594,7 +775,7 @@ def _expanded(g, k, members, starts, sizes, envelope, origins, directions, befor
     count = sizes[g]
     cuts = np.unique(np.r_[0, np.searchsorted(np.cumsum(count), np.arange(_EXPAND_BATCH, int(count.sum()),
                                                                           _EXPAND_BATCH), side="right"), g.size])
-    found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
+    found = [_none()]
     for first, stop in zip(cuts[:-1], cuts[1:]):
         pair, rank = _csr(count[first:stop])
         seg, item = members[starts[g[first:stop]][pair] + rank], k[first:stop][pair]
@@ -603,15 +784,20 @@ def _expanded(g, k, members, starts, sizes, envelope, origins, directions, befor
 
 
 def _spans_solved(seg, span, envelope, origins, directions, before, pieces):
-    """Removal intervals (seg, enter, leave) from the (segment, span) pairs (_line_span_pairs)."""
-    return _line_span_pairs(seg, span, envelope, origins, directions, pieces)
+    """Removal intervals (seg, enter, leave, span) from the (segment, span) pairs (_line_span_pairs)."""
+    return _line_span_pairs(seg, span, envelope, origins, directions, before, pieces)
 
 
 def _chains_solved(seg, chain, envelope, origins, directions, before, pieces):
-    """Removal intervals (seg, enter, leave) from the (segment, chain) pairs: the spans of the
-    chains near each segment (_chain_spans), solved."""
-    return _line_span_pairs(*_chain_spans(seg, chain, envelope, origins, directions, before, pieces), envelope,
-                            origins, directions, pieces)
+    """Removal intervals (seg, enter, leave, span) from the (segment, chain) pairs: the chains
+    near each segment; a rigid one that ends before the segment's CL point solved whole (its
+    hull is the union of its pieces), of the others their spans (_line_span_pairs)."""
+    seg, chain = _chains_near(seg, chain, envelope, origins, directions, pieces)
+    whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
+    found = _solved(seg[whole], chain[whole], envelope, origins, directions, pieces, whole=True)
+    seg, span = _chain_spans(seg[~whole], chain[~whole], before, pieces)
+    return tuple(np.concatenate(part) for part in zip(found, _line_span_pairs(seg, span, envelope, origins,
+                                                                              directions, before, pieces)))
 
 
 def _entered_first(owner, a, b, c0, c1, axis, radius, take):
@@ -632,7 +818,7 @@ def _entered_first(owner, a, b, c0, c1, axis, radius, take):
 
 
 def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
-    """Removal intervals (seg, enter, leave) of a first guess per segment from its chains (seg,
+    """Removal intervals (seg, enter, leave, span) of a first guess per segment from its chains (seg,
     chain (K,)): of their spans before the segment's CL point, the one its line seems to enter
     first (_entered_first), its pieces solved."""
     open_ = envelope[0, seg] < envelope[1, seg]
@@ -645,54 +831,89 @@ def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
     seg, span = seg[keep], span[keep]
     pick = _entered_first(seg, *_ends(seg, envelope, origins, directions), pieces.span_c0[span], pieces.span_c1[span],
                           pieces.span_axis[span], pieces.span_radius[span], 1)
-    seg, piece = _span_pieces(seg[pick], span[pick], pieces)
+    (whole, chain), (seg, span) = _whole_chains(seg[pick], span[pick], before, pieces)
+    found = _solved(whole, chain, envelope, origins, directions, pieces, whole=True)
+    seg, piece = _span_pieces(seg, span, pieces)
     near = _near_pieces(seg, piece, envelope, origins, directions, pieces)
-    return _solved(seg[near], piece[near], envelope, origins, directions, pieces)
+    return tuple(np.concatenate(part) for part in zip(found, _solved(seg[near], piece[near], envelope, origins,
+                                                                     directions, pieces)))
 
 
-def _chain_spans(seg, chain, envelope, origins, directions, before, pieces):
-    """The pairs (segment seg, chain) (K,) as (segment, span) pairs: the chains not surely apart
-    from the segment's envelope, each span of them that ends before the segment's CL point."""
+def _chains_near(seg, chain, envelope, origins, directions, pieces):
+    """The pairs (segment seg, chain) (K,) whose segment is open and not surely apart from the
+    chain."""
     open_ = envelope[0, seg] < envelope[1, seg]
     seg, chain = seg[open_], chain[open_]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.chain_c0[chain], pieces.chain_c1[chain], pieces.chain_axis[chain],
                    pieces.chain_radius[chain], pieces.chain_height[chain], pieces.chain_slack[chain],
                    pieces.chain_lean[chain])
-    owner, rank = _csr(pieces.chain_count[chain[keep]])
-    seg, span = seg[keep][owner], pieces.chain_first[chain[keep]][owner] + rank
+    return seg[keep], chain[keep]
+
+
+def _chain_spans(seg, chain, before, pieces):
+    """The pairs (segment seg, chain) (K,) as (segment, span) pairs: each span of the chain that
+    ends before the segment's CL point (before (L,) its last earlier program row)."""
+    owner, rank = _csr(pieces.chain_count[chain])
+    seg, span = seg[owner], pieces.chain_first[chain][owner] + rank
     keep = pieces.span_move[span] <= before[seg]
     return seg[keep], span[keep]
 
 
 def _ends(seg, envelope, origins, directions):
-    """The ends (K, 3) of the current envelopes of segments `seg` (K,)."""
-    return (origins[seg] + envelope[0, seg, None] * directions[seg],
-            origins[seg] + envelope[1, seg, None] * directions[seg])
+    """The ends (K, 3) of the current envelopes of segments `seg` (K,): per segment once, then
+    gathered, where segments repeat."""
+    if seg.size > 2 * envelope.shape[1]:
+        low = origins + envelope[0, :, None] * directions
+        high = origins + envelope[1, :, None] * directions
+        return low[seg], high[seg]
+    origin, direction = origins[seg], directions[seg]
+    return origin + envelope[0, seg, None] * direction, origin + envelope[1, seg, None] * direction
 
 
-def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
-    """Removal intervals (seg, enter, leave) from the pairs (segment seg[i], span span[i]).
+def _whole_chains(seg, span, before, pieces):
+    """The pairs (segment seg, span) (K,) split: ((segments, chains), distinct) where the span's
+    chain is rigid and ends before the segment's CL point (before (L,) its last earlier program
+    row), so that it is solved whole, never piece by piece, for that segment; (segments,
+    spans) for the others."""
+    if not pieces.any_rigid:
+        return (seg[:0], seg[:0]), (seg, span)
+    chain = np.searchsorted(pieces.chain_first, span, side="right") - 1
+    whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
+    count = pieces.chain_first.size
+    pair = np.unique(seg[whole] * count + chain[whole])
+    return (pair // count, pair % count), (seg[~whole], span[~whole])
 
-    envelope: (2, L) the range lo … hi (mm along the line) holding each segment's remaining
-    material, narrowed in place by the removals found; origins, directions: (L, 3) the
-    segments' lines. Pairs are solved in rounds: each round solves, per segment, the pieces
+
+def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
+    """Removal intervals (seg, enter, leave, span) from the pairs (segment seg[i], span span[i]);
+    span: the span each removal comes from.
+
+    envelope: (4, L), rows 0, 1 the range lo … hi (mm along the line) holding each segment's
+    remaining material, narrowed in place by the removals found (rows 2, 3: as it was at
+    first); origins, directions: (L, 3) the segments' lines. A segment found to lie inside a
+    span's hull is removed whole: its envelope as it was then is given as one removal. Pairs
+    are solved in rounds: each round solves, per segment, the pieces
     reaching lowest and highest along its line (1, 2, 4, … of each), narrows the envelopes,
     and drops the pairs whose piece is then surely apart from the envelope (it can remove
     nothing more), so that a line cut by many pieces solves few of them.
     """
+    (whole, chain), (seg, span) = _whole_chains(seg, span, before, pieces)
+    open_ = envelope[0, whole] < envelope[1, whole]
+    out = [_solved(whole[open_], chain[open_], envelope, origins, directions, pieces, whole=True)]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span],
                    pieces.span_radius[span], pieces.span_height[span], 0.0, 0.5 * pieces.span_turn[span])
     seg, span = seg[keep], span[keep]
     if seg.size == 0:
-        return np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0)
+        return out[0]
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving.
     slack, h = pieces.span_slack[span], pieces.span_height[span]
     hull = (pieces.span_c0[span], pieces.span_c1[span], pieces.span_axis[span], pieces.span_radius[span] - slack,
             slack, h - slack)
     inside = _inside(a[keep], *hull) & _inside(b[keep], *hull)
+    out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
     seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
     # Each segment's pairs ranked once by how low and how high their pieces reach along its
@@ -701,7 +922,6 @@ def _line_span_pairs(seg, span, envelope, origins, directions, pieces):
                            pieces.radius[piece], pieces.height[piece])
     rankings = [_Ranking(seg, lower), _Ranking(seg, -upper)]
     open_ = np.ones(seg.size, dtype=bool)
-    out = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     take = 1
     while open_.any():
         at = np.flatnonzero(open_)
@@ -740,11 +960,8 @@ def _near_pieces(seg, piece, envelope, origins, directions, pieces):
     at = np.flatnonzero(near)
     seg, piece = seg[at], piece[at]
     a, b = _ends(seg, envelope, origins, directions)
-    # A piece reaching less than LENGTH_EPS·|u·w| into the segment's axial range removes less
-    # than LENGTH_EPS of it along the line: _solved would keep nothing of it.
-    grain = LENGTH_EPS * np.abs(np.einsum("ij,ij->i", directions[seg], pieces.axis[piece]))
     near[at] = ~_apart(a, b, pieces.c0[piece], pieces.c1[piece], pieces.axis[piece], pieces.radius[piece],
-                       pieces.height[piece], 0.0, grain=grain)
+                       pieces.height[piece], 0.0)
     return near
 
 
@@ -754,18 +971,25 @@ def _span_pieces(seg, span, pieces):
     return seg[owner], pieces.span_first[span][owner] + rank
 
 
-def _solved(seg, piece, envelope, origins, directions, pieces):
-    """Removal intervals (seg, enter, leave) of the segments seg (K,) inside pieces piece (K,)
-    that overlap their envelopes (2, L), closed form in batches; the envelopes are narrowed."""
-    found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
+def _solved(seg, piece, envelope, origins, directions, pieces, whole=False):
+    """Removal intervals (seg, enter, leave, span) of the segments seg (K,) inside pieces piece (K,)
+    (with `whole`, inside the hulls of rigid chains piece (K,)) that overlap their first ranges
+    (envelope (4, L), rows 2, 3) by more than LENGTH_EPS, closed form in batches; the envelopes
+    (rows 0, 1) are narrowed; span: the span of each piece (of a chain, its first)."""
+    hulls = ((pieces.chain_c0, pieces.chain_c1, pieces.chain_axis, pieces.chain_radius, pieces.chain_height)
+             if whole else (pieces.c0, pieces.c1, pieces.axis, pieces.radius, pieces.height))
+    found = [_none()]
     for begin in range(0, seg.size, _PAIR_BATCH):
         s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
-        enter, leave = line_hull_interval(origins[s], directions[s], pieces.c0[q], pieces.c1[q], pieces.axis[q],
-                                          pieces.radius[q], pieces.height[q])
+        enter, leave = line_hull_interval(origins[s], directions[s], *(column[q] for column in hulls))
+        # Kept when it overlaps the line's first range by more than LENGTH_EPS, not the
+        # current one: which removals are kept then does not depend on the order they are
+        # found in (docs/ENGINE.md, "Same input, same bits").
         with np.errstate(invalid="ignore"):
-            hit = (np.minimum(leave, envelope[1, s]) - np.maximum(enter, envelope[0, s])) > LENGTH_EPS
-        found.append((s[hit], enter[hit], leave[hit]))
-        _narrow(envelope, *found[-1])
+            hit = (np.minimum(leave, envelope[3, s]) - np.maximum(enter, envelope[2, s])) > LENGTH_EPS
+        span = pieces.chain_first[q[hit]] if whole else np.searchsorted(pieces.span_first, q[hit], side="right") - 1
+        found.append((s[hit], enter[hit], leave[hit], span))
+        _narrow(envelope, *found[-1][:3])
     return tuple(np.concatenate(part) for part in zip(*found))
 
 
