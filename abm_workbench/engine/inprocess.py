@@ -576,32 +576,16 @@ def _witnesses(found, envelope):
 
 def _spans_per_point(cl, seed, envelope, origins, directions, program_index, pieces):
     """The largest number of spans ending before their CL point whose chains' balls meet the
-    sphere around the envelopes of a seed CL point's lines (cl (L,) their CL points,
-    non-decreasing; seed (L,) bool); 0 without a seed line."""
-    at = np.flatnonzero(seed & (envelope[0] < envelope[1]))
+    bounding sphere of a seed CL point's lines (their capsule's: inprocess_reach); cl (L,) the
+    lines' CL points, non-decreasing; seed (L,) bool; 0 without a seed line."""
+    at = np.flatnonzero(seed)
     if at.size == 0:
         return 0
-    low = origins[at] + envelope[0, at, None] * directions[at]
-    high = origins[at] + envelope[1, at, None] * directions[at]
     owner = cl[at]
-    first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
-    count = np.diff(np.r_[first, at.size])
-    centre = np.add.reduceat(low + high, first, axis=0) / (2.0 * count)[:, None]
-    middle = np.repeat(centre, count, axis=0)
-    low, high = low - middle, high - middle
-    far = np.maximum(np.einsum("ij,ij->i", low, low), np.einsum("ij,ij->i", high, high))
-    radius = np.sqrt(np.maximum.reduceat(far, first))
-    from scipy.spatial import cKDTree
-
-    near = cKDTree(centre).sparse_distance_matrix(pieces.tree, float(radius.max() + pieces.ball_bound.max()),
-                                                  output_type="ndarray")
-    i, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = near["v"] <= radius[i] + pieces.ball_bound[ball]
-    chains = pieces.chain_first.size
-    pair = np.unique(i[keep] * chains + pieces.ball_chain[ball[keep]])
-    i, k = pair // chains, pair % chains
-    keep = pieces.chain_move[k] <= program_index[owner[first][i]] - 1
-    return int(np.bincount(i[keep], pieces.chain_count[k[keep]], minlength=first.size).max())
+    first = np.r_[True, owner[1:] != owner[:-1]]
+    capsules = group_capsules(np.cumsum(first) - 1, int(first.sum()), envelope[:, at], origins[at], directions[at])
+    i, k = _sphere_chains(*capsule_spheres(*capsules), program_index[owner[first]] - 1, pieces)
+    return int(np.bincount(i, pieces.chain_count[k], minlength=1).max())
 
 
 def _waves_searched(wave, source, group, group_before, state):
@@ -702,7 +686,13 @@ def _group_chains(capsules, group_before, pieces):
     group's bounding sphere meets a ball of the chain, the chain's first move ends by the
     group's CL point (group_before (G,) its last earlier program row), and the group's capsule
     (inprocess_reach.group_capsules, G of them) is not surely apart from the chain."""
-    centre, radius = capsule_spheres(*capsules)
+    return _near_groups(*_sphere_chains(*capsule_spheres(*capsules), group_before, pieces), capsules, pieces)
+
+
+def _sphere_chains(centre, radius, before, pieces):
+    """The pairs (sphere i, chain k) (K,), sorted, where the sphere (centre (n, 3), radius (n,),
+    −inf for none) meets a ball of the chain and the chain's first move ends by `before` (n,),
+    the sphere's last earlier program row."""
     live = np.flatnonzero(radius > -np.inf)
     if live.size == 0:
         return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
@@ -710,13 +700,13 @@ def _group_chains(capsules, group_before, pieces):
 
     reach = float(radius[live].max() + pieces.ball_bound.max())
     near = cKDTree(centre[live]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
-    g, ball = live[near["i"]], near["j"].astype(np.intp)
-    keep = near["v"] <= radius[g] + pieces.ball_bound[ball]
-    chains, n_groups = pieces.chain_first.size, radius.size
-    pair = _distinct(g[keep] * chains + pieces.ball_chain[ball[keep]], n_groups * chains)
-    g, k = pair // chains, pair % chains
-    keep = pieces.chain_move[k] <= group_before[g]
-    return _near_groups(g[keep], k[keep], capsules, pieces)
+    i, ball = live[near["i"]], near["j"].astype(np.intp)
+    keep = near["v"] <= radius[i] + pieces.ball_bound[ball]
+    chains = pieces.chain_first.size
+    pair = _distinct(i[keep] * chains + pieces.ball_chain[ball[keep]], radius.size * chains)
+    i, k = pair // chains, pair % chains
+    keep = pieces.chain_move[k] <= before[i]
+    return i[keep], k[keep]
 
 
 def _distinct(keys, bound):
