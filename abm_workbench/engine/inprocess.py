@@ -810,7 +810,7 @@ def _entered_first(owner, a, b, c0, c1, axis, radius, take):
 def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
     """Removal intervals (seg, enter, leave, span) of a first guess per segment from its chains (seg,
     chain (K,)): of their spans before the segment's CL point, the one its line seems to enter
-    first (_entered_first), its pieces solved."""
+    first (_entered_first), its pieces solved (its whole chain where _whole_chains says so)."""
     open_ = envelope[0, seg] < envelope[1, seg]
     seg, chain = seg[open_], chain[open_]
     order = np.argsort(seg, kind="stable")
@@ -881,12 +881,14 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
 
     envelope: (4, L), rows 0, 1 the range lo … hi (mm along the line) holding each segment's
     remaining material, narrowed in place by the removals found (rows 2, 3: as it was at
-    first); origins, directions: (L, 3) the segments' lines. A segment found to lie inside a
-    span's hull is removed whole: its envelope as it was then is given as one removal. Pairs
-    are solved in rounds: each round solves, per segment, the pieces
-    reaching lowest and highest along its line (1, 2, 4, … of each), narrows the envelopes,
-    and drops the pairs whose piece is then surely apart from the envelope (it can remove
-    nothing more), so that a line cut by many pieces solves few of them.
+    first); origins, directions: (L, 3) the segments' lines; before (L,) the last program row
+    before each segment's CL point. A span of a rigid chain that ends before that row is
+    solved as its whole chain (_whole_chains). A segment found to lie inside a span's hull is
+    removed whole: its envelope as it was then is given as one removal. The other pairs are
+    solved in rounds: each round solves, per segment, the pieces reaching lowest and highest
+    along its line (1, 2, 4, … of each), narrows the envelopes, and drops the pairs whose piece
+    is then surely apart from the envelope (it can remove nothing more), so that a line cut by
+    many pieces solves few of them.
     """
     (whole, chain), (seg, span) = _whole_chains(seg, span, before, pieces)
     open_ = envelope[0, whole] < envelope[1, whole]
