@@ -59,6 +59,8 @@ _GUESSED_CHAINS = 3
 #: Spans near a CL point above which chains are tested per line, probes made and the lines
 #: searched in waves (_waves); at most that many, chains go straight to (group, span) pairs.
 _FEW_SPANS = 128
+#: Every _SAMPLE_EVERY-th CL point of a call is looked at to decide between the two (_spans_per_point).
+_SAMPLE_EVERY = 4
 #: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
 #: others follow in waves, each guided by a CL point of an earlier wave (_waves).
 _SEED_EVERY = 16
@@ -494,7 +496,7 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     cl = line // p
     new = np.r_[True, cl[1:] != cl[:-1]]
     rank = np.cumsum(new) - 1
-    if _spans_per_point(cl, rank % _SEED_EVERY == 0, *state[:3], program_index, pieces) <= _FEW_SPANS:
+    if _spans_per_point(cl, rank % _SAMPLE_EVERY == 0, *state[:3], program_index, pieces) <= _FEW_SPANS:
         # Few spans near the CL points (as in a single pass, whose own earlier moves are far
         # from its leading edge): every line straight to its spans.
         every = np.arange(line.size)
@@ -574,11 +576,12 @@ def _witnesses(found, envelope):
     return seg[pick], span[pick]
 
 
-def _spans_per_point(cl, seed, envelope, origins, directions, program_index, pieces):
+def _spans_per_point(cl, sample, envelope, origins, directions, program_index, pieces):
     """The largest number of spans ending before their CL point whose chains' balls meet the
-    bounding sphere of a seed CL point's lines (their capsule's: inprocess_reach); cl (L,) the
-    lines' CL points, non-decreasing; seed (L,) bool; 0 without a seed line."""
-    at = np.flatnonzero(seed)
+    bounding sphere of a sampled CL point's lines (their capsule's: inprocess_reach); cl (L,)
+    the lines' CL points, non-decreasing; sample (L,) bool, the sampled CL points' lines; 0
+    without one."""
+    at = np.flatnonzero(sample)
     if at.size == 0:
         return 0
     owner = cl[at]
