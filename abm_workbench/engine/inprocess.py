@@ -56,9 +56,10 @@ _EXPAND_BATCH = 1 << 17
 _PROBE = 1
 #: Chains per group whose spans _line_probe weighs for each of the group's lines.
 _GUESSED_CHAINS = 3
-#: Spans near a CL point above which chains are tested per line, probes made and the lines
-#: searched in waves (_waves); at most that many, chains go straight to (group, span) pairs.
-_FEW_SPANS = 128
+#: Spans near a CL point's groups above which chains are tested per line, probes made and the
+#: lines searched in waves (_waves); at most that many, chains go straight to (group, span)
+#: pairs. Where the two cost the same (docs/ENGINE.md, step 1).
+_FEW_SPANS = 80
 #: Every _SAMPLE_EVERY-th CL point of a call is looked at to decide between the two (_spans_per_point).
 _SAMPLE_EVERY = 4
 #: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
@@ -496,12 +497,18 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     cl = line // p
     new = np.r_[True, cl[1:] != cl[:-1]]
     rank = np.cumsum(new) - 1
-    if _spans_per_point(cl, rank % _SAMPLE_EVERY == 0, *state[:3], program_index, pieces) <= _FEW_SPANS:
+    capsules = group_capsules(group, group_before.size, *state[:3])
+    sampled = np.zeros(group_before.size, dtype=bool)
+    sampled[group[rank % _SAMPLE_EVERY == 0]] = True
+    g, k = _sphere_chains(*capsule_spheres(*capsules), group_before, pieces, np.flatnonzero(sampled))
+    if _spans_per_point(cl[np.r_[True, group[1:] != group[:-1]]], g, k, pieces) <= _FEW_SPANS:
         # Few spans near the CL points (as in a single pass, whose own earlier moves are far
         # from its leading edge): every line straight to its spans.
+        rest = _sphere_chains(*capsule_spheres(*capsules), group_before, pieces, np.flatnonzero(~sampled))
+        g, k = _near_groups(np.r_[g, rest[0]], np.r_[k, rest[1]], capsules, pieces)
         every = np.arange(line.size)
-        found = [_spans_near(every, _subset(every, group, None, None, group_before, *state[:3], pieces), group_before,
-                             *state)]
+        near = _subset(every, group, g, k, group_before, *state[:3], pieces, capsules, culled=True)
+        found = [_spans_near(every, near, group_before, *state)]
     else:
         found = _waves_searched(*_waves(line % p, cl[new], rank, p), group, group_before, state)
     dead = envelope[0] >= envelope[1]
@@ -576,19 +583,15 @@ def _witnesses(found, envelope):
     return seg[pick], span[pick]
 
 
-def _spans_per_point(cl, sample, envelope, origins, directions, program_index, pieces):
-    """The largest number of spans ending before their CL point whose chains' balls meet the
-    bounding sphere of a sampled CL point's lines (their capsule's: inprocess_reach); cl (L,)
-    the lines' CL points, non-decreasing; sample (L,) bool, the sampled CL points' lines; 0
-    without one."""
-    at = np.flatnonzero(sample)
-    if at.size == 0:
+def _spans_per_point(group_cl, g, k, pieces):
+    """The largest number of spans, over the CL points of the pairs (group g, chain k) (K,),
+    of the chains paired with its groups; group_cl (G,) each group's CL point; 0 without a
+    pair."""
+    if g.size == 0:
         return 0
-    owner = cl[at]
-    first = np.r_[True, owner[1:] != owner[:-1]]
-    capsules = group_capsules(np.cumsum(first) - 1, int(first.sum()), envelope[:, at], origins[at], directions[at])
-    i, k = _sphere_chains(*capsule_spheres(*capsules), program_index[owner[first]] - 1, pieces)
-    return int(np.bincount(i, pieces.chain_count[k], minlength=1).max())
+    chains = pieces.chain_first.size
+    pair = np.unique(group_cl[g] * chains + k)
+    return int(np.bincount(pair // chains, pieces.chain_count[pair % chains]).max())
 
 
 def _waves_searched(wave, source, group, group_before, state):
@@ -613,20 +616,22 @@ def _waves_searched(wave, source, group, group_before, state):
     return found
 
 
-def _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces):
+def _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces, capsules=None, culled=False):
     """The lines `sub` (ascending indices into the lines) as groups of their own: (starts,
-    sizes) per group (of all n groups; size 0 without a line of sub), their capsules, and the
-    pairs (group g, chain k) of their groups not surely apart from those capsules: of the pairs
-    g, k given, or, with g None, from the KD tree (_group_chains)."""
+    sizes) per group (of all n groups; size 0 without a line of sub), their capsules (as
+    given, or made), and the pairs (group g, chain k) of their groups not surely apart from
+    those capsules: of the pairs g, k given (as they are when `culled`), or, with g None,
+    from the KD tree (_group_chains)."""
     n = group[-1] + 1
     every = sub.size == group.size  # then sub is every line, in order: no copies
     mine = group if every else group[sub]
     starts, sizes = np.searchsorted(mine, np.arange(n)), np.bincount(mine, minlength=n)
-    capsules = group_capsules(mine, n, *((envelope, origins, directions) if every else
-                                         (envelope[:, sub], origins[sub], directions[sub])))
+    if capsules is None:
+        capsules = group_capsules(mine, n, *((envelope, origins, directions) if every else
+                                             (envelope[:, sub], origins[sub], directions[sub])))
     if g is None:
         g, k = _group_chains(capsules, group_before, pieces)
-    else:
+    elif not culled:
         keep = sizes[g] > 0
         g, k = _near_groups(g[keep], k[keep], capsules, pieces)
     return starts, sizes, capsules, g, k
@@ -692,11 +697,11 @@ def _group_chains(capsules, group_before, pieces):
     return _near_groups(*_sphere_chains(*capsule_spheres(*capsules), group_before, pieces), capsules, pieces)
 
 
-def _sphere_chains(centre, radius, before, pieces):
+def _sphere_chains(centre, radius, before, pieces, among=None):
     """The pairs (sphere i, chain k) (K,), sorted, where the sphere (centre (n, 3), radius (n,),
-    −inf for none) meets a ball of the chain and the chain's first move ends by `before` (n,),
-    the sphere's last earlier program row."""
-    live = np.flatnonzero(radius > -np.inf)
+    −inf for none; with `among`, only the spheres of those indices) meets a ball of the chain
+    and the chain's first move ends by `before` (n,), the sphere's last earlier program row."""
+    live = np.flatnonzero(radius > -np.inf) if among is None else among[radius[among] > -np.inf]
     if live.size == 0:
         return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
     from scipy.spatial import cKDTree
