@@ -60,7 +60,8 @@ _GUESSED_CHAINS = 3
 #: lines searched in waves (_waves); at most that many, chains go straight to (group, span)
 #: pairs. Where the two cost the same (docs/ENGINE.md, step 1).
 _FEW_SPANS = 80
-#: Every _SAMPLE_EVERY-th CL point of a call is looked at to decide between the two (_spans_per_point).
+#: Every _SAMPLE_EVERY-th CL point of a call (and every seed) is looked at to decide between the
+#: two (_spans_per_point).
 _SAMPLE_EVERY = 4
 #: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
 #: others follow in waves, each guided by a CL point of an earlier wave (_waves).
@@ -499,18 +500,20 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     rank = np.cumsum(new) - 1
     capsules = group_capsules(group, group_before.size, *state[:3])
     sampled = np.zeros(group_before.size, dtype=bool)
-    sampled[group[rank % _SAMPLE_EVERY == 0]] = True
-    g, k = _sphere_chains(*capsule_spheres(*capsules), group_before, pieces, np.flatnonzero(sampled))
+    sampled[group[(rank % _SAMPLE_EVERY == 0) | (rank % _SEED_EVERY == 0)]] = True
+    spheres = capsule_spheres(*capsules)
+    g, k = _sphere_chains(*spheres, group_before, pieces, np.flatnonzero(sampled))
     if _spans_per_point(cl[np.r_[True, group[1:] != group[:-1]]], g, k, pieces) <= _FEW_SPANS:
         # Few spans near the CL points (as in a single pass, whose own earlier moves are far
         # from its leading edge): every line straight to its spans.
-        rest = _sphere_chains(*capsule_spheres(*capsules), group_before, pieces, np.flatnonzero(~sampled))
+        rest = _sphere_chains(*spheres, group_before, pieces, np.flatnonzero(~sampled))
         g, k = _near_groups(np.r_[g, rest[0]], np.r_[k, rest[1]], capsules, pieces)
-        every = np.arange(line.size)
-        near = _subset(every, group, g, k, group_before, *state[:3], pieces, capsules, culled=True)
-        found = [_spans_near(every, near, group_before, *state)]
+        n = group_before.size
+        near = (np.searchsorted(group, np.arange(n)), np.bincount(group, minlength=n), capsules, g, k)
+        found = [_spans_near(np.arange(line.size), near, group_before, *state)]
     else:
-        found = _waves_searched(*_waves(line % p, cl[new], rank, p), group, group_before, state)
+        # The sampled groups' pairs hold the seeds'.
+        found = _waves_searched(*_waves(line % p, cl[new], rank, p), group, g, k, group_before, state)
     dead = envelope[0] >= envelope[1]
     seg, enter, leave, _ = (np.concatenate(part) for part in zip(*found))
     alive = ~dead[seg]
@@ -594,14 +597,15 @@ def _spans_per_point(group_cl, g, k, pieces):
     return int(np.bincount(pair // chains, pieces.chain_count[pair % chains]).max())
 
 
-def _waves_searched(wave, source, group, group_before, state):
+def _waves_searched(wave, source, group, g, k, group_before, state):
     """Removal intervals (a list of (seg, enter, leave, span)) of all lines, wave by wave
-    (_waves): the seeds (wave 0) get the whole search (_searched); each follower of a later
+    (_waves): the seeds (wave 0) get the whole search (_searched, from the pairs (group g,
+    chain k) that hold their groups' own); each follower of a later
     wave first the spans that bound what is left of its source line, shifted (_followed), then
     the search without probes; followers without a source line, and those the guess left
     astray (_astray), the whole search."""
     envelope = state[0]
-    found = [_searched(np.flatnonzero(wave == 0), group, None, None, group_before, *state)]
+    found = [_searched(np.flatnonzero(wave == 0), group, g, k, group_before, *state)]
     for level in range(1, int(wave.max()) + 1):
         mine = wave == level
         follower = np.flatnonzero(mine & (source >= 0))
@@ -616,22 +620,18 @@ def _waves_searched(wave, source, group, group_before, state):
     return found
 
 
-def _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces, capsules=None, culled=False):
+def _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces):
     """The lines `sub` (ascending indices into the lines) as groups of their own: (starts,
-    sizes) per group (of all n groups; size 0 without a line of sub), their capsules (as
-    given, or made), and the pairs (group g, chain k) of their groups not surely apart from
-    those capsules: of the pairs g, k given (as they are when `culled`), or, with g None,
-    from the KD tree (_group_chains)."""
+    sizes) per group (of all n groups; size 0 without a line of sub), their capsules, and the
+    pairs (group g, chain k) of their groups not surely apart from those capsules: of the pairs
+    g, k given, or, with g None, from the KD tree (_group_chains)."""
     n = group[-1] + 1
-    every = sub.size == group.size  # then sub is every line, in order: no copies
-    mine = group if every else group[sub]
+    mine = group[sub]
     starts, sizes = np.searchsorted(mine, np.arange(n)), np.bincount(mine, minlength=n)
-    if capsules is None:
-        capsules = group_capsules(mine, n, *((envelope, origins, directions) if every else
-                                             (envelope[:, sub], origins[sub], directions[sub])))
+    capsules = group_capsules(mine, n, envelope[:, sub], origins[sub], directions[sub])
     if g is None:
         g, k = _group_chains(capsules, group_before, pieces)
-    elif not culled:
+    else:
         keep = sizes[g] > 0
         g, k = _near_groups(g[keep], k[keep], capsules, pieces)
     return starts, sizes, capsules, g, k
@@ -639,7 +639,8 @@ def _subset(sub, group, g, k, group_before, envelope, origins, directions, piece
 
 def _spans_near(sub, near, group_before, envelope, origins, directions, before, pieces):
     """Removal intervals (seg, enter, leave, span) of the lines `sub` where they meet few spans,
-    near = _subset(sub, …): the chains straight to (group, span) pairs, no test of chains per line."""
+    near (starts, sizes, capsules, g, k) as _subset gives them: the chains straight to (group,
+    span) pairs, no test of chains per line."""
     starts, sizes, (a, b, thick), g, k = near
     owner, rank = _csr(pieces.chain_count[k])
     g, span = g[owner], pieces.chain_first[k][owner] + rank
