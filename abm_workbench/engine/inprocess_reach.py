@@ -10,6 +10,8 @@ capsule (a segment grown by a radius) instead of the sphere. Lengths in mm.
 
 import numpy as np
 
+from .swept import row_dot
+
 
 def group_capsules(group, n, envelope, origins, directions):
     """Capsules (a (n, 3), b (n, 3), radius (n,)) holding every segment of each group.
@@ -37,17 +39,17 @@ def group_capsules(group, n, envelope, origins, directions):
     count = np.diff(np.r_[first, owner.size])
     groups = owner[first]
     mean_dir = np.add.reduceat(u, first, axis=0)
-    norm = np.sqrt(np.einsum("ij,ij->i", mean_dir, mean_dir))
+    norm = np.sqrt(row_dot(mean_dir, mean_dir))
     # Opposite directions cancel: any axis will do there, the radius then grows to hold the ends.
     axis = np.where(norm[:, None] > 1e-9, mean_dir / np.where(norm > 1e-9, norm, 1.0)[:, None], [1.0, 0.0, 0.0])
     centre = np.add.reduceat(lo_end + hi_end, first, axis=0) / (2.0 * count)[:, None]
     slot = np.repeat(np.arange(first.size), count)
     w, m = axis[slot], centre[slot]
     low_gap, high_gap = lo_end - m, hi_end - m
-    along_lo, along_hi = np.einsum("ij,ij->i", low_gap, w), np.einsum("ij,ij->i", high_gap, w)
+    along_lo, along_hi = row_dot(low_gap, w), row_dot(high_gap, w)
     # Squared distances from the axis line: |e − m|² − along², never below 0.
-    across = np.maximum(np.einsum("ij,ij->i", low_gap, low_gap) - along_lo * along_lo,
-                        np.einsum("ij,ij->i", high_gap, high_gap) - along_hi * along_hi)
+    across = np.maximum(row_dot(low_gap, low_gap) - along_lo * along_lo,
+                        row_dot(high_gap, high_gap) - along_hi * along_hi)
     low = np.minimum.reduceat(np.minimum(along_lo, along_hi), first)
     high = np.maximum.reduceat(np.maximum(along_lo, along_hi), first)
     a[groups] = centre + low[:, None] * axis
