@@ -18,6 +18,7 @@ pass meet nearly the same earlier moves: most are searched guided by the moves t
 neighbour's material, then proved. Lengths in mm.
 """
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -66,6 +67,7 @@ _SAMPLE_EVERY = 4
 #: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
 #: others follow in waves, each guided by a CL point of an earlier wave (_waves).
 _SEED_EVERY = 16
+_DONE = 2
 
 
 def _float_array(name, value, shape, copy=True):
@@ -578,7 +580,8 @@ def _followed(follower, source, found, envelope, origins, directions, before, pi
     step = np.rint(row_dot(shift, d) / np.where(dd > 0.0, dd, 1.0)).astype(np.intp)
     w = np.clip(w + step, 0, pieces.span_move.size - 1)
     keep = pieces.span_move[w] <= before[who]
-    return _line_span_pairs(who[keep], w[keep], envelope, origins, directions, before, pieces)
+    who, w = who[keep], w[keep]
+    return _line_span_pairs(who, w, envelope, origins, directions, before, pieces), (who, w)
 
 
 def _witnesses(found, envelope):
@@ -622,13 +625,19 @@ def _waves_searched(wave, source, group, g, k, group_before, state):
         mine = wave == level
         follower = np.flatnonzero(mine & (source >= 0))
         astray = np.zeros(follower.size, dtype=bool)
+        done = None
         if follower.size:
             done = tuple(np.concatenate(part) for part in zip(*found))
-            found.append(_followed(follower, source[follower], done, *state))
+            guided, (who, w) = _followed(follower, source[follower], done, *state)
+            found.append(guided)
             astray = _astray(follower, source[follower], envelope)
-            found.append(_searched(follower[~astray], group, None, None, group_before, *state, probe=False))
+            done = np.full((_DONE, envelope.shape[1]), -1, dtype=np.intp)
+            head = np.flatnonzero(np.r_[True, who[1:] != who[:-1]])
+            rank = np.arange(who.size) - np.repeat(head, np.diff(np.r_[head, who.size]))
+            done[rank[rank < _DONE], who[rank < _DONE]] = w[rank < _DONE]
+            found.append(_searched(follower[~astray], group, None, None, group_before, *state, probe=False, done=done))
         lead = np.union1d(np.flatnonzero(mine & (source < 0)), follower[astray])
-        found.append(_searched(lead, group, None, None, group_before, *state))
+        found.append(_searched(lead, group, None, None, group_before, *state, done=done))
     return found
 
 
@@ -663,7 +672,7 @@ def _spans_near(sub, near, group_before, envelope, origins, directions, before, 
                      _spans_solved)
 
 
-def _searched(sub, group, g, k, group_before, envelope, origins, directions, before, pieces, probe=True):
+def _searched(sub, group, g, k, group_before, envelope, origins, directions, before, pieces, probe=True, done=None):
     """Removal intervals (seg, enter, leave, span) of the lines `sub` (ascending indices into the
     lines) from the pairs (group g, chain k) of their groups: with `probe` first a few spans per
     group and a guess per line, then every chain near each line (docs/ENGINE.md)."""
@@ -685,7 +694,7 @@ def _searched(sub, group, g, k, group_before, envelope, origins, directions, bef
         pick = _entered_first(g, _rows(a, g), _rows(b, g), *pieces.hulls("chain", k)[:4], _GUESSED_CHAINS)
         found.append(_expanded(g[pick], k[pick], *lines, _line_probe))
         starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
-    found.append(_expanded(g, k, *lines, _chains_solved))
+    found.append(_expanded(g, k, *lines, functools.partial(_chains_solved, done=done)))
     return tuple(np.concatenate(part) for part in zip(*found))
 
 
@@ -719,11 +728,11 @@ def _sphere_chains(centre, radius, before, pieces, among=None):
 
     reach = float(radius[live].max() + pieces.ball_bound.max())
     near = cKDTree(centre[live]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
-    i, ball = live[near["i"]], near["j"].astype(np.intp)
-    keep = near["v"] <= radius[i] + pieces.ball_bound[ball]
+    i, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
+    keep = near["v"] <= radius[live][i] + pieces.ball_bound[ball]
     chains = pieces.chain_first.size
-    pair = _distinct(i[keep] * chains + pieces.ball_chain[ball[keep]], radius.size * chains)
-    i, k = pair // chains, pair % chains
+    pair = _distinct(i[keep] * chains + pieces.ball_chain[ball[keep]], live.size * chains)
+    i, k = live[pair // chains], pair % chains
     keep = pieces.chain_move[k] <= before[i]
     return i[keep], k[keep]
 
@@ -794,7 +803,7 @@ def _spans_solved(seg, span, envelope, origins, directions, before, pieces):
     return _line_span_pairs(seg, span, envelope, origins, directions, before, pieces)
 
 
-def _chains_solved(seg, chain, envelope, origins, directions, before, pieces):
+def _chains_solved(seg, chain, envelope, origins, directions, before, pieces, done=None):
     """Removal intervals (seg, enter, leave, span) from the (segment, chain) pairs: the chains
     near each segment; a rigid one that ends before the segment's CL point solved whole (its
     hull is the union of its pieces), of the others their spans (_line_span_pairs)."""
@@ -802,6 +811,9 @@ def _chains_solved(seg, chain, envelope, origins, directions, before, pieces):
     whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
     found = _solved(seg[whole], chain[whole], envelope, origins, directions, pieces, whole=True)
     seg, span = _chain_spans(seg[~whole], chain[~whole], before, pieces)
+    if done is not None:
+        keep = (span != done[:, seg]).all(axis=0)
+        seg, span = seg[keep], span[keep]
     return tuple(np.concatenate(part) for part in zip(found, _line_span_pairs(seg, span, envelope, origins,
                                                                               directions, before, pieces)))
 
