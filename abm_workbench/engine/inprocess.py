@@ -933,9 +933,18 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
     seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
-    # Each segment's pairs ranked once by how low and how high their pieces reach along its
-    # line; every round solves the `take` first of each ranking among the pairs still open.
+    # First, per segment, the pair whose piece reaches lowest along its line and the one
+    # reaching highest (per run of the segment's pairs, without sorting); they usually leave
+    # few pairs near. Those are ranked once by how low and how high their pieces reach; each
+    # later round solves the `take` first of each ranking among the pairs still open.
     lower, upper = _extent(_rows(origins, seg), _rows(directions, seg), *pieces.hulls("piece", piece))
+    open_ = _near_pieces(seg, piece, envelope, origins, directions, pieces)
+    chosen = np.flatnonzero(open_ & (_smallest(seg, np.where(open_, lower, np.inf), 1)
+                                     | _smallest(seg, np.where(open_, -upper, np.inf), 1)))
+    out.append(_solved(seg[chosen], piece[chosen], envelope, origins, directions, pieces))
+    open_[chosen] = False
+    rest = np.flatnonzero(open_)
+    seg, piece, lower, upper = seg[rest], piece[rest], lower[rest], upper[rest]
     rankings = [_Ranking(seg, lower), _Ranking(seg, -upper)]
     open_ = np.ones(seg.size, dtype=bool)
     take = 1
@@ -1032,7 +1041,8 @@ def _extent(origin, direction, c0, c1, axis, radius, height):
 
 def _smallest(owner, key, take):
     """(K,) bool: the `take` rows of smallest key (K,) of each owner (K,, ascending), ties to the
-    earlier row: `take` rounds of a minimum per owner (no sort)."""
+    earlier row: `take` rounds of a minimum per owner (no sort). Owners out of order are
+    taken per run: an owner in two runs gets `take` rows in each."""
     chosen = np.zeros(owner.size, dtype=bool)
     if owner.size == 0:
         return chosen
