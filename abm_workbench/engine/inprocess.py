@@ -67,7 +67,8 @@ _SAMPLE_EVERY = 4
 #: Every _SEED_EVERY-th CL point of a call is searched in full first (a power of 2); the
 #: others follow in waves, each guided by a CL point of an earlier wave (_waves).
 _SEED_EVERY = 16
-_DONE = 2
+#: Spans remembered per line as solved for it (_Solved).
+_SOLVED = 4
 
 
 def _float_array(name, value, shape, copy=True):
@@ -565,10 +566,10 @@ def _astray(follower, source, envelope):
     return open_ & ((model[0] >= model[1]) | ((model != model_was) & (now == was)).any(axis=0))
 
 
-def _followed(follower, source, found, envelope, origins, directions, before, pieces):
+def _followed(follower, source, found, envelope, origins, directions, before, pieces, solved):
     """Removal intervals (seg, enter, leave, span) of the follower lines (F,) from the spans that
     bound what was left of their source lines (F,) (_witnesses), each shifted along the earlier
-    moves by the lines' distance."""
+    moves by the lines' distance; the pairs remembered in `solved` (_Solved)."""
     seg, span = _witnesses(found, envelope)
     first = np.searchsorted(seg, source)
     count = np.searchsorted(seg, source, side="right") - first
@@ -580,8 +581,8 @@ def _followed(follower, source, found, envelope, origins, directions, before, pi
     step = np.rint(row_dot(shift, d) / np.where(dd > 0.0, dd, 1.0)).astype(np.intp)
     w = np.clip(w + step, 0, pieces.span_move.size - 1)
     keep = pieces.span_move[w] <= before[who]
-    who, w = who[keep], w[keep]
-    return _line_span_pairs(who, w, envelope, origins, directions, before, pieces), (who, w)
+    solved.add(who[keep], w[keep])
+    return _line_span_pairs(who[keep], w[keep], envelope, origins, directions, before, pieces)
 
 
 def _witnesses(found, envelope):
@@ -612,6 +613,31 @@ def _spans_per_point(group_cl, g, k, pieces):
     return int(np.bincount(pair // chains, pieces.chain_count[pair % chains]).max())
 
 
+class _Solved:
+    """Per line, the first _SOLVED spans whose pairs with it a guess or a probe solved whole:
+    every piece of such a span was then solved for the line or surely apart from its envelope,
+    which only narrows later; so the closing search skips the pair (solving it again would
+    find the same removals)."""
+
+    def __init__(self, n):
+        self.span = np.full((_SOLVED, n), -1, dtype=np.intp)
+
+    def add(self, seg, span):
+        """Remember the pairs (segment seg, span) (K,), in the free places of each segment."""
+        order = np.argsort(seg, kind="stable")
+        seg, span = seg[order], span[order]
+        head = np.flatnonzero(np.r_[True, seg[1:] != seg[:-1]])
+        count = np.diff(np.r_[head, seg.size])
+        filled = (self.span[:, seg[head]] >= 0).sum(axis=0)
+        place = np.arange(seg.size) - np.repeat(head, count) + np.repeat(filled, count)
+        ok = place < _SOLVED
+        self.span[place[ok], seg[ok]] = span[ok]
+
+    def fresh(self, seg, span):
+        """(K,) bool: the pairs (segment seg, span) (K,) not remembered as solved."""
+        return (span != self.span[:, seg]).all(axis=0)
+
+
 def _waves_searched(wave, source, group, g, k, group_before, state):
     """Removal intervals (a list of (seg, enter, leave, span)) of all lines, wave by wave
     (_waves): the seeds (wave 0) get the whole search (_searched, from the pairs (group g,
@@ -620,24 +646,20 @@ def _waves_searched(wave, source, group, g, k, group_before, state):
     the search without probes; followers without a source line, and those the guess left
     astray (_astray), the whole search."""
     envelope = state[0]
-    found = [_searched(np.flatnonzero(wave == 0), group, g, k, group_before, *state)]
+    solved = _Solved(envelope.shape[1])
+    found = [_searched(np.flatnonzero(wave == 0), group, g, k, group_before, *state, solved=solved)]
     for level in range(1, int(wave.max()) + 1):
         mine = wave == level
         follower = np.flatnonzero(mine & (source >= 0))
         astray = np.zeros(follower.size, dtype=bool)
-        done = None
         if follower.size:
             done = tuple(np.concatenate(part) for part in zip(*found))
-            guided, (who, w) = _followed(follower, source[follower], done, *state)
-            found.append(guided)
+            found.append(_followed(follower, source[follower], done, *state, solved))
             astray = _astray(follower, source[follower], envelope)
-            done = np.full((_DONE, envelope.shape[1]), -1, dtype=np.intp)
-            head = np.flatnonzero(np.r_[True, who[1:] != who[:-1]])
-            rank = np.arange(who.size) - np.repeat(head, np.diff(np.r_[head, who.size]))
-            done[rank[rank < _DONE], who[rank < _DONE]] = w[rank < _DONE]
-            found.append(_searched(follower[~astray], group, None, None, group_before, *state, probe=False, done=done))
+            found.append(_searched(follower[~astray], group, None, None, group_before, *state, probe=False,
+                                   solved=solved))
         lead = np.union1d(np.flatnonzero(mine & (source < 0)), follower[astray])
-        found.append(_searched(lead, group, None, None, group_before, *state, done=done))
+        found.append(_searched(lead, group, None, None, group_before, *state, solved=solved))
     return found
 
 
@@ -672,10 +694,12 @@ def _spans_near(sub, near, group_before, envelope, origins, directions, before, 
                      _spans_solved)
 
 
-def _searched(sub, group, g, k, group_before, envelope, origins, directions, before, pieces, probe=True, done=None):
+def _searched(sub, group, g, k, group_before, envelope, origins, directions, before, pieces, probe=True, solved=None):
     """Removal intervals (seg, enter, leave, span) of the lines `sub` (ascending indices into the
     lines) from the pairs (group g, chain k) of their groups: with `probe` first a few spans per
-    group and a guess per line, then every chain near each line (docs/ENGINE.md)."""
+    group and a guess per line, then every chain near each line (docs/ENGINE.md); with
+    `solved` (_Solved), the probes' pairs are remembered and the closing search skips the
+    pairs remembered."""
     if sub.size == 0:
         return _none()
     starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
@@ -688,13 +712,13 @@ def _searched(sub, group, g, k, group_before, envelope, origins, directions, bef
         # is left of it; each time the narrowed envelopes meet far fewer chains; then the rest.
         centre, radius = capsule_spheres(*capsules)
         found.append(_expanded(*_probe(g, k, centre, radius, directions[sub[np.minimum(starts, sub.size - 1)]],
-                                       group_before, pieces), *lines, _spans_solved))
+                                       group_before, pieces), *lines, functools.partial(_spans_solved, solved=solved)))
         starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
         a, b, _ = capsules
         pick = _entered_first(g, _rows(a, g), _rows(b, g), *pieces.hulls("chain", k)[:4], _GUESSED_CHAINS)
-        found.append(_expanded(g[pick], k[pick], *lines, _line_probe))
+        found.append(_expanded(g[pick], k[pick], *lines, functools.partial(_line_probe, solved=solved)))
         starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
-    found.append(_expanded(g, k, *lines, functools.partial(_chains_solved, done=done)))
+    found.append(_expanded(g, k, *lines, functools.partial(_chains_solved, solved=solved)))
     return tuple(np.concatenate(part) for part in zip(*found))
 
 
@@ -798,12 +822,15 @@ def _expanded(g, k, members, starts, sizes, envelope, origins, directions, befor
     return tuple(np.concatenate(part) for part in zip(*found))
 
 
-def _spans_solved(seg, span, envelope, origins, directions, before, pieces):
-    """Removal intervals (seg, enter, leave, span) from the (segment, span) pairs (_line_span_pairs)."""
+def _spans_solved(seg, span, envelope, origins, directions, before, pieces, solved=None):
+    """Removal intervals (seg, enter, leave, span) from the (segment, span) pairs (_line_span_pairs),
+    remembered in `solved` if given."""
+    if solved is not None:
+        solved.add(seg, span)
     return _line_span_pairs(seg, span, envelope, origins, directions, before, pieces)
 
 
-def _chains_solved(seg, chain, envelope, origins, directions, before, pieces, done=None):
+def _chains_solved(seg, chain, envelope, origins, directions, before, pieces, solved=None):
     """Removal intervals (seg, enter, leave, span) from the (segment, chain) pairs: the chains
     near each segment; a rigid one that ends before the segment's CL point solved whole (its
     hull is the union of its pieces), of the others their spans (_line_span_pairs)."""
@@ -811,8 +838,8 @@ def _chains_solved(seg, chain, envelope, origins, directions, before, pieces, do
     whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
     found = _solved(seg[whole], chain[whole], envelope, origins, directions, pieces, whole=True)
     seg, span = _chain_spans(seg[~whole], chain[~whole], before, pieces)
-    if done is not None:
-        keep = (span != done[:, seg]).all(axis=0)
+    if solved is not None:
+        keep = solved.fresh(seg, span)
         seg, span = seg[keep], span[keep]
     return tuple(np.concatenate(part) for part in zip(found, _line_span_pairs(seg, span, envelope, origins,
                                                                               directions, before, pieces)))
@@ -835,10 +862,11 @@ def _entered_first(owner, a, b, c0, c1, axis, radius, take):
     return _smallest(owner, np.where(ok, entry, np.inf), take) & ok
 
 
-def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
+def _line_probe(seg, chain, envelope, origins, directions, before, pieces, solved=None):
     """Removal intervals (seg, enter, leave, span) of a first guess per segment from its chains (seg,
     chain (K,)): of their spans before the segment's CL point, the one its line seems to enter
-    first (_entered_first), its pieces solved (its whole chain where _whole_chains says so)."""
+    first (_entered_first), its pieces solved (its whole chain where _whole_chains says so);
+    the pairs remembered in `solved` if given."""
     open_ = envelope[0, seg] < envelope[1, seg]
     seg, chain = seg[open_], chain[open_]
     order = np.argsort(seg, kind="stable")
@@ -848,6 +876,8 @@ def _line_probe(seg, chain, envelope, origins, directions, before, pieces):
     keep = pieces.span_move[span] <= before[seg]
     seg, span = seg[keep], span[keep]
     pick = _entered_first(seg, *_ends(seg, envelope, origins, directions), *pieces.hulls("span", span)[:4], 1)
+    if solved is not None:
+        solved.add(seg[pick], span[pick])
     (whole, chain), (seg, span) = _whole_chains(seg[pick], span[pick], before, pieces)
     found = _solved(whole, chain, envelope, origins, directions, pieces, whole=True)
     seg, piece = _span_pieces(seg, span, pieces)
