@@ -624,6 +624,8 @@ class _Solved:
 
     def add(self, seg, span):
         """Remember the pairs (segment seg, span) (K,), in the free places of each segment."""
+        if seg.size == 0:
+            return
         order = np.argsort(seg, kind="stable")
         seg, span = seg[order], span[order]
         head = np.flatnonzero(np.r_[True, seg[1:] != seg[:-1]])

@@ -9,6 +9,9 @@ point searched in full. Planted by hand, each makes the tests fail: trusting a f
 guided envelope without the search that proves it (1); keeping a removal by its overlap with
 the line's current envelope instead of its first range (2); the shift along the earlier
 moves dropped (the followers' guide then misses: the spy's count of guided lines falls).
+With tool axes that turn (chains that are not rigid, solved span by span), also: the closing
+search skipping every span instead of those a guess or probe solved (1); a line's guess
+remembering all its candidate spans as solved instead of the one it solved (1).
 """
 
 import numpy as np
@@ -37,6 +40,24 @@ def program_of_three():
                        (0.0, 2.2, [np.sin(np.radians(5.0)), 0.0, np.cos(np.radians(5.0))])):
         points = np.stack([x, np.full(n, y), z + 0.02 * (x - 24.0)], axis=1)
         rows = program.add_pass(points, 5.0, 12.0, np.tile(axis, (n, 1)))
+    return program, rows
+
+
+def program_turning():
+    """Three passes as program_of_three's, their tool axes turning along each pass (sub-steps
+    within 0.05 mm: spans of several pieces, chains that are not rigid): the first tilting
+    across the feed from 12° to 0°, the second along it from −6° to 6°, the third across it
+    from 0° to −10°; the rows of the third."""
+    program = Program()
+    n = 57
+    x = np.linspace(24.0, 38.0, n)
+    for y, z, (a0, a1), across in ((-6.0, 3.0, (12.0, 0.0), True), (-3.0, 2.6, (-6.0, 6.0), False),
+                                   (0.0, 2.2, (0.0, -10.0), True)):
+        points = np.stack([x, np.full(n, y), z + 0.02 * (x - 24.0)], axis=1)
+        angle = np.radians(np.linspace(a0, a1, n))
+        zero = np.zeros(n)
+        axes = np.stack([zero, np.sin(angle), np.cos(angle)] if across else [np.sin(angle), zero, np.cos(angle)], axis=1)
+        rows = program.add_pass(points, 5.0, 12.0, axes)
     return program, rows
 
 
@@ -89,6 +110,25 @@ def test_waves_against_full(spied):
     origins, directions = edge_lines(d, rows, PHI, True)
     stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
     pieces = swept_pieces(program.moves())
+    got, changed = inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)
+    assert spied["waves"] == 1 and spied["guided"] > spied["astray"] > 0
+    want = full_computation(stock_iv, pieces, rows, origins, directions, PHI.size)
+    np.testing.assert_allclose(got.length, want.length, rtol=0, atol=SAME)
+    for mine, theirs in zip(ends(got), ends(want)):
+        np.testing.assert_allclose(mine, theirs, rtol=0, atol=SAME)
+    assert changed.all()
+
+
+def test_waves_against_full_five_axis(spied):
+    """20 CL points of a program whose tool axes turn through the waves, against the full
+    computation: the closing searches must solve the spans of chains that are not rigid."""
+    program, rows = program_turning()
+    rows = rows[20:40]
+    d = program.as_dict()
+    origins, directions = edge_lines(d, rows, PHI, False)
+    stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
+    pieces = swept_pieces(program.moves())
+    assert not pieces.any_rigid
     got, changed = inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)
     assert spied["waves"] == 1 and spied["guided"] > spied["astray"] > 0
     want = full_computation(stock_iv, pieces, rows, origins, directions, PHI.size)
