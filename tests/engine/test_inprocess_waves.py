@@ -138,11 +138,12 @@ def test_waves_against_full_five_axis(spied):
     assert changed.all()
 
 
-def test_waves_give_the_same_bits_whatever_the_seeds(spied, monkeypatch):
+@pytest.mark.parametrize("make", [program_of_three, program_turning])
+def test_waves_give_the_same_bits_whatever_the_seeds(spied, monkeypatch, make):
     """The third pass's CL points 8 … 47 in one call, in chunks of 7 and of 3 CL points (other
     seeds, other neighbours), and with every CL point searched in full: the same intervals and
-    labels, bit for bit."""
-    program, rows = program_of_three()
+    labels, bit for bit; with fixed and with turning tool axes."""
+    program, rows = make()
     rows = rows[8:48]
     whole = intervals_of(program, rows)
     whole = {name: getattr(whole, name) for name in FIELDS}
