@@ -1152,16 +1152,18 @@ def subtract(stock: EdgeIntervals, rows, enter, leave):
     keep = np.flatnonzero(~mine)
     edit = np.flatnonzero(mine)
     # Events along each touched line; at one position: stock ends, removal starts, removal
-    # ends, stock starts (so that touching removals never open a gap and stock labels win).
+    # ends, stock starts (so that touching removals never open a gap and stock labels win):
+    # given in that order, which the stable sorts keep among equal positions.
     k, r = edit.size, rows.size
-    ev_row = np.concatenate([stock.rows[edit], stock.rows[edit], rows, rows])
-    ev_pos = np.concatenate([stock.start[edit], stock.end[edit], enter, leave])
-    ev_kind = np.concatenate([np.full(k, 3), np.zeros(k, dtype=int), np.ones(r, dtype=int), np.full(r, 2)])
-    ev_source = np.concatenate([edit, edit, np.full(2 * r, -1)])
-    order = np.lexsort((ev_kind, ev_pos, ev_row))
+    ev_row = np.concatenate([stock.rows[edit], rows, rows, stock.rows[edit]])
+    ev_pos = np.concatenate([stock.end[edit], enter, leave, stock.start[edit]])
+    ev_kind = np.repeat(np.arange(4), [k, r, r, k])
+    ev_source = np.concatenate([edit, np.full(2 * r, -1), edit])
+    order = np.lexsort((ev_pos, ev_row))
     ev_row, ev_pos, ev_kind, ev_source = ev_row[order], ev_pos[order], ev_kind[order], ev_source[order]
-    in_stock = np.cumsum(np.select([ev_kind == 3, ev_kind == 0], [1, -1], 0))
-    in_removal = np.cumsum(np.select([ev_kind == 1, ev_kind == 2], [1, -1], 0))
+    # Kinds 0 … 3: stock end, removal start, removal end, stock start.
+    in_stock = np.cumsum(np.array([-1, 0, 0, 1])[ev_kind])
+    in_removal = np.cumsum(np.array([0, 1, -1, 0])[ev_kind])
     inside = (in_stock > 0) & (in_removal == 0)
     seg = np.flatnonzero(inside[:-1] & (ev_row[1:] == ev_row[:-1]) & (ev_pos[1:] - ev_pos[:-1] > LENGTH_EPS))
     begin, finish = seg, seg + 1
@@ -1172,8 +1174,10 @@ def subtract(stock: EdgeIntervals, rows, enter, leave):
         at, own = (begin, from_stock) if name.startswith("start") else (finish, to_stock)
         machined = _MACHINED if name.endswith("surface") else -1
         out[name] = np.where(own, getattr(stock, name)[np.maximum(ev_source[at], 0)], machined)
+    # Both parts come sorted by row, then start, and share no row: a stable sort by row
+    # (which merges the two runs) puts them in order.
     merged = {name: np.concatenate([getattr(stock, name)[keep], out[name]]) for name in out}
-    order = np.lexsort((merged["start"], merged["rows"]))
+    order = np.argsort(merged["rows"], kind="stable")
     return EdgeIntervals(stock.n_rows, **{name: values[order] for name, values in merged.items()})
 
 
