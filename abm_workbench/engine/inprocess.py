@@ -614,10 +614,10 @@ def _spans_per_point(group_cl, g, k, pieces):
 
 
 class _Solved:
-    """Per line, the first _SOLVED spans whose pairs with it a guess or a probe solved whole:
-    every piece of such a span was then solved for the line or surely apart from its envelope,
-    which only narrows later; so the closing search skips the pair (solving it again would
-    find the same removals)."""
+    """Per line, the first _SOLVED spans that a guess or a probe solved for it. Every piece of
+    such a span was then solved for the line or surely apart from its envelope, which only
+    narrows later; so the closing search skips the pair (solving it again would find the same
+    removals)."""
 
     def __init__(self, n):
         self.span = np.full((_SOLVED, n), -1, dtype=np.intp)
@@ -646,7 +646,8 @@ def _waves_searched(wave, source, group, g, k, group_before, state):
     chain k) that hold their groups' own); each follower of a later
     wave first the spans that bound what is left of its source line, shifted (_followed), then
     the search without probes; followers without a source line, and those the guess left
-    astray (_astray), the whole search."""
+    astray (_astray), the whole search. A span a guess or a probe solved for a line is not
+    solved for it again (_Solved)."""
     envelope = state[0]
     solved = _Solved(envelope.shape[1])
     found = [_searched(np.flatnonzero(wave == 0), group, g, k, group_before, *state, solved=solved)]
