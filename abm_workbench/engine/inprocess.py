@@ -375,7 +375,8 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None):
     apart = below | above
     # The distance seen along the axis only where the cheaper test left it open.
     i = np.flatnonzero(~apart)
-    apart[i] = _seen_along(qa[i], qb[i] - qa[i], d[i], aa[i], ab[i] - aa[i], da[i]) > radius[i] + across[i]
+    qa_i = _rows(qa, i)
+    apart[i] = _seen_along(qa_i, _rows(qb, i) - qa_i, _rows(d, i), aa[i], ab[i] - aa[i], da[i]) > radius[i] + across[i]
     return apart
 
 
