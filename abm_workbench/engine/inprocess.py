@@ -509,7 +509,7 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     # Rows 0, 1: the envelope of each line's remaining material, narrowed as removals are found
     # (lo ≥ hi: nothing remains, the line is removed whole); rows 2, 3: lo, hi as given.
     envelope = np.stack([lo, hi, lo, hi])
-    state = (envelope, origins[line], directions[line], program_index[line // p] - 1, pieces)
+    state = (envelope, _rows(origins, line), _rows(directions, line), program_index[line // p] - 1, pieces)
     group, group_before = _line_groups(line, p, program_index)
     cl = line // p
     new = np.r_[True, cl[1:] != cl[:-1]]
@@ -576,7 +576,7 @@ def _followed(follower, source, found, envelope, origins, directions, before, pi
     count = np.searchsorted(seg, source, side="right") - first
     owner, rank = _csr(count)
     who, w = follower[owner], span[first[owner] + rank]
-    shift = origins[who] - origins[source[owner]]
+    shift = _rows(origins, who) - _rows(origins, source[owner])
     d = pieces.span_c1[w] - pieces.span_c0[w]
     dd = row_dot(d, d)
     step = np.rint(row_dot(shift, d) / np.where(dd > 0.0, dd, 1.0)).astype(np.intp)
@@ -675,7 +675,7 @@ def _subset(sub, group, g, k, group_before, envelope, origins, directions, piece
     n = group[-1] + 1
     mine = group[sub]
     starts, sizes = np.searchsorted(mine, np.arange(n)), np.bincount(mine, minlength=n)
-    capsules = group_capsules(mine, n, envelope[:, sub], origins[sub], directions[sub])
+    capsules = group_capsules(mine, n, envelope[:, sub], _rows(origins, sub), _rows(directions, sub))
     if g is None:
         g, k = _group_chains(capsules, group_before, pieces)
     else:
@@ -715,7 +715,7 @@ def _searched(sub, group, g, k, group_before, envelope, origins, directions, bef
         # the chains its group seems to enter first (_line_probe), which usually finds what
         # is left of it; each time the narrowed envelopes meet far fewer chains; then the rest.
         centre, radius = capsule_spheres(*capsules)
-        found.append(_expanded(*_probe(g, k, centre, radius, directions[sub[np.minimum(starts, sub.size - 1)]],
+        found.append(_expanded(*_probe(g, k, centre, radius, _rows(directions, sub[np.minimum(starts, sub.size - 1)]),
                                        group_before, pieces), *lines, functools.partial(_spans_solved, solved=solved)))
         starts, sizes, capsules, g, k = _subset(sub, group, g, k, group_before, envelope, origins, directions, pieces)
         a, b, _ = capsules
@@ -782,8 +782,9 @@ def _probe(g, k, centre, radius, direction, group_before, pieces):
     the _PROBE reaching highest along the group's lines (direction (n, 3)), and the _PROBE whose
     axes pass nearest the sphere's centre."""
     def chosen(g, c0, c1, axis, r, h, slack):
-        across = _across(centre[g], c0, c1, axis) - r
-        lower, upper = _extent(centre[g], direction[g], c0, c1, axis, r, h)
+        at = _rows(centre, g)
+        across = _across(at, c0, c1, axis) - r
+        lower, upper = _extent(at, _rows(direction, g), c0, c1, axis, r, h)
         holds = across + radius[g] + slack <= 0.0
         return np.flatnonzero(_smallest(g, across, _PROBE) | _smallest(g, np.where(holds, lower, np.inf), _PROBE)
                               | _smallest(g, np.where(holds, -upper, np.inf), _PROBE))
@@ -960,10 +961,11 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
         return out[0]
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving.
-    c0, c1, axis, radius, h = (column[keep] for column in hulls)
+    at = np.flatnonzero(keep)
+    c0, c1, axis, radius, h = (_rows(column, at) for column in hulls)
     slack = pieces.span_slack[span]
     hull = (c0, c1, axis, radius - slack, slack, h - slack)
-    inside = _inside(a[keep], *hull) & _inside(b[keep], *hull)
+    inside = _inside(_rows(a, at), *hull) & _inside(_rows(b, at), *hull)
     out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
     seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)

@@ -29,12 +29,16 @@ def group_capsules(group, n, envelope, origins, directions):
     live = envelope[0] < envelope[1]
     if not live.any():
         return a, b, radius
-    every = live.all()
-    alive = slice(None) if every else np.flatnonzero(live)
-    lo, hi, u = envelope[0, alive], envelope[1, alive], directions[alive]
-    lo_end = origins[alive] + lo[:, None] * u
+    if live.all():
+        lo, hi, u, start = envelope[0], envelope[1], directions, origins
+        owner = group
+    else:
+        alive = np.flatnonzero(live)
+        lo, hi = envelope[0, alive], envelope[1, alive]
+        u, start = np.take(directions, alive, axis=0), np.take(origins, alive, axis=0)
+        owner = group[alive]
+    lo_end = start + lo[:, None] * u
     hi_end = lo_end + (hi - lo)[:, None] * u
-    owner = group[alive]
     first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
     count = np.diff(np.r_[first, owner.size])
     groups = owner[first]
@@ -44,7 +48,7 @@ def group_capsules(group, n, envelope, origins, directions):
     axis = np.where(norm[:, None] > 1e-9, mean_dir / np.where(norm > 1e-9, norm, 1.0)[:, None], [1.0, 0.0, 0.0])
     centre = np.add.reduceat(lo_end + hi_end, first, axis=0) / (2.0 * count)[:, None]
     slot = np.repeat(np.arange(first.size), count)
-    w, m = axis[slot], centre[slot]
+    w, m = np.take(axis, slot, axis=0), np.take(centre, slot, axis=0)
     low_gap, high_gap = lo_end - m, hi_end - m
     along_lo, along_hi = row_dot(low_gap, w), row_dot(high_gap, w)
     # Squared distances from the axis line: |e − m|² − along², never below 0.
