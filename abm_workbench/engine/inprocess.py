@@ -60,7 +60,7 @@ _GUESSED_CHAINS = 3
 #: Spans near a CL point's groups above which chains are tested per line, probes made and the
 #: lines searched in waves (_waves); at most that many, chains go straight to (group, span)
 #: pairs. Where the two cost the same (docs/ENGINE.md, step 1).
-_FEW_SPANS = 80
+_FEW_SPANS = 64
 #: Every _SAMPLE_EVERY-th CL point of a call (and every seed) is looked at to decide between the
 #: two (_spans_per_point).
 _SAMPLE_EVERY = 4
