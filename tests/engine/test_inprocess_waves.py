@@ -101,34 +101,19 @@ def spied(monkeypatch):
     return counts
 
 
-def test_waves_against_full(spied):
+@pytest.mark.parametrize("make, rigid", [(program_of_three, True), (program_turning, False)])
+def test_waves_against_full(spied, make, rigid):
     """20 consecutive CL points of the third pass in one call (seeds at the 1st and 17th, the
-    others in four waves) against the full computation."""
-    program, rows = program_of_three()
+    others in four waves) against the full computation: with fixed tool axes (rigid chains,
+    solved whole) and with turning ones (chains that are not rigid: the closing searches must
+    solve their spans), the lines in the engine's frame and along the feed."""
+    program, rows = make()
     rows = rows[20:40]
     d = program.as_dict()
-    origins, directions = edge_lines(d, rows, PHI, True)
+    origins, directions = edge_lines(d, rows, PHI, rigid)
     stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
     pieces = swept_pieces(program.moves())
-    got, changed = inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)
-    assert spied["waves"] == 1 and spied["guided"] > spied["astray"] > 0
-    want = full_computation(stock_iv, pieces, rows, origins, directions, PHI.size)
-    np.testing.assert_allclose(got.length, want.length, rtol=0, atol=SAME)
-    for mine, theirs in zip(ends(got), ends(want)):
-        np.testing.assert_allclose(mine, theirs, rtol=0, atol=SAME)
-    assert changed.all()
-
-
-def test_waves_against_full_five_axis(spied):
-    """20 CL points of a program whose tool axes turn through the waves, against the full
-    computation: the closing searches must solve the spans of chains that are not rigid."""
-    program, rows = program_turning()
-    rows = rows[20:40]
-    d = program.as_dict()
-    origins, directions = edge_lines(d, rows, PHI, False)
-    stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
-    pieces = swept_pieces(program.moves())
-    assert not pieces.any_rigid
+    assert pieces.chain_rigid.all() if rigid else not pieces.any_rigid
     got, changed = inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)
     assert spied["waves"] == 1 and spied["guided"] > spied["astray"] > 0
     want = full_computation(stock_iv, pieces, rows, origins, directions, PHI.size)
