@@ -1128,8 +1128,8 @@ def _covered_from(start, seg, enter, leave):
     count = np.diff(np.r_[head, seg.size])
     owner = np.repeat(np.arange(owners.size), count)
     rank = np.arange(seg.size) - np.repeat(head, count)
-    # Column j: the j-th interval of each owner; reach[j]: how far the intervals before it
-    # cover from start, if they chain; enters past the last interval are +inf (a gap).
+    # Row j: the j-th interval of each owner (a column); reach[j]: how far the intervals before
+    # it cover from start, if they chain; enters past the last interval are +inf (a gap).
     width = int(count.max()) + 1
     enters = np.full((width, owners.size), np.inf)
     reach = np.full((width, owners.size), -np.inf)
