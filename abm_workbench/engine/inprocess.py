@@ -657,8 +657,8 @@ def _waves_searched(wave, source, group, g, k, group_before, state):
         follower = np.flatnonzero(mine & (source >= 0))
         astray = np.zeros(follower.size, dtype=bool)
         if follower.size:
-            done = tuple(np.concatenate(part) for part in zip(*found))
-            found.append(_followed(follower, source[follower], done, *state, solved))
+            so_far = tuple(np.concatenate(part) for part in zip(*found))
+            found.append(_followed(follower, source[follower], so_far, *state, solved))
             astray = _astray(follower, source[follower], envelope)
             found.append(_searched(follower[~astray], group, None, None, group_before, *state, probe=False,
                                    solved=solved))
