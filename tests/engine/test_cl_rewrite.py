@@ -106,3 +106,13 @@ def test_latin1_file_keeps_its_bytes(tmp_path):
     out = tmp_path / "o.apt"
     write_rescheduled_program(out, program, 1, [300.0, 300.0])
     assert out.read_bytes() == original
+
+
+def test_lines_are_counted_as_the_lexer_counts_them(tmp_path):
+    path = tmp_path / "l.apt"   # Latin-1 byte 0x85 reads as U+0085, which str.splitlines takes for a line end
+    path.write_bytes("$$ caf\x85 \nFEDRAT/MMPM,300\nGOTO/0,0,0\nGOTO/5,0,0\n".encode("latin-1"))
+    program = read_program(path)
+    write_rescheduled_program(path, program, 1, [200.0, 200.0])
+    assert path.read_bytes() == "$$ caf\x85 \nFEDRAT/MMPM,300\nFEDRAT/MMPM,200\nGOTO/0,0,0\nGOTO/5,0,0\n".encode(
+        "latin-1")
+    assert read_program(path).operations[0].feed.tolist() == [200.0, 200.0]

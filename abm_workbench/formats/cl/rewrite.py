@@ -10,6 +10,7 @@ comments and line ends are kept byte for byte.
 """
 
 import os
+import re
 
 import numpy as np
 
@@ -19,6 +20,8 @@ from .lexer import lex
 from .units import FEED_UNITS, MM_PER_INCH, feed_from_mm
 
 _MOTION = ("GOTO", "GODLTA", "NURBS")
+#: A line with its line end, as the lexer counts lines (CR, LF or CRLF, nothing else).
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+")
 
 
 def _line_end(text):
@@ -82,7 +85,7 @@ def rewritten_text(program, number, feed):
                 written = target
         if word == "GOTO":
             circle_line = None
-    lines = program.text.splitlines(keepends=True)
+    lines = _LINE.findall(program.text)
     end = _line_end(program.text)
     out = []
     for number_, line in enumerate(lines, start=1):
