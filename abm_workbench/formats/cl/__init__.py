@@ -8,7 +8,8 @@ becomes. Lengths in mm, angles in degrees, feeds in mm/min or mm/rev, spindle in
 Modules: :mod:`.sniff` (content), :mod:`.lexer` (records), :mod:`.reader` (the modal state
 machine), :mod:`.arcs` (CIRCLE), :mod:`.nurbs` (NX NURBS), :mod:`.units`, :mod:`.tools`,
 :mod:`.frames`, :mod:`.program` (the dataclasses), :mod:`.csv_program` (the toolpath CSV),
-:mod:`.summary` (the ``toolpath`` command's lines and CSV), :mod:`.rewrite` (feeds written back).
+:mod:`.summary` (the ``toolpath`` command's lines and CSV), :mod:`.rewrite` (feeds written back),
+:mod:`.feed_style` (FEDRAT written as the file writes it).
 """
 
 import os
