@@ -8,6 +8,7 @@ the feed. APT and CSV files written with the feeds read back to the same CL poin
 
 import csv
 import os
+import re
 
 import numpy as np
 import pytest
@@ -20,6 +21,7 @@ from abm_workbench.formats.toolpath_csv import load_toolpath
 from abm_workbench.forces import material, pass_forces
 from abm_workbench.scheduling import force_feed_bounds, programmed_feed, schedule
 
+from .test_cl_rewrite import without_inserted
 from .test_cli import M, case, run  # noqa: F401  (case is a fixture)
 
 MODEL = os.path.join(os.path.dirname(__file__), "..", "..", "resources", "models", "model_test_1")
@@ -242,3 +244,25 @@ def test_helical_schedule_keeps_the_limit(model_pass):
     plan = schedule(forces, limit)
     again = pass_forces(stock, tool, path, SETTINGS, COEFFICIENTS, feed=plan.feed)
     assert (again.peak <= limit + 1e-9).all() and np.isclose(again.peak, limit, rtol=1e-9).any()
+
+
+def test_schedule_writes_a_cl_program_back_in_its_own_fedrat_form_under_the_limit(case, capsys):
+    # A SOLIDWORKS CAM style program: its post reads the first field of FEDRAT as the feed.
+    path = load_toolpath("toolpath.csv")
+    write_feed_toolpath("in.apt", path, 0.1, flutes=2, diameter=12, flute_length=30, spindle_rpm=4000)
+    original = open("in.apt").read().replace("FEDRAT/MMPM,800\n", "FEDRAT/800.,MMPM\n")
+    open("in.apt", "w").write(original)
+    status, _, _ = run(["schedule", "--stock", "stock.json", "--toolpath", "in.apt", "--job", "job.json",
+                        "--material", "al7075-t6", "--max-force", "400", "--out", "P.apt"], capsys)
+    assert status == 0
+    kept, inserted = without_inserted(open("P.apt").read(), original)
+    assert kept == original and len(inserted) > 1
+    for line in inserted:
+        assert re.fullmatch(r"FEDRAT/(?:[0-9]+\.|[0-9]+\.[0-9]*[1-9]),MMPM\n", line), line
+    rates = load_apt("P.apt").feed
+    assert set(rates) <= {float(line[7:].split(",")[0]) for line in inserted} | {800.0}
+    feed = rates / (2 * 4000.0)
+    again = pass_forces(load_staircase("stock.json"), TOOL, path, CutSettings(0.1, 10, 0, 180, 5, 4000),
+                        COEFFICIENTS, feed=feed)
+    # Rounded down at the file's 6 decimals: rounding to the nearest would exceed the limit by up to 2.5e-7 N.
+    assert (again.peak <= 400 + 1e-9).all() and (feed < 0.1).any()
