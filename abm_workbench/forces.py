@@ -8,10 +8,10 @@ of axial length db cutting a chip of thickness h feels
 (tangential, radial, axial; K_·c in N/mm², K_·e in N/mm). With straight flutes every point
 of flute k sits at the same angle φ_k = φ + 360·k/Z (φ the angle of flute 1, k = 0..Z−1), so
 its force is that times its engaged length b_k (the engine's length of cut at φ_k), with
-h_k = f sin φ_k cos α. A flute cuts only inside the immersion, start ≤ φ_k < end (mod 360,
+h_k = f sin φ_k cos α (α the inclination of the CL point's move). A flute cuts only inside the immersion, start ≤ φ_k < end (mod 360,
 half-open so that a flute on the boundary counts once over a revolution).
 
-Tool frame (u, v, w = the columns of R = Rx(θ_A)·Ry(θ_B); φ from +v towards +u):
+Tool frame (u, v, w = the columns of R = Rz(α)·Rx(θ_A)·Ry(θ_B), Toolpath.frames; φ from +v towards +u):
 
     F_u = −F_t cos φ_k − F_r sin φ_k,  F_v = F_t sin φ_k − F_r cos φ_k,  F_w = F_a
 
@@ -36,7 +36,6 @@ from typing import Optional
 import numpy as np
 
 from .engine import engage, flute_engagement
-from .engine.frames import rotation_matrix
 from .engine.model import finite_number
 
 #: Default immersion (deg): a flute cuts over the leading half, full slotting.
@@ -258,7 +257,8 @@ def edge_forces(lengths, phi_deg, rotation, radius, inclination, feed, coefficie
 
     lengths: (Z, m, p) engaged length of flute k (mm) at CL point i when flute 1 is at
     phi_deg[j] (p,) deg. rotation: (m, 3, 3) R of each CL point. radius: R_t (mm).
-    inclination: α (deg). feed: feed per tooth, scalar or (m,) (mm). coefficients: Coefficients.
+    inclination: α (deg), scalar or (m,) (each CL point's). feed: feed per tooth, scalar or (m,) (mm).
+    coefficients: Coefficients.
     immersion: (start, end) deg. Returns Forces.
     """
     lengths = np.asarray(lengths, dtype=float)
@@ -273,7 +273,8 @@ def edge_forces(lengths, phi_deg, rotation, radius, inclination, feed, coefficie
     angles = flute_angles(phi, lengths.shape[0])                     # (Z, p)
     cuts = in_immersion(angles, immersion)
     s, c = np.sin(np.radians(angles)), np.cos(np.radians(angles))
-    thickness = np.where(cuts, s, 0.0) * np.cos(np.radians(inclination))  # h / f, (Z, p)
+    scale = np.cos(np.radians(np.broadcast_to(np.asarray(inclination, dtype=float), (lengths.shape[1],))))
+    thickness = np.where(cuts, s, 0.0)[:, None, :] * scale[None, :, None]  # h / f, (Z, m, p)
     length = np.where(cuts[:, None, :], lengths, 0.0)                 # (Z, m, p)
 
     def tool_frame(tangential, radial, axial):
@@ -283,7 +284,7 @@ def edge_forces(lengths, phi_deg, rotation, radius, inclination, feed, coefficie
                          axial.sum(axis=0)], axis=-1)
 
     k = coefficients
-    chip = length * thickness[:, None, :]                             # b·h/f (mm)
+    chip = length * thickness                                         # b·h/f (mm)
     return Forces(
         phi=phi, rotation=rotation, radius=float(radius), feed=_feeds(feed, lengths.shape[1]),
         spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
@@ -326,7 +327,7 @@ def helical_forces(flutes, rotation, coefficients, *, feed=None, spindle_rpm=Non
     kappa = np.tan(np.radians(flutes.helix)) / flutes.radius
     psi0 = np.radians(flute_angles(flutes.phi, flutes.flutes).T)[None, :, :, None]   # (1, p, Z, 1)
     width, i_s, i_c, i_ss, i_sc = (v.sum(axis=-1) for v in interval_integrals(flutes.start, flutes.end, psi0, kappa))
-    k, scale = coefficients, np.cos(np.radians(flutes.inclination))
+    k, scale = coefficients, np.cos(np.radians(np.broadcast_to(flutes.inclination, (m,))))[:, None]
 
     def summed(*components):
         """(m, p, 3) tool-frame vector of per-flute (m, p, Z) components, summed over the flutes."""
@@ -336,7 +337,7 @@ def helical_forces(flutes, rotation, coefficients, *, feed=None, spindle_rpm=Non
         phi=np.asarray(flutes.phi, dtype=float), rotation=rotation, radius=float(flutes.radius),
         feed=_feeds(flutes.feed_per_tooth if feed is None else feed, m),
         spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
-        cutting=scale * summed(-k.ktc * i_sc - k.krc * i_ss, k.ktc * i_ss - k.krc * i_sc, k.kac * i_s),
+        cutting=scale[..., None] * summed(-k.ktc * i_sc - k.krc * i_ss, k.ktc * i_ss - k.krc * i_sc, k.kac * i_s),
         edge=summed(-k.kte * i_c - k.kre * i_s, k.kte * i_s - k.kre * i_c, k.kae * width),
         cutting_tangential=scale * k.ktc * i_s.sum(axis=-1), edge_tangential=k.kte * width.sum(axis=-1),
         area_per_feed=scale * i_s.sum(axis=-1),
@@ -364,12 +365,12 @@ def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL
     if tool.helix != 0.0 and lengths_at is not None:
         raise ValueError("lengths_at is for straight flutes only")
     immersion = check_immersion(immersion)
-    rotation = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
+    rotation = toolpath.frames()
     if tool.helix != 0.0:
         engaged = flute_engagement(stock, tool, toolpath, settings, immersion=immersion)
         return helical_forces(engaged, rotation, coefficients, feed=settings.feed_per_tooth if feed is None else feed,
                               spindle_rpm=settings.spindle_rpm)
     lengths = flute_lengths(stock, tool, toolpath, settings, first=first, lengths_at=lengths_at)
-    return edge_forces(lengths, settings.phi, rotation, tool.radius,
-                       settings.inclination, settings.feed_per_tooth if feed is None else feed, coefficients,
+    return edge_forces(lengths, settings.phi, rotation, tool.radius, toolpath.inclinations(settings),
+                       settings.feed_per_tooth if feed is None else feed, coefficients,
                        immersion=immersion, spindle_rpm=settings.spindle_rpm)

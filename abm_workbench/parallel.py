@@ -33,7 +33,7 @@ IN_FLIGHT_PER_WORKER = 3
 #: Seconds to wait for a Dask scheduler to answer.
 SCHEDULER_TIMEOUT = 3.0
 #: Engagement fields over the angles (p,), the same for every chunk; all others are over CL points first.
-ANGLE_FIELDS = ("phi", "h")
+ANGLE_FIELDS = ("phi",)
 
 
 class SchedulerError(InputError):

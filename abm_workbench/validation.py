@@ -32,7 +32,7 @@ from typing import Optional
 import numpy as np
 
 from .engine import (SURFACES, Engagement, FluteEngagement, Tool, Toolpath, edge_lines, flute_engagement,
-                     rotation_matrix, segment_letter)
+                     segment_letter)
 from .engine.stocks import engage_in_process, engage_stock
 
 #: Below this reference length (mm) the error is absolute, not relative.
@@ -312,8 +312,8 @@ def _spread(reference, chosen, m):
 
 
 def _repeats_cl_point(toolpath: Toolpath):
-    """Whether two CL points of `toolpath` are equal in position and angles."""
-    values = np.column_stack([toolpath.cl, toolpath.theta_a, toolpath.theta_b])
+    """Whether two CL points of `toolpath` are equal in position and frame."""
+    values = np.column_stack([toolpath.cl, toolpath.theta_a, toolpath.theta_b, toolpath.alpha])
     return len(np.unique(values, axis=0)) < len(values)
 
 
@@ -372,7 +372,7 @@ class HelixValidation:
 
     def _helix_height(self, l, flute):
         """z (m, p) mm of flute `flute`'s helix at axial positions l (m, p) mm (NaN kept)."""
-        frames = rotation_matrix(self.toolpath.theta_a, self.toolpath.theta_b)
+        frames = self.toolpath.frames()
         psi = np.radians(self.engagement.angle_at(l, flute))
         radial = np.sin(psi) * frames[:, None, 2, 0] + np.cos(psi) * frames[:, None, 2, 1]
         return self.toolpath.cl[:, None, 2] + self.tool.radius * radial + l * frames[:, None, 2, 2]

@@ -38,7 +38,6 @@ sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
 from engine_throughput import MODEL, densified, load_model  # noqa: E402
 
 from abm_workbench.engine import Toolpath, engage, inprocess, swept  # noqa: E402
-from abm_workbench.engine.frames import rotation_matrix  # noqa: E402
 from abm_workbench.engine.inprocess import ProgramMoves, swept_pieces  # noqa: E402
 from abm_workbench.engine.stocks import engage_in_process  # noqa: E402
 
@@ -47,7 +46,7 @@ def program_of(passes, tool):
     """ProgramMoves of toolpaths `passes` run one after the other with `tool`; the first move of
     each pass is a rapid."""
     cl = np.concatenate([t.cl for t in passes])
-    axis = np.concatenate([rotation_matrix(t.theta_a, t.theta_b)[:, :, 2] for t in passes])
+    axis = np.concatenate([t.axes for t in passes])
     cutting = np.concatenate([np.r_[False, np.ones(len(t) - 1, dtype=bool)] for t in passes])
     n = cl.shape[0]
     return ProgramMoves(cl, axis, cutting, np.full(n, tool.radius), np.full(n, tool.flute_length), np.arange(n))

@@ -1,6 +1,6 @@
 """The boolean reference for helical cutting edges: where each flute's helix lies inside the stock.
 
-Flute k of a tool with helix angle β at CL point T (frame R = rotation_matrix(θ_A, θ_B),
+Flute k of a tool with helix angle β at CL point T (frame R = Toolpath.frames(): Rz(α)·Rx(θ_A)·Ry(θ_B),
 columns u, v, w) and rotation angle φ is the helix of engine/helix.py,
 
     S_k(l) = T + R·(R_t sin ψ, R_t cos ψ, l),   ψ = φ + 360k/Z − deg(l tan β / R_t),   0 ≤ l ≤ L.
@@ -23,7 +23,7 @@ Lengths in mm, angles in degrees.
 
 import numpy as np
 
-from ..engine import Tool, Toolpath, rotation_matrix
+from ..engine import Tool, Toolpath
 from .boolean import PIECE_EPS, _distinct_angles, _merged
 from .freecad_env import FreeCAD, Part
 
@@ -77,7 +77,7 @@ def flute_lengths_by_boolean(shape, tool: Tool, toolpath: Toolpath, phi_deg, flu
         raise ValueError(f"flutes must be indices in 0..{z - 1}, got {flutes!r}")
     angles = (phi[:, None] + 360.0 * chosen[None, :] / z).ravel()            # (p·c,) ψ(0), flute-major last
     distinct, source = _distinct_angles(angles)
-    frames = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
+    frames = toolpath.frames()
     m, p = len(toolpath), phi.size
     out = {"axial_length": np.zeros((m, p, z)), "edge_length": np.zeros((m, p, z)),
            "lep_l": np.full((m, p, z), np.nan), "uep_l": np.full((m, p, z), np.nan),

@@ -133,8 +133,8 @@ class ProgramSweep:
         """(n,) program rows of the n consecutive CL points `part` of the pass. ValueError when the
         part is not found in the pass, or found at several places (an exact repeat of CL points)."""
         whole, n = self.toolpath, len(part)
-        columns = [(whole.cl, part.cl), (whole.theta_a[:, None], part.theta_a[:, None]),
-                   (whole.theta_b[:, None], part.theta_b[:, None])]
+        columns = [(whole.cl, part.cl)] + [(getattr(whole, name)[:, None], getattr(part, name)[:, None])
+                                           for name in ("theta_a", "theta_b", "alpha")]
         starts = np.arange(len(whole) - n + 1)
         for offset in range(n):
             keep = np.ones(starts.size, dtype=bool)

@@ -18,7 +18,6 @@ from functools import reduce
 import numpy as np
 
 from .allocator import keep_freed_memory
-from .frames import rotation_matrix
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
 from .rows import row_any, row_count, row_sum
@@ -45,8 +44,8 @@ _CASE = {name: i for i, name in enumerate(CASES)}
 class Engagement:
     """Cut geometry of a pass: m CL points × p rotation angles.
 
-    phi: (p,) rotation angles (deg). h: (p,) cut thickness f·sin φ·cos α (mm, 0 where sin φ < 0).
-    Per instant, (m, p): lep_l, uep_l (mm along the edge, NaN without engagement),
+    phi: (p,) rotation angles (deg). Per instant, (m, p): h, the cut thickness f·sin φ·cos α (mm, 0
+    where sin φ < 0; α the inclination of the CL point's move, Toolpath.inclinations), lep_l, uep_l (mm along the edge, NaN without engagement),
     length (total inside length, mm), pieces (inside runs), uep_surface (index into SURFACES),
     uep_section (section whose material holds the UEP, −1 none), uep_wall (wall index j of the
     UEP's wall, 0 and n for the x limits, −1 otherwise), case (index into CASES),
@@ -155,14 +154,17 @@ def segment_letter(index):
 
 
 def cut_thickness(phi_deg, feed_per_tooth, inclination_deg):
-    """h = f·sin φ·cos α (mm) for φ (p,) in degrees; 0 where sin φ < 0 (the flute is not cutting)."""
-    h = feed_per_tooth * np.sin(np.radians(phi_deg)) * np.cos(np.radians(inclination_deg))
+    """h = f·sin φ·cos α (mm) for φ (p,) in degrees and inclinations α in degrees, a number (-> (p,))
+    or one per CL point (m,) (-> (m, p)); 0 where sin φ < 0 (the flute is not cutting)."""
+    inclination = np.asarray(inclination_deg, dtype=float)
+    scale = np.cos(np.radians(inclination))[..., None] if inclination.ndim else np.cos(np.radians(inclination))
+    h = feed_per_tooth * np.sin(np.radians(phi_deg)) * scale
     return np.maximum(h, 0.0)
 
 
 def edge_lines(toolpath, tool, phi_deg):
     """Base points (m, p, 3) at l = 0 and unit directions (m, 3) of the cutting edge lines (mm)."""
-    rot = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
+    rot = toolpath.frames()
     phi = np.radians(np.asarray(phi_deg, dtype=float))
     radial = np.sin(phi)[None, :, None] * rot[:, None, :, 0] + np.cos(phi)[None, :, None] * rot[:, None, :, 1]
     return toolpath.cl[:, None, :] + tool.radius * radial, rot[:, :, 2]
@@ -196,7 +198,7 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
         uep_xyz[start:stop] = (base + chunk["uep_l"].reshape(n_cl, p, 1) * direction[:, None, :])
         if progress is not None:
             progress(stop, m)
-    return finished_engagement(phi, settings, out, lep_xyz, uep_xyz)
+    return finished_engagement(phi, settings, out, lep_xyz, uep_xyz, toolpath.inclinations(settings))
 
 
 def _edge_components(base, direction):
@@ -211,10 +213,11 @@ def _edge_components(base, direction):
     return x0, y0, z0, dx, dy, dz
 
 
-def finished_engagement(phi, settings, out, lep_xyz, uep_xyz):
-    """The Engagement of filled per-instant arrays (as empty_results made them): cut thickness,
-    area, depth of cut per CL point and engagement segments derived from them."""
-    h = cut_thickness(phi, settings.feed_per_tooth, settings.inclination)
+def finished_engagement(phi, settings, out, lep_xyz, uep_xyz, inclination):
+    """The Engagement of filled per-instant arrays (as empty_results made them): cut thickness (with
+    `inclination` (m,) deg, each CL point's), area, depth of cut per CL point and engagement segments
+    derived from them."""
+    h = cut_thickness(phi, settings.feed_per_tooth, inclination)
     engaged = out["length"] > 0.0
     with np.errstate(invalid="ignore"):
         top = np.where(engaged, uep_xyz[..., 2], -np.inf).max(axis=1)
@@ -244,9 +247,11 @@ def empty_results(m, p):
 def _slice(toolpath, start, stop):
     """CL points start:stop of a toolpath, without re-validating them."""
     part = object.__new__(Toolpath)
-    for name in ("cl", "theta_a", "theta_b"):
+    for name in ("cl", "theta_a", "theta_b", "alpha"):
         object.__setattr__(part, name, getattr(toolpath, name)[start:stop])
     object.__setattr__(part, "cc", None)
+    object.__setattr__(part, "inclination", None if toolpath.inclination is None else
+                       toolpath.inclination[start:stop])
     return part
 
 

@@ -1,8 +1,11 @@
-"""Tool frames: the rotation R = Rx(θ_A)·Ry(θ_B) and tool-axis vectors (notes §2).
+"""Tool frames: R = Rz(α)·Rx(θ_A)·Ry(θ_B) and tool-axis vectors (notes §2, docs/ENGINE.md "Frames").
 
-Angles are in degrees here as at every interface. The tool axis is w = R·e_z =
-(sin θ_B, −sin θ_A cos θ_B, cos θ_A cos θ_B); an axis with k ≤ 0 points down or sideways
-and has no (θ_A, θ_B) with |θ_A|, |θ_B| < 90°.
+Angles are in degrees here as at every interface. α turns the paper's frame about z to the feed
+direction in plan view (engine.feed): u, v, w are R's columns, w the tool axis, φ measured from
++v towards +u, so φ = 90° points along the feed. With α = 0 this is the paper's frame, whose
+pass feeds along +x. The tool axis is w = Rz(α)·(sin θ_B, −sin θ_A cos θ_B, cos θ_A cos θ_B);
+θ_A and θ_B are those of the axis turned by −α. An axis with k ≤ 0 points down or sideways and
+has no (θ_A, θ_B) with |θ_A|, |θ_B| < 90°.
 """
 
 import numpy as np
@@ -10,36 +13,45 @@ import numpy as np
 from ..errors import CLPointError
 
 
-def rotation_matrix(theta_a, theta_b):
-    """R = Rx(θ_A)·Ry(θ_B) for angles in degrees: (...,) and (...,) -> (..., 3, 3)."""
+def rotation_matrix(theta_a, theta_b, alpha=None):
+    """R = Rz(α)·Rx(θ_A)·Ry(θ_B) for angles in degrees: (...,) each -> (..., 3, 3).
+
+    alpha None (or all zero) gives Rx(θ_A)·Ry(θ_B) exactly, as the paper's frame.
+    """
     ta = np.radians(np.asarray(theta_a, dtype=float))
     tb = np.radians(np.asarray(theta_b, dtype=float))
     ta, tb = np.broadcast_arrays(ta, tb)
     ca, sa, cb, sb = np.cos(ta), np.sin(ta), np.cos(tb), np.sin(tb)
     zero = np.zeros_like(ca)
-    return np.stack(
-        [
-            np.stack([cb, zero, sb], axis=-1),
-            np.stack([sa * sb, ca, -sa * cb], axis=-1),
-            np.stack([-ca * sb, sa, ca * cb], axis=-1),
-        ],
-        axis=-2,
-    )
+    rows = [np.stack([cb, zero, sb], axis=-1), np.stack([sa * sb, ca, -sa * cb], axis=-1),
+            np.stack([-ca * sb, sa, ca * cb], axis=-1)]
+    if alpha is not None and np.any(alpha):
+        turn = np.radians(np.broadcast_to(np.asarray(alpha, dtype=float), ca.shape))
+        c, s = np.cos(turn)[..., None], np.sin(turn)[..., None]
+        rows = [c * rows[0] - s * rows[1], s * rows[0] + c * rows[1], rows[2]]
+    return np.stack(rows, axis=-2)
 
 
-def angles_to_axis(theta_a, theta_b):
-    """Unit tool axes (..., 3) for angles θ_A, θ_B in degrees (...,)."""
-    ta = np.radians(np.asarray(theta_a, dtype=float))
-    tb = np.radians(np.asarray(theta_b, dtype=float))
-    ta, tb = np.broadcast_arrays(ta, tb)
-    return np.stack([np.sin(tb), -np.sin(ta) * np.cos(tb), np.cos(ta) * np.cos(tb)], axis=-1)
+def angles_to_axis(theta_a, theta_b, alpha=None):
+    """Unit tool axes (..., 3) for angles θ_A, θ_B (and the frame's turn α) in degrees (...,)."""
+    return rotation_matrix(theta_a, theta_b, alpha)[..., :, 2]
 
 
-def axis_to_angles(axes):
-    """(θ_A, θ_B) in degrees, each (m,), for tool-axis vectors (m, 3), normalised here.
+def turned_axes(axes, alpha):
+    """The axes (m, 3) expressed in frames turned about z by α (m,) deg: Rz(−α)·axis."""
+    axes = np.asarray(axes, dtype=float)
+    turn = np.radians(np.asarray(alpha, dtype=float))
+    c, s = np.cos(turn), np.sin(turn)
+    i, j, k = np.ascontiguousarray(axes.T)
+    return np.stack([c * i + s * j, c * j - s * i, k], axis=1)
+
+
+def axis_to_angles(axes, alpha=None):
+    """(θ_A, θ_B) in degrees, each (m,), for tool-axis vectors (m, 3), normalised here, in the frames
+    turned by α (m,) deg (None: not turned).
 
     Raises CLPointError (a ValueError) naming the first row whose axis is zero, not finite, or has k ≤ 0
-    (a tool pointing down or sideways cannot be written as Rx(θ_A)·Ry(θ_B)·e_z with
+    (a tool pointing down or sideways cannot be written as Rz(α)·Rx(θ_A)·Ry(θ_B)·e_z with
     |θ_A|, |θ_B| < 90°).
     """
     axes = np.asarray(axes, dtype=float)
@@ -58,6 +70,8 @@ def axis_to_angles(axes):
             i, f"tool axis {axes[i].tolist()} has k <= 0; only axes pointing up (k > 0) can be "
             "expressed as (theta_a, theta_b)"
         )
+    if alpha is not None and np.any(alpha):
+        unit = turned_axes(unit, alpha)
     # Contiguous columns: numpy picks its vectorised or its scalar arctan2 (which can differ in the last
     # bit) by whether the output's memory may overlap the inputs' span, and a strided column's span
     # runs past its array's end, into memory that a fresh output may occupy.

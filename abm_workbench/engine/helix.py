@@ -4,7 +4,7 @@ Flute k (0-based, of Z) of a tool with helix angle β, at rotation angle φ, is 
 
     S_k(l) = T + R·(R_t sin ψ_k(l), R_t cos ψ_k(l), l),   ψ_k(l) = φ + 2πk/Z − l·tan β / R_t,
 
-0 ≤ l ≤ L, with R = rotation_matrix(θ_A, θ_B) of the CL point T (β = 0 is the straight edge
+0 ≤ l ≤ L, with R = Rz(α)·Rx(θ_A)·Ry(θ_B) the tool frame of the CL point T (Toolpath.frames) (β = 0 is the straight edge
 of engagement.py). Along it every boundary of the stock is found exactly: the box limits and
 the section tops (sine-lines, roots bracketed by their closed-form critical points,
 helix_roots.py), the walls (subdivision with derivative bounds, helix_walls.py). The pieces
@@ -19,7 +19,6 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .engagement import SURFACES, _table1_case, finished_engagement
-from .frames import rotation_matrix
 from .helix_roots import SineLines
 from .helix_walls import WallModels, wall_crossings
 from .model import CutSettings, Staircase, Tool, Toolpath
@@ -34,7 +33,7 @@ class FluteEngagement:
     """Engagement of every flute's helical edge: m CL points × p rotation angles × Z flutes.
 
     phi: (p,) rotation angle φ of flute 0 at l = 0 (deg); helix β (deg); flutes Z; radius R_t
-    (mm); feed_per_tooth f (mm); inclination α (deg).
+    (mm); feed_per_tooth f (mm); inclination α (m,) (deg, each CL point's move).
     start, end: (m, p, Z, K) axial positions l (mm from the tool tip) of each engaged interval,
     sorted, disjoint, NaN-padded (K ≥ 1, the most intervals anywhere in the pass).
     Per flute, (m, p, Z): lep_l, uep_l (mm, NaN without engagement), axial_length (sum of the
@@ -50,7 +49,7 @@ class FluteEngagement:
     flutes: int
     radius: float
     feed_per_tooth: float
-    inclination: float
+    inclination: np.ndarray
     start: np.ndarray
     end: np.ndarray
     lep_l: np.ndarray
@@ -76,8 +75,10 @@ class FluteEngagement:
                                                                    * np.tan(np.radians(self.helix)) / self.radius)
 
     def thickness_at(self, l, flute):
-        """Cut thickness h = f·sin ψ·cos α (mm) at axial position l (mm) of flute `flute`, 0 where sin ψ < 0."""
-        h = self.feed_per_tooth * np.sin(np.radians(self.angle_at(l, flute))) * np.cos(np.radians(self.inclination))
+        """Cut thickness h = f·sin ψ·cos α (m, p) (mm) at axial position l (mm, a number or (m, p)) of flute
+        `flute`, α each CL point's inclination; 0 where sin ψ < 0."""
+        h = (self.feed_per_tooth * np.sin(np.radians(self.angle_at(l, flute)))
+             * np.cos(np.radians(self.inclination))[:, None])
         return np.maximum(h, 0.0)
 
     def area(self):
@@ -88,14 +89,14 @@ class FluteEngagement:
         """
         kappa = np.tan(np.radians(self.helix)) / self.radius
         psi0 = np.radians(self.phi[None, :, None] + 360.0 * np.arange(self.flutes) / self.flutes)
-        scale = self.feed_per_tooth * np.cos(np.radians(self.inclination))
+        scale = self.feed_per_tooth * np.cos(np.radians(self.inclination))[:, None, None]
         pieces = positive_sine_integral(self.start, self.end, psi0[..., None], kappa)
         return scale * np.where(np.isnan(pieces), 0.0, pieces).sum(axis=-1)
 
     def as_engagement(self, flute=0):
         """The engine Engagement (engagement.py) of flute `flute`, for the CSV writer and plots.
 
-        phi stays the tool's rotation angle; length is the axial length of cut; h (p,) is the
+        phi stays the tool's rotation angle; length is the axial length of cut; h (m, p) is the
         thickness at the flute's tip (l = 0, angle φ + 360·flute/Z); area is the closed-form
         ∫ h db of :meth:`area`; segments follow the UEP surface as in the straight engine.
         """
@@ -105,8 +106,8 @@ class FluteEngagement:
         out = {name: getattr(self, name)[:, :, flute] for name in (
             "lep_l", "uep_l", "pieces", "uep_surface", "uep_section", "uep_wall", "case")}
         out["length"] = self.axial_length[:, :, flute]
-        settings = CutSettings(self.feed_per_tooth, self.inclination)
-        result = finished_engagement(self.phi, settings, out, self.lep_xyz[:, :, flute], self.uep_xyz[:, :, flute])
+        result = finished_engagement(self.phi, CutSettings(self.feed_per_tooth), out, self.lep_xyz[:, :, flute],
+                                     self.uep_xyz[:, :, flute], self.inclination)
         return replace(result, h=self.thickness_at(0.0, flute), area=self.area()[:, :, flute])
 
 
@@ -161,7 +162,7 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     phi = settings.phi
     m, p, z = len(toolpath), phi.size, tool.flutes
     kappa = np.tan(np.radians(tool.helix)) / tool.radius
-    rot = rotation_matrix(toolpath.theta_a, toolpath.theta_b)
+    rot = toolpath.frames()
     psi0 = np.radians(phi[:, None] + 360.0 * np.arange(z) / z)                  # (p, Z)
     models = WallModels(stock)
     # Per edge, the work and memory grow with the turns the helix makes over the flute.
@@ -184,7 +185,7 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     joined = {name: np.concatenate([_pad(c[name], k) if name in ("start", "end") else c[name] for c in chunks])
               for name in chunks[0]}
     return FluteEngagement(phi=phi, helix=tool.helix, flutes=z, radius=tool.radius,
-                           feed_per_tooth=settings.feed_per_tooth, inclination=settings.inclination,
+                           feed_per_tooth=settings.feed_per_tooth, inclination=toolpath.inclinations(settings),
                            edge_length=joined["axial_length"] / np.cos(np.radians(tool.helix)), **joined)
 
 

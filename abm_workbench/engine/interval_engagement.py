@@ -51,5 +51,5 @@ def engagement_from_intervals(intervals, toolpath, tool, settings, origins, dire
     lep["lep_wall"][rows] = intervals.start_wall[first]
     lep_xyz = (origins + flat["lep_l"][:, None] * directions).reshape(m, p, 3)
     uep_xyz = (origins + flat["uep_l"][:, None] * directions).reshape(m, p, 3)
-    engagement = finished_engagement(settings.phi, settings, out, lep_xyz, uep_xyz)
+    engagement = finished_engagement(settings.phi, settings, out, lep_xyz, uep_xyz, toolpath.inclinations(settings))
     return dataclasses.replace(engagement, **{name: values.reshape(m, p) for name, values in lep.items()})

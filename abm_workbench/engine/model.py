@@ -11,7 +11,7 @@ import numpy as np
 
 from ..errors import CLPointError
 from .bands import WallBands
-from .frames import axis_to_angles
+from .frames import angles_to_axis, axis_to_angles, rotation_matrix
 from .tolerances import WALL_CHECK_SAMPLES
 from .walls import SplineTable, SplineWall, Wall
 
@@ -201,17 +201,24 @@ class Staircase:
 
 @dataclass(frozen=True)
 class Toolpath:
-    """CL points of one pass with their tool orientation.
+    """CL points of one pass with their tool frames (docs/ENGINE.md, "Frames").
 
     cl: (m, 3) centres of the tool's bottom face (mm), in pass order.
-    theta_a, theta_b: (m,) rotations about x and y (degrees), |θ| < 90.
+    theta_a, theta_b: (m,) rotations about x and y (degrees), |θ| < 90, of the frame turned by α.
     cc: (m, 3) cutter-contact points (mm), or None.
+    alpha: (m,) direction of the feed in plan view (degrees from +x towards +y), the turn of
+    each CL point's frame about z; None: 0, the paper's pass along +x.
+    inclination: (m,) the tool's inclination to each move's feed (degrees, engine.feed), which
+    thins the chip (h = f·sin φ·cos inclination); None: the job's one value (CutSettings).
+    Tool frame R = Rz(α)·Rx(θ_A)·Ry(θ_B) (:meth:`frames`).
     """
 
     cl: np.ndarray
     theta_a: np.ndarray
     theta_b: np.ndarray
     cc: Optional[np.ndarray] = None
+    alpha: Optional[np.ndarray] = None
+    inclination: Optional[np.ndarray] = None
 
     def __post_init__(self):
         cl = _array("cl", self.cl, (None, 3))
@@ -227,15 +234,28 @@ class Toolpath:
             object.__setattr__(self, name, angles)
         if self.cc is not None:
             object.__setattr__(self, "cc", _array("cc", self.cc, (cl.shape[0], 3)))
+        alpha = np.zeros(cl.shape[0]) if self.alpha is None else self.alpha
+        object.__setattr__(self, "alpha", _array("alpha", alpha, (cl.shape[0],)))
+        if self.inclination is not None:
+            inclination = _array("inclination", self.inclination, (cl.shape[0],))
+            steep = np.flatnonzero(np.abs(inclination) > 90.0)
+            if steep.size:
+                i = int(steep[0])
+                raise CLPointError(i, f"inclination = {inclination[i]} must be within [-90, 90] degrees")
+            object.__setattr__(self, "inclination", inclination)
 
     def rows(self, index):
-        """The Toolpath of the CL points `index` (a slice or an int array), in that order (CC points too)."""
+        """The Toolpath of the CL points `index` (a slice or an int array), in that order (CC points,
+        feed directions and inclinations too)."""
         cc = None if self.cc is None else self.cc[index]
-        return Toolpath(self.cl[index], self.theta_a[index], self.theta_b[index], cc)
+        inclination = None if self.inclination is None else self.inclination[index]
+        return Toolpath(self.cl[index], self.theta_a[index], self.theta_b[index], cc, self.alpha[index],
+                        inclination)
 
     @classmethod
-    def from_axes(cls, cl, axes, cc=None):
-        """Toolpath from tool-axis vectors (m, 3) of any nonzero finite length (normalised; k must be > 0).
+    def from_axes(cls, cl, axes, cc=None, alpha=None, inclination=None):
+        """Toolpath from tool-axis vectors (m, 3) in the part frame, of any nonzero finite length
+        (normalised; k must be > 0), with frames turned about z by alpha (m,) deg (None: 0).
 
         A row whose largest component lies outside [1e-150, 1e150] (where its squared length would
         underflow or overflow) is first scaled exactly by a power of two to a largest component in
@@ -249,8 +269,36 @@ class Toolpath:
                 extreme = np.isfinite(largest) & (largest > 0.0) & ((largest < 1e-150) | (largest > 1e150))
             _, exponent = np.frexp(np.where(extreme, largest, 1.0))
             axes = np.where(extreme[:, None], np.ldexp(axes, -exponent[:, None]), axes)
-        theta_a, theta_b = axis_to_angles(axes)
-        return cls(cl, theta_a, theta_b, cc)
+        theta_a, theta_b = axis_to_angles(axes, alpha)
+        return cls(cl, theta_a, theta_b, cc, alpha, inclination)
+
+    @classmethod
+    def from_part_angles(cls, cl, theta_a, theta_b, cc=None, alpha=None, inclination=None):
+        """Toolpath from angles θ_A, θ_B (m,) deg that give the tool axis in the part frame
+        (Rx(θ_A)·Ry(θ_B)·e_z, as a toolpath CSV's columns do), with frames turned about z by alpha (m,)
+        deg (None: 0); CL points whose α is 0 keep the angles as given, bit for bit."""
+        given = cls(cl, theta_a, theta_b, cc)  # the angles checked as given
+        if alpha is None or not np.any(alpha):
+            return cls(given.cl, given.theta_a, given.theta_b, given.cc, alpha, inclination)
+        turned_a, turned_b = axis_to_angles(angles_to_axis(given.theta_a, given.theta_b), alpha)
+        still = np.asarray(alpha) == 0.0
+        return cls(given.cl, np.where(still, given.theta_a, turned_a), np.where(still, given.theta_b, turned_b),
+                   given.cc, alpha, inclination)
+
+    def frames(self):
+        """(m, 3, 3) tool frames R = Rz(α)·Rx(θ_A)·Ry(θ_B); columns u, v, w (w the tool axis)."""
+        return rotation_matrix(self.theta_a, self.theta_b, self.alpha)
+
+    @property
+    def axes(self):
+        """(m, 3) unit tool axes w in the part frame."""
+        return angles_to_axis(self.theta_a, self.theta_b, self.alpha)
+
+    def inclinations(self, settings):
+        """(m,) inclination (deg) of each CL point: its own, else the one of `settings` (CutSettings)."""
+        if self.inclination is not None:
+            return self.inclination
+        return np.full(len(self), float(settings.inclination))
 
     def __len__(self):
         return int(self.cl.shape[0])
@@ -259,7 +307,7 @@ class Toolpath:
         """The same toolpath moved by offset (3,) mm."""
         offset = np.asarray(offset, dtype=float)
         return Toolpath(self.cl + offset, self.theta_a, self.theta_b,
-                        None if self.cc is None else self.cc + offset)
+                        None if self.cc is None else self.cc + offset, self.alpha, self.inclination)
 
 
 @dataclass(frozen=True)

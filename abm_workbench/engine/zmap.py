@@ -234,7 +234,7 @@ def zmap_engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutS
             zmap.remove(toolpath.cl[i], w, tool.radius, length)
         if progress is not None:
             progress(i + 1, m)
-    return finished_engagement(phi, settings, out, lep_xyz, uep_xyz)
+    return finished_engagement(phi, settings, out, lep_xyz, uep_xyz, toolpath.inclinations(settings))
 
 
 def _positive(name, value):

@@ -90,7 +90,7 @@ def read_engagement(path):
         bottom = np.where(engaged, lep_xyz[..., 2], np.inf).min(axis=1)
     depth = np.where(engaged.any(axis=1), top - bottom, np.nan)
     return Engagement(
-        phi=phi, h=columns["h"][:p].astype(float), lep_l=grid("lep_l"), uep_l=grid("uep_l"), length=length,
+        phi=phi, h=grid("h"), lep_l=grid("lep_l"), uep_l=grid("uep_l"), length=length,
         pieces=grid("pieces", np.int32), uep_surface=lookup("uep_surface", SURFACES),
         uep_section=grid("uep_section", np.int32), uep_wall=grid("uep_wall", np.int32),
         case=lookup("case", CASES), segment=letter_index(columns["segment"].tolist()).astype(np.int32).reshape(m, p),

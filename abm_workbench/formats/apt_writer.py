@@ -10,9 +10,11 @@ same float, so :func:`abm_workbench.formats.apt.load_apt` gives back the same CL
 feeds and tool sizes. A CL program read by :mod:`abm_workbench.formats.cl` is written back with
 only one operation's feeds changed by :func:`abm_workbench.formats.cl.rewrite.write_rescheduled_program`.
 
-CSV: the toolpath CSV columns ``x,y,z,theta_a,theta_b`` (mm, deg) and ``feed_per_tooth`` (mm),
-plus ``feed_mm_min`` when the spindle speed is known; the toolpath reader accepts and skips
-the feed columns.
+CSV: the toolpath CSV columns ``x,y,z,i,j,k`` (mm, the unit tool axis in the part frame),
+``feed_x,feed_y,feed_z`` (the feed direction in plan view each CL point's frame is turned to),
+``inclination`` (deg) where the toolpath has one per CL point, and ``feed_per_tooth`` (mm), plus
+``feed_mm_min`` when the spindle speed is known; the toolpath reader accepts and skips the feed
+columns.
 
 Files are written whole or not at all (:func:`abm_workbench.formats.replacing`).
 """
@@ -21,7 +23,6 @@ import os
 
 import numpy as np
 
-from ..engine import angles_to_axis
 from . import replacing
 
 
@@ -38,7 +39,7 @@ def apt_text(toolpath, feed_per_tooth, *, flutes, diameter, flute_length, spindl
         raise ValueError("every feed per tooth written to an APT file must be positive")
     per = flutes * (1.0 if spindle_rpm is None else float(spindle_rpm))
     unit = "MMPR" if spindle_rpm is None else "MMPM"
-    axes = angles_to_axis(toolpath.theta_a, toolpath.theta_b)
+    axes = toolpath.axes
     lines = [f"$$ {line}" for line in comment.splitlines()]
     lines += ["UNITS/MM", f"CUTTER/{_number(diameter)}", f"CSI_SET_FLUTE_LENGTH/{_number(flute_length)}"]
     if spindle_rpm is not None:
@@ -57,8 +58,14 @@ def apt_text(toolpath, feed_per_tooth, *, flutes, diameter, flute_length, spindl
 def toolpath_feed_csv_text(toolpath, feed_per_tooth, *, flutes, spindle_rpm=None):
     """Toolpath CSV text with feed columns (see the module docstring)."""
     feed = np.broadcast_to(np.asarray(feed_per_tooth, dtype=float), (len(toolpath),))
-    header = ["x", "y", "z", "theta_a", "theta_b", "feed_per_tooth"]
-    columns = [toolpath.cl[:, 0], toolpath.cl[:, 1], toolpath.cl[:, 2], toolpath.theta_a, toolpath.theta_b, feed]
+    turn = np.radians(toolpath.alpha)
+    header = ["x", "y", "z", "i", "j", "k", "feed_x", "feed_y", "feed_z"]
+    columns = [*toolpath.cl.T, *toolpath.axes.T, np.cos(turn), np.sin(turn), np.zeros(len(toolpath))]
+    if toolpath.inclination is not None:
+        header.append("inclination")
+        columns.append(toolpath.inclination)
+    header.append("feed_per_tooth")
+    columns.append(feed)
     if spindle_rpm is not None:
         header.append("feed_mm_min")
         columns.append(feed * flutes * float(spindle_rpm))

@@ -65,9 +65,7 @@ def result_columns(engagement, *, first_cl=0, forces=None, initial=None):
     m, p = engagement.shape
     columns = {"cl": first_cl + np.repeat(np.arange(m, dtype=np.int64), p), "phi_deg": np.tile(engagement.phi, m)}
     for name in RESULT_COLUMNS[2:]:
-        if name == "h":
-            columns[name] = np.tile(engagement.h, m)
-        elif name[:4] in ("lep_", "uep_") and name[4:] in ("x", "y", "z"):
+        if name[:4] in ("lep_", "uep_") and name[4:] in ("x", "y", "z"):
             columns[name] = getattr(engagement, f"{name[:3]}_xyz")[..., "xyz".index(name[4])].reshape(-1)
         else:
             columns[name] = getattr(engagement, name).reshape(-1)

@@ -6,6 +6,11 @@ The header names the columns, in any order, case-insensitive, whitespace trimmed
 - ``theta_a, theta_b`` (rotations about x and y, degrees, |θ| < 90) or
 - ``i, j, k`` (tool-axis vector, any length, k > 0);
 - optionally ``xc, yc, zc`` (cutter-contact point, mm), all three or none;
+- optionally ``feed_x, feed_y, feed_z`` (the direction of the tool's motion arriving at the CL
+  point, any length, 0,0,0 where none: the tangent of an arc, as ``toolpath --out`` writes it),
+  all three or none;
+- optionally ``inclination`` (deg): the tool's inclination to the feed at each CL point, which
+  thins the chip (h = f·sin φ·cos inclination); without it the job's one value;
 - optionally ``feed_per_tooth`` (mm), ``feed_mm_min``: the feeds a ``schedule`` wrote, skipped here;
 - optionally the columns the ``toolpath --out`` command writes: ``operation`` (1-based number of
   the CL file's operation), ``name`` (its CAM name), ``tool`` (its kind: flat, ball, ...),
@@ -13,6 +18,10 @@ The header names the columns, in any order, case-insensitive, whitespace trimmed
   (MMPM mm/min or MMPR mm/rev, empty before any feed), ``line`` (the CL file's line).
 
 One row per CL point in pass order. Blank lines and lines starting with ``#`` are skipped.
+The angles or the axis give the tool axis in the part frame; each CL point's frame is turned
+about z to its feed (docs/ENGINE.md, "Frames"): the direction in plan view of the motion
+arriving at it, from the feed columns, else from the path of the CC points (whose pass the
+paper feeds along +x), else of the CL points (engine.feed).
 Numbers in the grammar of :func:`abm_workbench.formats.parse_number`; a field holds at most
 :data:`MAX_FIELD` characters.
 A file with an ``operation`` column holds several passes: :func:`load_toolpath` takes the one
@@ -29,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine import Toolpath
+from ..engine.feed import feed_frame, path_directions
 from ..errors import CLPointError, InputError
 from . import MAX_MAGNITUDE, parse_number, read_text
 
@@ -36,6 +46,8 @@ _POSITION = ("x", "y", "z")
 _ANGLES = ("theta_a", "theta_b")
 _AXIS = ("i", "j", "k")
 _CONTACT = ("xc", "yc", "zc")
+_DIRECTION = ("feed_x", "feed_y", "feed_z")
+_INCLINATION = "inclination"
 _FEEDS = ("feed_per_tooth", "feed_mm_min")
 #: Columns of the toolpath command's CSV: numbers (empty allowed where marked) and texts.
 OPERATION_NUMBERS = ("operation", "diameter", "corner_radius", "flute_length", "feed_rate", "line")
@@ -97,11 +109,15 @@ def load_toolpath(path, operation=None):
     def stack(names):
         return np.stack([data[column][rows] for column in names], axis=1)
 
+    cl = stack(_POSITION)
     cc = stack(_CONTACT) if _CONTACT[0] in columns else None
+    directions = stack(_DIRECTION) if _DIRECTION[0] in columns else path_directions(cl if cc is None else cc)
+    alpha, _ = feed_frame(directions)
+    inclination = data[_INCLINATION][rows] if _INCLINATION in columns else None
     try:
         if _AXIS[0] in columns:
-            return Toolpath.from_axes(stack(_POSITION), stack(_AXIS), cc)
-        return Toolpath(stack(_POSITION), data["theta_a"][rows], data["theta_b"][rows], cc)
+            return Toolpath.from_axes(cl, stack(_AXIS), cc, alpha, inclination)
+        return Toolpath.from_part_angles(cl, data["theta_a"][rows], data["theta_b"][rows], cc, alpha, inclination)
     except CLPointError as error:
         raise InputError(f"{name}:{lines[error.index]}: {error.detail}") from None
     except ValueError as error:
@@ -215,7 +231,8 @@ def _columnwise(header, lines):
 
 def _columns(header, where):
     """Check the header's names (already lower-cased, trimmed); return them as a set."""
-    known = (*_POSITION, *_ANGLES, *_AXIS, *_CONTACT, *_FEEDS, *OPERATION_NUMBERS, *OPERATION_TEXTS)
+    known = (*_POSITION, *_ANGLES, *_AXIS, *_CONTACT, *_DIRECTION, _INCLINATION, *_FEEDS, *OPERATION_NUMBERS,
+             *OPERATION_TEXTS)
     duplicate = sorted({column for column in header if header.count(column) > 1})
     if duplicate:
         raise InputError(f"{where}: duplicate column {duplicate[0]!r}")
@@ -231,6 +248,8 @@ def _columns(header, where):
     groups = [("position", _POSITION), ("tool axis", _AXIS) if columns & set(_AXIS) else ("tool angles", _ANGLES)]
     if columns & set(_CONTACT):
         groups.append(("cutter-contact point", _CONTACT))
+    if columns & set(_DIRECTION):
+        groups.append(("feed direction", _DIRECTION))
     for label, group in groups:
         missing = [column for column in group if column not in columns]
         if missing:

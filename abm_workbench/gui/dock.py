@@ -196,7 +196,7 @@ class EngagementDock(QtGui.QDockWidget):
 
         axes, new = _reused_axes(self.figure, PLOTS)
         phi = result.phi
-        for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h),
+        for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h[cl]),
                                      ("length of cut (mm)", "cut area (mm²)", "h (mm)")):
             ax.plot(phi, np.where(result.engaged[cl], values, np.nan), color="0.6", linewidth=1.0)
             for index, segment in enumerate(result.segments(cl)):

@@ -22,7 +22,6 @@ import time
 
 import numpy as np
 
-from ..engine import Toolpath
 from ..errors import InputError, ParameterError
 
 
@@ -78,8 +77,7 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
     if not chosen:
         raise InputError("CL points: choose at least one")
     index = np.array(chosen)
-    pass_ = Toolpath(toolpath.cl[index], toolpath.theta_a[index], toolpath.theta_b[index],
-                     None if toolpath.cc is None else toolpath.cc[index])
+    pass_ = toolpath.rows(index)
     sweep, model_note = obj.Proxy.stock_model(obj, toolpath, hints, parameters, tool, settings, model)
     if sweep is not None:
         sweep = (sweep[0], np.asarray(sweep[1])[index])

@@ -23,7 +23,7 @@ from typing import Optional
 
 import numpy as np
 
-from ..engine import Staircase, TerracedStock, Tool, Toolpath, rotation_matrix
+from ..engine import Staircase, TerracedStock, Tool, Toolpath
 from ..errors import InputError
 from ..formats import check_keys, load_json_object
 from ..formats.staircase_json import load_staircase
@@ -242,7 +242,7 @@ def swept_y_window(toolpath: Toolpath, tool: Tool, z_max=np.inf, margin=SWEPT_MA
     edge can still be below z_max (the stock's top): z = z_T + R_t (−sin φ cA sB + cos φ sA)
     + l cA cB, whose lowest start is z_T − R_t·hypot(cA sB, sA).
     """
-    rotation = rotation_matrix(toolpath.theta_a, toolpath.theta_b)  # (m, 3, 3)
+    rotation = toolpath.frames()  # (m, 3, 3)
     radial = tool.radius * np.hypot(rotation[:, 1, 0], rotation[:, 1, 1])
     lowest = toolpath.cl[:, 2] - tool.radius * np.hypot(rotation[:, 2, 0], rotation[:, 2, 1])
     reach = np.clip((z_max - lowest) / rotation[:, 2, 2], 0.0, tool.flute_length)

@@ -102,7 +102,7 @@ def phi_figure(validation, cls):
         length = figure.add_subplot(grid[row, 0])
         area = figure.add_subplot(grid[row, 1], sharex=length)
         for axes, abm, ref, label in ((length, comparison.l_abm[cl], comparison.l_ref[cl], "length of cut (mm)"),
-                                      (area, engagement.area[cl], comparison.l_ref[cl] * h, "cut area (mm²)")):
+                                      (area, engagement.area[cl], comparison.l_ref[cl] * h[cl], "cut area (mm²)")):
             _shade_segments(axes, engagement, cl)
             axes.plot(phi, abm, color=ABM_COLOUR, label="ABM")
             axes.plot(phi, ref, "o", markevery=every, markersize=3.5, markerfacecolor="none", color=REF_COLOUR,

@@ -209,13 +209,32 @@ def test_tool_records(tmp_path, record, diameter, length):
     assert (program.diameter, program.flute_length, program.warnings) == (diameter, length, ())
 
 
-@pytest.mark.parametrize("record, words", [
-    ("CUTTER/10,1,4,1,0,0,30", "bull-nose mill D10 R1"),
-    ("CUTTER/6,3", "ball mill D6 R3"),
-    ("TLDATA/DRILL,5,118", "drill D5"),
+MILLING_NOT_YET = "a milling tool the ABM engine does not compute yet (it computes flat-end mills)"
+NOT_MILLING = "not a milling tool (the ABM engine computes flat-end mills)"
+
+
+@pytest.mark.parametrize("record, words, reason", [
+    ("CUTTER/10,1,4,1,0,0,30", "bull-nose mill D10 R1 mm", MILLING_NOT_YET),
+    ("CUTTER/6,3", "ball mill D6 R3 mm", MILLING_NOT_YET),
+    ("TLDATA/DRILL,5,118", "drill D5 mm", NOT_MILLING),
 ])
-def test_a_file_of_other_tools_is_refused_by_name(tmp_path, record, words):
-    fails(tmp_path, f"{record}\nGOTO/0,0,0\n", None, f"operation 1: {words}: the ABM engine is for flat-end mills")
+def test_a_file_of_other_tools_is_refused_by_name(tmp_path, record, words, reason):
+    fails(tmp_path, f"{record}\nGOTO/0,0,0\n", None, f"operation 1: {words}: {reason}")
+
+
+@pytest.mark.parametrize("text, line, warning, kept", [
+    ("FEDRAT/100,MMPM\nFEDRAT/0,MMPM\nGOTO/0,0,0\n", 2, "FEDRAT: feed rate must be positive, got 0", 100.0),
+    ("FEDRAT/100,MMPM\nFEDRAT/MMPM,#1\nGOTO/0,0,0\n", 2, "FEDRAT: argument 2 '#1' is neither a number nor a word",
+     100.0),
+    ("CUTTER/0\nGOTO/0,0,0\n", 1, "CUTTER: diameter must be positive, got 0", None),
+    ("SPINDL/9#00\nGOTO/0,0,0\n", 1, "SPINDL: argument 1 '9#00' is neither a number nor a word", None),
+])
+def test_records_the_engine_does_not_need_are_skipped_with_a_warning(tmp_path, text, line, warning, kept):
+    """An unreadable record the engine does not need (feed, tool, spindle) is skipped, named with its line."""
+    program = load(tmp_path, text)
+    assert program.warnings == (f"{tmp_path / 'path.apt'}:{line}: {warning}; the record is skipped (the engine "
+                                "does not need it)",)
+    assert (program.feed.tolist() == [kept]) if kept else program.diameter is None
 
 
 def test_several_tools_are_several_operations_to_choose_from(tmp_path):
@@ -224,7 +243,7 @@ def test_several_tools_are_several_operations_to_choose_from(tmp_path):
         load_apt(path)
     assert [op.number for op in caught.value.operations] == [1, 2]
     message = str(caught.value)
-    assert "1: -, flat-end mill D10, 2 CL points" in message and "2: -, flat-end mill D12, 1 CL points" in message
+    assert "1: -, flat-end mill D10 mm, 2 CL points" in message and "2: -, flat-end mill D12 mm, 1 CL points" in message
     assert "--operation N" in message
     second = load_apt(path, operation=2)
     assert (second.diameter, second.operation, second.line_numbers.tolist()) == (12.0, 2, [5])
@@ -291,7 +310,10 @@ FINI
 """
     program = load(tmp_path, text)
     assert program.unknown == (("OPSKIP", 9, 2),)
-    assert program.warnings == ()
+    path = tmp_path / "path.apt"
+    assert program.warnings == (f"{path}:8: CUTCOM: LEFT: cutter compensation in the control; the CL points are "
+                                "taken as the tool tip's centre as written (an offset the control adds, such as "
+                                "wear, is left out)",)
     assert program.toolpath.cl.tolist() == [[5.0, 0.0, 0.0]]
 
 
@@ -355,9 +377,6 @@ def test_continuation_anywhere_gives_the_same_record(tmp_path_factory, cuts):
     ("TLAXIS/0,0,-1\nGOTO/0,0,0\n", 2, ["k <= 0"]),
     ("MSYS/0,0,0,1,0,0,0,0,1\nGOTO/0,0,0\n", 2, ["k <= 0"]),
     ("GOTO/0,0,0,0,0,1\nGOTO/0,0,0,1,0,1e-300\n", 2, ["GOTO: theta_b = 90.0 must be within"]),
-    ("FEDRAT/0,MMPM\n", 1, ["FEDRAT: feed rate must be positive, got 0"]),
-    ("FEDRAT/MMPM,#1\n", 1, ["FEDRAT: argument 2 '#1' is neither a number nor a word"]),
-    ("CUTTER/0\n", 1, ["CUTTER: diameter must be positive, got 0"]),
     ("UNITS/FEET\n", 1, ["UNITS: expected MM or INCHES, got 'FEET'"]),
     ("UNITS/\n", 1, ["UNITS: expected MM or INCHES"]),
     ("MSYS/0,0,0,1,0,0\n", 1, ["MSYS: needs 9 numbers", "got 6"]),

@@ -34,8 +34,8 @@ def assert_ends_in_order(op, ends):
 def test_nx_clsf_operations_tools_msys_arcs_and_nurbs():
     program = read("nx_two_ops.clsf")
     assert [op.name for op in program.operations] == ["CAVITY_MILL", "VARIABLE_CONTOUR", "FLOOR_FINISH"]
-    assert [op.tool.describe() for op in program.operations] == ["flat-end mill D10", "ball mill D6 R3",
-                                                                 "flat-end mill D10"]
+    assert [op.tool.describe() for op in program.operations] == ["flat-end mill D10 mm", "ball mill D6 R3 mm",
+                                                                 "flat-end mill D10 mm"]
     assert all(op.tool.flute_length is None for op in program.operations)  # TLDATA's 75 is the tool length
     assert program.ignored == {"TOOL PATH": (1, 3), "PAINT": (5, 5), "END-OF-PATH": (29, 3)}
     assert (program.unknown, program.warnings, program.units) == ({}, [], "mm")
@@ -60,7 +60,8 @@ def test_nx_clsf_operations_tools_msys_arcs_and_nurbs():
     contour = program.operations[1]
     # GOTO/x,y,z,i,j,k without MULTAX is position and axis; the three-number GOTO after keeps the axis.
     np.testing.assert_allclose(contour.axes_file, [[0, 0.6, 0.8], [0, 0.6, 0.8], [0, 0, 1]], atol=1e-15)
-    assert contour.refusal() == "operation 2: ball mill D6 R3: the ABM engine is for flat-end mills"
+    assert contour.refusal() == ("operation 2: ball mill D6 R3 mm: a milling tool the ABM engine does not compute yet "
+                                 "(it computes flat-end mills)")
     with pytest.raises(OperationChoiceError) as caught:
         program.operation()
     assert [op.number for op in caught.value.operations] == [1, 2, 3]
@@ -94,7 +95,7 @@ def test_catia_setups_csys_names_continuations_and_lower_case():
     first, second = program.operations
     assert first.name == "Pocketing.1"
     assert second.name == "Profile Contouring.2 this comment goes on over a second line"
-    assert first.tool.describe() == "flat-end mill D8" and first.tool.flute_length is None
+    assert first.tool.describe() == "flat-end mill D8 mm" and first.tool.flute_length is None
     assert (first.spindle_rpm, first.feed.tolist()) == (5000.0, [600.0] * 3)
     assert_ends_in_order(first, [(21, [0, 0, -2]), (22, [15, 0, -2]), (23, [15, 10, -2])])
     np.testing.assert_allclose(first.points_part, first.points_file + [10, 20, 0])
@@ -146,13 +147,13 @@ def test_solidworks_cam_inch_circles_without_radius_and_flute_length():
 def test_mastercam_unit_rapid_slash_trailing_commas_helix_and_drilling():
     program = read("mastercam_mill_drill.apt")
     mill, drill = program.operations
-    assert mill.tool.describe() == "flat-end mill D12" and mill.tool.flute_length is None
+    assert mill.tool.describe() == "flat-end mill D12 mm" and mill.tool.flute_length is None
     assert_ends_in_order(mill, [(10, [30, 0, 0]), (12, [0, 30, -2]), (13, [0, 40, -2])])
     helix = np.vstack([[30, 0, 0], rows_of(mill, 12)])
     np.testing.assert_allclose(np.hypot(helix[:, 0], helix[:, 1]), 30.0, rtol=1e-15)
     angle = np.arctan2(helix[:, 1], helix[:, 0])
     np.testing.assert_allclose(helix[:, 2], -2 * angle / (math.pi / 2), atol=1e-12)
-    assert drill.refusal() == "operation 2: drill D6.8: the ABM engine is for flat-end mills"
+    assert drill.refusal() == "operation 2: drill D6.8 mm: not a milling tool (the ABM engine computes flat-end mills)"
     assert (len(drill.lines), drill.cycle_points.lines.tolist(), drill.cycles) == (0, [20, 21, 22], ("DRILL",))
     assert program.operation() is mill
 
@@ -165,7 +166,7 @@ def test_powermill_indexed_axis_gets_its_own_frame():
     np.testing.assert_allclose(rotation[2], np.array([0, -3, 2]) / math.sqrt(13), atol=1e-12)
     toolpath = op.toolpath()
     tilt = np.degrees(np.arccos(np.array([3, 2]) / math.sqrt(13)))
-    np.testing.assert_allclose(np.abs(toolpath.theta_a), np.repeat(tilt, [3, 2]), atol=1e-12)
+    np.testing.assert_allclose(np.degrees(np.arccos(toolpath.axes[:, 2])), np.repeat(tilt, [3, 2]), atol=1e-12)
 
 
 def test_a_single_horizontal_axis_is_the_operation_frame(tmp_path):
@@ -201,6 +202,6 @@ def test_turning_program_is_named_not_computed():
     program = read("nx_turning.cls")
     (op,) = program.operations
     assert op.tool.kind == "turning" and op.tool.diameter is None
-    assert op.refusal() == "operation 1: turning program: the ABM engine is for flat-end mills"
-    with pytest.raises(OperationChoiceError, match="no operation the engine can run: operation 1: turning program"):
+    assert op.refusal() == "operation 1: turning tool: a turning program, not milling"
+    with pytest.raises(OperationChoiceError, match="no operation the engine can run: operation 1: turning tool: a turning program, not milling"):
         program.operation()

@@ -35,7 +35,7 @@ def test_lexical_tolerance(tmp_path):
     assert op.points_file.tolist() == [[1, 0, 5], [2.5, -0.5, 5]]
     assert op.lines.tolist() == [8, 12]
     assert op.rapids.lines.tolist() == [6]
-    assert (op.tool.describe(), op.feed.tolist()) == ("flat-end mill D10", [100.0, 100.0])
+    assert (op.tool.describe(), op.feed.tolist()) == ("flat-end mill D10 mm", [100.0, 100.0])
     assert prog.unknown == {} and prog.warnings == []
 
 
@@ -65,7 +65,7 @@ def test_unit_singular_and_inch_feeds(tmp_path):
     text = "UNIT/INCH\nCUTTER/0.25,0.125\nFEDRAT/IPR,0.002\nGOTO/1,0,0\nFEDRAT/0.01\nGOTO/2,0,0\n"
     prog = program(tmp_path, text)
     (op,) = prog.operations
-    assert prog.units == "inch" and op.tool.describe() == "ball mill D6.35 R3.175"
+    assert prog.units == "inch" and op.tool.describe() == "ball mill D6.35 R3.175 mm (D0.25 R0.125 in)"
     np.testing.assert_allclose(op.points_file, [[25.4, 0, 0], [50.8, 0, 0]])
     # A FEDRAT without a unit keeps the kind in force (per revolution here), in inches.
     np.testing.assert_allclose(op.feed, [0.0508, 0.254], rtol=1e-15)
@@ -88,8 +88,9 @@ def test_each_tool_change_is_an_operation_with_its_tool(tmp_path):
             "TLDATA/DRILL,5,118\nGOTO/4,0,0\n")                              # another tool without LOADTL
     ops = program(tmp_path, text).operations
     assert [op.lines.tolist() for op in ops] == [[2, 3, 5], [8], [10]]
-    assert [op.tool.describe() for op in ops] == ["flat-end mill D10", "bull-nose mill D6 R1", "drill D5"]
-    assert [op.tool.records for op in ops] == [("CUTTER line 4",), ("CUTTER line 7",), ("TLDATA line 9",)]
+    assert [op.tool.describe() for op in ops] == ["flat-end mill D10 mm", "bull-nose mill D6 R1 mm", "drill D5 mm"]
+    # The same tool again leaves the operation's own tool (and what its records said) as it was.
+    assert [op.tool.records for op in ops] == [("CUTTER line 1",), ("CUTTER line 7",), ("TLDATA line 9",)]
 
 
 def test_a_cutter_with_a_bottom_angle_and_no_corner_radius_is_a_drill(tmp_path):
@@ -101,7 +102,7 @@ def test_loadtl_kind_words_name_drills_taps_and_turning_tools(tmp_path):
     text = "LOADTL/1,TAP\nCUTTER/8\nGOTO/0,0,0\nLOADTL/2,ADJUST,1,MILL\nCUTTER/8\nGOTO/1,0,0\n"
     ops = program(tmp_path, text).operations
     assert [op.tool.kind for op in ops] == ["tap", "flat"]
-    assert ops[0].refusal() == "operation 1: tap D8: the ABM engine is for flat-end mills"
+    assert ops[0].refusal() == "operation 1: tap D8 mm: not a milling tool (the ABM engine computes flat-end mills)"
 
 
 def test_a_frame_change_after_moves_starts_an_operation(tmp_path):
@@ -115,7 +116,8 @@ def test_a_frame_change_after_moves_starts_an_operation(tmp_path):
 
 
 @pytest.mark.parametrize("text, line, fragment", [
-    ("NURBS/\nKNOT/0,CNTRL/0,0,0\nKNOT/1,CNTRL/1,0,0\nGOTO/1,0,0\n", 1, "NURBS: 2 knots and 2 control points"),
+    ("NURBS/\nKNOT/0,1,2,3,4,5,6,7,8,9,10,11,12,13,14\nCNTRL/0,0,0\nCNTRL/1,0,0\nGOTO/1,0,0\n", 1,
+     "NURBS: 15 knots and 2 control points fit no B-spline of degree 1 to 9"),
     ("NURBS/\nKNOT/0\nGOTO/1,0,0\n", 1, "NURBS: the NURBS block has no CNTRL records"),
     ("NURBS/\nKNOT/0,CNTRL/0,0\n", 2, "KNOT: a control point needs x,y,z[,w], got 2"),
     ("NURBS/\nKNOT/0,0,1,1\nCNTRL/0,0,0,1\nCNTRL/1,0,0,2\n", 1, "a rational NURBS"),
@@ -148,14 +150,20 @@ def test_circle_radius_far_from_the_points_is_warned(tmp_path):
                              "12 mm; the arc follows the points"]
 
 
-def test_latin1_comments_and_tolerance_option(tmp_path):
+def test_latin1_comments_tolerance_and_step_options(tmp_path):
+    """Arcs: each chord within the tolerance of the arc, consecutive CL points at most a step apart."""
     text = "$$ Opération d'ébauche\nGOTO/10,0,0\nCIRCLE/0,0,0,0,0,1,10\nGOTO/0,10,0\n"
-    fine = program(tmp_path, text, "a").operations[0]
-    coarse = program(tmp_path, text, "b", tolerance=0.1).operations[0]
+    fine = program(tmp_path, text, "a", step=math.inf).operations[0]
+    coarse = program(tmp_path, text, "b", tolerance=0.1, step=math.inf).operations[0]
     assert len(coarse.lines) < len(fine.lines)
     for op, tolerance in ((fine, 0.001), (coarse, 0.1)):
         step = np.diff(np.arctan2(op.points_file[:, 1], op.points_file[:, 0]))
         assert (10 * (1 - np.cos(step / 2))).max() <= tolerance
+    default, wide = program(tmp_path, text, "c").operations[0], program(tmp_path, text, "d", step=2.0).operations[0]
+    sagitta = math.ceil(0.5 * math.pi / (2 * math.acos(1 - 0.001 / 10)))  # turns the 0.001 mm tolerance needs
+    for op, step in ((default, 0.1), (wide, 2.0)):  # the default step: about a tooth's feed
+        chords = np.linalg.norm(np.diff(np.vstack([[10, 0, 0], op.points_file]), axis=0), axis=1)
+        assert chords.max() <= step and (op.lines == 4).sum() == max(math.ceil(5 * math.pi / step), sagitta)
 
 
 def test_a_program_without_moves_has_no_operation_to_choose(tmp_path):

@@ -26,10 +26,10 @@ def test_summary_lines_per_operation(capsys):
     lines = out.splitlines()
     assert lines[0].endswith("nx_two_ops.clsf: 3 operation(s), 2 for the engine; units mm")
     cut = len(read_program(FIXTURES / "nx_two_ops.clsf").operations[0].lines)  # the summary reports the reader's count
-    assert lines[1].startswith(f"operation 1 (CAVITY_MILL): flat-end mill D10; {cut} CL points cut, 1 rapid, "
+    assert lines[1].startswith(f"operation 1 (CAVITY_MILL): flat-end mill D10 mm; {cut} CL points cut, 1 rapid, "
                                "0 canned-cycle; 1 arcs and 1 curves interpolated; axis 180..180 deg from part Z; "
                                "frame MSYS line 3; units mm; spindle 6000 rpm")
-    assert "not for the engine: ball mill D6 R3: the ABM engine is for flat-end mills" in lines[2]
+    assert ("not for the engine: ball mill D6 R3 mm: a milling tool the ABM engine does not compute yet" in lines[2])
     assert lines[4] == ("ignored records: TOOL PATH x3 (first line 1), PAINT x5 (first line 5), "
                         "END-OF-PATH x3 (first line 29)")
 
@@ -74,4 +74,4 @@ def test_bad_files_exit_2_with_the_reason(tmp_path, capsys, content, message):
 def test_drilling_and_turning_programs_are_listed_not_failed(capsys):
     for name in ("mastercam_mill_drill.apt", "nx_turning.cls"):
         status, out, _ = run(["toolpath", str(FIXTURES / name)], capsys)
-        assert status == 0 and "the ABM engine is for flat-end mills" in out
+        assert status == 0 and ("not a milling tool" in out or "a turning program, not milling" in out)

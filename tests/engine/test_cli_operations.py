@@ -53,7 +53,7 @@ def test_several_operations_need_a_choice(program, capsys):
     assert status == 2 and out == ""
     message = err.splitlines()[-1]
     assert message.startswith("abm: error: two.cl: 2 milling operations; choose one with --operation N")
-    assert "1: -, flat-end mill D12, 12 CL points" in message and "2: -, flat-end mill D8, 12 CL points" in message
+    assert "1: -, flat-end mill D12 mm, 12 CL points" in message and "2: -, flat-end mill D8 mm, 12 CL points" in message
     assert sorted(os.listdir(program)) == ["job.json", "stock.json", "toolpath.csv", "two.cl"]
 
 

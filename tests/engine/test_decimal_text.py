@@ -143,7 +143,7 @@ def reference_results(engagement, first_cl=0, forces=None):
             row = [str(first_cl + i), number_text(e["phi"][j]), number_text(e["lep_l"][i][j]),
                    number_text(e["uep_l"][i][j]), number_text(e["length"][i][j]), str(e["pieces"][i][j]),
                    SURFACES[e["uep_surface"][i][j]], str(e["uep_section"][i][j]), str(e["uep_wall"][i][j]),
-                   CASES[e["case"][i][j]], segment_letter(segment) if segment >= 0 else "", number_text(e["h"][j]),
+                   CASES[e["case"][i][j]], segment_letter(segment) if segment >= 0 else "", number_text(e["h"][i][j]),
                    number_text(e["area"][i][j]), *map(number_text, e["lep_xyz"][i][j]),
                    *map(number_text, e["uep_xyz"][i][j]), SURFACES[e["lep_surface"][i][j]],
                    str(e["lep_section"][i][j]), str(e["lep_wall"][i][j])]

@@ -187,12 +187,24 @@ def write_csv(tmp_path, text, name="path.csv"):
 
 
 def test_toolpath_with_angles(tmp_path):
+    """The angles give the axis in the part frame; the frames turn to the feed (the chord 10, 0.5 in plan view)."""
     path = write_csv(tmp_path, "x,y,z,theta_a,theta_b\n10,0,-1,0,10\n20,0.5,-1.5,-5,10\n")
     toolpath = load_toolpath(path)
     np.testing.assert_array_equal(toolpath.cl, [[10, 0, -1], [20, 0.5, -1.5]])
-    np.testing.assert_array_equal(toolpath.theta_a, [0, -5])
-    np.testing.assert_array_equal(toolpath.theta_b, [10, 10])
-    assert toolpath.cc is None
+    feed = math.degrees(math.atan2(0.5, 10.0))
+    np.testing.assert_allclose(toolpath.alpha, [feed, feed], rtol=1e-15)
+    a, b = np.radians([0.0, -5.0]), np.radians([10.0, 10.0])  # Rx(θ_A)·Ry(θ_B)·e_z, in the part frame
+    axes = np.stack([np.sin(b), -np.sin(a) * np.cos(b), np.cos(a) * np.cos(b)], axis=1)
+    np.testing.assert_allclose(toolpath.axes, axes, rtol=0, atol=1e-15)
+    assert toolpath.cc is None and toolpath.inclination is None
+
+
+def test_toolpath_along_x_keeps_its_angles_bit_for_bit(tmp_path):
+    """A pass feeding along +x (α = 0) keeps the angles of its columns as written."""
+    path = write_csv(tmp_path, "x,y,z,theta_a,theta_b\n10,0,-1,0.1,10\n20,0,-1.5,-5,10.3\n")
+    toolpath = load_toolpath(path)
+    assert toolpath.theta_a.tolist() == [0.1, -5] and toolpath.theta_b.tolist() == [10, 10.3]
+    assert not toolpath.alpha.any()
 
 
 def test_toolpath_with_axes_any_order_case_and_comments(tmp_path):
@@ -205,8 +217,10 @@ def test_toolpath_with_axes_any_order_case_and_comments(tmp_path):
         "2,20,1,0.5,-0.5,-1.5,-2.5,20.5,0.5\n"
     )
     toolpath = load_toolpath(write_csv(tmp_path, text))
+    feed = math.degrees(math.atan2(0.5, 10.0))  # the CC points' chord in plan view
     expected = Toolpath.from_axes([[10, 0, -1], [20, 0.5, -1.5]], [[0, 0, 1], [1, -0.5, 2]],
-                                  [[10.5, 0, -2], [20.5, 0.5, -2.5]])
+                                  [[10.5, 0, -2], [20.5, 0.5, -2.5]], [feed, feed])
+    np.testing.assert_allclose(toolpath.alpha, expected.alpha, rtol=1e-15)
     np.testing.assert_array_equal(toolpath.cl, expected.cl)
     np.testing.assert_allclose(toolpath.theta_a, expected.theta_a)
     np.testing.assert_allclose(toolpath.theta_b, expected.theta_b)
@@ -283,7 +297,7 @@ def test_results_columns_rows_and_values(tmp_path):
         np.testing.assert_allclose(r[name], getattr(engagement, name).ravel(), rtol=0, atol=1e-9, equal_nan=True)
     for k, name in enumerate(("uep_x", "uep_y", "uep_z")):
         np.testing.assert_allclose(r[name], engagement.uep_xyz[..., k].ravel(), rtol=0, atol=1e-9, equal_nan=True)
-    np.testing.assert_allclose(r["h"], np.tile(engagement.h, m), rtol=0, atol=1e-9)
+    np.testing.assert_allclose(r["h"], engagement.h.reshape(-1), rtol=0, atol=1e-9)
     for name in ("pieces", "uep_section", "uep_wall"):
         np.testing.assert_array_equal(r[name], getattr(engagement, name).ravel())
     np.testing.assert_array_equal(r["uep_surface"], engagement.surface_names().ravel())

@@ -238,7 +238,7 @@ def test_area_is_the_integral_of_the_thickness(helix, immersion):
         want = 0.0
         for a, b in zip(result.start[index], result.end[index]):
             if not np.isnan(a):
-                want += quad(lambda l: result.thickness_at(l, f)[k], a, b, epsabs=1e-14, epsrel=1e-13, limit=200)[0]
+                want += quad(lambda l: result.thickness_at(l, f)[i, k], a, b, epsabs=1e-14, epsrel=1e-13, limit=200)[0]
         assert abs(area[index] - want) <= 1e-10, (index, area[index], want)
 
 

@@ -20,14 +20,18 @@ from .sniff import read_file
 
 #: Default chordal tolerance (mm) of interpolated arcs and curves.
 TOLERANCE = 0.001
+#: Default largest distance (mm) between the CL points along arcs and curves: about a tooth's feed.
+STEP = 0.1
 
 
-def read_program(path, tolerance=TOLERANCE):
-    """The :class:`Program` of the CL file or toolpath CSV at `path`; arcs and curves to
-    `tolerance` mm. InputError naming the file (and line) for anything unreadable."""
+def read_program(path, tolerance=TOLERANCE, step=STEP):
+    """The :class:`Program` of the CL file or toolpath CSV at `path`; arcs and curves to `tolerance` mm,
+    their CL points at most `step` mm apart. InputError naming the file (and line) for anything unreadable."""
     name = os.fspath(path)
     if not tolerance > 0.0:
         raise InputError(f"{name}: the chordal tolerance must be positive, got {tolerance:g} mm")
+    if not step > 0.0:
+        raise InputError(f"{name}: the step along arcs and curves must be positive, got {step:g} mm")
     kind, text, encoding = read_file(name)
     if kind == "csv":
         from .csv_program import read_csv_program
@@ -35,7 +39,7 @@ def read_program(path, tolerance=TOLERANCE):
         return read_csv_program(name, text)
     from .reader import read_cl_text  # here: a toolpath CSV needs none of the CL state machine
 
-    return replace(read_cl_text(text, name, tolerance), encoding=encoding)
+    return replace(read_cl_text(text, name, tolerance, step), encoding=encoding)
 
 
 def __getattr__(name):
@@ -51,5 +55,5 @@ def __getattr__(name):
     return getattr(module, name)
 
 
-__all__ = ["Moves", "Operation", "OperationChoiceError", "Program", "TOLERANCE", "ToolSpec", "read_program",
+__all__ = ["Moves", "Operation", "OperationChoiceError", "Program", "STEP", "TOLERANCE", "ToolSpec", "read_program",
            "rewritten_text", "write_rescheduled_program"]

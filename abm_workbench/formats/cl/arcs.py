@@ -1,4 +1,4 @@
-"""CIRCLE motion: the points of a circular or helical arc to a chordal tolerance.
+"""CIRCLE motion: the points of a circular or helical arc, at most a step apart, within a chordal tolerance.
 
 APT's ``CIRCLE/xc,yc,zc,i,j,k[,r,...]`` followed by the GOTO of the arc's end point moves the
 tool from where it is to that end point along the circle about the axis (i, j, k) through the
@@ -7,6 +7,10 @@ circle's plane, to within SAME_POINT mm, far below the precision files are writt
 turn. An end point at another height along the
 axis: a helical arc, the height (and any change of radius between start and end, which a file
 only has from rounding) varying in proportion to the angle turned.
+
+The CL points along an arc are at equal angles, as few as keep consecutive points at most `step`
+mm apart along the arc and each chord within `tolerance` mm of it (its sagitta); each point comes
+with the arc's tangent there, the direction of the tool's motion.
 """
 
 import math
@@ -19,13 +23,14 @@ MAX_STEP = math.pi / 4
 SAME_POINT = 1e-6
 
 
-def arc_points(start, end, centre, axis, tolerance):
-    """Points along the arc from `start` to `end` about `centre` and `axis`, each (3,) mm.
+def arc_points(start, end, centre, axis, tolerance, step=math.inf):
+    """(points (k, 3), tangents (k, 3)) along the arc from `start` to `end` about `centre` and `axis`, mm.
 
-    Returns (k, 3): the points after the start, the last being `end` itself; every point is at
-    the start's radius (its height and radius going linearly to the end's), consecutive points
-    at most the angle whose chord sagitta is `tolerance` (mm) apart. ValueError when the axis
-    is zero or the start or end lies on the axis.
+    The points after the start, the last being `end` itself; every point is at the start's radius
+    (its height and radius going linearly to the end's), consecutive points at most `step` mm apart
+    along the arc and at most the angle whose chord sagitta is `tolerance` (mm). tangents: the unit
+    direction of motion along the arc at each point. ValueError when the axis is zero or the start
+    or end lies on the axis.
     """
     start, end, centre = (np.asarray(v, dtype=float) for v in (start, end, centre))
     w = np.asarray(axis, dtype=float)
@@ -44,15 +49,20 @@ def arc_points(start, end, centre, axis, tolerance):
     sweep = math.atan2(radial_b @ v, radial_b @ u) % (2.0 * math.pi)
     if np.linalg.norm(radial_b - radial_a) <= SAME_POINT:
         sweep = 2.0 * math.pi
-    count = max(1, math.ceil(sweep / step_angle(max(radius_a, radius_b), tolerance)))
+    radius = max(radius_a, radius_b)
+    length = math.hypot(sweep * radius, height_b - height_a)
+    count = max(1, math.ceil(sweep / step_angle(radius, tolerance)), math.ceil(length / step - 1e-9))
     t = np.arange(1, count + 1) / count
     angle = sweep * t
-    radius = radius_a + (radius_b - radius_a) * t
+    radii = radius_a + (radius_b - radius_a) * t
     height = height_a + (height_b - height_a) * t
-    points = (centre + (radius * np.cos(angle))[:, None] * u + (radius * np.sin(angle))[:, None] * v
-              + height[:, None] * w)
+    cos, sin = np.cos(angle)[:, None], np.sin(angle)[:, None]
+    points = centre + radii[:, None] * cos * u + radii[:, None] * sin * v + height[:, None] * w
     points[-1] = end
-    return points
+    # d/dθ of the point: the radius's and height's change per radian, and the turn.
+    tangents = ((radius_b - radius_a) / sweep * (cos * u + sin * v) + radii[:, None] * (cos * v - sin * u)
+                + (height_b - height_a) / sweep * w)
+    return points, tangents / np.linalg.norm(tangents, axis=1)[:, None]
 
 
 def step_angle(radius, tolerance):

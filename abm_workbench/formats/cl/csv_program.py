@@ -1,14 +1,19 @@
 """The project's toolpath CSV (also as the ``toolpath --out`` command writes it) as a Program.
 
-Rows are grouped by the ``operation`` column (one operation without it), in the order they
-come; the tool is the ``tool`` kind with ``diameter`` and ``corner_radius`` of the operation's
-first row ("unknown" kind without them); feeds from ``feed_rate`` and ``feed_unit``; the CL
-points and axes are taken as they are (part frame = file frame).
+Rows are grouped by the ``operation`` column (one operation without it, a single pass), in the
+order they come; the tool is the ``tool`` kind with ``diameter`` and ``corner_radius`` of the
+operation's first row ("unknown" kind without them); feeds from ``feed_rate`` and ``feed_unit``;
+the CL points and axes are taken as they are (part frame = file frame), the ``inclination``
+column where there is one; the direction of motion
+at each CL point from the ``feed_x, feed_y, feed_z`` columns, else the chords of the CC points
+(``xc, yc, zc``), else of the CL points, within each operation, as toolpath_csv.load_toolpath
+takes them.
 """
 
 import numpy as np
 
 from ...engine import angles_to_axis
+from ...engine.feed import path_directions
 from ...errors import InputError
 from .. import toolpath_csv
 from .frames import IDENTITY
@@ -33,12 +38,18 @@ def read_csv_program(path, text):
     operations = []
     for number in dict.fromkeys(numbers.tolist()):
         rows = np.flatnonzero(numbers == number)
-        operations.append(_operation(table, rows, len(operations) + 1, points, axes))
+        if "feed_x" in data:
+            directions = np.stack([data[c][rows] for c in ("feed_x", "feed_y", "feed_z")], axis=1)
+        else:
+            path = np.stack([data[c][rows] for c in ("xc", "yc", "zc")], axis=1) if "xc" in data else points[rows]
+            directions = path_directions(path)
+        operations.append(_operation(table, rows, len(operations) + 1, points, axes, directions,
+                                     "operation" not in data))
     return Program(name, "mm", tuple(operations), {}, {}, [], "csv", text, int(table.lines[-1]))
 
 
-def _operation(table, rows, number, points, axes):
-    """The Operation of the CSV `rows`."""
+def _operation(table, rows, number, points, axes, directions, single_pass):
+    """The Operation of the CSV `rows`, with the directions of motion (len(rows), 3) at them."""
     first = int(rows[0])
     data, texts = table.numbers, table.texts
     kind = texts["tool"][first] if "tool" in texts else "unknown"
@@ -53,11 +64,13 @@ def _operation(table, rows, number, points, axes):
     feed_unit = units.pop() if len(units) == 1 else None
     name = texts["name"][first] if "name" in texts else ""
     empty = Moves(np.zeros((0, 3)), np.zeros((0, 3)), np.zeros(0, dtype=int))
-    arrays = [np.array(a) for a in (feed, table.lines[rows], points[rows], axes[rows])]
+    arrays = [np.array(a) for a in (feed, table.lines[rows], points[rows], axes[rows], directions)]
     for array in arrays:
         array.setflags(write=False)
-    return Operation(number, name, tool, None, *arrays[:1], feed_unit, *arrays[1:], IDENTITY, "", empty, empty,
-                     0, 0, table.source, int(table.lines[first]))
+    inclination = np.array(data["inclination"][rows]) if "inclination" in data else None
+    return Operation(number, name, tool, None, *arrays[:1], feed_unit, *arrays[1:4], IDENTITY, "", empty, empty,
+                     0, 0, table.source, int(table.lines[first]), directions_file=arrays[4], single_pass=single_pass,
+                     inclination=inclination)
 
 
 def _value(data, column, row):

@@ -1,7 +1,8 @@
 """A CL program as read: its operations, each with tool, spindle, feeds, frames and CL points.
 
-Shapes: n cutting CL points per operation; points (n, 3) mm, axes (n, 3) unit vectors, feed
-(n,), lines (n,) 1-based source lines. Frames are (R (3, 3), t (3,)) pairs, ``part = R @ file + t``.
+Shapes: n cutting CL points per operation; points (n, 3) mm, axes (n, 3) unit vectors, directions
+(n, 3) of the tool's motion arriving at each point, feed (n,), lines (n,) 1-based source lines.
+Frames are (R (3, 3), t (3,)) pairs, ``part = R @ file + t``.
 """
 
 from dataclasses import dataclass, field
@@ -10,12 +11,13 @@ from typing import Optional
 import numpy as np
 
 from ...engine import Toolpath
+from ...engine.feed import feed_frame, inclinations
 from ...errors import CLPointError, InputError
 from .frames import IDENTITY, engine_frame
 from .tools import ToolSpec
 
 #: Tool kinds the engine computes: flat-end mills, and tools a file does not describe.
-MILLING_KINDS = ("flat", "unknown")
+ENGINE_KINDS = ("flat", "unknown")
 
 
 @dataclass(frozen=True, eq=False)
@@ -53,7 +55,13 @@ class Operation:
     file frame, mm. to_part: (R, t). frame: words naming the frame records ("" for none).
     rapids, cycle_points: :class:`Moves`. arcs, curves: CIRCLE and NURBS moves interpolated.
     source: the file. first_line: the line the operation starts on. cycles: the canned-cycle
-    kinds used (``"DRILL"``, ``"TAP"`` ...), in order.
+    kinds used (``"DRILL"``, ``"TAP"`` ...), in order. directions_file: (n, 3) the direction of the
+    tool tip's motion arriving at each cutting point (the chord of a straight move, the tangent of
+    an arc or curve; zero where no motion arrives), file frame; None: the chords between the points.
+    single_pass: a pass a user gives on its own (a toolpath CSV without an operation column), whose
+    cut thickness takes the job's one inclination, as the paper's pass does, not each move's.
+    inclination: (n,) the tool's inclination to the feed at each cutting point (deg) where the file
+    writes it (a toolpath CSV's column), else None.
     """
 
     number: int
@@ -74,6 +82,9 @@ class Operation:
     source: str = ""
     first_line: int = 1
     cycles: tuple = field(default=())
+    directions_file: np.ndarray = None
+    single_pass: bool = False
+    inclination: np.ndarray = None
 
     @property
     def points_part(self):
@@ -85,6 +96,16 @@ class Operation:
     def axes_part(self):
         """(n, 3) unit tool axes in the part frame."""
         return self.axes_file @ self.to_part[0].T
+
+    @property
+    def directions_part(self):
+        """(n, 3) directions of the motion arriving at each cutting point, part frame (module docstring)."""
+        if self.directions_file is None:
+            directions = np.zeros_like(self.points_file)
+            directions[1:] = np.diff(self.points_file, axis=0)
+        else:
+            directions = self.directions_file
+        return directions @ self.to_part[0].T
 
     def label(self):
         """``operation N (NAME)``: how messages name the operation."""
@@ -108,22 +129,36 @@ class Operation:
         return frame
 
     def toolpath(self):
-        """The engine :class:`Toolpath` of the cutting moves in :meth:`engine_frame` coordinates."""
+        """The engine :class:`Toolpath` of the cutting moves in :meth:`engine_frame` coordinates, each
+        CL point's frame turned to its feed (engine.feed) and its inclination to that feed its own
+        (the job's one value for a single pass)."""
         if len(self.lines) == 0:
             raise InputError(f"{self.source}:{self.first_line}: {self.label()}: no cutting moves")
         rotation, translation = self.engine_frame()
         points = self.points_part @ rotation.T + translation
         axes = self.axes_part @ rotation.T
+        alpha, feed = feed_frame(self.directions_part @ rotation.T)
+        inclination = self.inclination
+        if inclination is None and not self.single_pass:
+            inclination = inclinations(axes / np.linalg.norm(axes, axis=1)[:, None], feed)
         try:
-            return Toolpath.from_axes(points, axes)
+            return Toolpath.from_axes(points, axes, alpha=alpha, inclination=inclination)
         except CLPointError as error:
             raise InputError(f"{self.source}:{self.lines[error.index]}: {self.label()}: {error.detail}") from None
 
     def refusal(self):
-        """None for a flat-end milling operation with cutting moves, else the plain reason."""
-        if self.tool.kind not in MILLING_KINDS:
-            what = "turning program" if self.tool.kind == "turning" else self.tool.describe()
-            return f"operation {self.number}: {what}: the ABM engine is for flat-end mills"
+        """None for a flat-end milling operation with cutting moves, else the plain reason, naming the
+        tool's kind as it is (a ball mill is a milling tool the engine does not compute yet; a drill,
+        tap or turning tool is no milling tool)."""
+        if self.tool.kind not in ENGINE_KINDS:
+            what = self.tool.describe()
+            if self.tool.milling:
+                reason = "a milling tool the ABM engine does not compute yet (it computes flat-end mills)"
+            elif self.tool.kind in ("turning", "grooving"):
+                reason = "a turning program, not milling"
+            else:
+                reason = "not a milling tool (the ABM engine computes flat-end mills)"
+            return f"operation {self.number}: {what}: {reason}"
         if len(self.lines) == 0:
             holes = len(self.cycle_points) if self.cycle_points is not None else 0
             extra = f" ({holes} canned-cycle hole positions)" if holes else ""
@@ -174,7 +209,7 @@ class Program:
             return milling[0]
         if not self.operations:
             raise OperationChoiceError(f"{self.source}: no operation: the file has no moves", ())
-        listing = "; ".join(op.summary() + ("" if op.refusal() is None else " (not milling)")
+        listing = "; ".join(op.summary() + ("" if op.refusal() is None else " (not for the engine)")
                             for op in self.operations)
         if milling:
             reason = f"{len(milling)} milling operations; choose one with --operation N"

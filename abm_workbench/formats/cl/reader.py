@@ -6,7 +6,18 @@ Motion: ``GOTO/x,y,z`` keeps the tool axis in force (``TLAXIS``, or the last six
 ``FROM`` sets the position. A GOTO after ``RAPID`` is a rapid move, one inside a canned cycle
 (``CYCLE/...`` up to ``CYCLE/OFF``) a hole position; both are kept apart from cutting moves.
 ``CIRCLE`` makes the next GOTO an arc (:mod:`.arcs`), ``NURBS/`` with its ``KNOT``/``CNTRL``
-records a B-spline (:mod:`.nurbs`).
+records a B-spline (:mod:`.nurbs`). Each cutting CL point keeps the direction of the tool's motion
+arriving at it (the chord of a straight move, the tangent of an arc or curve), from which the
+engine turns its frame to the feed (engine.feed).
+
+Frames: ``MSYS`` and ``CSYS`` give the frame the following records are written in; after
+SOLIDWORKS CAM's ``TRNTYP/WORLD`` the GOTOs are already in the world (part) frame, and a ``CSYS``
+only names the setup (its Z, the third column, is the tool axis of the moves that give none).
+``ROTABL`` turns the indexed table about A, B or C; turns about several axes compose, C the
+innermost (the table that carries the part); CAMWorks writes the angles in radians.
+
+Records the engine does not need (spindle, coolant, a tool description it cannot read ...) never
+stop the reading: a record of them that cannot be read is skipped with a warning naming its line.
 
 Operations: a new one starts at ``TOOL PATH`` (NX, with the operation's name), ``LOADTL`` /
 ``LOAD/TOOL``, a CATIA ``$$ OPERATION NAME : ...`` comment (or ``PPRINT``), a Creo
@@ -27,9 +38,9 @@ from . import units as unit_words
 from .arcs import arc_points
 from .frames import IDENTITY, compose, csys_frame, msys_frame, table_frame
 from .lexer import lex
-from .nurbs import bspline_points
+from .nurbs import bspline_points, resolve
 from .program import Moves, Operation, Program
-from .tools import KIND_WORDS, ToolSpec, mill
+from .tools import KIND_WORDS, ToolSpec, kind_of_name, mill
 
 _NUMBER_TEXT = re.compile(NUMBER)
 #: A record whose text after '/' holds only these characters is read by float() at once.
@@ -38,22 +49,31 @@ _WORD = re.compile(r"[A-Za-z][A-Za-z0-9_-]*")
 _CREO = re.compile(r"->\s*([A-Za-z_]+)\s*/?\s*(.*)")
 _OPERATION_NAME = re.compile(r"OPERATION\s+NAME\s*:\s*(.+)", re.IGNORECASE)
 _NURBS_PART = re.compile(r"(KNOT|CNTRL)\s*/", re.IGNORECASE)
+#: A number with a word glued to it (SPINDL/900CCLW).
+_GLUED = re.compile(f"({NUMBER})([A-Za-z]+)")
+#: Records the engine needs (motion, frames, units): one that cannot be read stops the reading.
+NEEDED = frozenset({"GOTO", "GODLTA", "FROM", "CIRCLE", "NURBS", "KNOT", "CNTRL", "TLAXIS", "MSYS", "CSYS", "ROTABL",
+                    "TRNTYP", "UNITS", "UNIT", "CYCLE", "RAPID"})
+#: Directions of a CIRCLE given by a word after its radius (CAMWorks, SOLIDWORKS CAM CLT), seen from its axis.
+_CIRCLE_SENSE = {"COUNTERCLOCKWISE": 1.0, "CCLW": 1.0, "CCW": 1.0, "CLOCKWISE": -1.0, "CLW": -1.0, "CW": -1.0}
 
 #: Records known to carry nothing the engine needs: counted in Program.ignored, never warned.
 IGNORED = frozenset({
     "PPRINT", "TPRINT", "DPRINT", "PARTNO", "INSERT", "PAINT", "OPFEATSTART", "OPFEATEND", "BOX", "END-OF-PATH",
     "MACHIN", "COOLNT", "STOP", "OPSTOP", "END", "FINI", "INTOL", "OUTTOL", "TOLER", "CUTCOM", "SELECT", "CLRSRF",
-    "SEQNO", "DISPLY", "AUTOPS", "GOHOME", "DELAY", "PREFUN", "AUXFUN", "CLAMP", "HEAD", "MODE", "TURRET", "ORIGIN",
-    "TLON", "TLONPS", "TLOFPS", "PLABEL", "OPERATION", "TOOLNO", "AIR", "LINTOL", "CATIA0", "RETRCT", "THRU",
+    "SEQNO", "DISPLY", "AUTOPS", "GOHOME", "DELAY", "PREFUN", "AUXFUN", "CLAMP", "HEAD", "MODE", "ORIGIN",
+    "TLON", "TLONPS", "TLOFPS", "PLABEL", "OPERATION", "AIR", "LINTOL", "CATIA0", "RETRCT", "THRU",
     "MCS", "PITCH", "CHECK", "OPNAME", "TRANS", "PIVOTZ", "UNLOAD", "WCS", "FIXTURE", "LEADER", "SET", "ROTATE",
+    "SETUP", "ZERO", "OFSTNO", "MOVNRB",
 })
 
 
-def read_cl_text(text, name, tolerance):
-    """The :class:`Program` of APT / CL `text` read from file `name`; arcs and curves to
-    `tolerance` mm. InputError ``file:line: WORD: ...`` for a record that cannot be read."""
+def read_cl_text(text, name, tolerance, step=math.inf):
+    """The :class:`Program` of APT / CL `text` read from file `name`; arcs and curves to `tolerance` mm,
+    their CL points at most `step` mm apart. InputError ``file:line: WORD: ...`` for a record the
+    engine needs that cannot be read."""
     records, comments, last_line = lex(text, name)
-    reader = _Reader(name, tolerance)
+    reader = _Reader(name, tolerance, step, _rotabl_in_radians(records, comments))
     events = [(line, 0, comment) for line, comment in comments]
     events += [(record.line, 1, record) for record in records]
     events.sort(key=lambda event: (event[0], event[1]))
@@ -65,6 +85,20 @@ def read_cl_text(text, name, tolerance):
     return reader.program(text, last_line)
 
 
+def _rotabl_in_radians(records, comments):
+    """Whether the file's ROTABL angles are radians: CAMWorks (and SOLIDWORKS CAM, its sibling: a
+    ``CSI_`` or ``TRNTYP`` record, or a comment naming it) writes them so. Only when every angle is
+    within ±2π and one is not a whole number (a file in degrees indexes by whole degrees)."""
+    family = any(record.word.startswith("CSI_") or record.word == "TRNTYP" for record in records) or any(
+        "CAMWORKS" in comment.upper() or "SOLIDWORKS CAM" in comment.upper() for _, comment in comments)
+    angles = []
+    for record in records:
+        if record.word == "ROTABL":
+            angles += [float(arg) for arg in record.args[:1] if _NUMBER_TEXT.fullmatch(arg)]
+    return (family and bool(angles) and all(abs(a) <= 2.0 * math.pi + 1e-6 for a in angles)
+            and any(a != round(a) for a in angles))
+
+
 class _Operation:
     """The operation being read: what it has collected so far (lists, file frame, mm)."""
 
@@ -74,8 +108,9 @@ class _Operation:
         self.tool = state.tool
         self.spindle = state.spindle
         self.frame, self.frame_words = state.frame(), state.frame_words()
+        self.setup = state.setup
         self.first_line = line
-        self.points, self.axes, self.lines, self.feeds, self.kinds = [], [], [], [], []
+        self.points, self.axes, self.lines, self.feeds, self.kinds, self.directions = [], [], [], [], [], []
         self.rapids, self.rapid_axes, self.rapid_lines = [], [], []
         self.holes, self.hole_axes, self.hole_lines = [], [], []
         self.arcs = self.curves = 0
@@ -90,9 +125,10 @@ class _Operation:
 class _Reader:
     """Modal state and the operations read, fed one record (or comment) at a time."""
 
-    def __init__(self, name, tolerance):
-        """Start state: mm, axis (0, 0, 1), no tool, no feed, part frame, one empty operation."""
-        self.name, self.tolerance = name, float(tolerance)
+    def __init__(self, name, tolerance, step, radians):
+        """Start state: mm, axis (0, 0, 1), no tool, no feed, part frame, one empty operation; ROTABL
+        angles in radians when `radians`."""
+        self.name, self.tolerance, self.step, self.radians = name, float(tolerance), float(step), radians
         self.scale, self.units = 1.0, None
         self.axis = (0.0, 0.0, 1.0)
         self.position = None
@@ -104,21 +140,36 @@ class _Reader:
         self.spindle = None
         self.tool = ToolSpec()
         self.kind_word = None
+        self.tool_name = None  # (name, line) of a tool name waiting for the tool record it introduces
         self.base, self.base_words = IDENTITY, ""
-        self.table, self.table_words = None, ""
+        self.table_angles, self.table_words = {}, ""
+        self.world = None  # the line of TRNTYP/WORLD: the GOTOs are in the world frame, CSYS names setups
+        self.setup, self.setup_words = None, ""
         self.done = []
         self.ignored, self.unknown, self.warnings = {}, {}, []
+        self.warned = set()
         self.op = _Operation(self, 1)
 
     # State shared with operations.
 
     def frame(self):
         """(R, t) file -> part of the records read so far."""
-        return self.base if self.table is None else compose(self.base, self.table)
+        table = self.table()
+        return self.base if table is None else compose(self.base, table)
+
+    def table(self):
+        """(R, t) of the indexed table's turns (file -> part), C innermost, or None when it is not turned."""
+        frame = None
+        for axis in ("AAXIS", "BAXIS", "CAXIS"):
+            angle = self.table_angles.get(axis, 0.0)
+            if angle % 360.0:
+                turn = table_frame(angle, axis)
+                frame = turn if frame is None else compose(turn, frame)
+        return frame
 
     def frame_words(self):
         """The frame records in force, in words (empty for the part frame)."""
-        return " + ".join(words for words in (self.base_words, self.table_words) if words)
+        return " + ".join(words for words in (self.base_words, self.table_words, self.setup_words) if words)
 
     # Messages.
 
@@ -130,10 +181,16 @@ class _Reader:
         """Add the warning ``file:line: WORD: message``."""
         self.warnings.append(f"{self.name}:{line}: {word}: {message}")
 
+    def warn_once(self, key, line, word, message):
+        """warn(), the first time `key` is met only."""
+        if key not in self.warned:
+            self.warned.add(key)
+            self.warn(line, word, message)
+
     # Records and comments.
 
     def record(self, record):
-        """Apply one record."""
+        """Apply one record; one the engine does not need is skipped, with a warning, when it cannot be read."""
         word = record.word
         if word == "GOTO":
             self.close_nurbs()
@@ -146,7 +203,13 @@ class _Reader:
             self.close_nurbs()
         handler = _HANDLERS.get(word)
         if handler is not None:
-            handler(self, record)
+            try:
+                handler(self, record)
+            except InputError as error:
+                if word in NEEDED:
+                    raise
+                self.warn(record.line, word, f"{str(error).split(f'{word}: ', 1)[-1]}; the record is skipped "
+                                             "(the engine does not need it)")
         elif word in IGNORED or word.startswith("TOOL PATH") or word.startswith("CSI_"):
             self.count(self.ignored, record)
         else:
@@ -168,13 +231,17 @@ class _Reader:
                 if values and values[0] > 0.0:
                     radius = values[1] if len(values) > 1 else 0.0
                     self.set_tool(mill(values[0] * self.scale, radius * self.scale, f"$$-> CUTTER line {line}",
-                                       self.kind_word), line)
+                                       self.kind_word, unit=self.unit_name()), line)
             elif word == "FEATNO":
                 self.boundary(line, f"feature {rest.strip().strip('/').strip()}")
             return
         named = _OPERATION_NAME.match(text)
         if named:
             self.boundary(line, named.group(1).strip())
+
+    def unit_name(self):
+        """The length unit in force, "mm" or "inch"."""
+        return "mm" if self.scale == 1.0 else "inch"
 
     # Numbers.
 
@@ -197,15 +264,20 @@ class _Reader:
         return [float(arg) for arg in record.args]
 
     def numbers_and_words(self, record):
-        """(numbers, upper-case words) of the record's arguments in order; empty arguments skipped."""
+        """(numbers, upper-case words) of the record's arguments in order; empty arguments skipped; a
+        number with a word glued to it (``900CCLW``) gives both."""
         numbers, words = [], []
         for position, arg in enumerate(record.args, start=1):
             if not arg:
                 continue
+            glued = _GLUED.fullmatch(arg)
             if _NUMBER_TEXT.fullmatch(arg) and abs(float(arg)) <= MAX_MAGNITUDE:
                 numbers.append(float(arg))
             elif _WORD.fullmatch(arg):
                 words.append(arg.upper())
+            elif glued and abs(float(glued.group(1))) <= MAX_MAGNITUDE:
+                numbers.append(float(glued.group(1)))
+                words.append(glued.group(2).upper())
             else:
                 raise self.error(record, f"argument {position} {arg!r} is neither a number nor a word")
         return numbers, words
@@ -228,23 +300,32 @@ class _Reader:
             self.op.name = name
 
     def set_tool(self, tool, line):
-        """Make `tool` the tool in force; another tool after motion starts a new operation."""
-        same = (tool.kind, tool.diameter, tool.corner_radius) == (
-            self.op.tool.kind, self.op.tool.diameter, self.op.tool.corner_radius)
-        if not same:
-            self.boundary(line)
+        """Make `tool` the tool in force, named by a tool name just before it. Another tool after the
+        operation has moved starts a new operation; the same tool again leaves the moved operation's own
+        as it is (a repeated tool block's flute length is the next operation's), but gives it a flute
+        length it lacks."""
+        if self.tool_name is not None:
+            tool = tool.named(*self.tool_name)
+            self.tool_name = None
         self.tool = tool
-        self.op.tool = tool
+        if not self.op.moved:
+            self.op.tool = tool
+        elif not tool.same_tool(self.op.tool):
+            self.boundary(line)
+        elif self.op.tool.flute_length is None and tool.flute_length is not None:
+            self.op.tool = tool
 
     def set_frame(self, line):
-        """The frame changed: an operation that has moved ends."""
-        frame = self.frame()
+        """The frame (or the setup named under TRNTYP/WORLD) changed: an operation that has moved ends."""
+        frame, setup = self.frame(), self.setup
         old = self.op.frame
-        if np.array_equal(frame[0], old[0]) and np.array_equal(frame[1], old[1]):
+        same_setup = (setup is None) == (self.op.setup is None) and (setup is None or (
+            np.array_equal(setup[0], self.op.setup[0]) and np.array_equal(setup[1], self.op.setup[1])))
+        if np.array_equal(frame[0], old[0]) and np.array_equal(frame[1], old[1]) and same_setup:
             self.op.frame_words = self.frame_words()
             return
         self.boundary(line, self.op.name)  # the same CAM operation goes on in another frame
-        self.op.frame, self.op.frame_words = frame, self.frame_words()
+        self.op.frame, self.op.frame_words, self.op.setup = frame, self.frame_words(), setup
 
     # Motion.
 
@@ -260,6 +341,7 @@ class _Reader:
 
     def move(self, record, point):
         """A motion to `point` (file frame, mm) by `record`: rapid, hole, arc or straight cut."""
+        self.tool_name = None  # a tool name names the tool record right after it, before any motion
         op = self.op
         line = record.line
         if self.rapid or self.cycle is not None:
@@ -275,18 +357,17 @@ class _Reader:
         if self.circle is not None:
             self.arc(record, point)
         else:
-            op.points.append(point)
-            op.axes.append(self.axis)
-            op.lines.append(line)
-            op.feeds.append(self.feed)
-            op.kinds.append(self.feed_kind)
+            chord = (0.0, 0.0, 0.0) if self.position is None else tuple(p - q for p, q in zip(point, self.position))
+            self.cut_points(np.array([point]), line, np.array([chord]))
         self.position = point
 
-    def cut_points(self, points, line):
-        """Append interpolated cutting points (k, 3) with the axis and feed in force."""
+    def cut_points(self, points, line, directions):
+        """Append cutting points (k, 3) with the directions of the motion arriving at each (k, 3) and the
+        axis and feed in force."""
         op = self.op
         count = len(points)
         op.points.extend(map(tuple, points))
+        op.directions.extend(map(tuple, directions))
         op.axes.extend([self.axis] * count)
         op.lines.extend([line] * count)
         op.feeds.extend([self.feed] * count)
@@ -300,7 +381,7 @@ class _Reader:
             raise self.error(record, f"the arc of the CIRCLE on line {circle_line} has no start point "
                              "(no move before it)")
         try:
-            points = arc_points(self.position, end, centre, axis, self.tolerance)
+            points, tangents = arc_points(self.position, end, centre, axis, self.tolerance, self.step)
         except ValueError as error:
             raise self.error(record, f"the arc of the CIRCLE on line {circle_line}: {error}") from None
         if radius is not None:
@@ -311,16 +392,22 @@ class _Reader:
                 if off > max(self.tolerance, 1e-3 * radius):
                     self.warn(circle_line, "CIRCLE", f"the arc's {label} point is {off:.4g} mm off the circle "
                               f"of radius {radius:g} mm; the arc follows the points")
-        self.cut_points(points, record.line)
+        self.cut_points(points, record.line, tangents)
         self.op.arcs += 1
 
     def on_circle(self, record):
-        """CIRCLE/xc,yc,zc,i,j,k[,r,...]: the next GOTO moves along this circle."""
-        values = self.numbers(record)
+        """CIRCLE/xc,yc,zc,i,j,k[,r,...][,CLOCKWISE|COUNTERCLOCKWISE]: the next GOTO moves along this
+        circle; a direction word turns the motion as seen from the axis's tip."""
+        values, words = self.numbers_and_words(record)
         if len(values) < 6:
             raise self.error(record, f"needs xc,yc,zc,i,j,k[,r], got {len(values)} number(s)")
+        senses = [_CIRCLE_SENSE[word] for word in words if word in _CIRCLE_SENSE]
+        others = [word for word in words if word not in _CIRCLE_SENSE]
+        if others or len(senses) > 1:
+            raise self.error(record, f"expected numbers and one direction (CLOCKWISE or COUNTERCLOCKWISE), got "
+                                     f"{', '.join(others or words)}")
         centre = np.array(values[:3]) * self.scale
-        axis = np.array(values[3:6])
+        axis = np.array(values[3:6]) * (senses[0] if senses else 1.0)
         if not np.linalg.norm(axis) > 0.0:
             raise self.error(record, "the circle's axis (0, 0, 0) is zero")
         radius = values[6] * self.scale if len(values) > 6 and values[6] > 0.0 else None
@@ -376,7 +463,7 @@ class _Reader:
                 raise self.error(record, f"a control point needs x,y,z[,w], got {len(numbers)} number(s)")
 
     def close_nurbs(self):
-        """Evaluate the open NURBS block, if any, as cutting points."""
+        """Evaluate the open NURBS block, if any, as cutting points from the tool's position."""
         block, self.nurbs = self.nurbs, None
         if block is None:
             return
@@ -389,20 +476,26 @@ class _Reader:
             raise self.error(record, "a rational NURBS (control points of different weights) is not read")
         if len(widths) > 1:
             raise self.error(record, "the control points mix x,y,z and x,y,z,w")
+        self.tool_name = None
         points = np.array([point[:3] for point in control]) * self.scale
         try:
-            curve = bspline_points(block["knots"], points, self.tolerance)
+            layout, gap = resolve(block["knots"], points, self.position, self.tolerance)
+            curve, tangents = bspline_points(layout, self.tolerance, self.step)
         except ValueError as error:
             raise self.error(record, str(error)) from None
-        start = points[0]
-        if self.position is None or np.linalg.norm(np.asarray(self.position) - start) > self.tolerance:
-            curve = np.vstack([start, curve])
-        self.cut_points(curve, record.line)
+        start = layout.control[0]
+        if self.position is None or gap:
+            if gap:
+                self.warn(record.line, record.word, f"the curve ({layout.words}, degree {layout.degree}) starts "
+                          f"{gap:.4g} mm from the tool's position; the tool moves there in a straight line")
+            chord = np.zeros(3) if self.position is None else start - np.asarray(self.position)
+            curve, tangents = np.vstack([start, curve]), np.vstack([chord, tangents])
+        self.cut_points(curve, record.line, tangents)
         self.op.curves += 1
         self.position = tuple(curve[-1])
 
     def on_cycle(self, record):
-        """CYCLE/kind,... up to CYCLE/OFF: the GOTOs between are hole positions."""
+        """CYCLE/kind,... up to CYCLE/OFF: the GOTOs between are hole positions; a tapping cycle's tool is a tap."""
         words = [arg.upper() for arg in record.args if _WORD.fullmatch(arg)]
         if words[:1] == ["OFF"]:
             self.cycle = None
@@ -410,6 +503,8 @@ class _Reader:
         self.cycle = words[0] if words else "ON"
         if self.cycle not in self.op.cycles:
             self.op.cycles.append(self.cycle)
+        if self.cycle in ("TAP", "RIGID") and self.tool.kind != "tap":
+            self.set_tool(self.tool.with_kind("tap", f"CYCLE/{self.cycle} line {record.line}"), record.line)
 
     # Modal settings.
 
@@ -442,7 +537,7 @@ class _Reader:
         self.feed, self.feed_kind = unit_words.feed_to_mm(numbers[0], unit)
 
     def on_spindl(self, record):
-        """SPINDL in its forms: [RPM|SFM|SMM,]n[,CLW|CCLW], n,RPM, MAIN,..., ON, OFF."""
+        """SPINDL in its forms: [RPM|SFM|SMM,]n[,CLW|CCLW], n,RPM, MAIN,..., ON, OFF, 900CCLW."""
         numbers, words = self.numbers_and_words(record)
         if not numbers:
             return
@@ -452,9 +547,10 @@ class _Reader:
             return
         if surface is not None:
             diameter = self.tool.diameter
-            if diameter is None:
-                self.warn(record.line, record.word, f"surface speed {speed:g} {surface} without a tool diameter "
-                          "gives no spindle speed")
+            if diameter is None or not self.tool.milling:
+                self.warn(record.line, record.word, f"surface speed {speed:g} {surface} for "
+                          f"{'a tool without a diameter' if diameter is None else self.tool.describe()} gives no "
+                          "spindle speed in rpm")
                 return
             speed = unit_words.surface_speed_rpm(speed, surface, diameter)
         self.spindle = speed
@@ -469,11 +565,20 @@ class _Reader:
         if self.units is None:
             self.units = label
 
+    def on_cutcom(self, record):
+        """CUTCOM/LEFT|RIGHT|OFF: the control's cutter compensation; the CL points are taken as written
+        (the tool tip's centre), which the warning says once."""
+        self.count(self.ignored, record)
+        if record.args and record.args[0].upper() in ("LEFT", "RIGHT", "ON"):
+            self.warn_once("CUTCOM", record.line, record.word, f"{','.join(record.args)}: cutter compensation in the "
+                           "control; the CL points are taken as the tool tip's centre as written (an offset the "
+                           "control adds, such as wear, is left out)")
+
     # Tools.
 
     def on_cutter(self, record):
-        """CUTTER/d[,r,e,f,a,b,h]: diameter and corner radius (h is the tool's height); a bottom
-        angle a with no corner radius makes it a drill."""
+        """CUTTER/d[,r,e,f,a,b,h]: diameter and corner radius, the tip angle a, the side angle b, the tool's
+        height h (tools.mill)."""
         numbers, words = self.numbers_and_words(record)
         if not numbers:
             self.warn(record.line, record.word, f"{','.join(record.args)!r} gives no diameter; not read")
@@ -482,13 +587,17 @@ class _Reader:
         if diameter <= 0.0:
             raise self.error(record, f"diameter must be positive, got {numbers[0]:g}")
         radius = numbers[1] * self.scale if len(numbers) > 1 else 0.0
-        # A bottom angle (the fifth number) with no corner radius: a pointed tool, a drill.
-        pointed = len(numbers) > 4 and numbers[4] != 0.0 and radius == 0.0
-        kind_word = self.kind_word or ("DRILL" if pointed else None)
-        self.set_tool(mill(diameter, radius, f"CUTTER line {record.line}", kind_word), record.line)
+        tip = numbers[4] if len(numbers) > 4 else 0.0
+        side = numbers[5] if len(numbers) > 5 else 0.0
+        length = numbers[6] * self.scale if len(numbers) > 6 and numbers[6] > 0.0 else None
+        if self.tool.kind in ("turning", "grooving") and not self.op.moved and len(numbers) == 1:
+            return  # a turning insert's CUTTER gives its nose radius, not a mill's diameter
+        self.set_tool(mill(diameter, radius, f"CUTTER line {record.line}", self.kind_word, tip_angle=tip,
+                           side_angle=side, unit=self.unit_name(), length=length), record.line)
 
     def on_tldata(self, record):
-        """TLDATA/kind,d,r,...: MILL gives diameter and corner radius; DRILL, TURN... the kind."""
+        """TLDATA/kind,d,r,length,taper,...: MILL gives diameter, corner radius, length and taper; DRILL, TURN...
+        the kind."""
         kind = record.args[0].upper() if record.args else ""
         numbers = []
         for arg in record.args[1:]:
@@ -497,14 +606,33 @@ class _Reader:
         source = f"TLDATA line {record.line}"
         diameter = numbers[0] * self.scale if numbers and numbers[0] > 0.0 else None
         radius = numbers[1] * self.scale if len(numbers) > 1 else 0.0
+        length = numbers[2] * self.scale if len(numbers) > 2 and numbers[2] > 0.0 else None
+        taper = numbers[3] if len(numbers) > 3 else 0.0
         if kind in KIND_WORDS:
             # A turning insert's first number is its nose radius, not a diameter.
-            size = None if KIND_WORDS[kind] == "turning" else diameter
-            self.set_tool(ToolSpec(KIND_WORDS[kind], size, None, None, (source,)), record.line)
+            size = None if KIND_WORDS[kind] in ("turning", "grooving") else diameter
+            self.set_tool(ToolSpec(KIND_WORDS[kind], size, None, None, (source,), self.unit_name()), record.line)
         elif kind == "MILL" and diameter is not None:
-            self.set_tool(mill(diameter, radius, source), record.line)
+            self.set_tool(mill(diameter, radius, source, side_angle=taper, unit=self.unit_name(), length=length),
+                          record.line)
         else:
-            self.set_tool(ToolSpec("unknown", diameter, None, None, (source,)), record.line)
+            self.set_tool(ToolSpec("unknown", diameter, None, None, (source,), self.unit_name()), record.line)
+
+    def on_toolno(self, record):
+        """TOOLNO/n,KIND,... (CATIA): the kind word of the tool in force (TURN, GROOVE, DRILL, TAP ...)."""
+        kind = next((KIND_WORDS[arg.upper()] for arg in record.args if arg.upper() in KIND_WORDS), None)
+        if kind is not None and kind != self.tool.kind:
+            size = None if kind in ("turning", "grooving") else self.tool.diameter
+            tool = ToolSpec(kind, size, None, None, self.tool.records + (f"TOOLNO line {record.line}",),
+                            self.tool.unit, self.tool.name)
+            self.set_tool(tool, record.line)
+
+    def on_turret(self, record):
+        """TURRET/... (a lathe's tool change): a new operation with a turning tool."""
+        self.boundary(record.line)
+        self.kind_word = "TURN"
+        self.set_tool(ToolSpec("turning", None, None, None, (f"TURRET line {record.line}",), self.unit_name()),
+                      record.line)
 
     def on_loadtl(self, record):
         """LOADTL / LOAD/TOOL: a tool change (a new operation); a kind word (DRILL, TAP...) names the tool."""
@@ -514,6 +642,8 @@ class _Reader:
         self.kind_word = kind
         if kind is not None:
             self.set_tool(self.tool.with_kind(KIND_WORDS[kind], f"{record.word} line {record.line}"), record.line)
+        else:
+            self.set_tool(self.tool, record.line)
 
     def on_load(self, record):
         """LOAD/TOOL,n (NX): a tool change."""
@@ -528,15 +658,32 @@ class _Reader:
         if not numbers or numbers[0] <= 0.0:
             self.warn(record.line, record.word, f"{','.join(record.args)!r} is no flute length; not read")
             return
-        self.tool = self.tool.with_flute_length(numbers[0] * self.scale, f"{record.word} line {record.line}")
-        self.op.tool = self.tool
+        self.set_tool(self.tool.with_flute_length(numbers[0] * self.scale, f"{record.word} line {record.line}"),
+                      record.line)
+
+    def on_insert(self, record):
+        """INSERT/text: a tool name when a tool record follows (SOLIDWORKS CAM ``INSERT/[HOLDER=…] name``)."""
+        self.count(self.ignored, record)
+        text = record.rest.strip()
+        holder = re.match(r"\[[^\]]*\]\s*(.*)", text)
+        if holder or kind_of_name(text):
+            self.tool_name = ((holder.group(1) if holder else text).strip(), f"INSERT line {record.line}")
+
+    def on_tprint(self, record):
+        """TPRINT/text (CATIA): the name of the tool in force."""
+        self.count(self.ignored, record)
+        self.tool_name = (record.rest.strip(), f"TPRINT line {record.line}")
+        self.set_tool(self.tool, record.line)
 
     # Frames and operations.
 
     def on_tool_path(self, record):
-        """TOOL PATH/name,TOOL,tool (NX): a new operation named `name`."""
+        """TOOL PATH/name,TOOL,tool (NX): a new operation named `name`, its tool named `tool`."""
         self.boundary(record.line, record.args[0] if record.args else "")
         self.count(self.ignored, record)
+        words = [arg.upper() for arg in record.args]
+        if "TOOL" in words[1:] and words.index("TOOL", 1) + 1 < len(record.args):
+            self.tool_name = (record.args[words.index("TOOL", 1) + 1], f"TOOL PATH line {record.line}")
 
     def on_pprint(self, record):
         """PPRINT/text: CATIA's ``OPERATION NAME : ...`` starts an operation; other text is ignored."""
@@ -553,13 +700,31 @@ class _Reader:
         self.set_base(record, msys_frame([v * self.scale for v in values[:3]] + values[3:]))
 
     def on_csys(self, record):
-        """CSYS/3 x 4 matrix row by row: the setup frame of the following records."""
+        """CSYS/3 x 4 matrix row by row: the setup frame of the following records; after TRNTYP/WORLD only
+        the setup (the GOTOs stay in the world frame; the matrix's Z is the tool axis)."""
         values = self.numbers(record)
         if len(values) != 12:
             raise self.error(record, f"needs 12 numbers (a 3 x 4 matrix, row by row), got {len(values)}")
         for index in (3, 7, 11):
             values[index] *= self.scale
-        self.set_base(record, csys_frame(values))
+        frame = csys_frame(values)
+        if self.world is None:
+            self.set_base(record, frame)
+            return
+        if isinstance(frame, str):
+            raise self.error(record, f"not a frame: {frame}")
+        self.setup = frame
+        self.axis = tuple(frame[0][:, 2])
+        self.setup_words = (f"CSYS line {record.line} (a setup: points in the world frame, TRNTYP/WORLD line "
+                            f"{self.world})")
+        self.set_frame(record.line)
+
+    def on_trntyp(self, record):
+        """TRNTYP/WORLD (SOLIDWORKS CAM): the GOTOs that follow are in the world frame; CSYS names setups."""
+        words = [arg.upper() for arg in record.args if _WORD.fullmatch(arg)]
+        self.world = record.line if "WORLD" in words else None
+        if self.world is None:
+            self.setup, self.setup_words = None, ""
 
     def set_base(self, record, frame):
         """Make `frame` (an (R, t), or the text of why the record is not one) the frame of the following
@@ -572,19 +737,24 @@ class _Reader:
         self.set_frame(record.line)
 
     def on_rotabl(self, record):
-        """ROTABL/a,AAXIS|BAXIS|CAXIS[,CLW|CCLW][,INCR|ATANGL]: the indexed table's angle."""
+        """ROTABL/a,AAXIS|BAXIS|CAXIS[,CLW|CCLW][,INCR|ATANGL]: the indexed table's angle about that axis;
+        turns about several axes compose (C innermost), in radians where the file writes them so."""
         numbers, words = self.numbers_and_words(record)
         if not numbers:
             self.warn(record.line, record.word, f"{','.join(record.args)!r} gives no angle; the table is kept")
             return
         axis = next((word for word in words if word in ("AAXIS", "BAXIS", "CAXIS")), "CAXIS")
-        angle = -numbers[0] if "CLW" in words else numbers[0]
-        previous = self.table_angle if self.table is not None and self.table_axis == axis else 0.0
+        angle = math.degrees(numbers[0]) if self.radians else numbers[0]
+        if self.radians:
+            self.warn_once("radians", record.line, record.word, f"angles read in radians, as CAMWorks writes them "
+                           f"({numbers[0]:g} rad = {angle:.6g} deg)")
+        angle = -angle if "CLW" in words else angle
         if "INCR" in words:
-            angle += previous
-        self.table_angle, self.table_axis = angle, axis
-        self.table = None if angle % 360.0 == 0.0 else table_frame(angle, axis)
-        self.table_words = "" if self.table is None else f"ROTABL {angle:g} {axis} line {record.line}"
+            angle += self.table_angles.get(axis, 0.0)
+        self.table_angles[axis] = angle
+        turned = [f"{self.table_angles[a]:g} {a}" for a in ("AAXIS", "BAXIS", "CAXIS")
+                  if self.table_angles.get(a, 0.0) % 360.0]
+        self.table_words = f"ROTABL {' + '.join(turned)} line {record.line}" if turned else ""
         self.set_frame(record.line)
 
     # The result.
@@ -614,7 +784,7 @@ class _Reader:
             _frozen(op.lines, int, (-1,)), _frozen(op.points, float, (-1, 3)), _frozen(op.axes, float, (-1, 3)),
             op.frame, op.frame_words, _moves(op.rapids, op.rapid_axes, op.rapid_lines),
             _moves(op.holes, op.hole_axes, op.hole_lines), op.arcs, op.curves, self.name, op.first_line,
-            tuple(op.cycles))
+            tuple(op.cycles), _frozen(op.directions, float, (-1, 3)))
 
 
 def _frozen(values, dtype, shape):
@@ -635,5 +805,7 @@ _HANDLERS = {
     "FEDRAT": _Reader.on_fedrat, "SPINDL": _Reader.on_spindl, "UNITS": _Reader.on_units, "UNIT": _Reader.on_units,
     "CUTTER": _Reader.on_cutter, "TLDATA": _Reader.on_tldata, "LOADTL": _Reader.on_loadtl, "LOAD": _Reader.on_load,
     "CSI_SET_FLUTE_LENGTH": _Reader.on_flute_length, "TOOL PATH": _Reader.on_tool_path, "PPRINT": _Reader.on_pprint,
-    "MSYS": _Reader.on_msys, "CSYS": _Reader.on_csys, "ROTABL": _Reader.on_rotabl,
+    "MSYS": _Reader.on_msys, "CSYS": _Reader.on_csys, "ROTABL": _Reader.on_rotabl, "TRNTYP": _Reader.on_trntyp,
+    "TOOLNO": _Reader.on_toolno, "TURRET": _Reader.on_turret, "INSERT": _Reader.on_insert,
+    "TPRINT": _Reader.on_tprint, "CUTCOM": _Reader.on_cutcom,
 }
