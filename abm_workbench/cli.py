@@ -42,6 +42,7 @@ import numpy as np
 
 from .errors import InputError, ParameterError
 from .forces import COEFFICIENT_NAMES, MATERIALS
+from .formats.cl import STEP, TOLERANCE
 from .jobs import BY_NAME, CUTTING, REQUIRED, WALL_MODELS, WALL_POINTS, option_words
 from .parallel import ChunkError
 
@@ -224,8 +225,7 @@ def _build_parser():
                                  "(operation, name, tool, diameter, corner_radius, x, y, z, i, j, k, ...)")
     toolpath_parser.add_argument("--frame", choices=("part", "file"), default="part",
                                  help="part (default): MSYS / CSYS / ROTABL applied; file: as written, in mm")
-    toolpath_parser.add_argument("--tolerance", type=float, default=0.001, metavar="MM",
-                                 help="chordal tolerance of interpolated arcs and curves (mm), default 0.001")
+    _arc_arguments(toolpath_parser)
     toolpath_parser.set_defaults(run=_run_toolpath)
     return parser
 
@@ -238,9 +238,8 @@ def _run_toolpath(args):
 
     if args.out:
         runs.check_outputs([args.out], [args.file])
-    if not args.tolerance > 0.0:
-        raise ParameterError("tolerance", f"must be a positive number of mm, got {args.tolerance:g}")
-    program = read_program(args.file, tolerance=args.tolerance)
+    tolerance, step = _arc_options(args)
+    program = read_program(args.file, tolerance=tolerance, step=step)
     for warning in program.warnings:
         print(f"{PROG}: warning: {warning}", file=sys.stderr)
     print("\n".join(summary_lines(program, args.frame)))
@@ -299,6 +298,7 @@ def _input_arguments(parser):
                             "where available: straight flutes, ABM); initial: the stock as given")
     files.add_argument("--sweep-tolerance", type=float, default=0.05, metavar="MM",
                        help="sub-step of five-axis moves at the tool's rim for the in-process stock (mm), default 0.05")
+    _arc_arguments(files)
     files.add_argument("--job", metavar="JOB.json",
                        help="JSON of default cutting parameters (keys as the options below, with _ for -; "
                             "phi_range as [start, end]; description); options and the APT file override it")
@@ -330,6 +330,24 @@ def _input_arguments(parser):
 
 
 
+def _arc_arguments(group):
+    """--tolerance and --step: how a CL file's arcs and curves become CL points."""
+    group.add_argument("--tolerance", type=float, default=TOLERANCE, metavar="MM",
+                       help=f"chordal tolerance of interpolated arcs and curves (mm), default {TOLERANCE:g}")
+    group.add_argument("--step", type=float, default=STEP, metavar="MM",
+                       help=f"largest distance between the CL points along arcs and curves (mm), default {STEP:g}, "
+                            "about a tooth's feed")
+
+
+def _arc_options(args):
+    """(tolerance, step) mm of the parsed arguments; ParameterError unless each is a positive number."""
+    for name in ("tolerance", "step"):
+        value = getattr(args, name)
+        if not (np.isfinite(value) and value > 0.0):
+            raise ParameterError(name, f"must be a positive number of mm, got {value:g}")
+    return args.tolerance, args.step
+
+
 def _job(args):
     """The Job of the parsed arguments: the cutting and force options by parameter name."""
     from .jobs import Job
@@ -346,12 +364,14 @@ def _job(args):
         extra = [f"--{name}" for name in ("material", *COEFFICIENT_NAMES, "immersion") if getattr(args, name) is not None]
         if extra:
             raise InputError(f"{extra[0]} applies with --forces")
+    tolerance, step = _arc_options(args)
     window = args.y_window
     if window is not None and window not in ("whole", "swept"):
         window = _pair(window, "y_window", "whole, swept or Y0:Y1 in mm such as -10:10")
     return Job(args.stock, args.toolpath, args.job, given, forces=forces, material=getattr(args, "material", None),
                walls=args.walls, wall_points=args.wall_points, y_window=window, operation=args.operation,
-               solid=args.solid, stock_model=args.stock_model, sweep_tolerance=args.sweep_tolerance)
+               solid=args.solid, stock_model=args.stock_model, sweep_tolerance=args.sweep_tolerance,
+               tolerance=tolerance, step=step)
 
 
 def _pair(text, field, expected):

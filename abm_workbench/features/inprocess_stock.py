@@ -80,7 +80,7 @@ class InProcessStockFeature(FeatureProxy):
         tolerance = obj.SweepTolerance.Value or engagement.SweepTolerance.Value
         key = (inputs_key(engagement, inputs.toolpath, inputs.stock), tolerance)
         if self._sweep is None or self._sweep[0] != key:
-            moves, rows = program_moves(inputs.hints.program, inputs.hints.operation, inputs.tool)
+            moves, rows, _ = program_moves(inputs.hints.program, inputs.hints.operation, inputs.tool)
             self._sweep = (key, (moves, swept_pieces(moves, tolerance), rows))
         return self._sweep[1]
 

@@ -203,16 +203,17 @@ def _json_stock(name, frame):
     return Stock(staircase, name, frame=frame)
 
 
-def load_path(path, operation=None):
+def load_path(path, operation=None, *, tolerance=None, step=None):
     """(Toolpath, PathHints) of operation `operation` (1-based; None: the file's one milling operation)
     of a toolpath file of any name, read by its content (formats.cl: APT / CL text or the toolpath
-    CSV). The Toolpath is in the operation's engine frame (PathHints.frame). InputError naming the
-    file for an operation the engine cannot run (formats.cl.OperationChoiceError when the file has
+    CSV; arcs and curves to `tolerance` mm, their CL points at most `step` mm apart, None: the
+    defaults). The Toolpath is in the operation's engine frame (PathHints.frame). InputError naming
+    the file for an operation the engine cannot run (formats.cl.OperationChoiceError when the file has
     several and none is chosen)."""
-    from ..formats.cl import read_program
+    from ..formats.cl import STEP, TOLERANCE, read_program
 
     name = os.fspath(path)
-    program = read_program(name)
+    program = read_program(name, TOLERANCE if tolerance is None else tolerance, STEP if step is None else step)
     chosen = program.operation(operation)
     refusal = chosen.refusal()
     if refusal is not None:
@@ -285,23 +286,45 @@ def load_job(path):
 
 def program_moves(program, chosen, tool):
     """(ProgramMoves of every CL point of `program` in program order, in part coordinates; (m,) the rows
-    of the cutting CL points of operation `chosen`).
+    of the cutting CL points of operation `chosen`; notes: what the in-process stock leaves out or
+    takes otherwise, one sentence per operation, naming it and how much).
 
     Each operation's cutting moves and rapids are merged by their source line (a rapid removes
     nothing; nor does the move into an operation's first CL point, which follows a tool change or
     a retract). An operation's tool is its own (diameter, flute length) where the file gives it,
-    else `tool`'s (the resolved Tool of the job) for the chosen operation; another operation
-    whose file gives no size is left out (it cannot be swept). Canned-cycle hole positions are not
-    swept. Every tool is swept as a flat-end cylinder of its diameter and flute length.
+    else `tool`'s (the resolved Tool of the job) for the chosen operation. Another operation whose
+    file gives a diameter but no flute length removes material with its whole length: the tool's
+    length where the file gives it, else the extent of the program (the diagonal of the box of all
+    its moves, which reaches through any stock the program comes near); one with no diameter, a
+    turning operation and canned-cycle hole positions are not swept; the notes say so. Every tool is
+    swept as a flat-end cylinder of its diameter and that length.
     """
     from ..engine.inprocess import ProgramMoves
 
-    parts, rows, start = [], None, 0
+    everything = [op.points_part for op in program.operations] + [
+        op.rapids.points @ op.to_part[0].T + op.to_part[1] for op in program.operations if len(op.rapids)]
+    corners = np.concatenate(everything) if everything else np.zeros((1, 3))
+    reach = float(np.linalg.norm(corners.max(axis=0) - corners.min(axis=0)))
+    parts, rows, start, notes = [], None, 0, []
     for operation in program.operations:
+        what = f"{operation.label()} ({operation.tool.describe()})"
+        holes = len(operation.cycle_points) if operation.cycle_points is not None else 0
+        if holes and operation is not chosen:
+            notes.append(f"{what}: its {holes} canned-cycle holes are not in the in-process stock (holes are not "
+                         "swept)")
+        if operation.tool.kind in ("turning", "grooving") or not len(operation.lines):
+            continue
         diameter = operation.tool.diameter or (tool.diameter if operation is chosen else None)
         length = operation.tool.flute_length or (tool.flute_length if operation is chosen else None)
-        if diameter is None or length is None or operation.tool.kind == "turning":
+        if diameter is None:
+            notes.append(f"{what}: the file gives no diameter, so its {len(operation.lines)} cutting moves are not in "
+                         "the in-process stock")
             continue
+        if length is None:
+            length = operation.tool.length or max(reach, diameter)
+            whence = "the tool's length in the file" if operation.tool.length else "the program's extent"
+            notes.append(f"{what}: the file gives no flute length: in the in-process stock it removes material with "
+                         f"its whole length, {length:.4g} mm ({whence})")
         rotation, translation = operation.to_part
         rapids = operation.rapids
         points = np.concatenate([operation.points_file, rapids.points]) @ rotation.T + translation
@@ -317,4 +340,4 @@ def program_moves(program, chosen, tool):
             rows = start + np.flatnonzero(cut)
         start += lines.size
     columns = [np.concatenate(column) for column in zip(*parts)]
-    return ProgramMoves(*columns), rows
+    return ProgramMoves(*columns), rows, notes

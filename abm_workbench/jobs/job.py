@@ -19,6 +19,7 @@ from typing import Optional
 
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, Coefficients, material
+from ..formats.cl import STEP, TOLERANCE
 from .inputs import SOLID_SUFFIXES, load_job, load_path, load_stock, swept_y_window
 from .parameters import BY_NAME, check_pairs
 from .resolve import resolve, tool_and_settings
@@ -40,7 +41,9 @@ class Job:
     name in a stock file holding several, or None. stock_model: "in-process" (the stock minus what
     earlier cutting moves of the program removed) or "initial" (the stock as given, the paper's
     assumption); None: in-process where the engine has it (straight flutes, ABM), else
-    initial. sweep_tolerance: mm, the sub-step of five-axis moves at the tool's rim.
+    initial. sweep_tolerance: mm, the sub-step of five-axis moves at the tool's rim. tolerance, step:
+    mm, the chordal tolerance of a CL file's arcs and curves and the largest distance between their CL
+    points (formats.cl.read_program).
     """
 
     stock: str
@@ -56,6 +59,8 @@ class Job:
     solid: Optional[str] = None
     stock_model: Optional[str] = None
     sweep_tolerance: float = 0.05
+    tolerance: float = TOLERANCE
+    step: float = STEP
 
 
 @dataclass(frozen=True)
@@ -86,7 +91,7 @@ class Prepared:
 def prepare(job: Job, *, forces=None):
     """The Prepared job (the stock is read apart, by load_job_stock). forces: override job.forces."""
     defaults = load_job(job.job_file) if job.job_file else {}
-    toolpath, hints = load_path(job.toolpath, job.operation)
+    toolpath, hints = load_path(job.toolpath, job.operation, tolerance=job.tolerance, step=job.step)
     parameters = resolve(job.given, hints, defaults, job.job_file)
     helix = _value("helix", job, defaults)
     tool, settings = tool_and_settings(parameters.values, helix)

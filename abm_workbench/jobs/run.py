@@ -68,13 +68,15 @@ def in_process_1(stock, tool, toolpath, settings, pieces, rows, progress=None):
 STOCK_MODELS = ("in-process", "initial")
 
 
-def in_process_sweep(prepared, method="abm"):
+def in_process_sweep(prepared, method="abm", warn=None):
     """((SweptPieces of the prepared job's whole program in its engine frame, (m,) program rows of its CL
     points) for a run against the in-process stock, or None for the stock as given; why not, or '').
 
     The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM,
-    with or without the straight-flute forces), else the stock as given, the reason said.
-    ParameterError when in-process is asked for where it is not available, or the stock model is unknown.
+    with or without the straight-flute forces), else the stock as given, the reason said. What the
+    in-process stock leaves out or takes otherwise (inputs.program_moves' notes) is told to warn(),
+    with how arcs and curves are swept. ParameterError when in-process is asked for where it is not
+    available, or the stock model is unknown.
     """
     from ..engine.inprocess import swept_pieces
     from .inputs import program_moves
@@ -92,9 +94,15 @@ def in_process_sweep(prepared, method="abm"):
     if not (np.isfinite(job.sweep_tolerance) and job.sweep_tolerance > 0.0):
         raise ParameterError("sweep_tolerance", f"must be a positive number of mm, got {job.sweep_tolerance:g}")
     hints = prepared.hints
-    moves, rows = program_moves(hints.program, hints.operation, tool)
+    moves, rows, notes = program_moves(hints.program, hints.operation, tool)
     if hints.frame is not None:
         moves = moves.transformed(*hints.frame)
+    curved = sum(op.arcs + op.curves for op in hints.program.operations)
+    if curved:
+        notes.append(f"the in-process stock sweeps the program's {curved} arcs and curves as the chords between "
+                     f"their CL points, each within {job.tolerance:g} mm of the arc (at most {job.step:g} mm long)")
+    for note in notes if warn is not None else ():
+        warn(f"{job.toolpath}: {note}")
     return (swept_pieces(moves, job.sweep_tolerance), rows), ""
 
 
@@ -401,7 +409,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     check_outputs(outputs, _inputs(job))
     stock, _ = load_job_stock(prepared)
     check_model(stock, prepared.force_model is not None, method.name, tool.helix)
-    in_process, model_note = in_process_sweep(prepared, method.name)
+    in_process, model_note = in_process_sweep(prepared, method.name, warn)
 
     started = time.perf_counter()
     whole = PassAssembly(len(toolpath)) if plot else None
@@ -492,7 +500,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
         flutes = [flute - 1]
     if checking is not None and (tool.helix or flutes):
         raise ParameterError("check", "is not available with helical edges (--helix, --flute) yet")
-    in_process, model_note = _validated_sweep(job, prepared, flutes)
+    in_process, model_note = _validated_sweep(job, prepared, flutes, warn)
     if model_note:
         warn(f"{job.toolpath}: {model_note}; validating against the stock as given")
     check_report_outputs(job, report, fcstd)
@@ -541,11 +549,11 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
     return ValidateResult(prepared, stock, checked, helix, forces, written)
 
 
-def _validated_sweep(job, prepared, flutes):
+def _validated_sweep(job, prepared, flutes, warn):
     """(in_process_sweep's (SweptPieces, rows) or None, why not or '') for validate: the rule of engage,
     and the stock as given when single flutes of a tool are checked (the helix boolean)."""
     if flutes is None:
-        return in_process_sweep(prepared)
+        return in_process_sweep(prepared, warn=warn)
     if job.stock_model == "in-process":
         raise ParameterError("stock_model", "in-process is not available with --flute (the helix boolean) yet: "
                                             "use initial")
@@ -632,7 +640,7 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
     stock, _ = load_job_stock(prepared)
     check_model(stock, forces=True, helix=tool.helix)
-    in_process, model_note = in_process_sweep(prepared)
+    in_process, model_note = in_process_sweep(prepared, warn=warn)
     if model_note:
         warn(f"{model_note}: the feeds are scheduled against the stock as given")
     if in_process is None:

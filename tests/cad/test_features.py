@@ -20,7 +20,7 @@ from abm_workbench.features import VERSION, create_engagement, create_stock, cre
 from abm_workbench.features import engagement as engagement_module
 from abm_workbench.features.engagement import EngagementFeature
 from abm_workbench.formats.toolpath_csv import load_toolpath
-from abm_workbench.jobs import load_stock, swept_y_window
+from abm_workbench.jobs import load_path, load_stock, swept_y_window
 from tests.conftest import ROOT
 
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
@@ -273,7 +273,13 @@ def test_apt_toolpath_gives_the_tool_spindle_and_feed(doc, tmp_path):
     assert engagement.isValid(), engagement.getStatusString()
     assert "feed 0.1 mm/tooth [path.apt FEDRAT]" in engagement.Parameters
     assert "diameter 12 mm [path.apt CUTTER]" in engagement.Parameters
-    np.testing.assert_allclose(engagement.Proxy.result(engagement).length, reference().length, atol=1e-6)
+    # The CL file's own frames (turned to its tool tip's feed) and each move's inclination, as the engine reads it.
+    tool = Tool(JOB["diameter"], JOB["flutes"], JOB["flute_length"])
+    settings = CutSettings(JOB["feed_per_tooth"], 10.0, *JOB["phi_range"], JOB["phi_step"], JOB["spindle_rpm"])
+    program_path, _ = load_path(apt)
+    assert program_path.alpha.any() and program_path.inclination is not None
+    expected = engage(load_stock(STOCK_JSON).staircase, tool, program_path, settings)
+    np.testing.assert_allclose(engagement.Proxy.result(engagement).length, expected.length, atol=1e-6)
 
 
 def test_stock_from_a_linked_solid_with_exact_walls(doc):

@@ -118,7 +118,7 @@ def test_lengths_agree_with_the_boolean_in_process_stock(two_passes):
     toolpath, hints = load_path(program, None)
     assert hints.frame is None  # the engine's frame is the part's: the booleans need no transform
     tool = Tool(engagement.Diameter.Value, engagement.Flutes, engagement.FluteLength.Value)
-    moves, rows = program_moves(hints.program, hints.operation, tool)
+    moves, rows, _ = program_moves(hints.program, hints.operation, tool)
     np.testing.assert_allclose(moves.cl[rows], toolpath.cl, rtol=0.0, atol=1e-9)
     # the CL points where earlier moves removed the most, one of the first pass and one of the second
     removed = (in_process.initial - result.length).max(axis=1)

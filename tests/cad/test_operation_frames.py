@@ -9,7 +9,6 @@ import pytest
 from abm_workbench import cli
 from abm_workbench.cad.freecad_env import Part
 from abm_workbench.cad.solids import export_step, moved
-from abm_workbench.engine import angles_to_axis
 from abm_workbench.formats.results_csv import read_results
 from abm_workbench.formats.toolpath_csv import load_toolpath
 from tests.conftest import ROOT
@@ -33,15 +32,16 @@ def runs(tmp_path_factory):
     assert rotation[2, 2] == -1.0  # the MCS's Z points down in the part
     export_step(moved(Part.read(os.path.join(MODEL, "stock.step")), rotation, origin), str(folder / "part.step"))
     path = load_toolpath(os.path.join(MODEL, "toolpath.csv"))
-    axes = angles_to_axis(path.theta_a, path.theta_b)
+    axes = path.axes
     moves = "".join("GOTO/" + ",".join(f"{v:.12f}" for v in (*p, *a)) + "\n" for p, a in zip(path.cl, axes))
     msys = ",".join(f"{v:.12g}" for v in (*origin, *X_AXIS, *Y_AXIS))
-    (folder / "job.clsf").write_text(
-        "TOOL PATH/VC_PASS,TOOL,EM12\nTLDATA/MILL,12.0000,0.0000,75.0000,0.0000,0.0000\n"
-        f"MSYS/{msys}\nPAINT/PATH\nSPINDL/RPM,4000,CLW\nFEDRAT/MMPM,800.0000\n{moves}END-OF-PATH\n")
+    for name, frame in (("mcs.clsf", ""), ("job.clsf", f"MSYS/{msys}\n")):  # the same program, in the MCS or the part
+        (folder / name).write_text(
+            "TOOL PATH/VC_PASS,TOOL,EM12\nTLDATA/MILL,12.0000,0.0000,75.0000,0.0000,0.0000\n"
+            f"{frame}PAINT/PATH\nSPINDL/RPM,4000,CLW\nFEDRAT/MMPM,800.0000\n{moves}END-OF-PATH\n")
     common = ["--job", os.path.join(MODEL, "job.json"), "--phi-step", "5"]
     assert cli.main(["engage", "--stock", os.path.join(MODEL, "stock.step"), "--toolpath",
-                     os.path.join(MODEL, "toolpath.csv"), "--out", str(folder / "mcs.csv"), *common]) == 0
+                     str(folder / "mcs.clsf"), "--out", str(folder / "mcs.csv"), *common]) == 0
     assert cli.main(["engage", "--stock", str(folder / "part.step"), "--toolpath", str(folder / "job.clsf"),
                      "--out", str(folder / "part.csv"), *common]) == 0
     return read_results(folder / "mcs.csv"), read_results(folder / "part.csv")

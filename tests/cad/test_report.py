@@ -13,6 +13,7 @@ from abm_workbench import cli
 from abm_workbench.engine import CutSettings, Tool, Toolpath, engage
 from abm_workbench.forces import material, pass_forces
 from abm_workbench.formats.staircase_json import dump_staircase
+from abm_workbench.formats.toolpath_csv import load_toolpath
 from abm_workbench.report.html import ReportJob, paper_model_test, report_cls, write_report
 from abm_workbench.report.staging import staged
 from abm_workbench.report.tables import (COMPARISON_COLUMNS, DEPTH_COLUMNS, SEGMENT_COLUMNS, SURFACE_COLUMNS,
@@ -165,7 +166,8 @@ def test_validate_command_with_forces(tmp_path, monkeypatch, capsys):
     assert not os.path.exists("report")
     assert cli.main(base + ["--forces", "--material", "al6082-t6", "--immersion", "0:90"]) == 0
     out = capsys.readouterr().out
-    expected = pass_forces(STOCKS["ridge"], TOOL, PATH, SETTINGS, material("al6082-t6"), immersion=(0, 90))
+    read_back = load_toolpath("path.csv")  # its frames turned to the feed of its CL points
+    expected = pass_forces(STOCKS["ridge"], TOOL, read_back, SETTINGS, material("al6082-t6"), immersion=(0, 90))
     assert f"; peak force {expected.peak.max():.4g} N at CL {int(np.argmax(expected.peak))}" in out
     assert "forces.png" in os.listdir("report")
     assert "<h2>Cutting forces</h2>" in (tmp_path / "report" / "index.html").read_text(encoding="utf-8")

@@ -45,7 +45,7 @@ def operation_line(op, frame="part", units="mm"):
     else:
         axis = "no cutting axis"
     parts = [
-        f"{op.label()}: {op.tool.describe()}",
+        f"{op.label()}: {op.tool.describe()}" + (f" ({op.tool.name})" if op.tool.name else ""),
         f"{len(op.lines)} CL points cut, {len(op.rapids)} rapid, {len(op.cycle_points)} canned-cycle",
         f"{op.arcs} arcs and {op.curves} curves interpolated",
         axis,
