@@ -3,7 +3,8 @@
 - :mod:`.commands`: ``ABM_OpenModelTest``, ``ABM_ImportStock``, ``ABM_ImportToolpath``,
   ``ABM_ComputeEngagement``, ``ABM_InspectEngagement``, ``ABM_ValidateEngagement``, each inside
   a document transaction (undo works), errors to the report view in plain words.
-- :mod:`.task_panel`: the engagement's tool and cut, with units, checked as typed.
+- :mod:`.task_panel`: the engagement's tool and cut, with units, checked as typed; its numbers
+  read and shown in each field's declared unit by :mod:`.numbers`.
 - :mod:`.dock`: the engagement dock: CL point slider, colour by and legend, plots.
 - :mod:`.view_providers`: icons, styles, the engaged surface as one mesh (:mod:`.surface_mesh`,
   :mod:`.colouring`), the highlighted CL point; :func:`.view_providers.attach` and a document

@@ -100,7 +100,7 @@ def take_screenshots(folder):
     FreeCADGui.ActiveDocument.setEdit(engagement, 0)
     FreeCADGui.updateGui()
     panel = task_panel.shown()
-    panel.field("Diameter").setProperty("rawValue", -3.0)
+    panel.set_number("Diameter", -3.0)
     FreeCADGui.updateGui()
     grab_screen(paths[3])
     panel.reject()

@@ -1,8 +1,13 @@
 """The task panel of an engagement object: tool, cut, wall model, y window and forces, checked as typed.
 
 Opened by ABM_ComputeEngagement for a new engagement (:func:`compute`) and by double-click /
-``setEdit`` for an existing one (:func:`edit`). Lengths and angles are FreeCAD quantity spin
-boxes (``Gui::QuantitySpinBox``: units typed or shown, "12 mm", "0.5 in", "10 °").
+``setEdit`` for an existing one (:func:`edit`). Every number is a :class:`NumberField`: the text
+typed is the value, read in the field's declared unit (mm, degrees, or a plain number: flutes,
+rpm, N/mm², N/mm) by :mod:`.numbers`. A bare number is in that unit whatever was shown before; a
+length or an angle may carry its own unit ("0.5 in", "0.2 rad"). Values are shown in the declared
+unit ("0.08 mm", never "80 µm"); no key is refused and nothing is clamped, rounded or re-scaled.
+A required value that is not set shows an empty field; the spindle speed shows "none" (typed:
+"none" or 0).
 
 As the user types, the values are checked by the job model, as the command line's are:
 ``jobs.resolve`` (every value against its declaration in ``jobs.parameters``; what an APT / CL
@@ -15,8 +20,10 @@ checks it. A problem is a ParameterError naming its parameter: the parameter's f
 read-only, unless the material is custom. Fields the toolpath file fixes show its value, are
 read-only and say so.
 
-A quantity field whose text is not a quantity of its kind (letters typed into a length) is refused
-in the same way: its field marked, the problem in plain words, OK disabled.
+A field whose text is not a number of its kind (letters typed into a length, "12,5" where the
+decimal point is ".", 1e400, 1e-400) or is empty is refused in the same way: its field marked, the
+problem in plain words, OK disabled. A value outside the range the job model declares for its
+parameter gets the parameter's own message; the fields' arrows step only within that range.
 
 The whole edit is one document transaction: OK commits it (after a recompute that succeeds),
 Cancel aborts it, which for a new engagement removes the object; for an existing one it gives
@@ -26,7 +33,10 @@ after Cancel does not run the engine again) and its view.
 Its widgets are looked up by name (:meth:`EngagementPanel.field`) once the wrappers that deleted
 widgets left at their addresses are let go (:mod:`.wrappers`): without that, a panel opened right
 after another closed was now and then refused (its field or line edit found as the old dialog's
-button box).
+button box). The panel reads and writes the fields by their text only, through Qt's own methods.
+
+Scripts and tests set a field as if typed with :meth:`EngagementPanel.set_number` and read it with
+:meth:`EngagementPanel.number`.
 
 The panel fits FreeCAD's combo view: rows too long for a label and a field side by side wrap
 the field under its label, and the text wraps.
@@ -35,40 +45,47 @@ the field under its label, and the text wraps.
 import shiboken2
 from PySide import QtGui
 
-import FreeCAD
 import FreeCADGui
 
-from ..errors import InputError, ParameterError
+from ..errors import InputError, MissingParameter, ParameterError
 from ..features.engagement import COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings
 from ..forces import MATERIALS
-from ..jobs import BY_NAME, label_words, resolve, tool_and_settings
-from . import preferences, state, view_providers, wrappers
+from ..jobs import BY_NAME, CUTTING, REQUIRED, label_words, resolve, tool_and_settings
+from . import numbers, preferences, state, view_providers, wrappers
 from .i18n import noop, translate
 from .progress import busy
 from .reporting import CommandError, message_of, recompute_checked, report_error
 
-#: Fields: (property, label, unit or None for a plain number, minimum, maximum, step).
+#: Number fields: (property, label, declared unit: "mm", "deg" or None for a plain number, step of the arrows).
 FIELDS = (
-    ("Diameter", noop("Diameter"), "mm", -1e6, 1e6, 1.0),
-    ("Flutes", noop("Flutes"), None, 0, 100, 1),
-    ("FluteLength", noop("Flute length"), "mm", -1e6, 1e6, 1.0),
-    ("HelixAngle", noop("Helix angle β"), "deg", -1e6, 1e6, 5.0),
-    ("FeedPerTooth", noop("Feed per tooth"), "mm", -1e6, 1e6, 0.01),
-    ("SpindleSpeed", noop("Spindle speed (rpm)"), None, 0.0, 1e6, 100.0),
-    ("Inclination", noop("Inclination α"), "deg", -1e6, 1e6, 1.0),
-    ("PhiStart", noop("φ start"), "deg", -1e6, 1e6, 1.0),
-    ("PhiEnd", noop("φ end"), "deg", -1e6, 1e6, 1.0),
-    ("PhiStep", noop("φ step"), "deg", -1e6, 1e6, 0.5),
-    ("YWindowMin", noop("y window from"), "mm", -1e6, 1e6, 1.0),
-    ("YWindowMax", noop("y window to"), "mm", -1e6, 1e6, 1.0),
+    ("Diameter", noop("Diameter"), "mm", 1.0),
+    ("Flutes", noop("Flutes"), None, 1.0),
+    ("FluteLength", noop("Flute length"), "mm", 1.0),
+    ("HelixAngle", noop("Helix angle β"), "deg", 5.0),
+    ("FeedPerTooth", noop("Feed per tooth"), "mm", 0.01),
+    ("SpindleSpeed", noop("Spindle speed (rpm)"), None, 100.0),
+    ("Inclination", noop("Inclination α"), "deg", 1.0),
+    ("PhiStart", noop("φ start"), "deg", 1.0),
+    ("PhiEnd", noop("φ end"), "deg", 1.0),
+    ("PhiStep", noop("φ step"), "deg", 0.5),
+    ("YWindowMin", noop("y window from"), "mm", 1.0),
+    ("YWindowMax", noop("y window to"), "mm", 1.0),
 )
-#: Force fields after the Forces check box and the Material combo: (property, label, unit, minimum, maximum, step).
-FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm'})", None, -1e6, 1e6, 10.0)
+#: Number fields after the Forces check box and the Material combo: (property, label, unit, step).
+FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm'})", None, 10.0)
                      for prop in COEFFICIENT_PROPERTIES.values()) + (
-    ("ImmersionStart", noop("Immersion from"), "deg", -1e6, 1e6, 5.0),
-    ("ImmersionEnd", noop("Immersion to"), "deg", -1e6, 1e6, 5.0))
-#: Quantity kinds of the units of FIELDS: (FreeCAD unit, the kind in words, examples).
-KINDS = {"mm": ("Length", "length", "12 mm, 0.5 in"), "deg": ("Angle", "angle", "10°, 0.2 rad")}
+    ("ImmersionStart", noop("Immersion from"), "deg", 5.0),
+    ("ImmersionEnd", noop("Immersion to"), "deg", 5.0))
+#: property -> declared unit of every number field.
+UNITS = {name: unit for name, _, unit, _ in FIELDS + FORCE_FIELDS}
+#: property -> the job model's Parameter of a field (its label, range and check); the y window has none.
+PARAMETER_OF = {parameter.prop: parameter for parameter in BY_NAME.values()}
+#: Fields of required parameters: empty means not given (no default to fall back on).
+REQUIRED_FIELDS = tuple(parameter.prop for parameter in BY_NAME.values() if parameter.default is REQUIRED)
+#: The spindle speed's text for no speed (its property 0).
+NONE = "none"
+#: The angles (°) an App::PropertyAngle holds: FreeCAD clamps any other to this range, in silence.
+ANGLE_PROPERTY_RANGE = (-360.0, 360.0)
 #: Cutting parameters a toolpath file can fix, with their fields.
 FILE_FIELDS = ("diameter", "flute_length", "spindle_rpm", "feed_per_tooth")
 INVALID_STYLE = "background-color: #ffc8c8;"
@@ -110,8 +127,8 @@ class EngagementPanel:
         self.fixed.setWordWrap(True)
         layout.addRow(self.fixed)
         self.names = []  # of the fields, in order: self.field(name) finds each
-        for name, label, unit, low, high, step in FIELDS:
-            widget = _spin_box(unit, low, high, step, integer=name == "Flutes")
+        for name, label, unit, step in FIELDS:
+            widget = _spin_box(unit, step, PARAMETER_OF.get(name), self.form)
             widget.setObjectName(f"ABM_{name}")
             widget.setToolTip(obj.getDocumentationOfProperty(name))
             self.names.append(name)
@@ -119,12 +136,11 @@ class EngagementPanel:
                 layout.addRow(translate("Wall model"), self._combo("WallModel", WALL_CHOICES))
                 layout.addRow(translate("y window"), self._combo("YWindow", Y_WINDOWS))
             layout.addRow(translate(label), widget)
-            _set_value(widget, _property_value(obj, name))
         self._force_fields(layout)
         wrappers.let_go_stale(self.form)  # before any lookup: the fields may sit where deleted widgets were
-        for name, *_ in FIELDS + FORCE_FIELDS:
-            _connect(self.field(name), self.check)
-        self.field("SpindleSpeed").setSpecialValueText("none")
+        for name in UNITS:
+            _put(self.field(name), _starting_text(obj, name))
+            self.field(name).findChild(QtGui.QLineEdit).textChanged.connect(self.check)
         self.hints = self._hints()
         self.check()
 
@@ -138,15 +154,12 @@ class EngagementPanel:
         forces.toggled.connect(self.check)
         self.names.append("Forces")
         layout.addRow(forces, self._combo("Material", MATERIAL_CHOICES))
-        for name, label, unit, low, high, step in FORCE_FIELDS:
-            widget = _spin_box(unit, low, high, step)
-            if unit is None:
-                widget.setDecimals(3)
+        for name, label, unit, step in FORCE_FIELDS:
+            widget = _spin_box(unit, step, PARAMETER_OF.get(name), self.form)
             widget.setObjectName(f"ABM_{name}")
             widget.setToolTip(obj.getDocumentationOfProperty(name))
             self.names.append(name)
             layout.addRow(label, widget)
-            _set_value(widget, _property_value(obj, name))
 
     def _combo(self, name, choices):
         combo = QtGui.QComboBox()
@@ -172,8 +185,19 @@ class EngagementPanel:
             return error
 
     # ---- values -----------------------------------------------------------------------------
+    def number(self, name):
+        """The number typed into field `name`, in its declared unit (the spindle speed's "none": 0), or None
+        when the field is empty; numbers.Unreadable when it is no number of its kind."""
+        return _number(name, self.field(name).text())
+
+    def set_number(self, name, value):
+        """Show `value` (declared unit; a spindle speed of 0: "none") in field `name` as if it were typed:
+        the panel checks it."""
+        _put(self.field(name), _text(name, value))
+
     def values(self):
-        """{property: value} of the fields (numbers in mm, deg, rpm; choices as text)."""
+        """{property: value} of the fields: numbers in their declared units (mm, deg, rpm, N/mm², N/mm;
+        None when empty or unreadable, see :meth:`unreadable`), choices as text, Forces as a bool."""
         values = {}
         for name in self.names:
             widget = self.field(name)
@@ -182,41 +206,32 @@ class EngagementPanel:
             elif isinstance(widget, QtGui.QCheckBox):
                 values[name] = widget.isChecked()
             else:
-                values[name] = _get_value(widget)
-        values["Flutes"] = int(values["Flutes"])
+                try:
+                    values[name] = self.number(name)
+                except numbers.Unreadable:
+                    values[name] = None
         return values
 
-    def given(self, values):
-        """jobs.resolve's `given` of the field values (required ones 0: not given)."""
-        def unset_zero(value):
-            return None if value == 0 else value
-
-        return {
-            "diameter": unset_zero(values["Diameter"]), "flutes": unset_zero(values["Flutes"]),
-            "flute_length": unset_zero(values["FluteLength"]), "feed_per_tooth": unset_zero(values["FeedPerTooth"]),
-            "inclination": values["Inclination"], "spindle_rpm": unset_zero(values["SpindleSpeed"]),
-            "phi_start": values["PhiStart"], "phi_end": values["PhiEnd"], "phi_step": values["PhiStep"],
-        }
+    @staticmethod
+    def given(values):
+        """jobs.resolve's `given` of the field values (an empty field and a spindle speed of none: not given)."""
+        given = {name: values[BY_NAME[name].prop] for name in CUTTING}
+        if given["spindle_rpm"] == 0:
+            given["spindle_rpm"] = None
+        return given
 
     def unreadable(self):
-        """(message, field) of the first enabled quantity field whose text is not a quantity of its kind,
-        or (None, None)."""
-        for name, label, unit, *_ in FIELDS + FORCE_FIELDS:
-            widget = self.field(name)
-            if unit is None or not widget.isEnabled():
+        """(message, field) of the first enabled number field whose text is no number of its kind, or that
+        is empty and not a required one (those are missing: :meth:`problem`); or (None, None)."""
+        for name, label, unit, _ in FIELDS + FORCE_FIELDS:
+            if not self.field(name).isEnabled():
                 continue
-            text = widget.findChild(QtGui.QLineEdit).text().strip()
-            unit_name, kind, examples = KINDS[unit]
             try:
-                quantity = FreeCAD.Units.Quantity(text)
-                readable = quantity.Unit in (getattr(FreeCAD.Units, unit_name), FreeCAD.Units.Unit())
-            except ValueError:
-                readable = False
-            if not readable:
-                parameter = next((p for p in BY_NAME.values() if p.prop == name), None)
-                words = parameter.label if parameter is not None else label
-                return (f"{words[:1].upper()}{words[1:]}: “{text}” is not a {kind}: type a number, with a unit "
-                        f"if you like ({examples}).", name)
+                number = self.number(name)
+            except numbers.Unreadable as error:
+                return f"{_words(name, label)}: {error}.", name
+            if number is None and name not in REQUIRED_FIELDS:
+                return f"{_words(name, label)}: the field is empty: {numbers.hint(unit)}.", name
         return None, None
 
     def problem(self, values):
@@ -232,9 +247,15 @@ class EngagementPanel:
             tool_and_settings(parameters.values, values["HelixAngle"])
             if values["Forces"]:
                 force_settings(values["Material"], values, (values["ImmersionStart"], values["ImmersionEnd"]))
+        except MissingParameter as error:  # only an empty field leaves a required value missing here
+            prop = BY_NAME[error.field].prop
+            return f"{_words(prop, prop)} is required: the field is empty.", prop
         except ParameterError as error:
             parameter = BY_NAME.get(error.field)
             return label_words(error), parameter.prop if parameter is not None else None
+        message, field = self.unheld(values)
+        if message is not None:
+            return message, field
         stock = self.obj.Stock
         solid = stock is not None and stock.Proxy.is_solid(stock)
         if values["WallModel"] != "stock" and not solid:
@@ -248,6 +269,16 @@ class EngagementPanel:
                     f"{values['YWindowMax']:g} mm.", "YWindowMin")
         return None, None
 
+    def unheld(self, values):
+        """(message, field) of the first enabled angle field whose value the job model allows but the engagement
+        object's angle property cannot hold (beyond ANGLE_PROPERTY_RANGE: φ start, end and step), or (None, None)."""
+        low, high = ANGLE_PROPERTY_RANGE
+        for name, label, unit, _ in FIELDS + FORCE_FIELDS:
+            if unit == "deg" and self.field(name).isEnabled() and not low <= values[name] <= high:
+                return (f"{_words(name, label)}: the engagement object holds angles within [{low:g}, {high:g}]°, "
+                        f"got {values[name]:g}°.", name)
+        return None, None
+
     def show_fixed(self, parameters):
         """Fields whose value the toolpath file gives: its value, read-only, explained."""
         notes = []
@@ -256,9 +287,7 @@ class EngagementPanel:
             widget = self.field(name)
             fixed = parameters.fixed_by_file(key)
             if fixed:
-                widget.blockSignals(True)
-                _set_value(widget, parameters.values[key])
-                widget.blockSignals(False)
+                _put(widget, _text(name, parameters.values[key]), quiet=True)
                 notes.append(f"{BY_NAME[key].label} {parameters.values[key]:g} ({parameters.sources[key][1]})")
             widget.setEnabled(not fixed)
         self.fixed.setText(translate("Fixed by the toolpath file, the values it was made for:") + " "
@@ -272,10 +301,8 @@ class EngagementPanel:
         for name, prop in COEFFICIENT_PROPERTIES.items():
             widget = self.field(prop)
             if not custom:
-                widget.blockSignals(True)
-                _set_value(widget, getattr(MATERIALS[values["Material"]][0], name))
-                widget.blockSignals(False)
-                values[prop] = _get_value(widget)
+                values[prop] = getattr(MATERIALS[values["Material"]][0], name)
+                _put(widget, _text(prop, values[prop]), quiet=True)
             widget.setEnabled(values["Forces"] and custom)
         for name in ("ImmersionStart", "ImmersionEnd"):
             self.field(name).setEnabled(values["Forces"])
@@ -323,7 +350,7 @@ class EngagementPanel:
         obj, doc = self.obj, self.obj.Document
         for name, value in self.values().items():
             if self.field(name).isEnabled() or name in ("WallModel", "YWindow", "Forces", "Material"):
-                setattr(obj, name, value)
+                setattr(obj, name, int(value) if name == "Flutes" else value)
         try:
             with busy("Computing the engagement…"):
                 recompute_checked(doc, (obj,))
@@ -406,42 +433,95 @@ def _property_value(obj, name):
     return float(getattr(value, "Value", value))
 
 
-def _spin_box(unit, low, high, step, *, integer=False):
-    """A Gui::QuantitySpinBox in `unit`, or a plain (integer) spin box when unit is None."""
-    if unit is None:
-        widget = QtGui.QSpinBox() if integer else QtGui.QDoubleSpinBox()
-        if not integer:
-            widget.setDecimals(1)
-        widget.setRange(low, high)
-        widget.setSingleStep(step)
-        return widget
-    widget = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox")
-    widget.setProperty("unit", unit)
-    widget.setProperty("minimum", float(low))
-    widget.setProperty("maximum", float(high))
-    widget.setProperty("singleStep", float(step))
-    return widget
+def _words(name, label):
+    """The field `name` in messages: its parameter's label ('Tool diameter'), else its own `label`."""
+    parameter = PARAMETER_OF.get(name)
+    words = parameter.label if parameter is not None else label
+    return f"{words[:1].upper()}{words[1:]}"
 
 
-def _connect(widget, check):
-    """Call check when the value of a field changes, and for a quantity field also when its text does
-    (text that is no quantity leaves the value as it was)."""
-    widget.valueChanged.connect(check)
-    if not isinstance(widget, (QtGui.QSpinBox, QtGui.QDoubleSpinBox)):
-        widget.findChild(QtGui.QLineEdit).textChanged.connect(check)
+def _number(name, typed):
+    """The number `typed` into field `name`, in its declared unit (the spindle speed's "none": 0), or None
+    when it is empty; numbers.Unreadable when it is no number of its kind."""
+    if name == "SpindleSpeed" and typed.strip().lower() == NONE:
+        return 0.0
+    return numbers.read(typed, UNITS[name], numbers.decimal_point())
 
 
-def _set_value(widget, value):
-    if isinstance(widget, (QtGui.QSpinBox, QtGui.QDoubleSpinBox)):
-        widget.setValue(type(widget.value())(value))
-    else:
-        widget.setProperty("rawValue", float(value))
+def _text(name, value):
+    """`value` as field `name` shows it, in its declared unit (a spindle speed of 0: "none")."""
+    if name == "SpindleSpeed" and value == 0:
+        return NONE
+    return numbers.text(value, UNITS[name], numbers.decimal_point())
 
 
-def _get_value(widget):
-    if isinstance(widget, (QtGui.QSpinBox, QtGui.QDoubleSpinBox)):
-        return widget.value()
-    return float(widget.property("rawValue"))
+def _starting_text(obj, name):
+    """What field `name` shows first: the property of `obj`, empty for a required value not set (0)."""
+    value = _property_value(obj, name)
+    return "" if value == 0 and name in REQUIRED_FIELDS else _text(name, value)
+
+
+def _put(widget, text, *, quiet=False):
+    """Put `text` in the number field `widget` (as typed: checked, unless `quiet`)."""
+    edit = widget.findChild(QtGui.QLineEdit)
+    if edit.text() == text:
+        return
+    edit.blockSignals(quiet)
+    edit.setText(text)
+    edit.blockSignals(False)
+
+
+def _spin_box(unit, step, parameter, parent):
+    """A NumberField in the declared `unit` ("mm", "deg", None: a plain number), stepped by `step` within
+    the range of `parameter` (None: any), a child of `parent` from the start: Qt deletes it with its parent,
+    never Python with a wrapper of it."""
+    return NumberField(unit, step, parameter, parent)
+
+
+class NumberField(QtGui.QAbstractSpinBox):
+    """A field holding one number as typed (:mod:`.numbers`): no key refused, nothing clamped, rounded or
+    shown in another unit. Its arrows, arrow keys and wheel step it by `step` (declared `unit`) while it
+    stays inside the range the job model declares for `parameter` (None: any number)."""
+
+    def __init__(self, unit, step, parameter, parent):
+        super().__init__(parent)
+        self.unit, self.step, self.parameter = unit, step, parameter
+
+    def stepped(self, steps):
+        """The number `steps` steps on (to 9 decimals: 0.11, not 0.11000000000000001), or None: no number
+        typed, or the step leaves the parameter's range (or, for an angle, ANGLE_PROPERTY_RANGE)."""
+        try:
+            value = numbers.read(self.text(), self.unit, numbers.decimal_point())
+        except numbers.Unreadable:
+            return None
+        if value is None:
+            return None
+        value = round(value + steps * self.step, 9)
+        low, high = ANGLE_PROPERTY_RANGE
+        if self.unit == "deg" and not low <= value <= high:
+            return None
+        if self.parameter is not None:
+            try:
+                self.parameter.check(value)
+            except ParameterError:
+                return None
+        return value
+
+    def stepEnabled(self):  # noqa: N802 (Qt's name)
+        """Up and down, each while its step stays inside the range; neither when read-only."""
+        enabled = QtGui.QAbstractSpinBox.StepNone
+        if not self.isReadOnly():
+            if self.stepped(1) is not None:
+                enabled |= QtGui.QAbstractSpinBox.StepUpEnabled
+            if self.stepped(-1) is not None:
+                enabled |= QtGui.QAbstractSpinBox.StepDownEnabled
+        return enabled
+
+    def stepBy(self, steps):  # noqa: N802 (Qt's name)
+        """Step the number `steps` steps on, if it stays inside the range (as if typed: checked)."""
+        value = self.stepped(steps)
+        if value is not None:
+            _put(self, numbers.text(value, self.unit, numbers.decimal_point()))
 
 
 state.listen("edit", edit)

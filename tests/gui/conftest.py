@@ -42,29 +42,31 @@ QtCore.QTimer.singleShot(1500, run)
 """
 
 
+def run_macro(body, folder):
+    """The verdict (dict) of `body` (Python, sets keys of `verdict`) run inside the FreeCAD GUI, with HOME
+    `folder`/home and the macro and its verdict in `folder`."""
+    if shutil.which("xvfb-run") is None or shutil.which("freecad") is None:
+        pytest.fail("the GUI tier needs xvfb-run and freecad (make deps installs them)")
+    out, macro = folder / "verdict.json", folder / "macro.py"
+    macro.write_text(MACRO.format(root=ROOT, out=str(out), body=textwrap.indent(textwrap.dedent(body), " " * 8)))
+    home = folder / "home"
+    home.mkdir(exist_ok=True)
+    env = dict(os.environ, HOME=str(home), QTWEBENGINE_DISABLE_SANDBOX="1")
+    process = subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", str(macro)],
+                               env=env, cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               start_new_session=True)
+    try:
+        process.wait(timeout=GUI_TIMEOUT)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)  # xvfb-run, Xvfb and FreeCAD: nothing left running
+        pytest.fail(f"the FreeCAD GUI did not finish in {GUI_TIMEOUT} s")
+    assert out.exists(), "the FreeCAD GUI ended without running the macro"
+    verdict = json.loads(out.read_text())
+    assert verdict["ok"], f"{verdict.get('error')}\nverdict so far: {str(verdict)[:4000]}"
+    return verdict
+
+
 @pytest.fixture
 def run_gui(tmp_path):
     """run_gui(body) -> dict: run `body` (Python, sets keys of `verdict`) inside the FreeCAD GUI."""
-    if shutil.which("xvfb-run") is None or shutil.which("freecad") is None:
-        pytest.fail("the GUI tier needs xvfb-run and freecad (make deps installs them)")
-
-    def run(body):
-        out, macro = tmp_path / "verdict.json", tmp_path / "macro.py"
-        macro.write_text(MACRO.format(root=ROOT, out=str(out), body=textwrap.indent(textwrap.dedent(body), " " * 8)))
-        home = tmp_path / "home"
-        home.mkdir(exist_ok=True)
-        env = dict(os.environ, HOME=str(home), QTWEBENGINE_DISABLE_SANDBOX="1")
-        process = subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", str(macro)],
-                                   env=env, cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                                   start_new_session=True)
-        try:
-            process.wait(timeout=GUI_TIMEOUT)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)  # xvfb-run, Xvfb and FreeCAD: nothing left running
-            pytest.fail(f"the FreeCAD GUI did not finish in {GUI_TIMEOUT} s")
-        assert out.exists(), "the FreeCAD GUI ended without running the macro"
-        verdict = json.loads(out.read_text())
-        assert verdict["ok"], f"{verdict.get('error')}\nverdict so far: {str(verdict)[:4000]}"
-        return verdict
-
-    return run
+    return lambda body: run_macro(body, tmp_path)

@@ -4,9 +4,9 @@ FreeCADGui, QtCore, QtGui, QtWidgets, shiboken2, the main `window` and, for rety
 
 settle() runs the event loop a few rounds; key(widget, code, text, modifiers) sends a key press
 and release; retype(name, text) selects all in the task panel's field `name` (Ctrl+A) and types
-`text` key by key (Qt's key codes are ASCII upper case); press(widget) clicks the middle of a
-widget (press and release); button(text) is the visible dialog button of that text, and
-click(text) presses it and settles.
+`text` key by key (Qt's key codes are ASCII upper case); clear(name) selects all in it and deletes
+it (Backspace); press(widget) clicks the middle of a widget (press and release); button(text) is
+the visible dialog button of that text, and click(text) presses it and settles.
 """
 
 EVENTS = '''
@@ -23,6 +23,12 @@ def retype(name, text):
     key(widget, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)
     for char in text:
         key(task_panel.shown().field(name), ord(char.upper()), char)
+    settle()
+def clear(name):
+    widget = task_panel.shown().field(name)
+    widget.setFocus()
+    key(widget, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)
+    key(task_panel.shown().field(name), QtCore.Qt.Key_Backspace)
     settle()
 def press(target):
     centre = QtCore.QPointF(target.rect().center())

@@ -123,18 +123,18 @@ engagement.ViewObject.Proxy.doubleClicked(engagement.ViewObject)  # as a double-
 FreeCADGui.updateGui()
 panel = task_panel.shown()
 ok = lambda: panel.buttons.button(QtWidgets.QDialogButtonBox.Ok).isEnabled()
-verdict["panel_open"] = [panel is not None, ok(), panel.message.text(), panel.field("Diameter").property("rawValue"),
-                         panel.field("Inclination").property("rawValue")]
-panel.field("Diameter").setProperty("rawValue", -3.0)
+verdict["panel_open"] = [panel is not None, ok(), panel.message.text(), panel.number("Diameter"),
+                         panel.number("Inclination")]
+panel.set_number("Diameter", -3.0)
 FreeCADGui.updateGui()
 verdict["panel_bad"] = [ok(), panel.message.text(), bool(panel.field("Diameter").styleSheet()),
                         bool(panel.field("Flutes").styleSheet()), panel.accept()]
 for folder in {folders!r}:
     grab_screen(os.path.join(folder, "task_panel_invalid.png"))
     shots.append(os.path.join(folder, "task_panel_invalid.png"))
-panel.field("Diameter").setProperty("rawValue", 12.0)
-panel.field("Inclination").setProperty("rawValue", 5.0)
-panel.field("PhiStep").setProperty("rawValue", 2.0)
+panel.set_number("Diameter", 12.0)
+panel.set_number("Inclination", 5.0)
+panel.set_number("PhiStep", 2.0)
 FreeCADGui.updateGui()
 verdict["panel_good"] = [ok(), panel.message.text()]
 verdict["accepted"] = panel.accept()
@@ -150,7 +150,7 @@ verdict["edit_undone"] = [engagement.Inclination.Value, engagement.Instants, eng
 undo_before = list(doc.UndoNames)
 FreeCADGui.ActiveDocument.setEdit(engagement, 0)
 FreeCADGui.updateGui()
-task_panel.shown().field("Inclination").setProperty("rawValue", 3.0)
+task_panel.shown().set_number("Inclination", 3.0)
 task_panel.shown().reject()
 FreeCADGui.updateGui()
 verdict["edit_cancelled"] = [engagement.Inclination.Value, engagement.State, list(doc.UndoNames) == undo_before,
@@ -211,8 +211,7 @@ panel = task_panel.shown()
 verdict["new_panel"] = [ok(), panel.message.text(), [o.Name for o in doc2.Objects]]
 for name, value in (("Diameter", 12.0), ("Flutes", 2), ("FluteLength", 30.0), ("FeedPerTooth", 0.1),
                     ("Inclination", 10.0), ("PhiStep", 5.0)):
-    widget = panel.field(name)
-    widget.setValue(value) if name == "Flutes" else widget.setProperty("rawValue", value)
+    panel.set_number(name, value)
 FreeCADGui.updateGui()
 verdict["new_ok"] = [ok(), panel.message.text(), panel.accept()]
 third = doc2.getObject("Engagement")
@@ -235,11 +234,11 @@ FreeCADGui.Selection.addSelection(stock2); FreeCADGui.Selection.addSelection(pat
 FreeCADGui.runCommand("ABM_ComputeEngagement")
 FreeCADGui.updateGui()
 panel = task_panel.shown()
-panel.field("Flutes").setValue(2)
+panel.set_number("Flutes", 2)
 FreeCADGui.updateGui()
 verdict["apt_panel"] = [[panel.field(n).isEnabled() for n in ("Diameter", "FluteLength", "SpindleSpeed",
                                                                "FeedPerTooth", "Flutes")],
-                        panel.field("Diameter").property("rawValue"), panel.field("FeedPerTooth").property("rawValue"),
+                        panel.number("Diameter"), panel.number("FeedPerTooth"),
                         panel.fixed.text()]
 panel.reject()
 for folder in {folders!r}:
@@ -364,7 +363,7 @@ def test_commands_on_model_test_1_task_panel_dock_validate_undo_and_errors(tmp_p
     assert verdict["ambiguous"]
     assert "ABM: 2 stocks in the document: select the one to use" in verdict["report_errors"]
     # the task panel of a new engagement: OK only once the required values are typed
-    assert verdict["new_panel"] == [False, "Tool diameter is required: the toolpath file does not give it.",
+    assert verdict["new_panel"] == [False, "Tool diameter is required: the field is empty.",
                                     ["Stock", "Toolpath", "Engagement"]]
     assert verdict["new_ok"] == [True, "", True]
     assert verdict["imported"][:3] == [["Up-to-date"]] * 3

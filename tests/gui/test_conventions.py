@@ -110,8 +110,7 @@ FreeCADGui.Selection.clearSelection()
 FreeCADGui.runCommand("ABM_ComputeEngagement")
 settle()
 panel = task_panel.shown()
-verdict["new_panel"] = [panel.field(name).property("rawValue") if name != "Flutes" else panel.field(name).value()
-                        for name in ("Diameter", "Flutes", "PhiStep", "FluteLength")]
+verdict["new_panel"] = [panel.number(name) for name in ("Diameter", "Flutes", "PhiStep", "FluteLength")]
 verdict["labels"] = sorted(label.text() for label in panel.form.findChildren(QtGui.QLabel))
 panel.reject()
 settle()
@@ -151,9 +150,9 @@ def test_shortcuts_preferences_and_translation_in_the_gui(tmp_path, run_gui):
     shortcuts = verdict["shortcuts"]
     assert all(shortcuts[name] for name in NAMES) and len(set(shortcuts.values())) == len(NAMES), shortcuts
     # typed into the page and saved, read by a new engagement's task panel (the required flute length
-    # left unset at 0: the panel asks for it)
+    # left unset at 0: its field empty, the panel asks for it)
     assert verdict["stored"] == [10.0, 3, 15.0, "plasma"]
-    assert verdict["new_panel"] == [10.0, 3, 15.0, 0.0]
+    assert verdict["new_panel"] == [10.0, 3, 15.0, None]
     # the colour map of the preferences on the surface, every face's colour on it (not on viridis)
     count, plasma, viridis, legend = verdict["colour_map"]
     assert count > 100 and plasma and not viridis and legend == "plasma"

@@ -30,17 +30,17 @@ verdict["off"] = [panel.field("Material").isEnabled(), panel.field("Ktc").isEnab
                   panel.field("ImmersionEnd").isEnabled()]
 panel.field("Forces").setChecked(True)
 panel.field("Material").setCurrentText("al7075-t6")
-panel.field("ImmersionEnd").setProperty("rawValue", 200.0)
+panel.set_number("ImmersionEnd", 200.0)
 FreeCADGui.updateGui()
 verdict["bad"] = [ok(), panel.message.text(), bool(panel.field("ImmersionEnd").styleSheet()),
-                  panel.field("Ktc").value(), panel.field("Ktc").isEnabled()]
-panel.field("ImmersionEnd").setProperty("rawValue", 120.0)
-panel.field("HelixAngle").setProperty("rawValue", 95.0)
+                  panel.number("Ktc"), panel.field("Ktc").isEnabled()]
+panel.set_number("ImmersionEnd", 120.0)
+panel.set_number("HelixAngle", 95.0)
 FreeCADGui.updateGui()
 verdict["bad_helix"] = [ok(), panel.message.text(), bool(panel.field("HelixAngle").styleSheet())]
-panel.field("HelixAngle").setProperty("rawValue", 0.0)
+panel.set_number("HelixAngle", 0.0)
 panel.field("Material").setCurrentText("custom")
-panel.field("Ktc").setValue(-5.0)
+panel.set_number("Ktc", -5.0)
 FreeCADGui.updateGui()
 verdict["bad_ktc"] = [ok(), panel.message.text(), bool(panel.field("Ktc").styleSheet())]
 panel.field("Material").setCurrentText("al7075-t6")

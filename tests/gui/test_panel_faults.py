@@ -72,7 +72,7 @@ settle()
 before = snapshot()
 panel = open_panel()
 retype("Diameter", "500")
-verdict["typed_500"] = [panel.field("Diameter").property("rawValue"), button("OK").isEnabled()]
+verdict["typed_500"] = [panel.number("Diameter"), button("OK").isEnabled()]
 click("OK")
 verdict["failed_ok"] = [task_panel.shown() is panel, bool(panel.message.text()), "Invalid" in engagement.State]
 click("Cancel")
@@ -117,7 +117,7 @@ start = len(report.toPlainText())
 panel = open_panel()
 retype("Diameter", "1x2")
 verdict["letters_panel"] = [task_panel.shown() is panel, task_panel.shown() is None]
-verdict["letters"] = [panel.field("Diameter").property("rawValue"), panel.message.text(), button("OK").isEnabled(),
+verdict["letters"] = [panel.field("Diameter").text(), panel.message.text(), button("OK").isEnabled(),
                       bool(panel.field("Diameter").styleSheet())]
 key(task_panel.shown().field("Diameter"), QtCore.Qt.Key_Return, "\\r")
 settle()
@@ -230,7 +230,8 @@ def test_typed_keys_cancel_undo_letters_width_and_selection(verdict):
     assert redone["result"] == edited["result"] and redone["dock"] == edited["dock"]
     assert clean(verdict["report_undo"]), verdict["report_undo"]
     # (d) letters: the value is refused in plain words, the field marked, OK and Enter do nothing
-    raw, message, ok, marked = verdict["letters"]
+    shown, message, ok, marked = verdict["letters"]
+    assert shown == "1x2"  # kept as typed
     assert message == ("Tool diameter: “1x2” is not a length: type a number, with a unit if you like "
                        "(12 mm, 0.5 in).")
     assert not ok and marked
@@ -289,8 +290,8 @@ def test_panel_opens_where_deleted_widgets_left_their_wrappers(tmp_path, run_gui
     # (the CI failure: after an OK, the next setEdit opened no panel): the panel lets the stale wrappers
     # go, opens, checks typed text and applies it
     verdict = run_body(tmp_path, run_gui, STALE_BODY)
-    assert verdict["stale"] == 2 * 12  # 12 quantity fields (lengths and angles) and their line edits
-    assert verdict["field"] == ["QAbstractSpinBox", "QLineEdit"]
+    assert verdict["stale"] == 2 * 12  # 12 fields of lengths and angles and their line edits
+    assert verdict["field"] == ["NumberField", "QLineEdit"]  # the panel's own field found, not a button box
     assert verdict["letters"] == ["Tool diameter: “1x2” is not a length: type a number, with a unit if you like "
                                   "(12 mm, 0.5 in).", False]
     assert verdict["applied"] == [True, 11.0, ["Up-to-date"]]
