@@ -4,7 +4,7 @@ PYTHON := /usr/bin/python3
 DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth
 OUT := build
 
-.PHONY: deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
+.PHONY: figures deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -96,6 +96,10 @@ models: deps
 install:
 	mkdir -p $(HOME)/.local/share/FreeCAD/Mod
 	ln -sfn $(CURDIR) $(HOME)/.local/share/FreeCAD/Mod/ABM
+
+# The docs' drawn figures (docs/images/frames_feed.png ...), from the engine's own frames.
+figures: deps
+	$(PYTHON) docs/make_figures.py docs/images
 
 # The README's GUI screenshots (docs/images/gui_*.png): model test 1 in the FreeCAD GUI under Xvfb.
 screenshots: deps

@@ -35,7 +35,8 @@ from typing import Optional
 
 import numpy as np
 
-from .engine import engage, flute_engagement
+from .engine import flute_engagement
+from .engine.stocks import engage_stock
 from .engine.model import finite_number
 
 #: Default immersion (deg): a flute cuts over the leading half, full slotting.
@@ -126,7 +127,8 @@ def flute_angles(phi_deg, flutes):
 def flute_lengths(stock, tool, toolpath, settings, *, first=None, lengths_at=None):
     """(Z, m, p) engaged length (mm) of each straight flute at every CL point and angle of settings.phi.
 
-    Flute k is the edge at φ + 360·k/Z, solved by the engine. first: the (m, p) lengths of
+    Flute k is the edge at φ + 360·k/Z, solved by the engine of `stock` (a Staircase or a
+    TerracedStock, engine.stocks.engage_stock). first: the (m, p) lengths of
     flute 1 when already computed (an Engagement's length), to save that solve. lengths_at:
     a function of the flute's Settings giving its (m, p) lengths another way (e.g. against
     the in-process stock), instead of the engine's engage on `stock`.
@@ -141,7 +143,8 @@ def flute_lengths(stock, tool, toolpath, settings, *, first=None, lengths_at=Non
         shifted = dataclasses.replace(settings, phi_start=start, phi_end=start + settings.phi_step * (phi.size - 1))
         if shifted.phi.size != phi.size:
             raise ValueError(f"flute {k + 1}: {shifted.phi.size} angles instead of {phi.size}")
-        lengths.append(engage(stock, tool, toolpath, shifted).length if lengths_at is None else lengths_at(shifted))
+        lengths.append(engage_stock(stock, tool, toolpath, shifted).length if lengths_at is None else
+                       lengths_at(shifted))
     return np.stack(lengths)
 
 

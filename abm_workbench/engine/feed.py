@@ -9,10 +9,11 @@ Shapes: m CL points; directions (m, 3) of the motion arriving at each point (any
 where there is none); α (m,) degrees; inclination (m,) degrees.
 
 Rules, in order:
-- a point with no motion arriving (the first of a pass, a move of zero length) takes the
-  motion of the move leaving it, or further on: the first motion that follows;
-- a move with no motion in plan view (a plunge along z) keeps the previous point's α; before
-  any motion in plan view, the first α that follows; a path with none at all has α = 0;
+- the move ending at a CL point gives its feed (an arc or curve: its tangent there); the first
+  CL point of a cut, where no cutting move ends, takes the move leaving it;
+- a move of zero length keeps the previous point's feed, and a move with no motion in plan view
+  (a plunge along z) the previous point's α; before any motion (in plan view), the first that
+  follows; a path with none at all has α = 0;
 - the inclination is the angle between the motion and the plane square to the tool axis,
   asin |f̂·w|: the paper's inclination α (its tool leans by α towards the feed), for any feed.
   The chip a side edge cuts is the feed's part square to the axis, f·cos(inclination).
@@ -27,13 +28,18 @@ PLAN_FRACTION = 1e-7
 
 
 def path_directions(points, starts=None):
-    """(m, 3) chord of the move arriving at each of `points` (m, 3) mm; zero for the first point
-    and wherever `starts` (m,) bool marks a point no cutting move arrives at."""
+    """(m, 3) chord of the move arriving at each of `points` (m, 3) mm; zero for the first point (the
+    rules take the motion that follows), and wherever `starts` (m,) bool marks the first point of a
+    cut (no cutting move arrives there) the chord of the move leaving it."""
     points = np.asarray(points, dtype=float).reshape(-1, 3)
     directions = np.zeros_like(points)
-    directions[1:] = np.diff(points, axis=0)
+    chords = np.diff(points, axis=0)
+    directions[1:] = chords
     if starts is not None:
-        directions[np.asarray(starts, dtype=bool).reshape(-1)] = 0.0
+        first = np.flatnonzero(np.asarray(starts, dtype=bool).reshape(-1))
+        directions[first] = 0.0
+        leaving = first[first < len(chords)]
+        directions[leaving] = chords[leaving]
     return directions
 
 

@@ -296,7 +296,7 @@ class EngagementFeature(FeatureProxy):
         window = y_window(obj, stock_obj, walls or stock_obj.WallModel, toolpath, tool)
         stock = stock_proxy.load(stock_obj, walls, window, hints.frame)
         try:
-            check_model(stock, forces=obj.Forces, helix=tool.helix)
+            check_model(stock, helix=tool.helix)
         except ParameterError as error:
             raise property_words(obj.Label, error) from None
         return EngagementInputs(toolpath, hints, parameters, tool, settings, stock)

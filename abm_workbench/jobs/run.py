@@ -106,15 +106,12 @@ def in_process_sweep(prepared, method="abm", warn=None):
     return (swept_pieces(moves, job.sweep_tolerance), rows), ""
 
 
-def check_model(stock, forces=False, method="abm", helix=0.0):
+def check_model(stock, method="abm", helix=0.0):
     """ParameterError where a run needs the staircase model and `stock` (a Stock) is a general 2.5D one."""
     if stock.staircase is not None:
         return
     if helix:
         raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
-    if forces:
-        raise ParameterError("forces", "need a staircase stock: the force model does not take a general 2.5D stock "
-                                       f"yet ({stock.source} is one: {stock.reason or 'not a staircase'})")
     if method != "abm":
         raise ParameterError("method", f"the Z-map baseline needs a staircase stock; {stock.source} is a general "
                                        "2.5D stock")
@@ -408,7 +405,7 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
         outputs.append(os.path.splitext(plot)[0] + ".forces.png")
     check_outputs(outputs, _inputs(job))
     stock, _ = load_job_stock(prepared)
-    check_model(stock, prepared.force_model is not None, method.name, tool.helix)
+    check_model(stock, method.name, tool.helix)
     in_process, model_note = in_process_sweep(prepared, method.name, warn)
 
     started = time.perf_counter()
@@ -505,7 +502,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
         warn(f"{job.toolpath}: {model_note}; validating against the stock as given")
     check_report_outputs(job, report, fcstd)
     stock, stock_seconds = load_job_stock(prepared)
-    check_model(stock, prepared.force_model is not None, helix=tool.helix)
+    check_model(stock, helix=tool.helix)
     started = time.perf_counter()
     solid = stock.solid()
     stock_seconds += time.perf_counter() - started
@@ -639,7 +636,7 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
         check_report_outputs(job, report)
     check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
     stock, _ = load_job_stock(prepared)
-    check_model(stock, forces=True, helix=tool.helix)
+    check_model(stock, helix=tool.helix)
     in_process, model_note = in_process_sweep(prepared, warn=warn)
     if model_note:
         warn(f"{model_note}: the feeds are scheduled against the stock as given")

@@ -26,7 +26,7 @@ def test_summary_lines_per_operation(capsys):
     lines = out.splitlines()
     assert lines[0].endswith("nx_two_ops.clsf: 3 operation(s), 2 for the engine; units mm")
     cut = len(read_program(FIXTURES / "nx_two_ops.clsf").operations[0].lines)  # the summary reports the reader's count
-    assert lines[1].startswith(f"operation 1 (CAVITY_MILL): flat-end mill D10 mm; {cut} CL points cut, 1 rapid, "
+    assert lines[1].startswith(f"operation 1 (CAVITY_MILL): flat-end mill D10 mm (EM10); {cut} CL points cut, 1 rapid, "
                                "0 canned-cycle; 1 arcs and 1 curves interpolated; axis 180..180 deg from part Z; "
                                "frame MSYS line 3; units mm; spindle 6000 rpm")
     assert ("not for the engine: ball mill D6 R3 mm: a milling tool the ABM engine does not compute yet" in lines[2])
@@ -42,7 +42,8 @@ def test_csv_out_is_read_back(tmp_path, capsys, frame):
     assert status == 0 and text.splitlines()[-1] == f"abm: wrote {out}"
     source = read_program(FIXTURES / "catia_setups.aptsource")
     header = out.read_text().splitlines()[0]
-    assert header == "operation,name,tool,diameter,corner_radius,flute_length,x,y,z,i,j,k,feed_rate,feed_unit,line"
+    assert header == ("operation,name,tool,diameter,corner_radius,flute_length,x,y,z,i,j,k,feed_x,feed_y,feed_z,"
+                      "feed_rate,feed_unit,line")
     back = read_program(out)
     assert [op.name for op in back.operations] == [op.name for op in source.operations]
     for mine, theirs in zip(back.operations, source.operations):
@@ -50,6 +51,9 @@ def test_csv_out_is_read_back(tmp_path, capsys, frame):
         np.testing.assert_array_equal(mine.points_file, expected)
         assert (mine.tool.kind, mine.tool.diameter, mine.feed.tolist(), mine.feed_unit) == (
             theirs.tool.kind, theirs.tool.diameter, theirs.feed.tolist(), theirs.feed_unit)
+        if frame == "part" and mine.number == 1:  # the CL file's frames: its feed directions kept (its part frame
+            # is the setup's moved, so both engine frames are the same)
+            np.testing.assert_allclose(mine.toolpath().alpha, theirs.toolpath().alpha, rtol=0, atol=1e-9)
     first = load_toolpath(out, operation=1)
     op = source.operations[0]
     np.testing.assert_array_equal(first.cl, op.points_part if frame == "part" else op.points_file)

@@ -31,10 +31,33 @@ def test_engage_on_a_terraced_stock_writes_the_terraced_engine_results(tmp_path,
 
 @pytest.mark.parametrize("options, message", [
     (["--helix", "30"], "--helix: needs a staircase stock"),
-    (["--forces", "--material", "al7075-t6"], "--forces: need a staircase stock"),
     (["--method", "zmap"], "--method: the Z-map baseline needs a staircase stock"),
 ])
 def test_what_needs_a_staircase_is_refused_on_a_terraced_stock(tmp_path, capsys, options, message):
     assert cli.main(BASE + ["--out", str(tmp_path / "R.csv")] + options) == 2
     assert capsys.readouterr().err.startswith(f"abm: error: {message}")
     assert os.listdir(tmp_path) == []
+
+
+def test_forces_and_schedule_take_a_terraced_stock(tmp_path, capsys):
+    """The force model and the feed schedule run on a general 2.5D stock as on a staircase: the forces are
+    the API's (flute lengths by the terraced engine), and the scheduled feeds keep the force limit."""
+    from abm_workbench.forces import material, pass_forces
+
+    stock = load_terraced(os.path.join(MODEL, "stock.json"))
+    toolpath = load_toolpath(os.path.join(MODEL, "toolpath.csv"))
+    settings = CutSettings(0.1, 10, 0, 180, 5, 4000)
+    forces = pass_forces(stock, Tool(10, 2, 25), toolpath, settings, material("al7075-t6"))
+    assert forces.peak.max() > 0
+    assert cli.main(BASE + ["--out", str(tmp_path / "R.csv"), "--forces", "--material", "al7075-t6",
+                            "--stock-model", "initial"]) == 0
+    written = read_results(tmp_path / "R.csv")
+    np.testing.assert_allclose(written["fx"], forces.xyz[..., 0].reshape(-1), atol=1e-9)
+    limit = 0.7 * forces.peak.max()
+    out = tmp_path / "P.csv"
+    assert cli.main(["schedule", *BASE[1:], "--material", "al7075-t6", "--max-force", f"{limit!r}",
+                     "--stock-model", "initial", "--out", str(out)]) == 0
+    feed = np.loadtxt(out, delimiter=",", skiprows=1, usecols=-2)  # feed_per_tooth, then feed_mm_min
+    again = pass_forces(stock, Tool(10, 2, 25), toolpath, settings, material("al7075-t6"), feed=feed)
+    assert (again.peak <= limit * (1 + 1e-9)).all() and (feed < 0.1).any()
+    capsys.readouterr()

@@ -299,14 +299,16 @@ class _Reader:
         if name:
             self.op.name = name
 
-    def set_tool(self, tool, line):
-        """Make `tool` the tool in force, named by a tool name just before it. Another tool after the
-        operation has moved starts a new operation; the same tool again leaves the moved operation's own
-        as it is (a repeated tool block's flute length is the next operation's), but gives it a flute
-        length it lacks."""
+    def set_tool(self, tool, line, describes=True):
+        """Make `tool` the tool in force, named by a tool name given since the last motion (a record that
+        `describes` the tool, CUTTER or TLDATA, takes the name for good). Another tool after the operation
+        has moved starts a new operation; the same tool again leaves the moved operation's own as it is
+        (a repeated tool block's flute length is the next operation's), but gives it a flute length it
+        lacks."""
         if self.tool_name is not None:
             tool = tool.named(*self.tool_name)
-            self.tool_name = None
+            if describes:
+                self.tool_name = None
         self.tool = tool
         if not self.op.moved:
             self.op.tool = tool
@@ -504,7 +506,8 @@ class _Reader:
         if self.cycle not in self.op.cycles:
             self.op.cycles.append(self.cycle)
         if self.cycle in ("TAP", "RIGID") and self.tool.kind != "tap":
-            self.set_tool(self.tool.with_kind("tap", f"CYCLE/{self.cycle} line {record.line}"), record.line)
+            self.set_tool(self.tool.with_kind("tap", f"CYCLE/{self.cycle} line {record.line}"), record.line,
+                          describes=False)
 
     # Modal settings.
 
@@ -641,9 +644,10 @@ class _Reader:
         kind = next((word for word in words if word in KIND_WORDS), None)
         self.kind_word = kind
         if kind is not None:
-            self.set_tool(self.tool.with_kind(KIND_WORDS[kind], f"{record.word} line {record.line}"), record.line)
+            self.set_tool(self.tool.with_kind(KIND_WORDS[kind], f"{record.word} line {record.line}"), record.line,
+                          describes=False)
         else:
-            self.set_tool(self.tool, record.line)
+            self.set_tool(self.tool, record.line, describes=False)
 
     def on_load(self, record):
         """LOAD/TOOL,n (NX): a tool change."""
@@ -659,7 +663,7 @@ class _Reader:
             self.warn(record.line, record.word, f"{','.join(record.args)!r} is no flute length; not read")
             return
         self.set_tool(self.tool.with_flute_length(numbers[0] * self.scale, f"{record.word} line {record.line}"),
-                      record.line)
+                      record.line, describes=False)
 
     def on_insert(self, record):
         """INSERT/text: a tool name when a tool record follows (SOLIDWORKS CAM ``INSERT/[HOLDER=…] name``)."""
@@ -673,7 +677,7 @@ class _Reader:
         """TPRINT/text (CATIA): the name of the tool in force."""
         self.count(self.ignored, record)
         self.tool_name = (record.rest.strip(), f"TPRINT line {record.line}")
-        self.set_tool(self.tool, record.line)
+        self.set_tool(self.tool, record.line, describes=False)
 
     # Frames and operations.
 

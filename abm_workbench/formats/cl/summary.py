@@ -1,8 +1,9 @@
 """What the ``toolpath`` command prints and writes: one line per operation, every cutting CL point as CSV.
 
 CSV columns: ``operation`` (1-based), ``name`` (the CAM operation's name), ``tool`` (kind),
-``diameter``, ``corner_radius`` (mm, empty when unknown), ``x, y, z`` (mm), ``i, j, k`` (unit
-tool axis), ``feed_rate`` and ``feed_unit`` (MMPM mm/min or MMPR mm/rev, empty before any
+``diameter``, ``corner_radius``, ``flute_length`` (mm, empty when unknown), ``x, y, z`` (mm),
+``i, j, k`` (unit tool axis), ``feed_x, feed_y, feed_z`` (the unit direction of the tool tip's
+motion arriving at the point: an arc's tangent; 0, 0, 0 where none), ``feed_rate`` and ``feed_unit`` (MMPM mm/min or MMPR mm/rev, empty before any
 feed), ``line`` (the CL file's line of the move). Frame "part" (MSYS / CSYS / ROTABL applied)
 or "file" (as written, in mm). :mod:`abm_workbench.formats.toolpath_csv` reads it back.
 """
@@ -17,7 +18,7 @@ from .. import replacing
 
 FRAMES = ("part", "file")
 COLUMNS = ("operation", "name", "tool", "diameter", "corner_radius", "flute_length", "x", "y", "z", "i", "j", "k",
-           "feed_rate", "feed_unit", "line")
+           "feed_x", "feed_y", "feed_z", "feed_rate", "feed_unit", "line")
 
 
 def _number(value):
@@ -29,16 +30,19 @@ def _number(value):
 
 
 def _coordinates(op, frame):
-    """(points, axes) of `op`'s cutting moves in `frame` ("part" or "file")."""
+    """(points, axes, unit directions of motion) of `op`'s cutting moves in `frame` ("part" or "file")."""
     if frame == "file":
-        return op.points_file, op.axes_file
-    return op.points_part, op.axes_part
+        points, axes, directions = op.points_file, op.axes_file, op.directions_part @ op.to_part[0]
+    else:
+        points, axes, directions = op.points_part, op.axes_part, op.directions_part
+    length = np.linalg.norm(directions, axis=1)
+    return points, axes, directions / np.where(length > 0.0, length, 1.0)[:, None]
 
 
 def operation_line(op, frame="part", units="mm"):
     """One line of words about operation `op` of a program in `units` as written (see the module
     docstring for `frame`)."""
-    _, axes = _coordinates(op, frame)
+    _, axes, _ = _coordinates(op, frame)
     if len(axes):
         tilt = np.degrees(np.arccos(np.clip(axes[:, 2], -1.0, 1.0)))
         axis = f"axis {tilt.min():.4g}..{tilt.max():.4g} deg from {frame} Z"
@@ -82,13 +86,14 @@ def toolpath_csv_text(program, frame="part"):
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(COLUMNS)
     for op in program.operations:
-        points, axes = _coordinates(op, frame)
+        points, axes, directions = _coordinates(op, frame)
         head = [str(op.number), op.name, op.tool.kind, _number(op.tool.diameter), _number(op.tool.corner_radius),
                 _number(op.tool.flute_length)]
         unit = op.feed_unit or ""
-        for point, axis, feed, line in zip(points, axes, op.feed, op.lines):
+        for point, axis, direction, feed, line in zip(points, axes, directions, op.feed, op.lines):
             rate = _number(feed)
-            writer.writerow(head + [_number(v) for v in (*point, *axis)] + [rate, unit if rate else "", str(line)])
+            writer.writerow(head + [_number(v) for v in (*point, *axis, *direction)] + [rate, unit if rate else "",
+                                                                                         str(line)])
     return buffer.getvalue()
 
 
