@@ -19,7 +19,7 @@ innermost (the table that carries the part); CAMWorks writes the angles in radia
 Records the engine does not need (spindle, coolant, a tool description it cannot read ...) never
 stop the reading: a record of them that cannot be read is skipped with a warning naming its line.
 
-Operations: a new one starts at ``TOOL PATH`` (NX, with the operation's name), ``LOADTL`` /
+Operations: a new one starts at ``TOOL PATH`` (NX, with the operation's name), ``TRNTYP/WORLD`` (SOLIDWORKS CAM), ``LOADTL`` /
 ``LOAD/TOOL``, a CATIA ``$$ OPERATION NAME : ...`` comment (or ``PPRINT``), a Creo
 ``$$-> FEATNO / n`` comment, a tool record describing another tool, and a frame record
 (``MSYS``, ``CSYS``, ``ROTABL``) that changes the frame -- each only once the operation so far
@@ -724,9 +724,12 @@ class _Reader:
         self.set_frame(record.line)
 
     def on_trntyp(self, record):
-        """TRNTYP/WORLD (SOLIDWORKS CAM): the GOTOs that follow are in the world frame; CSYS names setups."""
+        """TRNTYP/WORLD (SOLIDWORKS CAM, at the start of each of its operations): a new operation, whose GOTOs
+        are in the world frame; the CSYS that follows names its setup."""
         words = [arg.upper() for arg in record.args if _WORD.fullmatch(arg)]
         self.world = record.line if "WORLD" in words else None
+        if self.world is not None:
+            self.boundary(record.line)
         if self.world is None:
             self.setup, self.setup_words = None, ""
 
