@@ -33,8 +33,10 @@ from .walls import Wall
 SURFACES = ("none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side", "immersion_end", "bottom",
             "flute_start", "machined")
 #: Names of the Table 1 cases; results store indices into this tuple.
-#: "2.5D": an engaged instant on a terraced stock (terraced.engage_terraced), where Table 1 does not apply.
-CASES = ("none", "A.1", "A.2", "A.3", "A.4", "B.1", "B.2", "B.3", "B.4", "B.5", "B.6", "multi", "2.5D")
+#: "2.5D": an engaged instant on a terraced stock (terraced.engage_terraced), where Table 1 does not apply;
+#: "corner": an engaged instant of a tool with a corner radius (profile.profile_engagement), Table 1 being
+#: for flat-end mills.
+CASES = ("none", "A.1", "A.2", "A.3", "A.4", "B.1", "B.2", "B.3", "B.4", "B.5", "B.6", "multi", "2.5D", "corner")
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = range(6)
 _CASE = {name: i for i, name in enumerate(CASES)}
@@ -54,7 +56,8 @@ class Engagement:
     Per CL point, (m,): depth_of_cut (z span from lowest LEP to highest UEP, NaN if none).
     Optional, (m, p): lep_surface, lep_section, lep_wall, the LEP's labels as uep_surface,
     uep_section and uep_wall give the UEP's; an engine that does not label the LEP leaves them
-    out (None), and they are then "none" (0) and −1 everywhere.
+    out (None), and they are then "none" (0) and −1 everywhere. end_length: the engaged length of
+    the end cutting edge (mm, profile.end_lengths), NaN where an engine does not compute it.
     """
 
     phi: np.ndarray
@@ -75,10 +78,11 @@ class Engagement:
     lep_surface: np.ndarray = None
     lep_section: np.ndarray = None
     lep_wall: np.ndarray = None
+    end_length: np.ndarray = None
 
     def __post_init__(self):
         for name, fill, dtype in (("lep_surface", _NONE, np.int8), ("lep_section", -1, np.int32),
-                                  ("lep_wall", -1, np.int32)):
+                                  ("lep_wall", -1, np.int32), ("end_length", np.nan, float)):
             if getattr(self, name) is None:
                 object.__setattr__(self, name, np.full(np.shape(self.length), fill, dtype=dtype))
 
@@ -213,10 +217,11 @@ def _edge_components(base, direction):
     return x0, y0, z0, dx, dy, dz
 
 
-def finished_engagement(phi, settings, out, lep_xyz, uep_xyz, inclination):
+def finished_engagement(phi, settings, out, lep_xyz, uep_xyz, inclination, *, axial=None, end_length=None):
     """The Engagement of filled per-instant arrays (as empty_results made them): cut thickness (with
     `inclination` (m,) deg, each CL point's), area, depth of cut per CL point and engagement segments
-    derived from them."""
+    derived from them. axial: (m, p) the engaged edge's extent along the axis (mm) where it differs from
+    its length (a corner, profile.py), for the area; end_length (m, p) mm or None (not computed)."""
     h = cut_thickness(phi, settings.feed_per_tooth, inclination)
     engaged = out["length"] > 0.0
     with np.errstate(invalid="ignore"):
@@ -224,8 +229,9 @@ def finished_engagement(phi, settings, out, lep_xyz, uep_xyz, inclination):
         bottom = np.where(engaged, lep_xyz[..., 2], np.inf).min(axis=1)
     depth = np.where(engaged.any(axis=1), top - bottom, np.nan)
     return Engagement(
-        phi=phi, h=h, area=out["length"] * h, lep_xyz=lep_xyz, uep_xyz=uep_xyz, depth_of_cut=depth,
-        segment=_segments(engaged, out["uep_surface"], out["uep_section"], out["uep_wall"]), **out,
+        phi=phi, h=h, area=(out["length"] if axial is None else axial) * h, lep_xyz=lep_xyz, uep_xyz=uep_xyz,
+        depth_of_cut=depth, segment=_segments(engaged, out["uep_surface"], out["uep_section"], out["uep_wall"]),
+        end_length=end_length, **out,
     )
 
 
@@ -276,7 +282,7 @@ def _clip(stock, length, x0, y0, z0, dx, dy, dz, start_labels=False):
     )
     for start, slope, low, high, surface, (wall_low, wall_high), enter_surface in limits:
         flat = np.abs(slope) <= PARALLEL_EPS
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             at_low, at_high = (low - start) / slope, (high - start) / slope
         rising = slope > 0.0
         enter = np.where(flat, np.where((start >= low) & (start <= high), -np.inf, np.inf),
@@ -381,6 +387,7 @@ def _solve_lines(stock, length, x0, y0, z0, dx, dy, dz, intervals=False):
     With `intervals`, also "intervals": the inside pieces the length sums, as an EdgeIntervals.
     """
     n = x0.size
+    dz = dz + 0.0  # −0.0 (a level edge) as +0.0: divisions by it give +inf, as for a rising edge
     if intervals:
         lo, hi, hi_surface, hi_wall, lo_surface, lo_wall = _clip(stock, length, x0, y0, z0, dx, dy, dz, True)
     else:
@@ -451,20 +458,42 @@ def inside_intervals(stock: Staircase, origins, directions, length):
     """Where N edge lines o + l·u, 0 ≤ l ≤ length, lie inside the staircase: the inside pieces
     the engine sums into the length of cut (so `.length` equals engage's length bit for bit).
 
-    origins, directions: (N, 3) points at l = 0 and unit directions (the edge rises: u_z > 0);
+    origins, directions: (N, 3) points at l = 0 and unit directions (any: a line that falls,
+    u_z < 0, is solved from its other end, as the rising line it is read backwards);
     length: flute length (mm). Pieces of one line that touch share a breakpoint (a wall
     crossing or the height of another section's top); the labels there name that breakpoint.
-    The start of a piece at l = 0 is labelled flute_end; at the base or a y limit, stock_side.
-    Returns an EdgeIntervals.
+    An end of a piece at either end of the line is labelled flute_end; at the base or a y limit,
+    stock_side. Returns an EdgeIntervals.
     """
     keep_freed_memory()
     origins = np.asarray(origins, dtype=float).reshape(-1, 3)
     directions = np.asarray(directions, dtype=float).reshape(-1, 3)
     if origins.shape != directions.shape:
         raise ValueError(f"origins {origins.shape} and directions {directions.shape} must have the same shape (N, 3)")
+    length = float(length)
+    falling = directions[:, 2] < 0.0
+    if falling.any():
+        origins = np.where(falling[:, None], origins + length * directions, origins)
+        directions = np.where(falling[:, None], -directions, directions)
     # Each component contiguous (a column's stride slows every later step: see _edge_components).
-    return _solve_lines(stock, float(length), *np.ascontiguousarray(origins.T), *np.ascontiguousarray(directions.T),
-                        intervals=True)["intervals"]
+    found = _solve_lines(stock, length, *np.ascontiguousarray(origins.T), *np.ascontiguousarray(directions.T),
+                         intervals=True)["intervals"]
+    return reversed_lines(found, falling, length) if falling.any() else found
+
+
+def reversed_lines(intervals, which, length):
+    """EdgeIntervals with the lines `which` (N,) bool read backwards: l -> length − l, each piece's
+    ends and labels swapped, the pieces of each line back in order."""
+    flip = which[intervals.rows]
+    start = np.where(flip, length - intervals.end, intervals.start)
+    end = np.where(flip, length - intervals.start, intervals.end)
+    labels = [np.where(flip, b, a) for a, b in (
+        (intervals.start_surface, intervals.end_surface), (intervals.start_section, intervals.end_section),
+        (intervals.start_wall, intervals.end_wall), (intervals.end_surface, intervals.start_surface),
+        (intervals.end_section, intervals.start_section), (intervals.end_wall, intervals.start_wall))]
+    order = np.lexsort((start, intervals.rows))
+    return EdgeIntervals(intervals.n_rows, intervals.rows[order], start[order], end[order],
+                         *(label[order] for label in labels))
 
 
 def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
@@ -485,7 +514,7 @@ def _exact_crossings(stock, rows, walls, lo, hi, x0, y0, dx, dy):
 def _single_section(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, left_of, *_, starts=None):
     """Engagement of lines whose clipped segment [lo, hi] stays in section left_of: inside from
     lo up to that section's top or hi, whichever comes first (same dict as _solve_lines)."""
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         top = (stock.z_top[np.minimum(left_of, stock.n_sections - 1)] - z0) / dz
     end = np.minimum(hi, top)
     engaged = (hi > lo) & (end - lo > LENGTH_EPS)
@@ -561,7 +590,7 @@ def _single_crossings(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall
             end = hi
         if j > 0:
             section = section - before[j - 1] + side_hi[j - 1]
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             top = (stock.z_top[np.clip(section, 0, stock.n_sections - 1)] - z0) / dz
         inside_end = np.minimum(end, top)
         inside = inside_end - start > LENGTH_EPS
@@ -625,7 +654,7 @@ def _broken_lines(stock, x0, y0, z0, dx, dy, dz, lo, hi, hi_surface, hi_wall, le
     # wholly left of it, over each wall it may cross.
     reach = np.bincount(pair_rows, minlength=n)
     section = left_of[:, None] + np.arange(int(reach.max()) + 1 if n else 1)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         tops = (stock.z_top[np.minimum(section, stock.n_sections - 1)] - z0[:, None]) / dz[:, None]
     tops = np.where((section <= (left_of + reach)[:, None]) & (tops > lo[:, None]) & (tops < hi[:, None]), tops, np.nan)
     columns = [lo[:, None], hi[:, None], tops]

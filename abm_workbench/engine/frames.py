@@ -4,8 +4,9 @@ Angles are in degrees here as at every interface. α turns the paper's frame abo
 direction in plan view (engine.feed): u, v, w are R's columns, w the tool axis, φ measured from
 +v towards +u, so φ = 90° points along the feed. With α = 0 this is the paper's frame, whose
 pass feeds along +x. The tool axis is w = Rz(α)·(sin θ_B, −sin θ_A cos θ_B, cos θ_A cos θ_B);
-θ_A and θ_B are those of the axis turned by −α. An axis with k ≤ 0 points down or sideways and
-has no (θ_A, θ_B) with |θ_A|, |θ_B| < 90°.
+θ_A and θ_B are those of the axis (i, j, k) turned by −α: θ_A = atan2(−j, k) over the whole
+circle, θ_B = asin(i) in [−90°, 90°], so every direction has angles, also k ≤ 0 (a tool pointing
+sideways or down, as on indexed four-axis parts and undercuts).
 """
 
 import numpy as np
@@ -50,9 +51,8 @@ def axis_to_angles(axes, alpha=None):
     """(θ_A, θ_B) in degrees, each (m,), for tool-axis vectors (m, 3), normalised here, in the frames
     turned by α (m,) deg (None: not turned).
 
-    Raises CLPointError (a ValueError) naming the first row whose axis is zero, not finite, or has k ≤ 0
-    (a tool pointing down or sideways cannot be written as Rz(α)·Rx(θ_A)·Ry(θ_B)·e_z with
-    |θ_A|, |θ_B| < 90°).
+    θ_A in (−180°, 180°], θ_B in [−90°, 90°]. Raises CLPointError (a ValueError) naming the first row
+    whose axis is zero or not finite.
     """
     axes = np.asarray(axes, dtype=float)
     if axes.ndim != 2 or axes.shape[1] != 3:
@@ -63,13 +63,6 @@ def axis_to_angles(axes, alpha=None):
         i = int(np.flatnonzero(bad)[0])
         raise CLPointError(i, f"tool axis {axes[i].tolist()} is zero or not finite")
     unit = axes / norm[:, None]
-    down = unit[:, 2] <= 0.0
-    if down.any():
-        i = int(np.flatnonzero(down)[0])
-        raise CLPointError(
-            i, f"tool axis {axes[i].tolist()} has k <= 0; only axes pointing up (k > 0) can be "
-            "expressed as (theta_a, theta_b)"
-        )
     if alpha is not None and np.any(alpha):
         unit = turned_axes(unit, alpha)
     # Contiguous columns: numpy picks its vectorised or its scalar arctan2 (which can differ in the last

@@ -53,13 +53,16 @@ MAX_HELIX = 60.0
 
 @dataclass(frozen=True)
 class Tool:
-    """Flat-end mill: diameter and flute length in mm, number of flutes, helix angle β in deg
-    (0: straight edges; |β| ≤ MAX_HELIX)."""
+    """A milling tool: diameter D = 2R and flute length L in mm, number of flutes, helix angle β in deg
+    (0: straight edges; |β| ≤ MAX_HELIX), corner radius r in mm (0 ≤ r ≤ R): 0 a flat-end mill, R a
+    ball-end mill, between a bull-nose (torus) mill (engine.profile). Helical flutes are for tools
+    without a corner."""
 
     diameter: float
     flutes: int
     flute_length: float
     helix: float = 0.0
+    corner_radius: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "diameter", finite_number("diameter", self.diameter, positive=True))
@@ -73,11 +76,26 @@ class Tool:
             raise ValueError(f"helix must be within [-{MAX_HELIX:g}, {MAX_HELIX:g}] degrees (flat-end mills have "
                              f"helix angles up to about {MAX_HELIX:g}°), got {helix:g}")
         object.__setattr__(self, "helix", helix)
+        corner = finite_number("corner_radius", self.corner_radius)
+        if not 0.0 <= corner <= 0.5 * self.diameter:
+            raise ValueError(f"corner_radius must be within [0, {0.5 * self.diameter:g}] mm (half the diameter: a ball), "
+                             f"got {corner:g}")
+        if corner and helix:
+            raise ValueError("helical flutes on a corner are not computed: a tool with a corner radius needs "
+                             "straight flutes (helix 0)")
+        object.__setattr__(self, "corner_radius", corner)
 
     @property
     def radius(self):
         """R_t = diameter / 2 (mm)."""
         return 0.5 * self.diameter
+
+    @property
+    def kind(self):
+        """"flat", "bull-nose" or "ball", by the corner radius."""
+        if self.corner_radius == 0.0:
+            return "flat"
+        return "ball" if self.corner_radius == self.radius else "bull-nose"
 
 
 @dataclass(frozen=True)
@@ -204,7 +222,8 @@ class Toolpath:
     """CL points of one pass with their tool frames (docs/ENGINE.md, "Frames").
 
     cl: (m, 3) centres of the tool's bottom face (mm), in pass order.
-    theta_a, theta_b: (m,) rotations about x and y (degrees), |θ| < 90, of the frame turned by α.
+    theta_a, theta_b: (m,) rotations about x and y (degrees), |θ_A| ≤ 180, |θ_B| ≤ 90, of the frame turned
+    by α: every tool axis direction, also pointing sideways or down.
     cc: (m, 3) cutter-contact points (mm), or None.
     alpha: (m,) direction of the feed in plan view (degrees from +x towards +y), the turn of
     each CL point's frame about z; None: 0, the paper's pass along +x.
@@ -225,12 +244,12 @@ class Toolpath:
         if cl.shape[0] == 0:
             raise ValueError("a toolpath needs at least one CL point")
         object.__setattr__(self, "cl", cl)
-        for name in ("theta_a", "theta_b"):
+        for name, limit in (("theta_a", 180.0), ("theta_b", 90.0)):
             angles = _array(name, getattr(self, name), (cl.shape[0],))
-            steep = np.flatnonzero(np.abs(angles) >= 90.0)
+            steep = np.flatnonzero(np.abs(angles) > limit)
             if steep.size:
                 i = int(steep[0])
-                raise CLPointError(i, f"{name} = {angles[i]} must be within (-90, 90) degrees")
+                raise CLPointError(i, f"{name} = {angles[i]} must be within [-{limit:g}, {limit:g}] degrees")
             object.__setattr__(self, name, angles)
         if self.cc is not None:
             object.__setattr__(self, "cc", _array("cc", self.cc, (cl.shape[0], 3)))
@@ -255,7 +274,7 @@ class Toolpath:
     @classmethod
     def from_axes(cls, cl, axes, cc=None, alpha=None, inclination=None):
         """Toolpath from tool-axis vectors (m, 3) in the part frame, of any nonzero finite length
-        (normalised; k must be > 0), with frames turned about z by alpha (m,) deg (None: 0).
+        (normalised; any direction), with frames turned about z by alpha (m,) deg (None: 0).
 
         A row whose largest component lies outside [1e-150, 1e150] (where its squared length would
         underflow or overflow) is first scaled exactly by a power of two to a largest component in

@@ -17,17 +17,53 @@ from .engagement import edge_lines, engage, inside_intervals
 from .inprocess import inprocess_intervals, removal_intervals, subtract
 from .interval_engagement import engagement_from_intervals
 from .model import Staircase
+from .profile import end_lengths, profile_engagement
 from .terraced import engage_terraced, terraced_intervals
 from .terraced_model import TerracedStock
 
 
 def engage_stock(stock, tool, toolpath, settings, *, progress=None):
-    """The Engagement of a pass over `stock`, a Staircase or a TerracedStock; TypeError for anything else."""
+    """The Engagement of a pass over `stock`, a Staircase or a TerracedStock; TypeError for anything else.
+
+    A tool with a corner radius goes to profile.profile_engagement. Every Engagement carries the end
+    edge's engaged length (profile.end_lengths)."""
+    if not isinstance(stock, (Staircase, TerracedStock)):
+        raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
+    if tool.corner_radius > 0.0:
+        return profile_engagement(stock, tool, toolpath, settings, progress=progress)
     if isinstance(stock, Staircase):
+        found = _engage_staircase(stock, tool, toolpath, settings, progress)
+    else:
+        found = engage_terraced(stock, tool, toolpath, settings, progress=progress)
+    return dataclasses.replace(found, end_length=end_lengths(stock, tool, toolpath, settings.phi))
+
+
+def _engage_staircase(stock, tool, toolpath, settings, progress):
+    """engagement.engage, whose Table 1 is for edges that rise; the CL points whose tool axis points down
+    (w_z < 0) from their edge lines' intervals (engagement.inside_intervals reads a falling line
+    backwards), case "2.5D"."""
+    falling = toolpath.axes[:, 2] < 0.0
+    if not falling.any():
         return engage(stock, tool, toolpath, settings, progress=progress)
-    if isinstance(stock, TerracedStock):
-        return engage_terraced(stock, tool, toolpath, settings, progress=progress)
-    raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
+    rising, down = np.flatnonzero(~falling), np.flatnonzero(falling)
+    parts = [engage(stock, tool, toolpath.rows(rising), settings)] if rising.size else []
+    part = toolpath.rows(down)
+    base, direction = edge_lines(part, tool, settings.phi)
+    origins, directions = base.reshape(-1, 3), np.repeat(direction, settings.phi.size, axis=0)
+    found = inside_intervals(stock, origins, directions, tool.flute_length)
+    parts.append(engagement_from_intervals(found, part, tool, settings, origins, directions))
+    if progress is not None:
+        progress(len(toolpath), len(toolpath))
+    return stacked(parts, np.concatenate([rising, down]))
+
+
+def stacked(parts, rows):
+    """One Engagement of the CL points `rows` (concatenated over the parts, each an Engagement of the
+    same angles), put back in CL point order."""
+    back = np.argsort(rows, kind="stable")
+    fields = {field.name: np.concatenate([getattr(part, field.name) for part in parts])[back]
+              for field in dataclasses.fields(parts[0]) if field.name != "phi"}
+    return dataclasses.replace(parts[0], **fields)
 
 
 def stock_intervals(stock, origins, directions, length):

@@ -86,7 +86,7 @@ def _intervals(pieces, stock, origins, directions, length):
         rows = np.flatnonzero(hi > lo)
         if rows.size == 0:
             continue
-        ev_row, ev_at, ev_wall = _crossings(groups[k], o[rows, 0], o[rows, 1], ux[rows], uy[rows])
+        ev_row, ev_at, ev_wall = plan_crossings(groups[k], o[rows, 0], o[rows, 1], ux[rows], uy[rows])
         ev_l = ev_at / scale[rows][ev_row]
         order = np.lexsort((ev_l, ev_row))
         ev_row, ev_l, ev_wall = ev_row[order], ev_l[order], ev_wall[order]
@@ -111,7 +111,7 @@ def _intervals(pieces, stock, origins, directions, length):
                      np.where(from_wall1, wall_code[w1], hi_code[r0]), np.where(from_wall1, w1, -1)))
         for run in runs:
             found.append(run + (np.full(run[0].size, k),))
-    return _merged(n, found)
+    return merged_intervals(n, found)
 
 
 def _slab_range(z0, dz, z_bottom, z_top, length, is_top):
@@ -119,7 +119,7 @@ def _slab_range(z0, dz, z_bottom, z_top, length, is_top):
     surface code of what bounds it at each end (bottom/top level or the flute's ends).
     Empty ranges have hi ≤ lo."""
     flat = np.abs(dz) <= PARALLEL_EPS
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         at_bottom, at_top = (z_bottom - z0) / dz, (z_top - z0) / dz
     rising = dz > 0.0
     within = (z0 >= z_bottom) & ((z0 <= z_top) if is_top else (z0 < z_top))
@@ -131,7 +131,7 @@ def _slab_range(z0, dz, z_bottom, z_top, length, is_top):
     return lo, hi, lo_code, hi_code
 
 
-def _crossings(groups, ox, oy, ux, uy):
+def plan_crossings(groups, ox, oy, ux, uy):
     """Every crossing of the slab's boundary with the plan lines o + t·u (n lines, u unit).
 
     Returns rows (E,), t (E,) the crossing's parameter along its line (mm), wall (E,) the
@@ -160,7 +160,7 @@ def _crossings(groups, ox, oy, ux, uy):
             line, piece, side = line[mixed], piece[mixed], side[mixed]
             if line.size == 0:
                 continue
-            r, u = _side_changes(d, side * group.weights[piece])
+            r, u = side_changes(d, side * group.weights[piece])
             point = horner(np.moveaxis(group.homogeneous[piece[r]], 1, -1), u[:, None])
             px, py = point[:, 0] / point[:, 2], point[:, 1] / point[:, 2]
             # Changes at a piece's ends are at its exact end control points.
@@ -176,7 +176,7 @@ def _crossings(groups, ox, oy, ux, uy):
     return np.concatenate(rows), np.concatenate(ts), np.concatenate(walls)
 
 
-def _side_changes(degree, b):
+def side_changes(degree, b):
     """Where the side (s·w ≥ 0 or < 0) changes along M pieces with Bernstein coefficients b
     (M, d+1) of s·w on u ∈ [0, 1]: (pair index (C,), u (C,)), one entry per change.
 
@@ -214,7 +214,7 @@ def _side_changes(degree, b):
     return pair, where[pair, step + 1]
 
 
-def _merged(n, found):
+def merged_intervals(n, found):
     """EdgeIntervals of n rows from runs (rows, start, end, start surface, start wall, end
     surface, end wall, slab) of all slabs: sorted, touching runs merged, tiny ones dropped."""
     if found:

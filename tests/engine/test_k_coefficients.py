@@ -115,10 +115,11 @@ def test_axis_round_trip(rows):
                                atol=1e-12)
 
 
-@pytest.mark.parametrize("bad", [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, -0.5, -1.0]],
-                         ids=["zero", "k_zero", "k_negative"])
+@pytest.mark.parametrize("bad", [[0.0, 0.0, 0.0], [np.nan, 0.0, 1.0], [np.inf, 0.0, 0.0]],
+                         ids=["zero", "nan", "inf"])
 def test_axis_to_angles_rejects_bad_row(bad):
-    """ValueError for a zero axis or k ≤ 0, naming the offending row (here row 3)."""
+    """ValueError for a zero or not finite axis, naming the offending row (here row 3); k ≤ 0 is
+    accepted (test_tool_profiles)."""
     axes = np.array([[0.0, 0.0, 1.0], [0.1, 0.2, 1.0], [-0.1, 0.0, 1.0], bad])
     with pytest.raises(ValueError, match=r"\b3\b"):
         axis_to_angles(axes)
