@@ -120,12 +120,13 @@ def _stopping_signals():
 
 def _build_parser():
     """The argument parser: one subparser per command, each with `run` set to its function."""
-    parser = _Parser(prog=PROG, description="Analytical cut geometry of flat-end five-axis milling on staircase stock.")
+    parser = _Parser(prog=PROG, description="Analytical cut geometry of five-axis milling (flat-end, bull-nose and "
+                                                "ball-end mills) on staircase and 2.5D stock.")
     commands = parser.add_subparsers(title="commands", dest="command", required=True, metavar="COMMAND")
     engage_parser = commands.add_parser(
         "engage", help="cut geometry of one pass", description=(
-            "Length of cut, engagement points, cut area and depth of cut of a flat-end mill along one pass "
-            "over staircase stock. Lengths in mm, angles in degrees. Writes OUT: a CSV (one row per CL point and "
+            "Length of cut, engagement points, cut area and depth of cut of a flat-end, bull-nose or ball-end "
+            "mill along one pass over staircase or 2.5D stock, and the engaged length of its end edge. Lengths in mm, angles in degrees. Writes OUT: a CSV (one row per CL point and "
             "rotation angle) and its summary with .summary.csv (one row per CL point and engagement segment), "
             "or, for a name ending in .npz, both as columns of one NumPy archive; with --plot, a PNG."),
     )

@@ -102,6 +102,7 @@ COEFFICIENT_PROPERTIES = {name: name.capitalize() for name in COEFFICIENT_NAMES}
 #: create_engagement keyword -> (property, value when not set). Required ones are 0 when not set.
 SETTINGS = {
     "diameter": ("Diameter", 0.0), "flutes": ("Flutes", 0), "flute_length": ("FluteLength", 0.0),
+    "corner_radius": ("CornerRadius", 0.0),
     "feed_per_tooth": ("FeedPerTooth", 0.0), "spindle_rpm": ("SpindleSpeed", 0.0),
     **{name: (BY_NAME[name].prop, BY_NAME[name].default)
        for name in ("inclination", "phi_start", "phi_end", "phi_step", "helix", "immersion_start", "immersion_end")},
@@ -163,7 +164,8 @@ def given_parameters(obj):
     """The engagement object's cutting properties as jobs.resolve's `given` (unset: None)."""
     return {
         "diameter": _or_none(obj.Diameter.Value), "flutes": _or_none(obj.Flutes),
-        "flute_length": _or_none(obj.FluteLength.Value), "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
+        "flute_length": _or_none(obj.FluteLength.Value), "corner_radius": obj.CornerRadius.Value,
+        "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
         "inclination": obj.Inclination.Value, "spindle_rpm": _or_none(obj.SpindleSpeed),
         "phi_start": obj.PhiStart.Value, "phi_end": obj.PhiEnd.Value, "phi_step": obj.PhiStep.Value,
     }
@@ -234,6 +236,7 @@ class EngagementFeature(FeatureProxy):
         ])
         add_version_3_properties(obj)
         add_version_5_properties(obj, STOCK_MODELS[0])
+        add_version_6_properties(obj)
         add_properties(obj, "Cut", [
             ("App::PropertyLength", "FeedPerTooth", "feed per tooth f (required; a constant FEDRAT in the "
                                                     "toolpath file wins)", 0.0),
@@ -407,10 +410,12 @@ class EngagementFeature(FeatureProxy):
     def migrate(self, obj, saved_version):
         """Version 2 added the y window and the validation report; objects saved before were computed
         over the whole y range. Version 3 added the helix and the forces (straight flutes, forces off).
-        Version 5 added the stock model; objects saved before were computed against the stock as given."""
+        Version 5 added the stock model; objects saved before were computed against the stock as given.
+        Version 6 added the corner radius; objects saved before were flat-end mills (0)."""
         add_version_2_properties(obj, "whole")
         add_version_3_properties(obj)
         add_version_5_properties(obj, STOCK_MODELS[1])
+        add_version_6_properties(obj)
         super().migrate(obj, saved_version)
 
     def onChanged(self, obj, prop):
@@ -675,6 +680,17 @@ def add_version_5_properties(obj, model):
     obj.StockModel = list(STOCK_MODELS)
     obj.StockModel = model
     obj.StockModelUsed = model
+
+
+def add_version_6_properties(obj):
+    """Add what version 6 added, if missing: CornerRadius (group "Tool", mm, 0: a flat-end mill)."""
+    if "CornerRadius" in obj.PropertiesList:
+        return
+    parameter = BY_NAME["corner_radius"]
+    add_properties(obj, "Tool", [
+        ("App::PropertyLength", parameter.prop, f"{parameter.help} (the toolpath file's CUTTER or TLDATA wins)",
+         parameter.default),
+    ])
 
 
 def show_material(obj):

@@ -94,7 +94,7 @@ class Stock:
 class PathHints:
     """What a toolpath file says besides the CL points of the chosen operation.
 
-    diameter, flute_length: mm, or None where the file does not give them. spindle_rpm: rpm.
+    diameter, flute_length, corner_radius: mm, or None where the file does not give them. spindle_rpm: rpm.
     feed: (m,) feed at each CL point in feed_unit ("MMPM" or "MMPR"; NaN before the first
     FEDRAT), or None. records: {parameter name: the record that gave it} where it differs from
     the parameter's declared record. unknown: (major word, first line, count) of records not
@@ -117,6 +117,7 @@ class PathHints:
     program: object = field(default=None, repr=False, compare=False)
     operation: object = field(default=None, repr=False, compare=False)
     frame: Optional[tuple] = field(default=None, repr=False, compare=False)
+    corner_radius: Optional[float] = None
 
     def messages(self):
         """Every warning, each record kind not understood, and the records ignored (one line), as text
@@ -223,15 +224,19 @@ def load_path(path, operation=None, *, tolerance=None, step=None):
     tool = chosen.tool
     records = {}
     if program.format == "csv":
-        records = {"diameter": "diameter column"}
-    elif tool.flute_length is not None and any(record.startswith("CSI_SET_FLUTE_LENGTH") for record in tool.records):
-        records = {"flute_length": "CSI_SET_FLUTE_LENGTH"}
+        records = {"diameter": "diameter column", "corner_radius": "corner_radius column"}
+    else:
+        sizes = next((record.split()[0] for record in tool.records if record.split()[0] in ("CUTTER", "TLDATA")), None)
+        if sizes is not None and sizes != "CUTTER":
+            records = {"diameter": sizes, "corner_radius": sizes}
+        if tool.flute_length is not None and any(record.startswith("CSI_SET_FLUTE_LENGTH") for record in tool.records):
+            records["flute_length"] = "CSI_SET_FLUTE_LENGTH"
     same = np.array_equal(rotation, np.eye(3)) and not np.any(translation)
     hints = PathHints(name, tool.diameter, tool.flute_length, chosen.spindle_rpm, chosen.feed, chosen.feed_unit,
                       tuple((word, line, count) for word, (line, count) in program.unknown.items()),
                       tuple(program.warnings), records,
                       tuple((word, line, count) for word, (line, count) in program.ignored.items()),
-                      program, chosen, None if same else frame)
+                      program, chosen, None if same else frame, corner_radius=tool.corner_radius)
     return toolpath, hints
 
 

@@ -86,7 +86,8 @@ def in_process_sweep(prepared, method="abm", warn=None):
         raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
     if job.stock_model == "initial":
         return None, ""
-    missing = "a helical tool" if tool.helix else "the Z-map method" if method != "abm" else None
+    missing = ("a helical tool" if tool.helix else "the Z-map method" if method != "abm" else
+               f"a {tool.kind} mill (corner radius {tool.corner_radius:g} mm)" if tool.corner_radius else None)
     if missing is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
@@ -404,6 +405,9 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     if plot and prepared.force_model is not None:
         outputs.append(os.path.splitext(plot)[0] + ".forces.png")
     check_outputs(outputs, _inputs(job))
+    if method.name != "abm" and tool.corner_radius:
+        raise ParameterError("method", f"the Z-map baseline samples a flat-end mill's edge; this {tool.kind} mill "
+                                       f"(corner radius {tool.corner_radius:g} mm) is computed by the ABM engine only")
     stock, _ = load_job_stock(prepared)
     check_model(stock, method.name, tool.helix)
     in_process, model_note = in_process_sweep(prepared, method.name, warn)

@@ -16,8 +16,8 @@ from ...errors import CLPointError, InputError
 from .frames import IDENTITY, engine_frame
 from .tools import ToolSpec
 
-#: Tool kinds the engine computes: flat-end mills, and tools a file does not describe.
-ENGINE_KINDS = ("flat", "unknown")
+#: Tool kinds the engine computes: flat-end, bull-nose and ball-end mills, and tools a file does not describe.
+ENGINE_KINDS = ("flat", "bull-nose", "ball", "unknown")
 
 
 @dataclass(frozen=True, eq=False)
@@ -147,17 +147,18 @@ class Operation:
             raise InputError(f"{self.source}:{self.lines[error.index]}: {self.label()}: {error.detail}") from None
 
     def refusal(self):
-        """None for a flat-end milling operation with cutting moves, else the plain reason, naming the
-        tool's kind as it is (a ball mill is a milling tool the engine does not compute yet; a drill,
-        tap or turning tool is no milling tool)."""
+        """None for a milling operation of a flat-end, bull-nose or ball-end mill with cutting moves, else
+        the plain reason, naming the tool's kind as it is (a tapered mill is a milling tool the engine does
+        not compute yet; a drill, tap or turning tool is no milling tool)."""
         if self.tool.kind not in ENGINE_KINDS:
             what = self.tool.describe()
             if self.tool.milling:
-                reason = "a milling tool the ABM engine does not compute yet (it computes flat-end mills)"
+                reason = ("a milling tool the ABM engine does not compute yet (it computes flat-end, bull-nose "
+                          "and ball-end mills)")
             elif self.tool.kind in ("turning", "grooving"):
                 reason = "a turning program, not milling"
             else:
-                reason = "not a milling tool (the ABM engine computes flat-end mills)"
+                reason = "not a milling tool (the ABM engine computes flat-end, bull-nose and ball-end mills)"
             return f"operation {self.number}: {what}: {reason}"
         if len(self.lines) == 0:
             holes = len(self.cycle_points) if self.cycle_points is not None else 0
@@ -190,7 +191,8 @@ class Program:
     encoding: str = "utf-8"
 
     def milling(self):
-        """The operations the engine can run: flat-end mills (or undescribed tools) with cutting moves."""
+        """The operations the engine can run: flat-end, bull-nose and ball-end mills (or undescribed tools)
+        with cutting moves."""
         return tuple(op for op in self.operations if op.refusal() is None)
 
     def operation(self, n=None):
