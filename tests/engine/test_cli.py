@@ -64,7 +64,7 @@ def test_engage_with_every_option(case, capsys):
     assert summary.startswith(f"abm: {M} CL points x {P} angles = {M * P} instants in ")
     assert "depth of cut " in summary and summary.endswith("wrote R.csv, R.summary.csv, R.png")
     assert sources == ("abm: parameters: diameter 12 mm [--diameter], 2 flutes [--flutes], flute length 30 mm "
-                       "[--flute-length], feed 0.1 mm/tooth [--feed-per-tooth], inclination 10° [--inclination], "
+                       "[--flute-length], corner radius 0 mm [default], feed 0.1 mm/tooth [--feed-per-tooth], inclination 10° [--inclination], "
                        "spindle 4000 rpm [--spindle-rpm], φ 0..180° [--phi-range], step 5° [--phi-step]; in-process stock "
                        "(0 of 12 CL points changed by earlier moves)")
     results = read_results(case / "R.csv")
