@@ -280,9 +280,9 @@ def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, s
     solid = single_solid(shape, where)
     names = {face.hashCode(): f"Face{k}" for k, face in enumerate(shape.Faces, start=1)}
     known = {}
+    kinds = {face.hashCode(): classify_face(face, names[face.hashCode()], where, known) for face in solid.Faces}
     limits = shape_box(solid, known)
     window = _window(y_window, limits, where)
-    kinds = {face.hashCode(): classify_face(face, names[face.hashCode()], where, known) for face in solid.Faces}
     tops, wall_faces = [], []
     for face in solid.Faces:
         role = _face_role(face, kinds[face.hashCode()], limits, where)
