@@ -35,13 +35,11 @@ def face_directions(shape):
             surface = exact_surface(face)
         except ValueError:
             continue
-        size = face.BoundBox.DiagonalLength
         if isinstance(surface, Part.Plane):
-            normals.append((*surface.Axis, size))
-        elif isinstance(surface, Part.Cylinder):
-            axes.append((*surface.Axis, size))
-        elif isinstance(surface, Part.SurfaceOfExtrusion):
-            axes.append((*surface.Direction, size))
+            normals.append((*surface.Axis, face.BoundBox.DiagonalLength))
+        elif isinstance(surface, (Part.Cylinder, Part.SurfaceOfExtrusion)):
+            axis = surface.Axis if isinstance(surface, Part.Cylinder) else surface.Direction
+            axes.append((*axis, face.BoundBox.DiagonalLength))
     normals, axes = (np.array(rows, dtype=float).reshape(-1, 4) for rows in (normals, axes))
     return (_unit(normals[:, :3]), normals[:, 3], _unit(axes[:, :3]), axes[:, 3])
 
