@@ -2,7 +2,8 @@
 
 - :func:`load_stock`: a staircase JSON (``.json``), or a solid (``.step``, ``.stp``,
   ``.brep``, ``.brp``, ``.FCStd``) recognised as a staircase. FreeCAD is imported only for
-  solids, so JSON jobs never need it.
+  solids, so JSON jobs never need it. :func:`solid_in_part` reads a solid and the engine frame
+  its own 2.5D direction asks for; :func:`path_in_frame` takes the toolpath into that frame.
 - :func:`load_path`: a toolpath CSV (``.csv``) or an APT / CL file (``.apt``, ``.cls``), with
   what an APT file says about the tool, spindle and feed (:class:`PathHints`).
 - :func:`load_job`: a job JSON of default parameters, each checked by its declaration.
@@ -17,6 +18,7 @@ Lengths in mm, angles in degrees, spindle speed in rpm. Bad input raises
 :class:`~abm_workbench.errors.InputError` naming the file.
 """
 
+import dataclasses
 import os
 from dataclasses import dataclass, field
 from typing import Optional
@@ -132,7 +134,7 @@ class PathHints:
         return list(self.warnings) + unknown + ignored
 
 
-def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None, solid=None):
+def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None, solid=None, shape=None):
     """The stock in `path` as a :class:`Stock`, in the frame the engine works in.
 
     A ``.json`` file is read as an abm-staircase/1 staircase (its walls are the paper's
@@ -144,8 +146,10 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
     None: the whole range; or a function of the solid's highest z giving (y0, y1), as
     :func:`swept_y_window` does). frame: (R (3, 3), t (3,)) from part coordinates to the
     operation's engine frame (PathHints.frame), or None: the stock is moved there first (a JSON
-    staircase only by a translation). solid: the name of the solid in a file that holds several
-    (``cad.recognise.load_solid``). InputError naming the file for anything else.
+    staircase only by a translation). A solid refused there because its own 2.5D direction is not
+    that frame's z says so (:func:`solid_in_part` gives the frame it is). solid: the name of the
+    solid in a file that holds several (``cad.recognise.load_solid``). shape: that solid already
+    read, in part coordinates, or None. InputError naming the file for anything else.
     """
     name = os.fspath(path)
     suffix = os.path.splitext(name)[1].lower()
@@ -158,10 +162,9 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
     if suffix not in SOLID_SUFFIXES:
         raise InputError(f"{name}: unknown stock file type; expected .json, .step, .stp, .brep, .brp or .FCStd")
     from ..cad.recognise import load_solid  # FreeCAD only for solids
-    shape = load_solid(name, solid)
-    if frame is not None:
-        from ..cad.solids import moved
-        shape = moved(shape, *frame)
+    from ..cad.solids import moved
+    part = load_solid(name, solid) if shape is None else shape
+    shape = part if frame is None else moved(part, *frame)
     if callable(y_window):
         y_window = y_window(shape.BoundBox.ZMax)
     if y_window is not None:
@@ -171,7 +174,24 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
             raise InputError(f"{name}: y window {y_window[0]:g}..{y_window[1]:g} mm misses the stock's y range "
                              f"{box.YMin:g}..{box.YMax:g} mm")
         y_window = (low, high)
-    return recognised(shape, name, walls=walls, wall_points=wall_points, y_window=y_window, frame=frame)
+    try:
+        return recognised(shape, name, walls=walls, wall_points=wall_points, y_window=y_window, frame=frame)
+    except InputError:
+        _refuse_turned(part, frame, name)
+        raise
+
+
+def _refuse_turned(part, frame, name):
+    """InputError in words when the solid `part` (part coordinates) is 2.5D along another direction than
+    the z of the engine frame `frame` (cad.stock_frame): a stock refused in `frame` for that reason."""
+    from ..cad.stock_frame import stock_frame
+    turned = stock_frame(part, frame)
+    if turned is not frame:
+        up = (np.eye(3) if frame is None else frame[0])[2]
+        angle = np.degrees(np.arccos(np.clip(turned[0][2] @ up, -1.0, 1.0)))
+        raise InputError(f"{name}: the stock is 2.5D along ({_vector_words(turned[0][2])}) in the part, {angle:.3g}° "
+                         "from the z of the operation's frame: the operation must be computed in its frame turned "
+                         "to the stock (abm engage, validate and schedule do)") from None
 
 
 def recognised(shape, name, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None):
@@ -184,6 +204,35 @@ def recognised(shape, name, *, walls="exact", wall_points="chebyshev", y_window=
     if found.staircase is None:
         return Stock(None, name, shape, walls, frame, found.terraced, found.reason)
     return Stock(found.staircase.staircase, name, shape, walls, frame)
+
+
+def solid_in_part(path, solid=None, frame=None):
+    """(Part.Shape, engine frame) of a stock solid file: the solid in part coordinates
+    (``cad.recognise.load_solid``; solid: its name in a file holding several) and the frame (R, t),
+    part -> engine, it is computed in: `frame` (the operation's, PathHints.frame; None: the part's)
+    when the stock is 2.5D along its z, else `frame` turned the least to the stock's own 2.5D
+    direction (``cad.stock_frame.stock_frame``; `frame` itself when kept)."""
+    from ..cad.recognise import load_solid
+    from ..cad.stock_frame import stock_frame
+    shape = load_solid(os.fspath(path), solid)
+    return shape, stock_frame(shape, frame)
+
+
+def path_in_frame(toolpath, hints, frame):
+    """(Toolpath, PathHints) of the operation of `hints` in the engine frame `frame` ((R, t), part ->
+    engine, or None), as load_path gives them in the operation's own: the same when `frame` is
+    hints.frame, else its CL points, tool axes and feed directions taken into `frame` (each CL point's
+    frame turned to its feed there, engine.feed) and hints.frame set to it. Tool axes may point any way
+    in `frame` (sideways, down): the engine takes every direction."""
+    if frame is hints.frame:
+        return toolpath, hints
+    turned = (np.eye(3), np.zeros(3)) if frame is None else frame
+    return hints.operation.toolpath(turned), dataclasses.replace(hints, frame=frame)
+
+
+def _vector_words(vector):
+    """'0, -0.984808, 0.173648': a unit vector's components to 6 digits, rounding's dust (1e-12) dropped."""
+    return ", ".join(f"{v:.6g}" for v in np.round(vector, 12) + 0.0)
 
 
 def _json_stock(name, frame):
@@ -251,7 +300,9 @@ def swept_y_window(toolpath: Toolpath, tool: Tool, z_max=np.inf, margin=SWEPT_MA
     rotation = toolpath.frames()  # (m, 3, 3)
     radial = tool.radius * np.hypot(rotation[:, 1, 0], rotation[:, 1, 1])
     lowest = toolpath.cl[:, 2] - tool.radius * np.hypot(rotation[:, 2, 0], rotation[:, 2, 1])
-    reach = np.clip((z_max - lowest) / rotation[:, 2, 2], 0.0, tool.flute_length)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = np.where(rotation[:, 2, 2] > 0.0, np.clip((z_max - lowest) / rotation[:, 2, 2], 0.0, tool.flute_length),
+                         tool.flute_length)  # an axis level or pointing down: the whole flute
     along = reach * rotation[:, 1, 2]
     y = toolpath.cl[:, 1]
     low = y - radial + np.minimum(along, 0.0)

@@ -14,13 +14,14 @@ import dataclasses
 import functools
 import os
 import time
+import numpy as np
 from dataclasses import dataclass, field
 from typing import Optional
 
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, Coefficients, material
 from ..formats.cl import STEP, TOLERANCE
-from .inputs import SOLID_SUFFIXES, load_job, load_path, load_stock, swept_y_window
+from .inputs import SOLID_SUFFIXES, load_job, load_path, load_stock, path_in_frame, solid_in_part, swept_y_window
 from .parameters import BY_NAME, check_pairs
 from .resolve import resolve, tool_and_settings
 
@@ -141,7 +142,11 @@ def is_solid(path):
 
 
 def load_job_stock(prepared: Prepared):
-    """(Stock, seconds to read it) of a prepared job: a solid's options checked, the y window chosen.
+    """(Prepared, Stock, seconds to read it) of a prepared job: a solid's options checked, the y window
+    chosen. A solid stock is computed in its operation's frame turned to the stock's own 2.5D
+    direction (inputs.solid_in_part), a JSON stock in the part when the operation's frame is turned: the
+    Prepared returned is then the job with its toolpath and hints in that frame (inputs.path_in_frame),
+    else `prepared` itself.
 
     ParameterError naming walls, wall_points or y_window when they are given for a JSON stock.
     """
@@ -152,16 +157,26 @@ def load_job_stock(prepared: Prepared):
                 raise ParameterError(name, f"applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
                                            f"{job.stock}")
     window = job.y_window or ("swept" if job.walls == "quintic" else "whole")
+    if not (window in Y_WINDOW_WORDS if isinstance(window, str) else isinstance(window, tuple) and len(window) == 2):
+        raise InputError(f"y window must be whole, swept or (y0, y1), got {window!r}")
+    started = time.perf_counter()
+    shape = None
+    if is_solid(job.stock):
+        shape, frame = solid_in_part(job.stock, job.solid, prepared.hints.frame)
+        toolpath, hints = path_in_frame(prepared.toolpath, prepared.hints, frame)
+        prepared = dataclasses.replace(prepared, toolpath=toolpath, hints=hints)
+    elif prepared.hints.frame is not None and not np.allclose(prepared.hints.frame[0], np.eye(3), rtol=0.0, atol=1e-12):
+        # A JSON stock stands in the part and can only be moved: the operation is computed in the part, its
+        # tool axes as they come (the engine takes every direction).
+        toolpath, hints = path_in_frame(prepared.toolpath, prepared.hints, None)
+        prepared = dataclasses.replace(prepared, toolpath=toolpath, hints=hints)
     if window == "whole":
         window = None
     elif window == "swept":
         window = functools.partial(swept_y_window, prepared.toolpath, prepared.tool)  # with the solid's top z
-    elif not (isinstance(window, tuple) and len(window) == 2):
-        raise InputError(f"y window must be whole, swept or (y0, y1), got {window!r}")
-    started = time.perf_counter()
     stock = load_stock(job.stock, walls=job.walls or "exact", wall_points=job.wall_points or "chebyshev",
-                       y_window=window, frame=prepared.hints.frame, solid=job.solid)
-    return stock, time.perf_counter() - started
+                       y_window=window, frame=prepared.hints.frame, solid=job.solid, shape=shape)
+    return prepared, stock, time.perf_counter() - started
 
 
 def cl_indices(text, m, field="cl"):

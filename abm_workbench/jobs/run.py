@@ -408,7 +408,8 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     if method.name != "abm" and tool.corner_radius:
         raise ParameterError("method", f"the Z-map baseline samples a flat-end mill's edge; this {tool.kind} mill "
                                        f"(corner radius {tool.corner_radius:g} mm) is computed by the ABM engine only")
-    stock, _ = load_job_stock(prepared)
+    prepared, stock, _ = load_job_stock(prepared)
+    toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     check_model(stock, method.name, tool.helix)
     in_process, model_note = in_process_sweep(prepared, method.name, warn)
 
@@ -501,11 +502,12 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
         flutes = [flute - 1]
     if checking is not None and (tool.helix or flutes):
         raise ParameterError("check", "is not available with helical edges (--helix, --flute) yet")
+    check_report_outputs(job, report, fcstd)
+    prepared, stock, stock_seconds = load_job_stock(prepared)
+    toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     in_process, model_note = _validated_sweep(job, prepared, flutes, warn)
     if model_note:
         warn(f"{job.toolpath}: {model_note}; validating against the stock as given")
-    check_report_outputs(job, report, fcstd)
-    stock, stock_seconds = load_job_stock(prepared)
     check_model(stock, helix=tool.helix)
     started = time.perf_counter()
     solid = stock.solid()
@@ -639,7 +641,8 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     if report:
         check_report_outputs(job, report)
     check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
-    stock, _ = load_job_stock(prepared)
+    prepared, stock, _ = load_job_stock(prepared)
+    toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     check_model(stock, helix=tool.helix)
     in_process, model_note = in_process_sweep(prepared, warn=warn)
     if model_note:

@@ -112,29 +112,17 @@ class Operation:
         return f"operation {self.number}" + (f" ({self.name})" if self.name else "")
 
     def engine_frame(self):
-        """(R, t) from part coordinates to the frame the engine works in for this operation.
+        """(R, t) from part coordinates to the frame the engine works in for this operation: the operation's
+        own frame (MCS / setup), or one its tool axes point up in on the whole (see :mod:`.frames`)."""
+        return engine_frame(self.to_part, self.axes_file)
 
-        The operation's own frame (MCS / setup), in which its tool axes point up (see
-        :mod:`.frames`). InputError naming the operation, the line and the reason for a CL
-        point whose axis turns 90 degrees or more from that frame.
-        """
-        frame, bad = engine_frame(self.to_part, self.axes_file)
-        if bad is not None:
-            axis = ", ".join(f"{v:.6g}" for v in self.axes_file[bad])
-            written = f"the frame of {self.frame}" if self.frame else "the file's frame (no MSYS, CSYS or ROTABL)"
-            raise InputError(f"{self.source}:{self.lines[bad]}: {self.label()}: tool axis ({axis}), written in "
-                             f"{written}, turns 90 degrees or more from the operation's frame (its axes span more "
-                             "than a half-space), so the engine, which needs the tool pointing up in one frame per "
-                             "operation, cannot take it")
-        return frame
-
-    def toolpath(self):
-        """The engine :class:`Toolpath` of the cutting moves in :meth:`engine_frame` coordinates, each
-        CL point's frame turned to its feed (engine.feed) and its inclination to that feed its own
-        (the job's one value for a single pass)."""
+    def toolpath(self, frame=None):
+        """The engine :class:`Toolpath` of the cutting moves in `frame` ((R, t) part -> engine; None:
+        :meth:`engine_frame`) coordinates, each CL point's frame turned to its feed (engine.feed) and
+        its inclination to that feed its own (the job's one value for a single pass)."""
         if len(self.lines) == 0:
             raise InputError(f"{self.source}:{self.first_line}: {self.label()}: no cutting moves")
-        rotation, translation = self.engine_frame()
+        rotation, translation = self.engine_frame() if frame is None else frame
         points = self.points_part @ rotation.T + translation
         axes = self.axes_part @ rotation.T
         alpha, feed = feed_frame(self.directions_part @ rotation.T)
