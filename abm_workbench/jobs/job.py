@@ -14,9 +14,10 @@ import dataclasses
 import functools
 import os
 import time
-import numpy as np
 from dataclasses import dataclass, field
 from typing import Optional
+
+import numpy as np
 
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, Coefficients, material
