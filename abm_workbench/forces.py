@@ -484,7 +484,7 @@ def flute_runs(stock, tool, toolpath, phi_deg, *, runs_at=None, chunk_instants=C
     shifts = 360.0 * np.arange(tool.flutes) / tool.flutes
     if runs_at is not None:
         return [_runs_of(runs_at(phi + shift), m * p, f"runs_at for flute {k + 1}") for k, shift in enumerate(shifts)]
-    terraced = as_terraced(stock) if tool.corner_radius > 0.0 else None
+    terraced = as_terraced(stock, tool.corner_radius) if tool.corner_radius > 0.0 else None
     step = max(1, int(chunk_instants) // max(p, 1))
     out = []
     for shift in shifts:

@@ -116,8 +116,10 @@ def bracketed_root(columns, lo, hi, f_lo, f_hi):
             x -= _newton_step(columns, x)
         step = _newton_step(columns, x)
     done = (f_lo == 0.0) | (f_hi == 0.0)
-    x = np.where(done, start, np.minimum(np.maximum(x - step, lo), hi))
+    x = x - step
+    # Newton may converge to another root of p, outside the bracket: such a row is not done.
     ok = done | ((x >= lo) & (x <= hi) & (np.abs(step) <= ROOT_TOL))
+    x = np.where(done, start, np.minimum(np.maximum(x, lo), hi))
     again = np.flatnonzero(~ok)
     if again.size:
         x[again] = _safeguarded_newton(columns[:, again], lo[again], hi[again], f_lo[again], start[again])

@@ -28,7 +28,7 @@ from .intervals import EdgeIntervals
 from .model import Staircase
 from .terraced import merged_intervals, terraced_intervals
 from .terraced_model import TerracedStock
-from .terraced_pieces import slab_pieces
+from .terraced_pieces import slab_pieces, split_pieces
 from .terraced_staircase import staircase_as_terraced
 
 _CORNER_CASE = CASES.index("corner")
@@ -52,10 +52,15 @@ def end_lengths(stock, tool, toolpath, phi_deg):
     return stock_intervals(stock, origins, d.reshape(-1, 3), length).length.reshape(m, p)
 
 
-def as_terraced(stock):
-    """(TerracedStock, its slab_pieces) of a Staircase (its exact terraced form) or a TerracedStock."""
+def as_terraced(stock, longest=None):
+    """(TerracedStock, its slab_pieces) of a Staircase (its exact terraced form) or a TerracedStock; with
+    `longest` (mm), curved pieces wider than that halved (terraced_pieces.split_pieces: the corner meets
+    fewer of them)."""
     terraced = staircase_as_terraced(stock) if isinstance(stock, Staircase) else stock
-    return terraced, slab_pieces(terraced)
+    groups, straight = slab_pieces(terraced)
+    if longest is not None:
+        groups = split_pieces(groups, longest)
+    return terraced, (groups, straight)
 
 
 def height_at(s, radius, psi_max):
@@ -142,7 +147,7 @@ def profile_engagement(stock, tool, toolpath, settings, *, chunk_instants=1 << 1
     the paper's Table 1 is for flat-end mills."""
     phi = settings.phi
     m, p = len(toolpath), phi.size
-    terraced = as_terraced(stock)
+    terraced = as_terraced(stock, tool.corner_radius)
     out, lep_xyz, uep_xyz = empty_results(m, p)
     labels = {name: np.full((m, p), fill, dtype=dtype) for name, fill, dtype in (
         ("lep_surface", 0, np.int8), ("lep_section", -1, np.int32), ("lep_wall", -1, np.int32))}

@@ -180,13 +180,14 @@ def test_a_single_horizontal_axis_is_the_operation_frame(tmp_path):
     np.testing.assert_allclose(toolpath.cl @ rotation - rotation.T @ translation, op.points_part, atol=1e-12)
 
 
-def test_an_axis_beyond_a_half_space_is_refused_with_operation_and_line(tmp_path):
+def test_axes_beyond_a_half_space_are_taken_as_they_come(tmp_path):
+    """Up, sideways and down in one operation: the engine takes every direction, in the file's frame."""
     path = tmp_path / "wild.cl"
-    path.write_text("CUTTER/10\nGOTO/0,0,0,0,0,1\nGOTO/1,0,0,1,0,0\nGOTO/2,0,0,-1,0,0\n")
+    path.write_text("CUTTER/10\nGOTO/0,0,0,0,0,1\nGOTO/1,0,0,1,0,0\nGOTO/2,0,0,-1,0,0\nGOTO/3,0,0,0,0,-1\n")
     op = read_program(path).operation()
-    with pytest.raises(InputError, match=rf"^{path}:3: operation 1: tool axis \(1, 0, 0\), written in the file.s "
-                                         r"frame \(no MSYS, CSYS or ROTABL\), turns 90 degrees"):
-        op.toolpath()
+    toolpath = op.toolpath()
+    np.testing.assert_allclose(toolpath.axes, [[0, 0, 1], [1, 0, 0], [-1, 0, 0], [0, 0, -1]], atol=1e-15)
+    np.testing.assert_allclose(toolpath.cl, op.points_part, atol=1e-15)
 
 
 def test_rotabl_turns_the_following_points_into_the_part():
