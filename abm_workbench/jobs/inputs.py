@@ -3,8 +3,8 @@
 - :func:`load_stock`: a staircase JSON (``.json``), or a solid (``.step``, ``.stp``,
   ``.brep``, ``.brp``, ``.FCStd``) recognised as a staircase. FreeCAD is imported only for
   solids, so JSON jobs never need it.
-- :func:`load_path`: a toolpath CSV (``.csv``) or an APT / CL file (``.apt``, ``.cls``), with
-  what an APT file says about the tool, spindle and feed (:class:`PathHints`).
+- :func:`load_path`: a toolpath CSV, an APT / CL file, G-code or a FreeCAD CAM Job (read by
+  content), with what the file says about the tool, spindle and feed (:class:`PathHints`).
 - :func:`load_job`: a job JSON of default parameters, each checked by its declaration.
 
 The y window of a recognised solid is the stock's whole y range by default: the staircase
@@ -94,7 +94,8 @@ class Stock:
 class PathHints:
     """What a toolpath file says besides the CL points of the chosen operation.
 
-    diameter, flute_length: mm, or None where the file does not give them. spindle_rpm: rpm.
+    diameter, flute_length: mm, or None where the file does not give them. flutes: the number of
+    flutes where the file gives it (a FreeCAD toolbit's), else None. spindle_rpm: rpm.
     feed: (m,) feed at each CL point in feed_unit ("MMPM" or "MMPR"; NaN before the first
     FEDRAT), or None. records: {parameter name: the record that gave it} where it differs from
     the parameter's declared record. unknown: (major word, first line, count) of records not
@@ -117,6 +118,7 @@ class PathHints:
     program: object = field(default=None, repr=False, compare=False)
     operation: object = field(default=None, repr=False, compare=False)
     frame: Optional[tuple] = field(default=None, repr=False, compare=False)
+    flutes: Optional[int] = None
 
     def messages(self):
         """Every warning, each record kind not understood, and the records ignored (one line), as text
@@ -203,17 +205,20 @@ def _json_stock(name, frame):
     return Stock(staircase, name, frame=frame)
 
 
-def load_path(path, operation=None, *, tolerance=None, step=None):
+def load_path(path, operation=None, *, tolerance=None, step=None, options=None, program=None):
     """(Toolpath, PathHints) of operation `operation` (1-based; None: the file's one milling operation)
-    of a toolpath file of any name, read by its content (formats.cl: APT / CL text or the toolpath
-    CSV; arcs and curves to `tolerance` mm, their CL points at most `step` mm apart, None: the
-    defaults). The Toolpath is in the operation's engine frame (PathHints.frame). InputError naming
-    the file for an operation the engine cannot run (formats.cl.OperationChoiceError when the file has
-    several and none is chosen)."""
+    of a toolpath file of any name, read by its content (formats.cl: APT / CL text, the toolpath CSV,
+    G-code or a FreeCAD CAM Job, with `options`, a formats.gcode.options.ReadOptions or None; arcs and
+    curves to `tolerance` mm, their CL points at most `step` mm apart, None: the defaults), or of
+    `program` (a Program already read, named `path`). The Toolpath is in the operation's engine frame
+    (PathHints.frame). InputError naming the file for an operation the engine cannot run
+    (formats.cl.OperationChoiceError when the file has several and none is chosen)."""
     from ..formats.cl import STEP, TOLERANCE, read_program
 
     name = os.fspath(path)
-    program = read_program(name, TOLERANCE if tolerance is None else tolerance, STEP if step is None else step)
+    if program is None:
+        program = read_program(name, TOLERANCE if tolerance is None else tolerance, STEP if step is None else step,
+                               options)
     chosen = program.operation(operation)
     refusal = chosen.refusal()
     if refusal is not None:
@@ -226,12 +231,15 @@ def load_path(path, operation=None, *, tolerance=None, step=None):
         records = {"diameter": "diameter column"}
     elif tool.flute_length is not None and any(record.startswith("CSI_SET_FLUTE_LENGTH") for record in tool.records):
         records = {"flute_length": "CSI_SET_FLUTE_LENGTH"}
+    elif program.format in ("gcode", "fcstd"):
+        records = {"spindle_rpm": "S word", "feed_per_tooth": "F words",
+                   **{key: tool.records[0] for key in ("diameter", "flute_length", "flutes") if tool.records}}
     same = np.array_equal(rotation, np.eye(3)) and not np.any(translation)
     hints = PathHints(name, tool.diameter, tool.flute_length, chosen.spindle_rpm, chosen.feed, chosen.feed_unit,
                       tuple((word, line, count) for word, (line, count) in program.unknown.items()),
                       tuple(program.warnings), records,
                       tuple((word, line, count) for word, (line, count) in program.ignored.items()),
-                      program, chosen, None if same else frame)
+                      program, chosen, None if same else frame, tool.flutes)
     return toolpath, hints
 
 

@@ -43,7 +43,9 @@ class Job:
     assumption); None: in-process where the engine has it (straight flutes, ABM), else
     initial. sweep_tolerance: mm, the sub-step of five-axis moves at the tool's rim. tolerance, step:
     mm, the chordal tolerance of a CL file's arcs and curves and the largest distance between their CL
-    points (formats.cl.read_program).
+    points (formats.cl.read_program). options: what reading the toolpath needs besides it (a FreeCAD
+    CAM Job's name, a G-code program's tool table, machine and work offsets:
+    formats.gcode.options.ReadOptions), or None.
     """
 
     stock: str
@@ -61,6 +63,22 @@ class Job:
     sweep_tolerance: float = 0.05
     tolerance: float = TOLERANCE
     step: float = STEP
+    options: Optional[object] = None
+
+
+def with_cam_stock(job: Job):
+    """`job`, or where it names no stock, the job with the Stock of its toolpath's FreeCAD CAM Job (the
+    document as the stock file, the Stock object as its solid). InputError when it names no stock and
+    its toolpath is no FreeCAD document."""
+    if job.stock is not None:
+        return job
+    if not os.fspath(job.toolpath).lower().endswith(".fcstd"):
+        raise InputError(f"{job.toolpath}: give the stock (--stock): only a FreeCAD CAM Job's document (FCStd) "
+                         "holds its own")
+    from ..cam.documents import job_stock
+
+    return dataclasses.replace(job, stock=job.toolpath,
+                               solid=job.solid or job_stock(job.toolpath, getattr(job.options, "cam_job", None)))
 
 
 @dataclass(frozen=True)
@@ -91,7 +109,8 @@ class Prepared:
 def prepare(job: Job, *, forces=None):
     """The Prepared job (the stock is read apart, by load_job_stock). forces: override job.forces."""
     defaults = load_job(job.job_file) if job.job_file else {}
-    toolpath, hints = load_path(job.toolpath, job.operation, tolerance=job.tolerance, step=job.step)
+    toolpath, hints = load_path(job.toolpath, job.operation, tolerance=job.tolerance, step=job.step,
+                                options=job.options)
     parameters = resolve(job.given, hints, defaults, job.job_file)
     helix = _value("helix", job, defaults)
     tool, settings = tool_and_settings(parameters.values, helix)
