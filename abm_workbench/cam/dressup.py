@@ -119,9 +119,9 @@ def write_scheduled_document(source, out, job_name, operation, feed, schedule=""
     folder = tempfile.mkdtemp(prefix=".abm-", dir=os.path.dirname(os.path.abspath(out)))
     try:
         job = find_job(document, job_name, source)
-        op = [op for op in operations(job) if is_active(op)][operation.number - 1]
+        op = next(op for op in operations(job) if is_active(op) and op.Label == operation.name)
         dressup = add_feed_dressup(job, op, command_feeds(operation, feed, len(op.Path.Commands)), schedule)
-        document.recompute()
+        dressup.recompute()  # only the dressup: the operations stay as FreeCAD computed them where they were made
         if not dressup.isValid():
             raise InputError(f"{source}: {dressup.Label}: {dressup.getStatusString()}")
         staged = os.path.join(folder, "scheduled.FCStd")
