@@ -71,10 +71,13 @@ def read_job_file(path, options, tolerance, step):
         return job_program(job, name, tolerance, step)
 
 
-def job_stock(path, name=None):
-    """The Name of the Stock object of the CAM Job `name` (None: the one Job) of the FCStd at `path`;
-    InputError when the Job has none."""
+def job_stock(path, name=None, required=True):
+    """The Name of the Stock object of the CAM Job `name` (None: the one Job) of the FCStd at `path`.
+    InputError when there is no such Job or it has no Stock; with `required` False, None instead when the
+    document holds no CAM Job at all."""
     with opened(path) as document:
+        if not required and not jobs(document):
+            return None
         job = find_job(document, name, os.fspath(path))
         if getattr(job, "Stock", None) is None:
             raise InputError(f"{os.fspath(path)}: the CAM Job {job.Label} has no Stock: give the stock (--stock)")

@@ -67,18 +67,23 @@ class Job:
 
 
 def with_cam_stock(job: Job):
-    """`job`, or where it names no stock, the job with the Stock of its toolpath's FreeCAD CAM Job (the
-    document as the stock file, the Stock object as its solid). InputError when it names no stock and
-    its toolpath is no FreeCAD document."""
-    if job.stock is not None:
-        return job
-    if not os.fspath(job.toolpath).lower().endswith(".fcstd"):
-        raise InputError(f"{job.toolpath}: give the stock (--stock): only a FreeCAD CAM Job's document (FCStd) "
-                         "holds its own")
+    """`job` with the Stock of a FreeCAD CAM Job where it names none: with no stock, its toolpath's document
+    (an FCStd) as the stock file and that Job's Stock as its solid; with an FCStd stock and no solid named,
+    the Stock of the CAM Job that document holds, if it holds one. InputError when it names no stock and its
+    toolpath is no FreeCAD document."""
     from ..cam.documents import job_stock
 
-    return dataclasses.replace(job, stock=job.toolpath,
-                               solid=job.solid or job_stock(job.toolpath, getattr(job.options, "cam_job", None)))
+    name = getattr(job.options, "cam_job", None)
+    if job.stock is None:
+        if not os.fspath(job.toolpath).lower().endswith(".fcstd"):
+            raise InputError(f"{job.toolpath}: give the stock (--stock): only a FreeCAD CAM Job's document (FCStd) "
+                             "holds its own")
+        return dataclasses.replace(job, stock=job.toolpath, solid=job.solid or job_stock(job.toolpath, name))
+    if job.solid is None and os.fspath(job.stock).lower().endswith(".fcstd"):
+        same = os.path.abspath(job.stock) == os.path.abspath(job.toolpath)
+        solid = job_stock(job.stock, name if same else None, required=False)
+        return dataclasses.replace(job, solid=solid) if solid else job
+    return job
 
 
 @dataclass(frozen=True)

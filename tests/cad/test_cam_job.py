@@ -126,15 +126,17 @@ def test_engage_runs_against_the_jobs_own_stock(cam, tmp_path, capsys):
     assert main(["engage", "--toolpath", str(cam / "job.FCStd"), "--stock", str(cam / "job.FCStd"), "--solid", "Stock",
                  *common, "--out", str(tmp_path / "named.csv")]) == 0
     assert (tmp_path / "doc.csv").read_bytes() == (tmp_path / "named.csv").read_bytes()
+    # The post, its tools from a LinuxCNC table, against the Job's document as the stock: its Job's Stock.
     assert main(["engage", "--toolpath", str(cam / "job.ngc"), "--tool-table", str(cam / "tools.tbl"), "--stock",
-                 str(cam / "job.FCStd"), "--solid", "Stock", "--flutes", "2", "--flute-length", "30",
-                 "--spindle-rpm", "8000", *common, "--out", str(tmp_path / "posted.csv")]) == 0
+                 str(cam / "job.FCStd"), "--flutes", "2", "--flute-length", "30", *common,
+                 "--out", str(tmp_path / "posted.csv")]) == 0
     document, posted = _results(tmp_path / "doc.csv"), _results(tmp_path / "posted.csv")
     assert np.nanmax(document["length"]) > 1.0
     # The post's rounding moves the CL points by up to half a decimal: the lengths of cut follow.
     np.testing.assert_allclose(posted["length"], document["length"], rtol=0, atol=0.05)
     stock = with_cam_stock(Job(None, str(cam / "job.FCStd")))
     assert (stock.stock, stock.solid) == (str(cam / "job.FCStd"), "Stock")
+    assert with_cam_stock(Job(str(cam / "job.FCStd"), str(cam / "job.ngc"))).solid == "Stock"
     with pytest.raises(InputError, match="give the stock"):
         with_cam_stock(Job(None, str(cam / "job.ngc")))
 

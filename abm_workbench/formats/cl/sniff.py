@@ -73,7 +73,7 @@ def _first_code_is_gcode(text):
     latter (comments, ``%`` and blank lines left out)."""
     for line in text.splitlines():
         code = _GCODE_COMMENT.sub("", line).strip()
-        if not code or code == "%":
+        if not code or code.startswith("%"):
             continue
         if _RECORD.match(line):
             return False

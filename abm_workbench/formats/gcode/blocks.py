@@ -5,7 +5,8 @@ RS-274 as LinuxCNC, FreeCAD's posts and Fanuc-style controls write it:
 - a comment is ``( ... )`` (several on a line, anywhere in it) or ``;`` to the end of the line;
 - blanks between and inside words are ignored (``G 1 X 10.5``, ``G1X10.5`` are the same block);
 - a leading ``/`` (block delete, the switch off) is dropped, and so are block numbers ``N…``,
-  ``%`` lines and a Fanuc program number ``O…`` (a line with only it and comments);
+  ``%`` lines (with a program name after the ``%`` or not) and a Fanuc program number ``O…`` (a
+  line with only it and comments);
 - a word is a letter (any case) and a number (an optional sign, digits with an optional point);
 - a whole block of certain control words switches the tool centre point control (TCP):
   ``TRAORI`` (Siemens), ``TRAFOOF``, ``TCPM`` / ``TCPM OFF``, ``FUNCTION TCPM …`` and
@@ -74,7 +75,7 @@ def _block(raw, number, name):
     if tail.strip():
         comments.append(tail.strip())
     code = code.strip().lstrip("/").strip()
-    if code in ("", "%"):
+    if not code or code.startswith("%"):
         return Block(number, (), tuple(comments)) if comments else None
     spaced = _BLOCK_NUMBER.sub("", " ".join(code.upper().split()), count=1).strip()
     for pattern, state in _TCP_BLOCKS:
