@@ -46,9 +46,10 @@ _NAME_WORDS = (
     (r"CHAMFER|ENGRAV|TAPER|DOVETAIL", "tapered"), (r"\bDRILL", "drill"),
 )
 _NAMES = {"flat": "flat-end mill", "ball": "ball mill", "bull-nose": "bull-nose mill", "tapered": "tapered mill",
-          "saw": "slitting saw", "probe": "probe", "drill": "drill", "spot drill": "spot drill", "countersink": "countersink", "reamer": "reamer",
-          "boring bar": "boring bar", "tap": "tap", "thread mill": "thread mill", "turning": "turning tool",
-          "grooving": "grooving tool", "unknown": "tool of unknown kind"}
+          "saw": "slitting saw", "probe": "probe", "drill": "drill", "spot drill": "spot drill",
+          "countersink": "countersink", "reamer": "reamer", "boring bar": "boring bar", "tap": "tap",
+          "thread mill": "thread mill", "turning": "turning tool", "grooving": "grooving tool",
+          "unknown": "tool of unknown kind"}
 
 
 @dataclass(frozen=True)
