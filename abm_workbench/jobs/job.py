@@ -71,15 +71,17 @@ def with_cam_stock(job: Job):
     (an FCStd) as the stock file and that Job's Stock as its solid; with an FCStd stock and no solid named,
     the Stock of the CAM Job that document holds, if it holds one. InputError when it names no stock and its
     toolpath is no FreeCAD document."""
-    from ..cam.documents import job_stock
-
     name = getattr(job.options, "cam_job", None)
     if job.stock is None:
         if not os.fspath(job.toolpath).lower().endswith(".fcstd"):
             raise InputError(f"{job.toolpath}: give the stock (--stock): only a FreeCAD CAM Job's document (FCStd) "
                              "holds its own")
+        from ..cam.documents import job_stock  # FreeCAD only for a document
+
         return dataclasses.replace(job, stock=job.toolpath, solid=job.solid or job_stock(job.toolpath, name))
     if job.solid is None and os.fspath(job.stock).lower().endswith(".fcstd"):
+        from ..cam.documents import job_stock
+
         same = os.path.abspath(job.stock) == os.path.abspath(job.toolpath)
         solid = job_stock(job.stock, name if same else None, required=False)
         return dataclasses.replace(job, solid=solid) if solid else job
