@@ -27,40 +27,13 @@ from ...errors import InputError
 from ..cl.tools import ToolSpec
 from ..cl.units import MM_PER_INCH, surface_speed_rpm
 from . import circles
+from .codes import GROUP_OF, IGNORED_M, CodeError, code_text, sorted_words
 from .collect import Collector
 from .cycles import HOLE_CYCLES, CycleState
 from .offsets import SYSTEMS, zero_offsets
 
 _Z = np.array([0.0, 0.0, 1.0])
-#: Letters a block may hold besides G and M (N and O are taken out by the lexer; D, H: the
-#: compensation and tool length registers, not used).
-_LETTERS = set("ABCDFHIJKLPQRSTXYZ")
-#: G codes by what they set: each group at most once in a block.
-_GROUPS = {
-    "motion": {0.0, 1.0, 2.0, 3.0, 80.0, *HOLE_CYCLES},
-    "plane": {17.0, 18.0, 19.0}, "distance": {90.0, 91.0}, "arc distance": {90.1, 91.1},
-    "feed mode": {93.0, 94.0, 95.0}, "units": {20.0, 21.0}, "compensation": {40.0, 41.0, 42.0, 41.1, 42.1},
-    "tool length": {43.0, 43.1, 43.4, 43.5, 49.0},
-    "coordinate system": {54.0, 55.0, 56.0, 57.0, 58.0, 59.0, 59.1, 59.2, 59.3},
-    "path control": {61.0, 61.1, 64.0}, "retract": {98.0, 99.0}, "spindle mode": {96.0, 97.0},
-    "non-modal": {4.0, 10.0, 28.0, 28.1, 30.0, 30.1, 53.0, 92.1, 92.2},
-}
-_GROUP_OF = {code: group for group, codes in _GROUPS.items() for code in codes}
-#: M codes read: tool change, spindle, TCP; the others here are accepted and carry nothing for the engine
-#: (stops, coolant, overrides, digital and analog outputs, modal state, LinuxCNC's user M codes 100-199).
-_M_READ = {3.0, 4.0, 5.0, 6.0, 61.0, 128.0, 129.0}
-_M_IGNORED = {0.0, 1.0, 2.0, 30.0, 60.0, 7.0, 8.0, 9.0, 48.0, 49.0, 50.0, 51.0, 52.0, 53.0, 62.0, 63.0, 64.0, 65.0,
-              66.0, 67.0, 68.0, 70.0, 71.0, 72.0, 73.0, *map(float, range(100, 200))}
-#: Codes refused with their reason.
-_REFUSED = {("G", 92.0): "coordinate offsets set by the program (G92) are not read: use G54-G59 and an offsets "
-                         "table",
-            ("M", 98.0): "subprogram calls are not read", ("M", 99.0): "subprogram returns are not read"}
 _BEGIN_OPERATION = re.compile(r"begin operation:\s*(.+)", re.IGNORECASE)
-
-
-def _code_text(letter, value):
-    """``G1``, ``G59.1``, ``M6`` as written in messages."""
-    return f"{letter}{value:g}"
 
 
 class Interpreter:
@@ -123,8 +96,14 @@ class Interpreter:
             return
         if not block.words:
             return
-        g_codes, m_codes, values = self.sorted_words(block)
         line = block.line
+        try:
+            g_codes, m_codes, values = sorted_words(block.words)
+        except CodeError as error:
+            raise self.error(line, error.word, error.reason) from None
+        for code in m_codes:
+            if code in IGNORED_M:
+                self.note_ignored(line, code_text("M", code))
         if 93.0 in g_codes or 94.0 in g_codes or 95.0 in g_codes:
             self.feed_mode = next(code for code in (93.0, 94.0, 95.0) if code in g_codes)
         self.units_of(g_codes)
@@ -144,9 +123,9 @@ class Interpreter:
             self.set_offsets(values, line)
             return
         if 28.0 in g_codes or 30.0 in g_codes:
-            self.go_home(values, line, "G28" if 28.0 in g_codes else "G30")
+            self.go_home(values, line)
             return
-        motion = next((code for code in g_codes if _GROUP_OF[code] == "motion"), None)
+        motion = next((code for code in g_codes if GROUP_OF[code] == "motion"), None)
         if motion == 80.0:
             self.motion = None
             self.cycle.end()
@@ -157,45 +136,13 @@ class Interpreter:
         axis_words = [letter for letter in "XYZABC" if letter in values]
         if not axis_words:
             if self.motion in (2.0, 3.0) and any(letter in values for letter in "IJKR"):
-                raise self.error(line, _code_text("G", self.motion), "an arc needs its end: the axis words of its "
+                raise self.error(line, code_text("G", self.motion), "an arc needs its end: the axis words of its "
                                                                      "plane (the start's, for a full circle)")
             return
         if self.motion is None:
             raise self.error(line, values[axis_words[0]].text, "an axis word with no motion in force (G0, G1, G2, "
                                                                "G3 or a hole cycle)")
         self.move(values, line, machine_frame=53.0 in g_codes)
-
-    def sorted_words(self, block):
-        """(G codes, M codes, {letter: Word} of the others) of `block`; InputError for an unknown or repeated
-        word, or two codes setting the same thing."""
-        g_codes, m_codes, values, groups = [], [], {}, {}
-        for word in block.words:
-            refused = _REFUSED.get((word.letter, word.value))
-            if refused is not None:
-                raise self.error(block.line, word.text, refused)
-            if word.letter == "G":
-                group = _GROUP_OF.get(word.value)
-                if group is None:
-                    raise self.error(block.line, word.text, "not a G code this reader knows (docs/GCODE.md)")
-                if group in groups and group != "non-modal":
-                    raise self.error(block.line, word.text, f"{groups[group]} and {word.text} in one block: both "
-                                                            f"set the {group}")
-                groups[group] = word.text
-                g_codes.append(word.value)
-            elif word.letter == "M":
-                if word.value not in _M_READ and word.value not in _M_IGNORED:
-                    raise self.error(block.line, word.text, "not an M code this reader knows (docs/GCODE.md)")
-                if word.value in _M_IGNORED:
-                    self.note_ignored(block.line, _code_text("M", word.value))
-                m_codes.append(word.value)
-            elif word.letter not in _LETTERS:
-                raise self.error(block.line, word.text, f"the letter {word.letter} is not read (axes X Y Z and A B C; "
-                                                        "no U V W, E)")
-            elif word.letter in values:
-                raise self.error(block.line, word.text, f"{word.letter} is given twice in one block")
-            else:
-                values[word.letter] = word
-        return g_codes, m_codes, values
 
     def word(self, values, letter, line, code):
         """The word `letter` of the block; InputError naming `code` when the block lacks it."""
@@ -264,16 +211,16 @@ class Interpreter:
             elif code in (98.0, 99.0):
                 self.high_retract = code == 98.0
             elif code in (41.0, 42.0, 41.1, 42.1):
-                self.warn_once("compensation", line, _code_text("G", code), "cutter compensation in the control; the "
+                self.warn_once("compensation", line, code_text("G", code), "cutter compensation in the control; the "
                                "moves are taken as the tool tip's path as written")
             elif code in (43.4, 43.5):
                 self.tcp = True
             elif code == 49.0:
                 self.tcp = False
-            elif _GROUP_OF[code] == "coordinate system":
+            elif GROUP_OF[code] == "coordinate system":
                 self.change_system(SYSTEMS[[float(s[1:]) for s in SYSTEMS].index(code)])
             elif code in (40.0, 43.0, 43.1, 61.0, 61.1, 64.0, 97.0, 4.0, 92.1, 92.2, 28.1, 30.1):
-                self.note_ignored(line, _code_text("G", code))
+                self.note_ignored(line, code_text("G", code))
         if 128.0 in m_codes:
             self.tcp = True
         if 129.0 in m_codes:
@@ -302,12 +249,11 @@ class Interpreter:
         if system == self.system:
             self.position = self.position + before - self.offsets[system][:3]
 
-    def go_home(self, values, line, code):
+    def go_home(self, values, line):
         """G28 / G30: a rapid through the point of the block's axis words, then home, a position not known."""
         if any(letter in values for letter in "XYZABC"):
             self.rapid(self.target(values, line, False), line)
         self.position = np.full(3, math.nan)
-        self.note_ignored(line, code)
 
     # Positions.
 
@@ -346,8 +292,10 @@ class Interpreter:
 
     def pose(self, angles, line):
         """(R (3, 3), t (3,), axis (3,)): the part-frame tip = R @ X Y Z + t, with the work offset in t (module
-        docstring); the identity and +Z without a machine file."""
+        docstring); the identity and +Z without a machine file. The operation notes the frame it moves in."""
         offset = self.offsets[self.system]
+        if offset[:3].any():
+            self.collector.frame(f"{self.system} offset " + ", ".join(f"{v:g}" for v in offset[:3]) + " mm")
         if self.machine is None:
             return np.eye(3), offset[:3].copy(), _Z
         turned = {letter: angles[letter] + offset[3 + "ABC".index(letter)] for letter in "ABC"}
@@ -364,19 +312,16 @@ class Interpreter:
         return rotation, rotation @ offset[:3] + shift, axis
 
     def tip(self, position, angles, line):
-        """((3,) the part-frame tool tip, (3,) axis, (3, 3) R) of the work-system `position` at `angles`."""
+        """((3,) the part-frame tool tip, (3,) axis) of the work-system `position` at `angles`."""
         rotation, shift, axis = self.pose(angles, line)
-        if self.offsets[self.system][:3].any():
-            self.collector.frame(f"{self.system} offset " + ", ".join(f"{v:g}" for v in self.offsets[self.system][:3])
-                                 + " mm")
-        return rotation @ position + shift, axis, rotation
+        return rotation @ position + shift, axis
 
     # Motion.
 
     def move(self, values, line, machine_frame):
         """The motion in force to the block's target."""
         position, angles = self.target(values, line, machine_frame)
-        code = _code_text("G", self.motion)
+        code = code_text("G", self.motion)
         if self.motion == 0.0:
             self.rapid((position, angles), line)
             return
@@ -397,7 +342,7 @@ class Interpreter:
         position, angles = target
         self.position, self.angles = position, angles
         if not np.isnan(position).any():
-            point, axis, _ = self.tip(position, angles, line)
+            point, axis = self.tip(position, angles, line)
             self.collector.rapid(point, axis, line)
 
     def start_tip(self, line):
@@ -409,7 +354,7 @@ class Interpreter:
     def straight(self, position, angles, line, code):
         """G1: one cutting CL point, its direction the chord from the tip before."""
         before = self.start_tip(line)
-        point, axis, _ = self.tip(position, angles, line)
+        point, axis = self.tip(position, angles, line)
         chord = np.zeros(3) if before is None else point - before
         feed = self.feed_of(float(np.linalg.norm(chord)), line, code)
         self.collector.cut([point], [axis], [chord], line, *feed)
@@ -444,7 +389,6 @@ class Interpreter:
         except ValueError as error:
             raise self.error(line, code, str(error)) from None
         rotation, shift, axis = self.pose(angles, line)
-        self.tip(position, angles, line)  # notes the frame
         tips = points @ rotation.T + shift
         length = float(np.linalg.norm(np.diff(np.vstack([rotation @ self.position + shift, tips]), axis=0),
                                       axis=1).sum())
@@ -477,7 +421,7 @@ class Interpreter:
             self.tool = self.tool.with_kind("tap", f"{code} line {line}")
             self.collector.tool(self.tool, line)
         for bottom in bottoms:
-            point, axis, _ = self.tip(bottom, angles, line)
+            point, axis = self.tip(bottom, angles, line)
             self.collector.hole(point, axis, line, code)
         self.position, self.angles = after, angles
 
