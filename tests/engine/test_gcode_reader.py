@@ -210,6 +210,7 @@ def test_inverse_time_feeds_are_each_moves_length_times_f(tmp_path):
     ("T1 M6\nG0 X0 Y0 Z0\nG92 X0\n", 3, "G92: coordinate offsets set by the program (G92) are not read"),
     ("T1 M6\nG0 X0 Y0 Z0\nG93 G1 X1\n", 3, "G1: inverse time feed (G93) needs an F word on every feed move"),
     ("T1 M6\nG0 X0 Y0 Z0\nG81 X1 Y1 Z-1\n", 3, "G81: needs R (the retract plane)"),
+    ("T1 M6\nG0 X0 Y0 Z0\nG1 X1 F-5\n", 3, "F-5: a feed cannot be negative"),
 ])
 def test_bad_gcode_gets_one_error_with_its_line(tmp_path, text, line, words):
     message = refused(tmp_path, text)

@@ -160,10 +160,10 @@ class Interpreter:
                 self.units = self.units or label
 
     def set_feed(self, word, line):
-        """F: per minute or revolution in the length unit in force, or inverse time (G93)."""
-        if word.value <= 0.0:
-            raise self.error(line, word.text, "the feed must be positive")
-        self.feed = word.value * (1.0 if self.feed_mode == 93.0 else self.scale)
+        """F: per minute or revolution in the length unit in force, or inverse time (G93); F0 is no feed."""
+        if word.value < 0.0:
+            raise self.error(line, word.text, "a feed cannot be negative")
+        self.feed = word.value * (1.0 if self.feed_mode == 93.0 else self.scale) if word.value else math.nan
 
     def set_spindle(self, speed, g_codes, line):
         """S: rpm (G97), or a surface speed in m/min or ft/min (G96) made rpm with the tool's diameter."""
