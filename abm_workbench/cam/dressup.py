@@ -110,11 +110,14 @@ def add_feed_dressup(job, op, feeds, schedule=""):
 def write_scheduled_document(source, out, job_name, operation, feed, schedule=""):
     """Write the FCStd `source` to `out` with operation `operation` (a cl.program.Operation of its Job
     `job_name`, read by cam.job_program) dressed with `feed` (n,) mm/min per CL point; whole or not at all.
-    The source file is left as it is. InputError when the source is open in FreeCAD already."""
+    The source file is left as it is. InputError when the source is open in FreeCAD already, or when
+    FreeCAD's CAM modules cannot be imported (the document's objects would be saved without them)."""
     source, out = os.fspath(source), os.fspath(out)
     if any(doc.FileName and same_file(doc.FileName, source) for doc in FreeCAD.listDocuments().values()):
         raise InputError(f"{source}: the document is open in FreeCAD: add the dressup there, or close it first")
-    make_importable()
+    if not make_importable():
+        raise InputError(f"{source}: FreeCAD's CAM workbench cannot be imported here, and the document saved "
+                         "without it would lose its CAM objects' behaviour")
     document = FreeCAD.openDocument(source, True)
     folder = tempfile.mkdtemp(prefix=".abm-", dir=os.path.dirname(os.path.abspath(out)))
     try:

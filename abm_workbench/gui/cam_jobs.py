@@ -33,7 +33,7 @@ def chosen(selection):
                 found.append((job, placed))
     if not found:
         raise CommandError("select a FreeCAD CAM Job, or operations of one")
-    return found
+    return [(job, op) for job, op in found if op is None or (job, None) not in found]  # a Job chosen takes all
 
 
 def _dresses(op, obj):
