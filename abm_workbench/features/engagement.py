@@ -338,10 +338,10 @@ class EngagementFeature(FeatureProxy):
         elapsed = time.perf_counter() - started
         if not result.engaged.any():
             if in_process is not None and in_process.initial.any():
-                raise InputError(f"{obj.Toolpath.File}: earlier moves of the program already removed all the "
+                raise InputError(f"{hints.source}: earlier moves of the program already removed all the "
                                  "material this operation's tool would meet (StockModel initial computes it "
                                  "against the stock as given)")
-            raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "
+            raise InputError(f"{hints.source}: the tool never touches the stock: no CL point of the pass "
                              f"engages it (are the toolpath and {obj.Stock.Proxy.source_name(obj.Stock)} in the "
                              "same frame?)")
         warnings = [*hints.messages(), *parameters.conflicts, *([model_note] if model_note else [])]
@@ -377,7 +377,7 @@ class EngagementFeature(FeatureProxy):
             tolerance = SWEEP_TOLERANCE.check(obj.SweepTolerance.Value)
         except ParameterError as error:
             raise InputError(f"{obj.Label}: {label_words(error)[:-1]} (property {SWEEP_TOLERANCE.prop}).") from None
-        job = Job(obj.Stock.Proxy.source_name(obj.Stock), obj.Toolpath.File,
+        job = Job(obj.Stock.Proxy.source_name(obj.Stock), hints.source,
                   stock_model=None if obj.StockModel == STOCK_MODELS[0] else obj.StockModel,
                   sweep_tolerance=tolerance)
         return in_process_sweep(Prepared(job, {}, toolpath, hints, parameters, tool, settings, model))
@@ -905,14 +905,14 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
     else:
         obj.YWindow = "custom"
         obj.YWindowMin, obj.YWindowMax = (float(value) for value in y_window)
-    if toolpath is not None and getattr(toolpath, "File", ""):
+    if toolpath is not None and (getattr(toolpath, "File", "") or getattr(toolpath, "CamJob", None)):
         try:
             _, hints = toolpath.Proxy.load(toolpath)
         except InputError:
             hints = None  # execute reports it
         if hints is not None:
             for key, value in (("diameter", hints.diameter), ("flute_length", hints.flute_length),
-                               ("spindle_rpm", hints.spindle_rpm)):
+                               ("spindle_rpm", hints.spindle_rpm), ("flutes", hints.flutes)):
                 if value is not None and key not in settings:
                     settings[key] = value
     for key, value in sorted(settings.items(), key=lambda item: item[0] != "material"):  # the table first

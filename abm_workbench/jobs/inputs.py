@@ -4,8 +4,8 @@
   ``.brep``, ``.brp``, ``.FCStd``) recognised as a staircase. FreeCAD is imported only for
   solids, so JSON jobs never need it. :func:`solid_in_part` reads a solid and the engine frame
   its own 2.5D direction asks for; :func:`path_in_frame` takes the toolpath into that frame.
-- :func:`load_path`: a toolpath CSV (``.csv``) or an APT / CL file (``.apt``, ``.cls``), with
-  what an APT file says about the tool, spindle and feed (:class:`PathHints`).
+- :func:`load_path`: a toolpath CSV, an APT / CL file, G-code or a FreeCAD CAM Job (read by
+  content), with what the file says about the tool, spindle and feed (:class:`PathHints`).
 - :func:`load_job`: a job JSON of default parameters, each checked by its declaration.
 
 The y window of a recognised solid is the stock's whole y range by default: the staircase
@@ -96,7 +96,8 @@ class Stock:
 class PathHints:
     """What a toolpath file says besides the CL points of the chosen operation.
 
-    diameter, flute_length, corner_radius: mm, or None where the file does not give them. spindle_rpm: rpm.
+    diameter, flute_length, corner_radius: mm, or None where the file does not give them. flutes: the
+    number of flutes where the file gives it (a FreeCAD toolbit's), else None. spindle_rpm: rpm.
     feed: (m,) feed at each CL point in feed_unit ("MMPM" or "MMPR"; NaN before the first
     FEDRAT), or None. records: {parameter name: the record that gave it} where it differs from
     the parameter's declared record. unknown: (major word, first line, count) of records not
@@ -119,6 +120,7 @@ class PathHints:
     program: object = field(default=None, repr=False, compare=False)
     operation: object = field(default=None, repr=False, compare=False)
     frame: Optional[tuple] = field(default=None, repr=False, compare=False)
+    flutes: Optional[int] = None
     corner_radius: Optional[float] = None
 
     def messages(self):
@@ -253,17 +255,20 @@ def _json_stock(name, frame):
     return Stock(staircase, name, frame=frame)
 
 
-def load_path(path, operation=None, *, tolerance=None, step=None):
+def load_path(path, operation=None, *, tolerance=None, step=None, options=None, program=None):
     """(Toolpath, PathHints) of operation `operation` (1-based; None: the file's one milling operation)
-    of a toolpath file of any name, read by its content (formats.cl: APT / CL text or the toolpath
-    CSV; arcs and curves to `tolerance` mm, their CL points at most `step` mm apart, None: the
-    defaults). The Toolpath is in the operation's engine frame (PathHints.frame). InputError naming
-    the file for an operation the engine cannot run (formats.cl.OperationChoiceError when the file has
-    several and none is chosen)."""
+    of a toolpath file of any name, read by its content (formats.cl: APT / CL text, the toolpath CSV,
+    G-code or a FreeCAD CAM Job, with `options`, a formats.gcode.options.ReadOptions or None; arcs and
+    curves to `tolerance` mm, their CL points at most `step` mm apart, None: the defaults), or of
+    `program` (a Program already read, named `path`). The Toolpath is in the operation's engine frame
+    (PathHints.frame). InputError naming the file for an operation the engine cannot run
+    (formats.cl.OperationChoiceError when the file has several and none is chosen)."""
     from ..formats.cl import STEP, TOLERANCE, read_program
 
     name = os.fspath(path)
-    program = read_program(name, TOLERANCE if tolerance is None else tolerance, STEP if step is None else step)
+    if program is None:
+        program = read_program(name, TOLERANCE if tolerance is None else tolerance, STEP if step is None else step,
+                               options)
     chosen = program.operation(operation)
     refusal = chosen.refusal()
     if refusal is not None:
@@ -274,6 +279,10 @@ def load_path(path, operation=None, *, tolerance=None, step=None):
     records = {}
     if program.format == "csv":
         records = {"diameter": "diameter column", "corner_radius": "corner_radius column"}
+    elif program.format in ("gcode", "fcstd"):
+        records = {"spindle_rpm": "S word", "feed_per_tooth": "F words",
+                   **{key: tool.records[0] for key in ("diameter", "corner_radius", "flute_length", "flutes")
+                      if tool.records}}
     else:
         sizes = next((record.split()[0] for record in tool.records if record.split()[0] in ("CUTTER", "TLDATA")), None)
         if sizes is not None and sizes != "CUTTER":
@@ -285,7 +294,7 @@ def load_path(path, operation=None, *, tolerance=None, step=None):
                       tuple((word, line, count) for word, (line, count) in program.unknown.items()),
                       tuple(program.warnings), records,
                       tuple((word, line, count) for word, (line, count) in program.ignored.items()),
-                      program, chosen, None if same else frame, corner_radius=tool.corner_radius)
+                      program, chosen, None if same else frame, tool.flutes, tool.corner_radius)
     return toolpath, hints
 
 

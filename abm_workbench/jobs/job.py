@@ -45,7 +45,9 @@ class Job:
     assumption); None: in-process where the engine has it (straight flutes, ABM), else
     initial. sweep_tolerance: mm, the sub-step of five-axis moves at the tool's rim. tolerance, step:
     mm, the chordal tolerance of a CL file's arcs and curves and the largest distance between their CL
-    points (formats.cl.read_program).
+    points (formats.cl.read_program). options: what reading the toolpath needs besides it (a FreeCAD
+    CAM Job's name, a G-code program's tool table, machine and work offsets:
+    formats.gcode.options.ReadOptions), or None.
     """
 
     stock: str
@@ -63,6 +65,29 @@ class Job:
     sweep_tolerance: float = 0.05
     tolerance: float = TOLERANCE
     step: float = STEP
+    options: Optional[object] = None
+
+
+def with_cam_stock(job: Job):
+    """`job` with the Stock of a FreeCAD CAM Job where it names none: with no stock, its toolpath's document
+    (an FCStd) as the stock file and that Job's Stock as its solid; with an FCStd stock and no solid named,
+    the Stock of the CAM Job that document holds, if it holds one. InputError when it names no stock and its
+    toolpath is no FreeCAD document."""
+    name = getattr(job.options, "cam_job", None)
+    if job.stock is None:
+        if not os.fspath(job.toolpath).lower().endswith(".fcstd"):
+            raise InputError(f"{job.toolpath}: give the stock (--stock): only a FreeCAD CAM Job's document (FCStd) "
+                             "holds its own")
+        from ..cam.documents import job_stock  # FreeCAD only for a document
+
+        return dataclasses.replace(job, stock=job.toolpath, solid=job.solid or job_stock(job.toolpath, name))
+    if job.solid is None and os.fspath(job.stock).lower().endswith(".fcstd"):
+        from ..cam.documents import job_stock
+
+        same = os.path.abspath(job.stock) == os.path.abspath(job.toolpath)
+        solid = job_stock(job.stock, name if same else None, required=False)
+        return dataclasses.replace(job, solid=solid) if solid else job
+    return job
 
 
 @dataclass(frozen=True)
@@ -93,7 +118,8 @@ class Prepared:
 def prepare(job: Job, *, forces=None):
     """The Prepared job (the stock is read apart, by load_job_stock). forces: override job.forces."""
     defaults = load_job(job.job_file) if job.job_file else {}
-    toolpath, hints = load_path(job.toolpath, job.operation, tolerance=job.tolerance, step=job.step)
+    toolpath, hints = load_path(job.toolpath, job.operation, tolerance=job.tolerance, step=job.step,
+                                options=job.options)
     parameters = resolve(job.given, hints, defaults, job.job_file)
     helix = _value("helix", job, defaults)
     tool, settings = tool_and_settings(parameters.values, helix)

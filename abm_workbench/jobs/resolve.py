@@ -1,7 +1,8 @@
 """Each parameter's value from the sources that can give it, and where it came from.
 
 Precedence: the toolpath file where it really gives a value (the tool and feed the path was
-made for: CUTTER / TLDATA diameter, corner radius and flute length, SPINDL, a constant FEDRAT), else the
+made for: CUTTER / TLDATA diameter, corner radius and flute length, a FreeCAD toolbit's flutes,
+SPINDL, a constant FEDRAT), else the
 front end's own input (command-line options, the engagement object's properties, the task
 panel's fields), else the job file, else the default. A source is recorded as (kind, text):
 ("file", "path.apt CUTTER"), ("given", ""), ("job", "job.json") or ("default", ""); each front
@@ -73,7 +74,7 @@ def resolve(given, hints, job, job_source=None):
     """
     values, sources, conflicts = {}, {}, []
     from_file = {"diameter": hints.diameter, "flute_length": hints.flute_length, "corner_radius": hints.corner_radius,
-                 "spindle_rpm": hints.spindle_rpm}
+                 "spindle_rpm": hints.spindle_rpm, "flutes": hints.flutes}
     order = [name for name in CUTTING if name != "feed_per_tooth"] + ["feed_per_tooth"]
     for name in order:
         parameter = BY_NAME[name]

@@ -164,8 +164,10 @@ class Program:
     """A CL program: source file, units as written ("mm" or "inch"), operations (tuple, file
     order), ignored ({major word: (first line, count)} of records known to carry nothing the
     engine needs), unknown (the same for records not understood), warnings (list of
-    ``"file:line: ..."``), format ("apt" or "csv"), text (the file's text, for rewriting),
-    last_line (the file's number of lines), encoding (the text's, for rewriting)."""
+    ``"file:line: ..."``), format ("apt", "csv", "gcode" or "fcstd": a FreeCAD CAM Job), text (the
+    file's text, for rewriting), last_line (the file's number of lines), encoding (the text's, for
+    rewriting), stock (the name of the object of the file that holds the program's stock solid: a
+    CAM Job's Stock; "" for none)."""
 
     source: str
     units: str
@@ -177,6 +179,7 @@ class Program:
     text: str = field(default="", repr=False)
     last_line: int = 0
     encoding: str = "utf-8"
+    stock: str = ""
 
     def milling(self):
         """The operations the engine can run: flat-end, bull-nose and ball-end mills (or undescribed tools)
