@@ -161,8 +161,8 @@ def test_hole_cycles_are_hole_positions_never_cuts(tmp_path):
     np.testing.assert_array_equal(drill.directions_file, [[-35, -10, -11]])  # from the retract plane R (G99)
     assert len(tap.lines) == 0 and tap.cycles == ("G84",)
     np.testing.assert_array_equal(tap.cycle_points.points, [[1, 1, -3]])
-    assert tap.tool.kind == "tap" and tap.refusal() == "operation 2: tap D5 mm: not a milling tool (the ABM engine " \
-                                                       "computes flat-end mills)"
+    assert tap.tool.kind == "tap" and tap.refusal() == ("operation 2: tap D5 mm: not a milling tool (the ABM engine "
+                                                        "computes flat-end, bull-nose and ball-end mills)")
 
 
 def test_tools_from_a_linuxcnc_table_by_their_comments(tmp_path):
@@ -172,7 +172,7 @@ def test_tools_from_a_linuxcnc_table_by_their_comments(tmp_path):
     assert (ball.tool.kind, ball.tool.diameter, ball.tool.corner_radius) == ("ball", 6, 3)
     assert (bull.tool.kind, bull.tool.diameter, bull.tool.corner_radius) == ("bull-nose", 8, 1.5)
     assert again.tool == flat.tool and ball.tool.name == "6 mm ball end"
-    assert "ball mill D6 R3 mm: a milling tool the ABM engine does not compute yet" in ball.refusal()
+    assert ball.refusal() is None and bull.refusal() is None  # the engine computes them
 
 
 def test_freecad_posts_operations_are_operations(tmp_path):
