@@ -72,6 +72,34 @@ def height_at(s, radius, psi_max):
     return np.where(on_corner, corner, radius + (s - radius * psi_max))
 
 
+def arc_length_at(height, radius, psi_max):
+    """Arc length s (mm) along the peripheral edge of its point at `height` (mm) above the tip (height_at's
+    inverse; the corner's ψ = acos(1 − height/r))."""
+    height = np.asarray(height, dtype=float)
+    top = radius * (1.0 - np.cos(psi_max))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        corner = radius * np.arccos(np.clip(1.0 - height / (radius if radius > 0.0 else 1.0), -1.0, 1.0))
+    return np.where(height <= top, corner, radius * psi_max + (height - radius))
+
+
+def edge_between(result, toolpath, tool, frame, cl, row, t):
+    """Points (n, k, 3) of the peripheral edge of n instants (CL point cl (n,) of `toolpath`, angle
+    result.phi[row] (n,)) at the heights a fraction t (k,) of the way from each instant's LEP to its UEP
+    (result.lep_l, uep_l), in the part frame: the toolpath is in the engine frame `frame` ((R, t),
+    part -> engine, or None), as the Engagement `result` was computed there."""
+    r, psi_max = tool.corner_radius, corner_top(tool)
+    lep, uep = result.lep_l[cl, row], result.uep_l[cl, row]
+    heights = lep[:, None] + np.asarray(t, dtype=float)[None, :] * (uep - lep)[:, None]
+    frames = toolpath.rows(np.asarray(cl)).frames()
+    phi = np.radians(result.phi[row])
+    d = np.sin(phi)[:, None] * frames[:, :, 0] + np.cos(phi)[:, None] * frames[:, :, 1]
+    points = point_at(arc_length_at(heights, r, psi_max), toolpath.cl[cl][:, None], d[:, None], frames[:, None, :, 2],
+                      tool.radius, r, psi_max)
+    if frame is not None:
+        points = (points - frame[1]) @ frame[0]
+    return points
+
+
 def point_at(s, tip, d, w, radius, corner_radius, psi_max):
     """Points (..., 3) of the peripheral edge at arc length s (...) mm; tip, d, w broadcast (..., 3)."""
     s = np.asarray(s, dtype=float)[..., None]

@@ -67,6 +67,7 @@ the GUI replaces by a worker thread.
 """
 
 import atexit
+import functools
 import hashlib
 import os
 import shutil
@@ -78,6 +79,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
+from ..engine.profile import edge_between
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
@@ -459,6 +461,22 @@ class EngagementFeature(FeatureProxy):
         """
         kept = self._kept.get(obj.ResultsDigest)
         return kept.result if kept is not None else None
+
+    def edge_along(self, obj):
+        """None where the drawn edge is straight (a flat-end mill, or the tool or results not known now);
+        for a tool with a corner, the `along` function gui.surface_mesh takes: each engaged instant's
+        peripheral edge between its LEP and its UEP, in the part's frame (engine.profile.edge_between)."""
+        kept = self._kept.get(obj.ResultsDigest)
+        if kept is None or kept.toolpath is None or obj.Toolpath is None:
+            return None
+        try:
+            _, hints = obj.Toolpath.Proxy.load(obj.Toolpath)
+            tool, _ = tool_and_settings(resolve(given_parameters(obj), hints, {}).values, obj.HelixAngle.Value)
+        except (InputError, ParameterError):
+            return None
+        if tool.corner_radius == 0.0:
+            return None
+        return functools.partial(edge_between, kept.result, kept.toolpath, tool, hints.frame)
 
     def forces(self, obj):
         """The PassForces of the results (fx, fy, fz, torque, power per instant), or None: forces off,
@@ -876,7 +894,7 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
     """Add an engagement object of `stock` and `toolpath` (objects of create_stock / create_toolpath)
     to `doc` (default the active document; RuntimeError if none).
 
-    settings: diameter, flutes, flute_length, feed_per_tooth (mm), spindle_rpm, inclination,
+    settings: diameter, flutes, flute_length, corner_radius, feed_per_tooth (mm), spindle_rpm, inclination,
     phi_start, phi_end, phi_step (deg), or phi_range=(start, end); helix (deg); forces (bool),
     material (a forces.MATERIALS name or "custom"), ktc, krc, kac (N/mm²), kte, kre, kae (N/mm),
     immersion_start, immersion_end (deg), or immersion=(start, end); stock_model ("in-process" or
@@ -912,6 +930,7 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
             hints = None  # execute reports it
         if hints is not None:
             for key, value in (("diameter", hints.diameter), ("flute_length", hints.flute_length),
+                               ("corner_radius", hints.corner_radius),
                                ("spindle_rpm", hints.spindle_rpm), ("flutes", hints.flutes)):
                 if value is not None and key not in settings:
                     settings[key] = value

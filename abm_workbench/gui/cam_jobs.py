@@ -74,7 +74,8 @@ def settings_of(op):
     if controller is None:
         raise CommandError(f"{op.Label}: no tool controller")
     tool, _ = controller_tool(controller)
-    for key, value in (("diameter", tool.diameter), ("flute_length", tool.flute_length), ("flutes", tool.flutes)):
+    for key, value in (("diameter", tool.diameter), ("corner_radius", tool.corner_radius),
+                       ("flute_length", tool.flute_length), ("flutes", tool.flutes)):
         if value is not None:
             settings[key] = value
     rpm = float(controller.SpindleSpeed)

@@ -82,6 +82,10 @@ class ReportJob:
     stock_model: str = "initial: the stock as given"
 
 
+#: A tool's kind (engine.Tool.kind) in the report's words.
+TOOL_WORDS = {"flat": "flat end mill", "bull-nose": "bull-nose mill", "ball": "ball end mill"}
+
+
 def paper_model_test(description):
     """1 or 2 when `description` names the paper's model test 1 or 2 ('Model test 1 …'), else None;
     a description that starts by naming another model test ('Model test 3: the model test 1 stock
@@ -203,8 +207,10 @@ def _job_table(validation, job):
         ("CL points checked", _checked_words(validation.checked)),
         ("rotation angles", f"φ {settings.phi_start:g}..{settings.phi_end:g}° step {settings.phi_step:g}°: "
                             f"{p} angles, {m * p} instants"),
-        ("tool", f"flat end mill D {job.tool.diameter:g} mm, {job.tool.flutes} flutes, flute length "
-                 f"{job.tool.flute_length:g} mm" + (f", helix {job.tool.helix:g}°" if job.tool.helix else "")),
+        ("tool", f"{TOOL_WORDS[job.tool.kind]} D {job.tool.diameter:g} mm"
+                 + (f", corner radius {job.tool.corner_radius:g} mm" if job.tool.corner_radius else "")
+                 + f", {job.tool.flutes} flutes, flute length {job.tool.flute_length:g} mm"
+                 + (f", helix {job.tool.helix:g}°" if job.tool.helix else "")),
         ("cutting", f"feed {settings.feed_per_tooth:g} mm/tooth, inclination {settings.inclination:g}°"
                     + (f", {settings.spindle_rpm:g} rpm" if settings.spindle_rpm else "")),
         ("parameters [from]", job.parameters),

@@ -119,7 +119,8 @@ def _results(path):
 
 
 def test_engage_runs_against_the_jobs_own_stock(cam, tmp_path, capsys):
-    common = ["--feed-per-tooth", "0.02", "--phi-step", "5", "--stock-model", "initial"]
+    # The Job's profile: its pocket (bull-nose) and adaptive (ball) are for the engine too.
+    common = ["--feed-per-tooth", "0.02", "--phi-step", "5", "--stock-model", "initial", "--operation", "1"]
     assert main(["engage", "--toolpath", str(cam / "job.FCStd"), *common, "--out", str(tmp_path / "doc.csv")]) == 0
     out = capsys.readouterr().out
     assert "2 flutes [job.FCStd TC: 5mm_Endmill (T1) toolbit 5mm Endmill]" in out and "spindle 8000 rpm" in out
@@ -146,8 +147,8 @@ _WORD_F = re.compile(r" F[0-9.]+")
 
 def test_the_scheduled_feeds_as_a_dressup_that_the_post_writes(cam, tmp_path):
     original = (cam / "job.FCStd").read_bytes()
-    job = Job(None, str(cam / "job.FCStd"), given={"feed_per_tooth": 0.03, "phi_step": 5}, material="al7075-t6",
-              stock_model="initial")
+    job = Job(None, str(cam / "job.FCStd"), operation=1, given={"feed_per_tooth": 0.03, "phi_step": 5},
+              material="al7075-t6", stock_model="initial")
     result = runs.schedule(with_cam_stock(job), str(tmp_path / "scheduled.FCStd"), max_force=400.0,
                            warn=lambda message: None)
     assert (cam / "job.FCStd").read_bytes() == original  # the Job itself is left as it was
