@@ -43,7 +43,7 @@ import numpy as np
 
 from .engagement import SURFACES
 from .intervals import EdgeIntervals
-from .polynomials import bracketed_root, horner, product
+from .polynomials import guarded_root, horner, product
 from .terraced import merged_intervals, plan_crossings, side_changes
 from .terraced_pieces import bernstein_to_power, slab_pieces
 
@@ -266,8 +266,8 @@ def isolated_changes(degree, bernstein):
     keep = ~unsettled[owner]
     owner, lo, width, coefficients = owner[keep], lo[keep], width[keep], coefficients[keep]
     power = coefficients @ _bases(degree)[0].T
-    local = bracketed_root(np.ascontiguousarray(power.T), np.zeros(owner.size), np.ones(owner.size),
-                           coefficients[:, 0], coefficients[:, -1])
+    local = guarded_root(np.ascontiguousarray(power.T), np.zeros(owner.size), np.ones(owner.size),
+                         coefficients[:, 0], coefficients[:, -1])
     rest = np.flatnonzero(unsettled)
     pair, at = side_changes(degree, bernstein[rest]) if rest.size else (np.zeros(0, dtype=np.intp), np.zeros(0))
     pair, at = np.concatenate([owner, rest[pair]]), np.concatenate([lo + width * local, at])

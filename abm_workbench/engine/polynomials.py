@@ -116,14 +116,23 @@ def bracketed_root(columns, lo, hi, f_lo, f_hi):
             x -= _newton_step(columns, x)
         step = _newton_step(columns, x)
     done = (f_lo == 0.0) | (f_hi == 0.0)
-    x = x - step
-    # Newton may converge to another root of p, outside the bracket: such a row is not done.
+    x = np.where(done, start, np.minimum(np.maximum(x - step, lo), hi))
     ok = done | ((x >= lo) & (x <= hi) & (np.abs(step) <= ROOT_TOL))
-    x = np.where(done, start, np.minimum(np.maximum(x, lo), hi))
     again = np.flatnonzero(~ok)
     if again.size:
         x[again] = _safeguarded_newton(columns[:, again], lo[again], hi[again], f_lo[again], start[again])
     return x
+
+
+def guarded_root(columns, lo, hi, f_lo, f_hi):
+    """The root of p in [lo, hi] where p(lo) = f_lo and p(hi) = f_hi differ in sign, both nonzero: the
+    safeguarded Newton of bracketed_root's fallback from the secant point, which never leaves the bracket
+    (for a polynomial that need not be monotone there, where plain Newton may run to another root).
+    columns (d+1, m), lo, hi, f_lo, f_hi (m,) as bracketed_root takes them; (m,) roots to ROOT_TOL."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        start = lo - f_lo * (hi - lo) / (f_hi - f_lo)
+    start = np.where((start > lo) & (start < hi), start, 0.5 * (lo + hi))
+    return _safeguarded_newton(columns, lo, hi, f_lo, start)
 
 
 def _newton_step(columns, x):
