@@ -6,8 +6,12 @@ one of the two methods engages) a relative error means nothing, and the absolute
 l_ABM − l_ref (mm) is reported instead; the two kinds are kept apart in every summary.
 
 Arrays are over m CL points × p rotation angles φ. Lengths in mm, angles in degrees,
-relative errors as fractions (0.01 = 1 %). Everything here is numpy, except :func:`validate`,
-which runs the boolean reference through :mod:`abm_workbench.cad.boolean` (FreeCAD), and
+relative errors as fractions (0.01 = 1 %). Every tool is checked along its whole cutting edge: the
+peripheral edge (a flat-end mill's side line; a bull-nose or ball-end mill's corner arc and side, its
+length of cut the arc length along both, LEP and UEP heights along the axis above the tip) and the end
+edge (its engaged length compared apart: Comparison.end_abm, end_ref). Everything here is numpy, except
+:func:`validate`, which runs the boolean reference through :mod:`abm_workbench.cad.profile_boolean` (FreeCAD;
+a flat-end mill's side lines by :mod:`abm_workbench.cad.boolean`, as before), and
 :func:`validate_helix`, its counterpart for helical edges (:mod:`abm_workbench.cad.helix_boolean`):
 per instant and flute the axial length of cut, LEP and UEP (axial positions l) of
 flute_engagement against the helix boolean.
@@ -467,7 +471,8 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
     arrays over CL points first), computed in `workers` processes or on a Dask cluster, one CL
     point per task.
 
-    reference: a module-level function of cad (edge_lengths_by_boolean, flute_lengths_by_boolean).
+    reference: a module-level function of cad (profile_lengths_by_boolean, flat_lengths_by_boolean,
+    flat_lengths_in_process, flute_lengths_by_boolean).
     workers: 1 (or a pass of one CL point) runs it here; N > 1 in N spawned processes
     (worker_processes.WorkerProcesses); 0 one per core. scheduler: the address of a Dask scheduler
     ("tcp://host:port"), instead of local processes. progress(done, total) after each CL point. On

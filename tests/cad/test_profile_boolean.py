@@ -232,3 +232,32 @@ def test_the_module_names_no_engine_solver():
     for module in (profile_edges, profile_boolean):
         source = inspect.getsource(module)
         assert "engine.profile" not in source and "engine.corner" not in source and ".profile import" not in source
+
+
+@pytest.mark.parametrize("corrupt", ["one box", "both boxes"])
+def test_the_two_local_booleans_are_cross_checked(solids, monkeypatch, corrupt):
+    """When the booleans with the two local stocks disagree on an edge, the whole stock decides: with one of
+    them planted wrong (its stock shifted 0.3 mm) the majority gives the right result; with both wrong (and
+    differently) the point classifier does. Either way the result is the whole stock's, and the edges are
+    counted as disputed."""
+    solid = solids["terraced"][1]
+    tool = tool_of(0.3)
+    path = seeded_pass("terraced", "tilted", 31, n=2)
+    geometry = EdgeGeometry.of(tool, path.cl[1], tool_frames(path)[1], SETTINGS.phi)
+    whole = edge_intervals(solid, geometry, local=False)
+    local_stock = profile_boolean.local_stock
+    shifts = {profile_boolean.LOCAL_MARGINS[1]: 0.3, **({profile_boolean.LOCAL_MARGINS[0]: -0.3}
+                                                         if corrupt == "both boxes" else {})}
+
+    def planted(shape, edges, margin=profile_boolean.LOCAL_MARGIN):
+        local = local_stock(shape, edges, margin)
+        return local.translated(profile_edges.V(shifts[margin], 0.0, 0.0)) if margin in shifts else local
+
+    monkeypatch.setattr(profile_boolean, "local_stock", planted)
+    disputes = []
+    found = edge_intervals(solid, geometry, disputes=disputes)
+    assert len(disputes) > 10
+    for kind in whole:
+        for k in range(len(geometry.d)):
+            assert len(found[kind][k]) == len(whole[kind][k])
+            np.testing.assert_allclose(np.ravel(found[kind][k]), np.ravel(whole[kind][k]), rtol=0, atol=1e-9)

@@ -4,7 +4,6 @@ the engaged corner as arcs; a flat-end mill keeps its side-line reference bit fo
 edge, against the stock as given and the in-process stock; the in-process stock of a tool with a corner is
 refused in words."""
 
-import os
 import zipfile
 
 import numpy as np
@@ -182,3 +181,30 @@ def test_the_end_edges_against_the_in_process_stock():
     comparison = result.comparison
     assert np.isnan(comparison.end_abm[result.in_process.changed]).all()  # the engine leaves those out
     assert not comparison.end_checked[result.in_process.changed].any()
+
+
+def test_the_removal_estimate_against_the_exact_in_process_reference():
+    """profile_inprocess.removed_lengths on a flat-end mill, whose in-process stock the boolean computes
+    exactly: the estimated in-process length within two sample cells of the exact one per run, for the side
+    and the end edges; for a bull-nose it removes some of what the stock as given holds, never more."""
+    from abm_workbench.cad.profile_boolean import flat_lengths_in_process
+    from abm_workbench.cad.profile_inprocess import EDGE_STEP, removed_lengths
+    from abm_workbench.cad.inprocess_boolean import ProgramSweep
+
+    prog, rows = inprocess_program()
+    d = prog.as_dict()
+    tool = Tool(10.0, 2, 12.0)
+    path = Toolpath.from_axes(d["cl"][rows], d["axis"][rows])
+    solid = staircase_solid(staircase())
+    moves = prog.moves()
+    phi = SETTINGS.phi
+    exact = flat_lengths_in_process(solid, tool, path, phi, ProgramSweep(swept_pieces(moves, 0.001), rows, path))
+    cls = [1, 2, 3]
+    estimate = removed_lengths(solid, tool, path, phi, moves, rows, cls)
+    assert (estimate.removed > 1.0).any()
+    runs = np.maximum(exact["pieces"][cls], 1)
+    np.testing.assert_array_less(np.abs(estimate.in_process - exact["length"][cls]), 2.0 * EDGE_STEP * runs + 1e-9)
+    np.testing.assert_array_less(np.abs(estimate.end_given - estimate.end_removed - exact["end_length"][cls]),
+                                 2.0 * EDGE_STEP * np.maximum(exact["end_pieces"][cls], 1) + 1e-9)
+    corner = removed_lengths(solid, Tool(10.0, 2, 12.0, corner_radius=3.0), path, phi, moves, rows, cls)
+    assert (corner.removed <= corner.given + 1e-12).all() and corner.positions.min() > 0
