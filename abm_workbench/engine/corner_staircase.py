@@ -244,11 +244,14 @@ def _chunk(stock, walls, c, a, b, r, top, offset):
               (1, stock.y_min, _CODE["stock_side"], -1), (1, stock.y_max, _CODE["stock_side"], -1),
               (2, stock.base_z, _CODE["bottom"], -1)]
     planes += [(2, float(z), _CODE["top"], -1) for z in np.unique(stock.z_top)]
+    crossed = []
     for axis, value, code, wall in planes:
         rows = np.flatnonzero((low[:, axis] - MARGIN <= value) & (high[:, axis] + MARGIN >= value))
-        if rows.size:
-            roots = trig_roots(a[rows, axis], b[rows, axis], value - c[rows, axis], top)
-            blocks.extend(_root_blocks(rows, roots, np.full(rows.size, code * _LABEL + wall + 1)))
+        crossed.append((rows, a[rows, axis], b[rows, axis], value - c[rows, axis], code * _LABEL + wall + 1))
+    sizes = [part[0].size for part in crossed]
+    roots = trig_roots(*(np.concatenate([part[k] for part in crossed]) for k in (1, 2, 3)), top)
+    for (rows, *_, label), part in zip(crossed, np.split(roots, np.cumsum(sizes)[:-1])):
+        blocks.extend(_root_blocks(rows, part, np.full(rows.size, label)))
     # The walls the arcs may cross: a quintic's side of each piece follows from its side at the arc's start
     # and its changes of side (deltas of the section), the others are evaluated at the pieces' middles.
     y_lo, y_hi = np.maximum(low[:, 1], stock.y_min), np.minimum(high[:, 1], stock.y_max)
@@ -802,8 +805,14 @@ def _sorted_breakpoints(n, blocks, top):
     psi[fill] = top
     packed[fill] = 4 * (CORNER_TOP if top >= 0.5 * np.pi else _CODE["flute_end"]) * _LABEL + 1
     psi, packed = psi.reshape(n, width), packed.reshape(n, width)
-    order = np.argsort(psi, axis=1, kind="stable")
-    return np.take_along_axis(psi, order, axis=1), np.take_along_axis(packed, order, axis=1)
+    # The start is first and the end last already: only arcs with two breakpoints or more between need sorting.
+    rows = np.flatnonzero(counts > 3)
+    if rows.size:
+        part = psi[rows]
+        order = np.argsort(part, axis=1, kind="stable")
+        psi[rows] = np.take_along_axis(part, order, axis=1)
+        packed[rows] = np.take_along_axis(packed[rows], order, axis=1)
+    return psi, packed
 
 
 def _runs(stock, table, rows, psi, packed, c, a, b, r, base, pair_rows, pair_walls):
