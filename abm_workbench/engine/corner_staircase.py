@@ -588,8 +588,8 @@ def _spline_walls(stock, table, rows, wall_index, c, a, b, low, high, top):
 def _polished(table, span, u, psi, cp, ap, bp, top):
     """The crossings ψ (E,) of arcs (plan C_p + A cos ψ + B sin ψ; cp, ap, bp (E, 2)) with B-spline spans
     `span` (E,) near u (E,), refined by Newton on C(u) = Q(ψ) (two equations, the span's point and the
-    arc's plan point): POLISH_STEPS steps, kept where they converge to a point of the span (u within
-    [0, 1] but for rounding) on the arc. The crossings as found (the implicit equation's root and the
+    arc's plan point): POLISH_STEPS steps, kept where they converge (the last step in ψ below 1e-9, the
+    whole move below 1e-6) to a point of the span (u within [0, 1] but for rounding) on the arc. The crossings as found (the implicit equation's root and the
     ellipse's angle of its point, or a plan line's crossing) lose digits where the ellipse is thin; this
     gives them back."""
     sx, sy, sw = table.spans_x[span], table.spans_y[span], table.spans_w[span]
@@ -606,9 +606,12 @@ def _polished(table, span, u, psi, cp, ap, bp, top):
         qx1, qy1 = bp[:, 0] * cos - ap[:, 0] * sin, bp[:, 1] * cos - ap[:, 1] * sin
         det = qx1 * cy1 - cx1 * qy1  # of [[cx1, −qx1], [cy1, −qy1]]
         with np.errstate(divide="ignore", invalid="ignore"):
+            step = (cx1 * fy - cy1 * fx) / det
             u = u - (qx1 * fy - qy1 * fx) / det
-            psi = psi - (cx1 * fy - cy1 * fx) / det
-    good = (np.abs(u - x0) <= 1e-6) & (np.abs(psi - s0) <= 1e-6) & (u >= -1e-9) & (u <= 1.0 + 1e-9)
+            psi = psi - step
+    with np.errstate(invalid="ignore"):
+        good = ((np.abs(step) <= 1e-9) & (np.abs(u - x0) <= 1e-6) & (np.abs(psi - s0) <= 1e-6) & (u >= -1e-9)
+                & (u <= 1.0 + 1e-9))
     return np.where(good, np.clip(psi, 0.0, top), s0)
 
 
