@@ -23,6 +23,7 @@ import dataclasses
 import numpy as np
 
 from .corner import CORNER_TOP, corner_intervals
+from .corner_staircase import staircase_corner_intervals
 from .engagement import CASES, SURFACES, edge_lines, empty_results, finished_engagement, inside_intervals
 from .intervals import EdgeIntervals
 from .model import Staircase
@@ -113,9 +114,9 @@ def point_at(s, tip, d, w, radius, corner_radius, psi_max):
 
 def profile_intervals(stock, tool, toolpath, phi_deg, terraced=None):
     """EdgeIntervals of the m·p peripheral edges (row i·p + k for CL point i, angle k) in arc length s (mm):
-    the corner's (against the stock's terraced form `terraced`, (TerracedStock, pieces), made when None)
-    and the straight side's (the stock's own engine), joined where a run goes on from the corner's top to
-    the side."""
+    the corner's (on a Staircase by corner_staircase, on a TerracedStock by corner.py against `terraced`,
+    (TerracedStock, pieces), made when None; a Staircase ignores it) and the straight side's (the stock's own
+    engine), joined where a run goes on from the corner's top to the side."""
     r, big, length = tool.corner_radius, tool.radius, tool.flute_length
     psi_max = corner_top(tool)
     d = radial_directions(toolpath, phi_deg)
@@ -125,9 +126,12 @@ def profile_intervals(stock, tool, toolpath, phi_deg, terraced=None):
     d = d.reshape(-1, 3)
     parts = []
     if r > 0.0:
-        terraced, pieces = as_terraced(stock) if terraced is None else terraced
-        corner = corner_intervals(terraced, tip + (big - r) * d + r * w, d, w, r, psi_max, pieces)
-        parts.append(corner)
+        centre = tip + (big - r) * d + r * w
+        if isinstance(stock, Staircase):
+            parts.append(staircase_corner_intervals(stock, centre, d, w, r, psi_max))
+        else:
+            terraced, pieces = as_terraced(stock) if terraced is None else terraced
+            parts.append(corner_intervals(terraced, centre, d, w, r, psi_max, pieces))
     if length > r:
         side = stock_intervals(stock, tip + big * d + r * w, w, length - r)
         parts.append(_shifted(side, r * psi_max))
@@ -175,7 +179,7 @@ def profile_engagement(stock, tool, toolpath, settings, *, chunk_instants=1 << 1
     the paper's Table 1 is for flat-end mills."""
     phi = settings.phi
     m, p = len(toolpath), phi.size
-    terraced = as_terraced(stock, tool.corner_radius)
+    terraced = None if isinstance(stock, Staircase) else as_terraced(stock, tool.corner_radius)
     out, lep_xyz, uep_xyz = empty_results(m, p)
     labels = {name: np.full((m, p), fill, dtype=dtype) for name, fill, dtype in (
         ("lep_surface", 0, np.int8), ("lep_section", -1, np.int32), ("lep_wall", -1, np.int32))}
