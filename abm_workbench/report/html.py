@@ -82,9 +82,6 @@ class ReportJob:
     stock_model: str = "initial: the stock as given"
 
 
-#: A tool's kind (engine.Tool.kind) in the report's words.
-
-
 def paper_model_test(description):
     """1 or 2 when `description` names the paper's model test 1 or 2 ('Model test 1 …'), else None;
     a description that starts by naming another model test ('Model test 3: the model test 1 stock
