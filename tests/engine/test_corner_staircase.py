@@ -414,10 +414,9 @@ def test_profile_intervals_takes_the_staircase_solver(monkeypatch):
     assert called
 
 
-@pytest.mark.xfail(strict=True, reason="walls.SplineTable.span_parameter takes the wrong end of a span when y is "
-                                       "a knot whose span's start y rounds below it (the curve has no root in "
-                                       "[0, 1] there); corner_staircase does not rely on it (_spline_x, _WallTable)")
 def test_spline_wall_x_at_at_a_knot():
+    """A knot whose span's start y rounds below it: x_at keeps the span the point is on (bracketed_root
+    may return the bracket's end there)."""
     stock = contour_stock(MODEL_1)
     y = np.array([-3.75, -3.28125])
     np.testing.assert_allclose(stock.walls[0].x_at(y), SplineReference(stock).wall_x(0, y), rtol=0.0, atol=1e-9)
