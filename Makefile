@@ -59,8 +59,8 @@ validate-model-test-3: deps
 # tilted axes; 518 CL points), against OpenCASCADE on the stock as given: corner arcs, sides and end edges of every
 # other CL point (and the shown ones) at phi step 3 deg, 2 worker processes, a report and an annotated document, and
 # the estimate of what earlier passes removed (the in-process stock of a corner tool is computed by neither side) at
-# every 37th CL point. Through the Python API (tests/cad/run_model_test_5.py) until the command line's validate takes
-# tools with a corner radius. About 10 minutes on 2 quiet cores.
+# every 37th CL point. Through the Python API (tests/cad/run_model_test_5.py), for that estimate; `abm validate
+# --job resources/models/model_test_5/job.json ...` checks the same files without it. About 10 minutes on 2 quiet cores.
 model-test-5: deps
 	$(PYTHON) -m tests.cad.run_model_test_5 --report $(OUT)/model_test_5/validation \
 	  --fcstd $(OUT)/model_test_5/validation.FCStd --cl 40,150,268,440 --check-every 2 --phi-step 3 --workers 2 \

@@ -11,9 +11,10 @@ against cad.profile_boolean's reference: corner arcs, sides and end edges sectio
 writes the HTML report (report.html's folder with its CSV tables) and the annotated FreeCAD document. It
 prints the largest |ABM − boolean| per field and the timings.
 
-The command line's validate cannot take a tool with a corner radius yet (the job layer refuses bull-nose
-operations until --corner-radius and the CL reader's corner radii are wired in): this script is the
-stand-in, and reads everything the command line would from the same files.
+The command line's validate reads the same files (`abm validate --job resources/models/model_test_5/job.json
+--stock resources/models/model_test_5/stock.json --toolpath resources/models/model_test_5/toolpath.cls
+--stock-model initial ...`); this script adds, with --removed-every, the estimate of what earlier passes remove
+from the edges (cad.profile_inprocess), which the command line does not give.
 """
 
 import argparse
