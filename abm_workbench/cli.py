@@ -357,13 +357,16 @@ def _program_arguments(group, *job_aliases):
                             "(xyzac-trt, xyzbc-trt, xyzbc-ht) and their pivots")
     group.add_argument("--offsets", metavar="FILE",
                        help="G-code: the work offsets G54-G59.3, a LinuxCNC parameter file or JSON; default all zero")
+    group.add_argument("--machine-units", choices=("mm", "inch"),
+                       help="G-code: the unit of the LinuxCNC tool table's and parameter file's lengths, the "
+                            "machine's (default mm; a program in inches with such a file needs it said)")
 
 
 def _read_options(args):
     """The ReadOptions of the parsed arguments."""
     from .formats.gcode.options import ReadOptions
 
-    return ReadOptions(args.cam_job, args.tool_table, args.machine, args.offsets)
+    return ReadOptions(args.cam_job, args.tool_table, args.machine, args.offsets, args.machine_units)
 
 
 def _arc_options(args):

@@ -54,11 +54,37 @@ def test_straight_moves_their_chords_feeds_and_lines(tmp_path):
 
 
 def test_inches_incremental_moves_and_feed_per_revolution(tmp_path):
-    op = read(tmp_path, "G20 G90\nT1 M6\nG0 X1 Y1 Z1\nG91 G95\nG1 X1 Z-1 F0.004\nY-0.5\n").operations[0]
+    op = read(tmp_path, "G20 G90\nT1 M6\nG0 X1 Y1 Z1\nG91 G95\nG1 X1 Z-1 F0.004\nY-0.5\n",
+              machine_units="mm").operations[0]
     np.testing.assert_allclose(op.points_file, [[50.8, 25.4, 0.0], [50.8, 12.7, 0.0]], rtol=0, atol=1e-12)
     np.testing.assert_allclose(op.feed, 0.004 * 25.4)
-    assert op.feed_unit == "MMPR"
-    assert read(tmp_path, "G20\nT1 M6\nG0 X0 Y0 Z0\nG1 X1 F10\n").units == "inch"
+    assert op.feed_unit == "MMPR" and op.tool.diameter == 10
+    assert read(tmp_path, "G20\nG0 X0 Y0 Z0\nG1 X1 F10\n", table=False).units == "inch"
+
+
+def test_the_machine_units_of_a_tool_table_and_a_parameter_file(tmp_path):
+    """LinuxCNC keeps its tool table and parameter file in the machine's units: a program in inches with
+    either is refused until they are said; said in inches, their lengths (not their angles) become mm."""
+    program = "G21\nT2 M6\nG55\nG0 X0 Y0 Z1\nG20\nG1 X1 F10\n"
+    (tmp_path / "linuxcnc.var").write_text("5241 1.0\n5242 -2.0\n5243 0.5\n5244 90.0\n")
+    message = refused(tmp_path, program)
+    assert ("prog.ngc:5: G20: the program works in inches, and tools.tbl gives lengths in the machine's units"
+            in message and "--machine-units mm or inch" in message)
+    assert "tools.tbl and linuxcnc.var give" in refused(tmp_path, program, offsets=str(tmp_path / "linuxcnc.var"))
+    (tmp_path / "inch.tbl").write_text("T2 P2 D0.25 Z+1.5 ;quarter inch bull nose R0.03\n")
+    op = read(tmp_path, program, tool_table=str(tmp_path / "inch.tbl"), offsets=str(tmp_path / "linuxcnc.var"),
+              machine_units="inch").operations[0]
+    assert op.tool.kind == "bull-nose" and op.tool.unit == "inch"
+    np.testing.assert_allclose([op.tool.diameter, op.tool.corner_radius, op.tool.length],
+                               [6.35, 0.762, 38.1], rtol=0, atol=1e-12)
+    # G55's offset (1, -2, 0.5) inch added to X1 inch, Y0 and Z1 mm (written before G20)
+    np.testing.assert_allclose(op.points_file[-1], [2 * 25.4, -2 * 25.4, 1.0 + 0.5 * 25.4], rtol=0, atol=1e-12)
+    # a program in mm throughout needs no word; a JSON offsets file is in mm
+    assert read(tmp_path, "G21\nT1 M6\nG0 X0 Y0 Z0\nG1 X1 F10\n").operations[0].tool.diameter == 10
+    (tmp_path / "offsets.json").write_text('{"G54": [1, 2, 3]}')
+    op = read(tmp_path, "G20\nG0 X0 Y0 Z0\nG1 X1 F10\n", table=False,
+              offsets=str(tmp_path / "offsets.json")).operations[0]
+    np.testing.assert_allclose(op.points_file[-1], [25.4 + 1.0, 2.0, 3.0], rtol=0, atol=1e-12)
 
 
 def test_blanks_inside_words_block_delete_and_comments_anywhere(tmp_path):

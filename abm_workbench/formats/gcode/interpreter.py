@@ -51,6 +51,7 @@ class Interpreter:
         self.offsets = {key: np.array(value, dtype=float) for key, value in (offsets or zero_offsets()).items()}
         self.collector = Collector(source)
         self.scale, self.units = 1.0, None
+        self.first_inch = None  # the line of the first G20
         self.absolute, self.arc_absolute, self.plane = True, False, 17
         self.motion = None
         self.feed_mode, self.feed = 94.0, math.nan
@@ -106,7 +107,7 @@ class Interpreter:
                 self.note_ignored(line, code_text("M", code))
         if 93.0 in g_codes or 94.0 in g_codes or 95.0 in g_codes:
             self.feed_mode = next(code for code in (93.0, 94.0, 95.0) if code in g_codes)
-        self.units_of(g_codes)
+        self.units_of(g_codes, line)
         if "F" in values:
             self.set_feed(values["F"], line)
         elif self.feed_mode == 93.0:
@@ -152,8 +153,10 @@ class Interpreter:
 
     # Modal settings.
 
-    def units_of(self, g_codes):
-        """G20 / G21: the length unit of what follows."""
+    def units_of(self, g_codes, line):
+        """G20 / G21: the length unit of what follows (first_inch: the line of the first G20)."""
+        if 20.0 in g_codes and self.first_inch is None:
+            self.first_inch = line
         for code, scale, label in ((20.0, MM_PER_INCH, "inch"), (21.0, 1.0, "mm")):
             if code in g_codes:
                 self.scale = scale

@@ -2,11 +2,12 @@
 
 A program's X Y Z (and A B C) plus the offset of the coordinate system in force are positions in
 the table's frame, which is then the part frame. Without a table every offset is zero and the
-part frame is the program's own. Two files are read (lengths in mm, angles in degrees):
+part frame is the program's own. Two files are read (angles in degrees):
 
 - a LinuxCNC parameter file (``linuxcnc.var``): lines ``number value``; parameters 5221–5226 are
-  G54's X Y Z A B C, and each next system's are 20 further on (5241 G55, …, 5381 G59.3);
-- a JSON object ``{"G54": [x, y, z], "G55": [x, y, z, a, b, c], …}``.
+  G54's X Y Z A B C, and each next system's are 20 further on (5241 G55, …, 5381 G59.3); lengths
+  in the machine's units, as LinuxCNC keeps them (mm unless said);
+- a JSON object ``{"G54": [x, y, z], "G55": [x, y, z, a, b, c], …}``, lengths in mm.
 """
 
 import os
@@ -28,13 +29,15 @@ def zero_offsets():
     return {system: np.zeros(6) for system in SYSTEMS}
 
 
-def load_offsets(path):
-    """{system: (6,) x, y, z mm, a, b, c degrees} of the offsets file at `path` (module docstring); systems it
-    does not give are zero. InputError naming the file and the line or key."""
+def load_offsets(path, scale=1.0):
+    """({system: (6,) x, y, z mm, a, b, c degrees}, in_machine_units) of the offsets file at `path` (module
+    docstring): a parameter file's lengths times `scale` (the machine's unit in mm: 1 or 25.4), and
+    in_machine_units True for it (False for JSON, in mm); systems it does not give are zero. InputError
+    naming the file and the line or key."""
     name = os.fspath(path)
     text = read_text(name)
     if text.lstrip().startswith("{"):
-        return _json_offsets(name)
+        return _json_offsets(name), False
     table = zero_offsets()
     for number, raw in enumerate(split_lines(text), start=1):
         fields = raw.split()
@@ -49,8 +52,8 @@ def load_offsets(path):
             raise InputError(f"{name}:{number}: {fields[1]}: not a number of at most {MAX_MAGNITUDE:g} in magnitude")
         system, axis = divmod(parameter - _FIRST_PARAMETER, _PARAMETER_STEP)
         if 0 <= system < len(SYSTEMS) and axis < 6:
-            table[SYSTEMS[system]][axis] = value
-    return table
+            table[SYSTEMS[system]][axis] = value * (scale if axis < 3 else 1.0)
+    return table, True
 
 
 def _json_offsets(name):

@@ -1,7 +1,7 @@
 """LinuxCNC tool tables: the tools a G-code program's ``T… M6`` load, by number.
 
 Each line ``T<n> P<pocket> [X…] [Y…] Z<length> [A… B… C…] D<diameter> [I… J… Q…] ;comment`` (any
-order, any case; lengths in mm) describes tool n: D its diameter, Z its length offset (taken as the
+order, any case; lengths in the machine's units, mm unless said) describes tool n: D its diameter, Z its length offset (taken as the
 tool's length), the comment its name. Lines with only a comment, blank lines and the other words
 (pocket, lathe angles and orientation, other offsets) are accepted and not used. The comment names
 the kind where it says it (:func:`kind_of_comment`): ``ball`` (corner radius D/2), ``bull`` /
@@ -26,8 +26,9 @@ _BULL = re.compile(r"\bBULL|\bTORUS|CORNER\s*RAD")
 _FLAT = re.compile(r"END\s*MILL|\bFLAT\b|SQUARE")
 
 
-def load_tool_table(path):
-    """{tool number: ToolSpec} of the LinuxCNC tool table at `path`; InputError naming the file and line."""
+def load_tool_table(path, scale=1.0):
+    """{tool number: ToolSpec} of the LinuxCNC tool table at `path`, its lengths times `scale` (the machine's
+    unit in mm: 1 or 25.4); InputError naming the file and line."""
     name = os.fspath(path)
     tools = {}
     for number, raw in enumerate(split_lines(read_text(name)), start=1):
@@ -56,27 +57,35 @@ def load_tool_table(path):
         if tool in tools:
             raise InputError(f"{name}:{number}: T{tool}: the table describes tool {tool} twice")
         source = f"{os.path.basename(name)} line {number} (T{tool})"
-        tools[tool] = table_tool(words.get("D"), words.get("Z"), comment.strip(), source)
+        tools[tool] = table_tool(_scaled(words.get("D"), scale), _scaled(words.get("Z"), scale), comment.strip(),
+                                 source, scale)
     return tools
 
 
-def table_tool(diameter, length, comment, source):
+def _scaled(value, scale):
+    """`value` times `scale`, None for None."""
+    return None if value is None else value * scale
+
+
+def table_tool(diameter, length, comment, source, scale=1.0):
     """The ToolSpec of a tool table line: `diameter` and `length` mm (None or 0: not given), its `comment`
-    naming it (and its kind: :func:`kind_of_comment`), `source` the record it came from."""
+    naming it (and its kind: :func:`kind_of_comment`, a corner radius written there times `scale`),
+    `source` the record it came from."""
     diameter = diameter if diameter and diameter > 0.0 else None
-    kind, radius = kind_of_comment(comment, diameter)
-    return ToolSpec(kind, diameter, radius, None, (source,), name=comment,
+    kind, radius = kind_of_comment(comment, diameter, scale)
+    return ToolSpec(kind, diameter, radius, None, (source,), unit="inch" if scale != 1.0 else "mm", name=comment,
                     length=length if length and length > 0.0 else None)
 
 
-def kind_of_comment(comment, diameter):
-    """(kind, corner radius mm or None) that a tool table comment says for a tool of `diameter` mm."""
+def kind_of_comment(comment, diameter, scale=1.0):
+    """(kind, corner radius mm or None) that a tool table comment says for a tool of `diameter` mm; a radius
+    written in the comment (``R1.5``) times `scale`, the table's unit in mm."""
     text = " ".join(str(comment).upper().replace("_", " ").replace("-", " ").split())
     if _BALL.search(text):
         return "ball", None if diameter is None else diameter / 2.0
     if _BULL.search(text):
         radius = _RADIUS.search(text)
-        return "bull-nose", float(radius.group(1)) if radius else None
+        return "bull-nose", float(radius.group(1)) * scale if radius else None
     other = kind_of_name(text)
     if other is not None:
         return other, None
