@@ -261,8 +261,8 @@ def main():
     parser.add_argument("--profile", action="store_true", help="profile the in-process runs")
     args = parser.parse_args()
     print("| program | cutting moves | CL points | instants | initial s | in-process s (sweep) | ratio | "
-          "initial µs/instant | in-process µs/instant | in-process ms/CL | CL changed | peak MB (initial, in-process) "
-          "| check |")
+          "initial µs/instant | in-process µs/instant | in-process ms/CL | CL changed | "
+          "peak MB (initial, in-process) | check |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name in args.program or list(PROGRAMS):
         figures, fields = run(name, args)
