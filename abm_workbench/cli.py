@@ -502,11 +502,10 @@ def _run_schedule(args):
 
 
 def _engine_progress():
-    """Progress callback for engage: 'abm: CL points 120/530' on one line of stderr."""
-    def report(done, total):
-        end = "\n" if done == total else ""
-        print(f"\r{PROG}: CL points {done}/{total}", end=end, file=sys.stderr, flush=True)
-    return report
+    """Progress callback for engage on a terminal: a bar redrawn on one line of stderr with the CL
+    points done, the time elapsed and an estimate of the time left (_Progress), which long runs
+    against the in-process stock need most."""
+    return _Progress("engage", sys.stderr)
 
 
 class _Progress:

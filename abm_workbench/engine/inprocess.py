@@ -25,6 +25,7 @@ import numpy as np
 
 from .engagement import SURFACES
 from .inprocess_reach import capsule_spheres, group_capsules
+from .inprocess_touch import touching
 from .intervals import EdgeIntervals
 from .swept import FEASIBLE_EPS, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
@@ -347,7 +348,7 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span)
             ball_chain, ball_centre, ball_bound)
 
 
-def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None):
+def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
     it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm. Both
@@ -360,6 +361,10 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None):
     radius + lean·h of c (|e| ≤ radius, h·|w_p − w| ≤ lean·h). So the axial range grows by
     slack + lean·radius, and the distance seen along the axis by slack + lean·h, h up to the
     height at which a piece point can be level with the segment (h·(w_p·w) ≥ h·(1 − lean²/2)).
+
+    touch: also apart when the segment reaches into that axial range by less than
+    inprocess_touch.TOUCH along itself (inprocess_touch.touching): for line segments, whose
+    material such a hull can change by less than that.
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (row_dot(v, axis) for v in (qa, qb, d))
@@ -370,9 +375,11 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None):
         rise = np.maximum(np.maximum(aa, ab) - np.minimum(da, 0.0) + axial, 0.0)
         reach = np.where(level > 0.0, np.minimum(rise / np.where(level > 0.0, level, 1.0), height), height)
         across = across + lean * reach
-    below = np.maximum(aa, ab) < np.minimum(da, 0.0) - axial
-    above = np.minimum(aa, ab) > height + np.maximum(da, 0.0) + axial
-    apart = below | above
+    floor, ceiling = np.minimum(da, 0.0) - axial, height + np.maximum(da, 0.0) + axial
+    if touch:
+        apart = touching(a, b, aa, ab, floor, ceiling)
+    else:
+        apart = (np.maximum(aa, ab) < floor) | (np.minimum(aa, ab) > ceiling)
     # The distance seen along the axis only where the cheaper test left it open.
     i = np.flatnonzero(~apart)
     qa_i = _rows(qa, i)
@@ -897,7 +904,8 @@ def _chains_near(seg, chain, envelope, origins, directions, pieces):
     open_ = envelope[0, seg] < envelope[1, seg]
     seg, chain = seg[open_], chain[open_]
     a, b = _ends(seg, envelope, origins, directions)
-    keep = ~_apart(a, b, *pieces.hulls("chain", chain), pieces.chain_slack[chain], pieces.chain_lean[chain])
+    keep = ~_apart(a, b, *pieces.hulls("chain", chain), pieces.chain_slack[chain], pieces.chain_lean[chain],
+                   touch=True)
     return seg[keep], chain[keep]
 
 
@@ -955,7 +963,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     out = [_solved(whole[open_], chain[open_], envelope, origins, directions, pieces, whole=True)]
     a, b = _ends(seg, envelope, origins, directions)
     hulls = pieces.hulls("span", span)
-    keep = ~_apart(a, b, *hulls, 0.0, 0.5 * pieces.span_turn[span])
+    keep = ~_apart(a, b, *hulls, 0.0, 0.5 * pieces.span_turn[span], touch=True)
     seg, span = seg[keep], span[keep]
     if seg.size == 0:
         return out[0]
@@ -1021,7 +1029,7 @@ def _near_pieces(seg, piece, envelope, origins, directions, pieces):
     at = np.flatnonzero(near)
     seg, piece = seg[at], piece[at]
     a, b = _ends(seg, envelope, origins, directions)
-    near[at] = ~_apart(a, b, *pieces.hulls("piece", piece), 0.0)
+    near[at] = ~_apart(a, b, *pieces.hulls("piece", piece), 0.0, touch=True)
     return near
 
 

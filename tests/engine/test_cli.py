@@ -258,7 +258,8 @@ def test_progress_only_on_a_terminal(case, capsys, monkeypatch):
     assert status == 0 and err == ""
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
     status, _, err = run(BASE, capsys)
-    assert status == 0 and err.endswith(f"\rabm: CL points {M}/{M}\n")
+    assert status == 0 and err.startswith("\rabm: engage [")
+    assert err.endswith("\n") and f"] {M}/{M} CL points, " in err and "s elapsed, ETA 0 s" in err.splitlines()[-1]
 
 
 class _Stream(io.StringIO):
