@@ -6,42 +6,50 @@ P(ψ) = C + r·sin ψ·d − r·cos ψ·w, ψ in [ψ_0, ψ_1] ⊂ [0, π/2], arc
 (a constant-axis piece of an earlier move, inprocess_swept) the arc is inside where F(ψ) = G(P(ψ)) ≤ 0,
 G the convex, 1-Lipschitz gauge of S. An arc may enter and leave a convex solid more than once, so its
 crossings are isolated with bounds that hold on a whole interval [a, b] of ψ (h = b − a), from F and a
-subgradient v of G at both ends (docs/ENGINE.md, "Corner arcs"):
+subgradient v of G at both ends (docs/ENGINE.md, "Corner arcs against the swept solids"):
 
 * below: F(ψ) ≥ F(a) + v_a·(P(ψ) − P(a)) (G is convex), a sinusoid in ψ whose slope at a is
   D(a) = v_a·P'(a) and whose curvature is at most r (|v| ≤ 1, |P''| = r): F is above the larger of the
   two tangent lines at a and b, less r·h²/2. Positive there: no point of [a, b] is inside.
 * above: F + (r/2)·ψ² is convex (G convex, P a circle of radius r), so F ≤ max(F(a), F(b)) + r·h²/8;
   and G(y) ≤ max(|y − foot| − r_t, height − H) with the foot of an end (inprocess_swept.swept_gauge),
-  whose largest value over [a, b] is closed form (sinusoids): exact where the arc lies on the earlier
-  tool's own corner (the same tool again). Negative: all of [a, b] is inside.
+  whose largest value over [a, b] is closed form (sinusoids): tight where the arc lies on the earlier
+  tool's own corner (the same tool again, or its sweep), where it is zero up to rounding: taken as
+  inside when it and F at both ends are within COINCIDENT ulps of the coordinates and [a, b] is at least
+  COINCIDENT_WIDTH mm of arc (a tangential touch is within rounding over far less). At most zero: all
+  of [a, b] is inside.
 * one crossing: F + (r/2)·ψ² convex makes F'(x) ≤ D(b) + r·(b − x) and F'(x) ≥ D(a) − r·(x − a);
-  so with F(a) > 0 > F(b) and D(b) + r·h < 0 (or F(a) ≤ 0 < F(b) and D(a) − r·h > 0) F is monotone
-  on [a, b] and crosses zero once: that root is refined by the Illinois method (regula falsi that
-  halves a stale end's value; a bisection step when the bracket stalls) to REFINE_TOL mm of arc.
+  so with F(a) > 0 ≥ F(b) and D(b) + r·h < 0 (or F(a) ≤ 0 < F(b) and D(a) − r·h > 0) F is monotone
+  on [a, b] and crosses zero once: that root is refined by the Illinois method
+  (inprocess_swept.monotone_root) to REFINE_TOL mm of arc.
 * otherwise [a, b] is halved, down to REFINE_TOL mm of arc, where a change of sign is a crossing at
   the middle and an interval without one takes its ends' side (a sliver thinner than that is lost).
+  An arc with more than MAX_OPEN intervals open at once (only where it runs within rounding of a solid's
+  boundary over a stretch, not on the earlier tool's corner) has the excess decided as such leaves.
 
-The solid is taken with its boundary (G ≤ INSIDE_EPS), as the flat-end closed form takes it.
+Points on the boundary (G ≤ 0) are inside, as the flat-end closed form takes them.
 Shapes: K (arc, piece) pairs, (K, 3) vectors and (K,) numbers; ψ in radians; lengths in mm.
 """
 
 import numpy as np
 
-from .inprocess_swept import swept_gauge
+from .inprocess_swept import monotone_root, swept_gauge
 from .swept import row_dot
 from .tolerances import LENGTH_EPS
 
-#: Points with G ≤ INSIDE_EPS (mm) are inside a swept solid: its boundary counts as inside.
-INSIDE_EPS = 1e-12
+#: An arc within this many ulps of its coordinates of lying on the earlier tool's corner (the foot bound) is on
+#: it, and inside.
+COINCIDENT = 64
+#: … over an interval of at least this much arc (mm).
+COINCIDENT_WIDTH = 1e-5
 #: Crossings are refined, and intervals halved, down to this (mm of arc).
 REFINE_TOL = 1e-11
 #: Intervals of ψ each arc starts from.
 START_INTERVALS = 4
 #: Halvings at most (REFINE_TOL is reached within about 45 for radii up to 100 mm).
 MAX_LEVELS = 80
-#: Illinois steps at most per crossing (a bisection step every few when the bracket stalls).
-MAX_REFINE = 200
+#: Intervals of one arc open at once at most; the excess, narrowest first, is decided as leaves.
+MAX_OPEN = 64
 #: Pairs solved per batch.
 PAIR_BATCH = 1 << 12
 
@@ -54,6 +62,9 @@ class _Arcs:
         self.radius = radius
         self.c0, self.move, self.axis = c0, c1 - c0, axis
         self.big, self.height, self.corner = big, height, corner
+        scale = (np.maximum(np.abs(centre).max(axis=1), np.maximum(np.abs(c0).max(axis=1), np.abs(c1).max(axis=1)))
+                 + radius + big + height)
+        self.noise = COINCIDENT * np.spacing(scale)
 
     def point(self, pair, psi):
         """(n, 3) P(ψ) of arcs `pair` (n,) at ψ (n,)."""
@@ -62,17 +73,17 @@ class _Arcs:
                 - (r * np.cos(psi))[:, None] * self.w[pair])
 
     def evaluate(self, pair, psi):
-        """(F − INSIDE_EPS (n,), D (n,), foot (n, 3), s (n,)) at ψ (n,) of arcs `pair` (n,)."""
+        """(F (n,), D (n,), foot (n, 3), s (n,)) at ψ (n,) of arcs `pair` (n,)."""
         x = self.point(pair, psi)
         value, v, s, foot = swept_gauge(x, self.c0[pair], self.move[pair], self.axis[pair], self.big[pair],
                                         self.height[pair], self.corner[pair])
         r = self.radius[pair]
         slope = r * (np.cos(psi) * row_dot(v, self.d[pair]) + np.sin(psi) * row_dot(v, self.w[pair]))
-        return value - INSIDE_EPS, slope, foot, s
+        return value, slope, foot, s
 
     def foot_bound(self, pair, a, b, foot, s):
-        """(n,) an upper bound of F − INSIDE_EPS over [a, b] (n,) from the tool standing at position s (n,)
-        with its foot (n, 3) (inprocess_swept.swept_gauge): sinusoids' largest values."""
+        """(n,) an upper bound of F over [a, b] (n,) from the tool standing at position s (n,) with its foot
+        (n, 3) (inprocess_swept.swept_gauge): sinusoids' largest values."""
         r = self.radius[pair]
         centre, d, w, axis = self.centre[pair], self.d[pair], self.w[pair], self.axis[pair]
         rel = centre - foot
@@ -86,7 +97,7 @@ class _Arcs:
         flat = self.corner[pair] <= 0.0
         bottom = np.where(flat, _largest(-level, -cos_part, -sin_part, a, b), -np.inf)
         offset = np.where(flat, self.big[pair], self.corner[pair])
-        return np.maximum(np.maximum(reach - offset, top), bottom) - INSIDE_EPS
+        return np.maximum(np.maximum(reach - offset, top), bottom)
 
 
 def _largest(constant, cos_part, sin_part, a, b):
@@ -119,12 +130,10 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
     psi = lo[pair] + fraction * (hi - lo)[pair]
     f, slope, foot, s = arcs.evaluate(pair, psi)
     left = np.flatnonzero(np.tile(np.arange(START_INTERVALS + 1) < START_INTERVALS, k))
-    live = hi > lo
-    left = left[live[pair[left]]]
-    ends = (left, left + 1)
+    left = left[(hi > lo)[pair[left]]]
     # Intervals: pair, a, b and at each end F, D, foot, s.
     cur = {"pair": pair[left]}
-    for side, at in zip("ab", ends):
+    for side, at in zip("ab", (left, left + 1)):
         cur.update({side: psi[at], "f" + side: f[at], "d" + side: slope[at], "foot" + side: foot[at],
                     "s" + side: s[at]})
     inside, single, leaves = [], [], []
@@ -136,22 +145,23 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
         h = b - a
         r = arcs.radius[p]
         out = _below(a, b, fa, fb, da, db) - 0.5 * r * h * h > 0.0
-        up = np.maximum(fa, fb) + 0.125 * r * h * h
-        test = ~out & (up > 0.0)
-        rows = np.flatnonzero(test)
+        full = ~out & (np.maximum(fa, fb) + 0.125 * r * h * h <= 0.0)
+        rows = np.flatnonzero(~out & ~full)
         if rows.size:
-            bound = np.minimum(arcs.foot_bound(p[rows], a[rows], b[rows], cur["foota"][rows],
-                                               cur["sa"][rows]),
+            bound = np.minimum(arcs.foot_bound(p[rows], a[rows], b[rows], cur["foota"][rows], cur["sa"][rows]),
                                arcs.foot_bound(p[rows], a[rows], b[rows], cur["footb"][rows], cur["sb"][rows]))
-            up[rows] = np.minimum(up[rows], bound)
-        full = ~out & (up <= 0.0)
+            # On the earlier tool's corner to rounding over a stretch: F at both ends and the bound within
+            # rounding, on an interval wide enough that a tangential touch cannot stay within it.
+            noise = arcs.noise[p[rows]]
+            full[rows] = (bound <= 0.0) | ((bound <= noise) & (np.maximum(np.abs(fa[rows]), np.abs(fb[rows])) <= noise)
+                                           & (h[rows] * r[rows] >= COINCIDENT_WIDTH))
         change = (fa > 0.0) != (fb > 0.0)
         falling = change & (fa > 0.0) & (db + r * h < 0.0)
         rising = change & (fa <= 0.0) & (da - r * h > 0.0)
         one = ~out & ~full & (falling | rising)
-        tiny = ~out & ~full & ~one & (h <= tol[p])
+        tiny = ~out & ~full & ~one & ((h <= tol[p]) | _crowded(p, h, ~out & ~full & ~one))
         inside.append((p[full], a[full], b[full]))
-        single.append({key: value[one] for key, value in cur.items()})
+        single.append({key: cur[key][one] for key in ("pair", "a", "b", "fa", "fb")})
         leaves.append({key: cur[key][tiny] for key in ("pair", "a", "b", "fa", "fb")})
         split = np.flatnonzero(~out & ~full & ~one & ~tiny)
         if split.size == 0:
@@ -159,37 +169,57 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
             break
         mid = 0.5 * (a[split] + b[split])
         fm, dm, footm, sm = arcs.evaluate(p[split], mid)
-        halves = {}
-        for key, value in cur.items():
-            halves[key] = np.concatenate([value[split], value[split]])
-        halves["b"][:split.size] = mid
-        halves["a"][split.size:] = mid
+        halves = {key: np.concatenate([value[split], value[split]]) for key, value in cur.items()}
+        n = split.size
+        halves["b"][:n] = mid
+        halves["a"][n:] = mid
         for name, value in (("f", fm), ("d", dm), ("foot", footm), ("s", sm)):
-            halves[name + "b"][:split.size] = value
-            halves[name + "a"][split.size:] = value
+            halves[name + "b"][:n] = value
+            halves[name + "a"][n:] = value
         cur = halves
     else:
         # Out of levels (not reached within REFINE_TOL): what is left is taken as leaves.
         leaves.append({key: cur[key] for key in ("pair", "a", "b", "fa", "fb")})
-    found = [np.concatenate(part) for part in zip(*inside)] if inside else [np.zeros(0, dtype=np.intp),
-                                                                              np.zeros(0), np.zeros(0)]
-    parts = [tuple(found)]
-    one = {key: np.concatenate([part[key] for part in single]) for key in single[0]} if single else None
-    if one is not None and one["pair"].size:
-        root = _refine(arcs, one["pair"], one["a"], one["b"], one["fa"], one["fb"], tol)
+    parts = [tuple(np.concatenate(v) for v in zip(*inside))]
+    one = {key: np.concatenate([part[key] for part in single]) for key in single[0]}
+    if one["pair"].size:
+        def value(rows, x):
+            return arcs.evaluate(one["pair"][rows], x)[0]
+
         enters = one["fa"] > 0.0
+        root = monotone_root(value, np.where(enters, one["b"], one["a"]), np.where(enters, one["a"], one["b"]),
+                             np.where(enters, one["fb"], one["fa"]), np.where(enters, one["fa"], one["fb"]),
+                             tol[one["pair"]])
         parts.append((one["pair"], np.where(enters, root, one["a"]), np.where(enters, one["b"], root)))
-    leaf = {key: np.concatenate([part[key] for part in leaves]) for key in leaves[0]} if leaves else None
-    if leaf is not None and leaf["pair"].size:
+    leaf = {key: np.concatenate([part[key] for part in leaves]) for key in leaves[0]}
+    if leaf["pair"].size:
         mid = 0.5 * (leaf["a"] + leaf["b"])
         enters = (leaf["fa"] > 0.0) & (leaf["fb"] <= 0.0)
         exits = (leaf["fa"] <= 0.0) & (leaf["fb"] > 0.0)
-        whole = (leaf["fa"] <= 0.0) & (leaf["fb"] <= 0.0)
-        keep = enters | exits | whole
+        keep = enters | exits | ((leaf["fa"] <= 0.0) & (leaf["fb"] <= 0.0))
         start = np.where(enters, mid, leaf["a"])
         end = np.where(exits, mid, leaf["b"])
         parts.append((leaf["pair"][keep], start[keep], end[keep]))
     return _merged(*(np.concatenate(v) for v in zip(*parts)))
+
+
+def _crowded(pair, h, open_):
+    """(n,) bool: of the open intervals (open_) of each arc (pair, ascending in runs), all but its MAX_OPEN widest
+    when it has more than MAX_OPEN (an arc running within rounding of a boundary over a stretch)."""
+    crowded = np.zeros(pair.size, dtype=bool)
+    rows = np.flatnonzero(open_)
+    if rows.size <= MAX_OPEN:
+        return crowded
+    count = np.bincount(pair[rows])
+    many = count[pair[rows]] > MAX_OPEN
+    if not many.any():
+        return crowded
+    rows = rows[many]
+    order = np.lexsort((-h[rows], pair[rows]))
+    rows = rows[order]
+    first = np.searchsorted(pair[rows], pair[rows])
+    crowded[rows[np.arange(rows.size) - first >= MAX_OPEN]] = True
+    return crowded
 
 
 def _below(a, b, fa, fb, da, db):
@@ -203,42 +233,6 @@ def _below(a, b, fa, fb, da, db):
         t = np.where(gap != 0.0, (fb - fa - db * h) / np.where(gap != 0.0, gap, 1.0), -1.0)
     crossing = (t > 0.0) & (t < h)
     return np.where(crossing, np.minimum(best, fa + da * t), best)
-
-
-def _refine(arcs, pair, a, b, fa, fb, tol):
-    """(n,) the root of F − INSIDE_EPS in each bracket [a, b] (n,) holding exactly one (F(a), F(b) of opposite
-    signs): the Illinois method, with a bisection step whenever four steps leave the bracket wider than half
-    what it was."""
-    a, b, fa, fb = (np.array(v, dtype=float) for v in (a, b, fa, fb))
-    root = 0.5 * (a + b)
-    side = np.zeros(a.size, dtype=np.int8)
-    width = b - a
-    live = np.flatnonzero(width > tol[pair])
-    for step in range(MAX_REFINE):
-        if live.size == 0:
-            break
-        la, lb, lfa, lfb = a[live], b[live], fa[live], fb[live]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            x = lb - lfb * (lb - la) / (lfb - lfa)
-        bisect = (step % 4 == 3) & (lb - la > 0.5 * width[live])
-        if step % 4 == 3:
-            width[live] = lb - la
-        bad = ~np.isfinite(x) | (x <= la) | (x >= lb) | bisect
-        x = np.where(bad, 0.5 * (la + lb), x)
-        fx = arcs.evaluate(pair[live], x)[0]
-        same_b = (fx > 0.0) == (lfb > 0.0)
-        # Replace the end on fx's side; halve the other end's value when it stays twice running.
-        stale_a = same_b & (side[live] == 1)
-        stale_b = ~same_b & (side[live] == -1)
-        b[live] = np.where(same_b, x, lb)
-        fb[live] = np.where(same_b, fx, np.where(stale_b, 0.5 * lfb, lfb))
-        a[live] = np.where(same_b, la, x)
-        fa[live] = np.where(same_b, np.where(stale_a, 0.5 * lfa, lfa), fx)
-        side[live] = np.where(same_b, 1, -1)
-        root[live] = np.where(fx == 0.0, x, 0.5 * (a[live] + b[live]))
-        done = (fx == 0.0) | (b[live] - a[live] <= tol[pair[live]])
-        live = live[~done]
-    return root
 
 
 def _merged(pair, start, end):
@@ -265,16 +259,16 @@ def _merged(pair, start, end):
     return pair[head], start[head], reach[tail]
 
 
-def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, radius, p):
+def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, radius, top, p):
     """Removal intervals (rows (R,) int, enter, leave (R,) mm of arc length) of the corner arcs `line` inside
     the pieces of the cutting moves that end before their CL point.
 
     line: (L,) int ascending, the arcs holding material (row i·p + k: CL point i, angle k), all of it
     within lo … hi (L,) mm of arc length s = radius·ψ; centres, ds, ws: (N, 3) every arc's centre and unit
-    vectors (P(ψ) = centre + radius·(sin ψ·d − cos ψ·w)); radius: the corner radius (mm); pieces,
+    vectors (P(ψ) = centre + radius·(sin ψ·d − cos ψ·w), 0 ≤ ψ ≤ top); radius: the corner radius (mm); pieces,
     program_index and p as for inprocess.removal_intervals, whose rules these follow: removals overlapping
     lo … hi by more than LENGTH_EPS, one removal [lo, hi] for an arc covered whole, each depending on
-    its arc alone.
+    its arc alone (each (arc, piece) pair is solved over the whole arc, 0 … top, whatever is left of it).
 
     The search (docs/ENGINE.md, "Corner arcs"): the chains whose balls meet each arc's bounding sphere
     (the KD tree), kept when not surely apart from its capsule (the chord of what is left of the arc,
@@ -315,7 +309,7 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
                    pieces.chain_lean[chain])
     seg, chain = seg[keep], chain[keep]
     whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
-    found = [_solve_arcs(seg[whole], chain[whole], "chain", envelope, centre, d, w, radius, pieces)]
+    found = [_solve_arcs(seg[whole], chain[whole], "chain", envelope, centre, d, w, radius, top, pieces)]
     _narrow(envelope, *found[-1][:3])
     seg, span = _chain_spans(seg[~whole], chain[~whole], before, pieces)
     open_ = envelope[0, seg] < envelope[1, seg]
@@ -338,7 +332,7 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
         near = alive & ~_apart(a, b, *pieces.hulls("piece", piece[at]), sag)
         open_[at[~near]] = False
         chosen = np.flatnonzero(ranking.first(open_, take))
-        found.append(_solve_arcs(seg[chosen], piece[chosen], "piece", envelope, centre, d, w, radius, pieces))
+        found.append(_solve_arcs(seg[chosen], piece[chosen], "piece", envelope, centre, d, w, radius, top, pieces))
         open_[chosen] = False
         _narrow(envelope, *found[-1][:3])
         take *= 2
@@ -351,16 +345,17 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
     return rows, start, end
 
 
-def _solve_arcs(seg, index, level, envelope, centre, d, w, radius, pieces):
+def _solve_arcs(seg, index, level, envelope, centre, d, w, radius, top, pieces):
     """Removal intervals (seg, enter, leave) in ψ of the arcs seg (K,) inside the hulls `index` (K,) at
-    `level` ("piece" or "chain"), over each arc's first range (envelope rows 2, 3), kept where they overlap
-    it by more than LENGTH_EPS of arc length; in batches of PAIR_BATCH."""
+    `level` ("piece" or "chain"), solved over the whole arc (0 … top: the result depends on the pair alone)
+    and kept where they overlap the arc's first range (envelope rows 2, 3) by more than LENGTH_EPS of arc
+    length; in batches of PAIR_BATCH."""
     out = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     for begin in range(0, seg.size, PAIR_BATCH):
         s, q = seg[begin:begin + PAIR_BATCH], index[begin:begin + PAIR_BATCH]
         hulls = pieces.hulls(level, q)
-        pair, start, end = arc_swept_intervals(centre[s], d[s], w[s], np.full(s.size, radius), envelope[2, s],
-                                               envelope[3, s], *hulls, pieces.corners(level, q))
+        pair, start, end = arc_swept_intervals(centre[s], d[s], w[s], np.full(s.size, radius), np.zeros(s.size),
+                                               np.full(s.size, float(top)), *hulls, pieces.corners(level, q))
         owner = s[pair]
         overlap = (np.minimum(end, envelope[3, owner]) - np.maximum(start, envelope[2, owner])) * radius
         hit = overlap > LENGTH_EPS
