@@ -4,7 +4,7 @@ PYTHON := /usr/bin/python3
 DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth
 OUT := build
 
-.PHONY: figures deps model-test-1 model-test-2 model-test-4 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
+.PHONY: figures deps model-test-1 model-test-2 model-test-4 model-test-5 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -53,6 +53,18 @@ validate-model-test-3: deps
 	  --report $(OUT)/model_test_3/validation_op1 --fcstd $(OUT)/model_test_3/validation_op1.FCStd
 	$(VALIDATE_3) --operation 2 --check 30,50,54,75,100,109 --cl 50 \
 	  --report $(OUT)/model_test_3/validation_op2 --fcstd $(OUT)/model_test_3/validation_op2.FCStd
+
+# Model test 5 (docs/MODEL_TESTS.md): a D16 R3 bull-nose mill semi-finishing a z-level-roughed two-bump part in a
+# five-axis raster of 7 passes, as NX writes it (toolpath.cls: TLDATA/MILL with the corner radius, MSYS, GOTO with
+# tilted axes; 518 CL points), against OpenCASCADE on the stock as given: corner arcs, sides and end edges of every
+# other CL point (and the shown ones) at phi step 3 deg, 2 worker processes, a report and an annotated document, and
+# the estimate of what earlier passes removed (the in-process stock of a corner tool is computed by neither side) at
+# every 37th CL point. Through the Python API (tests/cad/run_model_test_5.py), for that estimate; `abm validate
+# --job resources/models/model_test_5/job.json ...` checks the same files without it. About 10 minutes on 2 quiet cores.
+model-test-5: deps
+	$(PYTHON) -m tests.cad.run_model_test_5 --report $(OUT)/model_test_5/validation \
+	  --fcstd $(OUT)/model_test_5/validation.FCStd --cl 40,150,268,440 --check-every 2 --phi-step 3 --workers 2 \
+	  --removed-every 37
 
 test: deps
 	$(PYTHON) -m pytest -q tests

@@ -120,12 +120,13 @@ def _stopping_signals():
 
 def _build_parser():
     """The argument parser: one subparser per command, each with `run` set to its function."""
-    parser = _Parser(prog=PROG, description="Analytical cut geometry of flat-end five-axis milling on staircase stock.")
+    parser = _Parser(prog=PROG, description="Analytical cut geometry of five-axis milling (flat-end, bull-nose and "
+                                                "ball-end mills) on staircase and 2.5D stock.")
     commands = parser.add_subparsers(title="commands", dest="command", required=True, metavar="COMMAND")
     engage_parser = commands.add_parser(
         "engage", help="cut geometry of one pass", description=(
-            "Length of cut, engagement points, cut area and depth of cut of a flat-end mill along one pass "
-            "over staircase stock. Lengths in mm, angles in degrees. Writes OUT: a CSV (one row per CL point and "
+            "Length of cut, engagement points, cut area and depth of cut of a flat-end, bull-nose or ball-end "
+            "mill along one pass over staircase or 2.5D stock, and the engaged length of its end edge. Lengths in mm, angles in degrees. Writes OUT: a CSV (one row per CL point and "
             "rotation angle) and its summary with .summary.csv (one row per CL point and engagement segment), "
             "or, for a name ending in .npz, both as columns of one NumPy archive; with --plot, a PNG."),
     )
@@ -220,12 +221,14 @@ def _build_parser():
             "the file type is judged by content) and prints one line per operation (docs/CL_FILES.md); with "
             "--out, writes every cutting CL point as CSV."),
     )
-    toolpath_parser.add_argument("file", metavar="FILE", help="CL file or toolpath CSV")
+    toolpath_parser.add_argument("file", metavar="FILE", help="CL file, toolpath CSV, G-code or FreeCAD document "
+                                                              "(FCStd) holding a CAM Job")
     toolpath_parser.add_argument("--out", metavar="P.csv", help="CSV of every cutting CL point "
                                  "(operation, name, tool, diameter, corner_radius, x, y, z, i, j, k, ...)")
     toolpath_parser.add_argument("--frame", choices=("part", "file"), default="part",
                                  help="part (default): MSYS / CSYS / ROTABL applied; file: as written, in mm")
     _arc_arguments(toolpath_parser)
+    _program_arguments(toolpath_parser, "--job")
     toolpath_parser.set_defaults(run=_run_toolpath)
     return parser
 
@@ -239,7 +242,7 @@ def _run_toolpath(args):
     if args.out:
         runs.check_outputs([args.out], [args.file])
     tolerance, step = _arc_options(args)
-    program = read_program(args.file, tolerance=tolerance, step=step)
+    program = read_program(args.file, tolerance=tolerance, step=step, options=_read_options(args))
     for warning in program.warnings:
         print(f"{PROG}: warning: {warning}", file=sys.stderr)
     print("\n".join(summary_lines(program, args.frame)))
@@ -284,8 +287,9 @@ def _parameter_option(group, name, extra=""):
 def _input_arguments(parser):
     """Input files, cutting parameters and stock options, shared by engage and validate."""
     files = parser.add_argument_group("inputs")
-    files.add_argument("--stock", required=True, metavar="STOCK",
-                       help="staircase stock: abm-staircase/1 JSON, or a solid (.step, .stp, .brep, .brp, .FCStd)")
+    files.add_argument("--stock", metavar="STOCK",
+                       help="staircase stock: abm-staircase/1 JSON, or a solid (.step, .stp, .brep, .brp, .FCStd); "
+                            "required unless --toolpath is a FreeCAD document whose CAM Job's Stock it then is")
     files.add_argument("--toolpath", required=True, metavar="PATH",
                        help="CL points: a CL file as CAM systems write it (APT, NX CLSF, CATIA, Creo NCL, "
                             "SOLIDWORKS CAM, Mastercam, PowerMill; any name, read by its content) or a toolpath CSV "
@@ -299,6 +303,7 @@ def _input_arguments(parser):
     files.add_argument("--sweep-tolerance", type=float, default=0.05, metavar="MM",
                        help="sub-step of five-axis moves at the tool's rim for the in-process stock (mm), default 0.05")
     _arc_arguments(files)
+    _program_arguments(files)
     files.add_argument("--job", metavar="JOB.json",
                        help="JSON of default cutting parameters (keys as the options below, with _ for -; "
                             "phi_range as [start, end]; description); options and the APT file override it")
@@ -339,6 +344,31 @@ def _arc_arguments(group):
                             "about a tooth's feed")
 
 
+def _program_arguments(group, *job_aliases):
+    """--cam-job (and `job_aliases`), --tool-table, --machine, --offsets: what reading a FreeCAD CAM Job or
+    G-code needs besides the file (docs/GCODE.md)."""
+    group.add_argument(*job_aliases, "--cam-job", dest="cam_job", metavar="NAME",
+                       help="the FreeCAD CAM Job (its Name or Label) of a toolpath FCStd; default its one Job")
+    group.add_argument("--tool-table", metavar="FILE",
+                       help="G-code: the tools of its T words, a LinuxCNC tool table (T P D Z ;comment lines) or "
+                            "the FreeCAD document (FCStd) that posted it")
+    group.add_argument("--machine", metavar="FILE",
+                       help="G-code: a machine file (JSON) naming the kinematics of its rotary words A B C "
+                            "(xyzac-trt, xyzbc-trt, xyzbc-ht) and their pivots")
+    group.add_argument("--offsets", metavar="FILE",
+                       help="G-code: the work offsets G54-G59.3, a LinuxCNC parameter file or JSON; default all zero")
+    group.add_argument("--machine-units", choices=("mm", "inch"),
+                       help="G-code: the unit of the LinuxCNC tool table's and parameter file's lengths, the "
+                            "machine's (default mm; a program in inches with such a file needs it said)")
+
+
+def _read_options(args):
+    """The ReadOptions of the parsed arguments."""
+    from .formats.gcode.options import ReadOptions
+
+    return ReadOptions(args.cam_job, args.tool_table, args.machine, args.offsets, args.machine_units)
+
+
 def _arc_options(args):
     """(tolerance, step) mm of the parsed arguments; ParameterError unless each is a positive number."""
     for name in ("tolerance", "step"):
@@ -349,8 +379,10 @@ def _arc_options(args):
 
 
 def _job(args):
-    """The Job of the parsed arguments: the cutting and force options by parameter name."""
+    """The Job of the parsed arguments: the cutting and force options by parameter name; without --stock, the
+    Stock of the toolpath's FreeCAD CAM Job."""
     from .jobs import Job
+    from .jobs.job import with_cam_stock
 
     given = {name: getattr(args, name, None) for name in BY_NAME if name not in
              ("phi_start", "phi_end", "immersion_start", "immersion_end")}
@@ -368,10 +400,11 @@ def _job(args):
     window = args.y_window
     if window is not None and window not in ("whole", "swept"):
         window = _pair(window, "y_window", "whole, swept or Y0:Y1 in mm such as -10:10")
-    return Job(args.stock, args.toolpath, args.job, given, forces=forces, material=getattr(args, "material", None),
-               walls=args.walls, wall_points=args.wall_points, y_window=window, operation=args.operation,
-               solid=args.solid, stock_model=args.stock_model, sweep_tolerance=args.sweep_tolerance,
-               tolerance=tolerance, step=step)
+    job = Job(args.stock, args.toolpath, args.job, given, forces=forces, material=getattr(args, "material", None),
+              walls=args.walls, wall_points=args.wall_points, y_window=window, operation=args.operation,
+              solid=args.solid, stock_model=args.stock_model, sweep_tolerance=args.sweep_tolerance,
+              tolerance=tolerance, step=step, options=_read_options(args))
+    return with_cam_stock(job)
 
 
 def _pair(text, field, expected):

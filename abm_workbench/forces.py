@@ -1,4 +1,4 @@
-"""Mechanistic cutting forces of a flat-end mill from its engagement (pure numpy, no FreeCAD).
+"""Mechanistic cutting forces of flat-end, bull-nose and ball-end mills from their engagement (pure numpy).
 
 The linear edge-force model (Altintas, *Manufacturing Automation*, ch. 2): an edge element
 of axial length db cutting a chip of thickness h feels
@@ -26,6 +26,15 @@ intervals [a, b] of l, already cut to the immersion. Every force component is th
 ∫ sin ψ, ∫ cos ψ, ∫ sin² ψ, ∫ sin ψ cos ψ and ∫ 1 over dl, taken in closed form
 (:func:`interval_integrals`), with db = dl the axial height of an element.
 
+Tools with a corner radius r (bull-nose, ball; straight flutes only): an element of the peripheral
+edge at arc length s (engine.profile) has κ, the angle between the axis and the tool surface's
+normal n = sin κ·d − cos κ·w (κ = s/r on the corner arc, 90° on the straight side), cuts the chip
+h = f sin φ_k sin κ cos α over the width db = dz / sin κ = ds (the edge lies in the plane of d and
+w), and its force on the tool is −dF_t·∂d/∂φ − dF_r·n + dF_a·(cos κ·d + sin κ·w), which is the
+flat-end's at κ = 90°. Each flute's engaged runs in s (profile.profile_intervals, or a runs_at
+callback) are integrated in closed form (:func:`edge_integrals`, :func:`profile_forces`); the torque
+takes each element's own distance from the axis, ρ = R − r + r sin κ on the corner.
+
 Units: N, mm, N·mm, W; angles in degrees at the interface.
 """
 
@@ -36,13 +45,17 @@ from typing import Optional
 import numpy as np
 
 from .engine import flute_engagement
-from .engine.stocks import engage_stock
+from .engine.intervals import EdgeIntervals
 from .engine.model import finite_number
+from .engine.profile import as_terraced, corner_top, profile_intervals
+from .engine.stocks import engage_stock
 
 #: Default immersion (deg): a flute cuts over the leading half, full slotting.
 FULL_SLOT = (0.0, 180.0)
 #: Angles (deg) closer than this to an immersion limit count as on it.
 ANGLE_EPS = 1e-9
+#: Instants (CL points × angles) per call of profile.profile_intervals when flute_runs solves the flutes.
+CHUNK_INSTANTS = 1 << 15
 #: The six coefficient names, cutting (N/mm²) then edge (N/mm).
 COEFFICIENT_NAMES = ("ktc", "krc", "kac", "kte", "kre", "kae")
 
@@ -156,9 +169,11 @@ class Forces:
     feed: (m,) feed per tooth at each CL point (mm). spindle_rpm: rpm or None.
     cutting: (m, p, 3) tool-frame force per mm of feed per tooth (N/mm), summed over the flutes.
     edge: (m, p, 3) tool-frame edge force (N), independent of the feed.
-    cutting_tangential, edge_tangential: (m, p) ΣdF_t per mm of feed (N/mm) and edge part (N).
+    cutting_tangential, edge_tangential: (m, p) Σ (ρ/R_t)·dF_t per mm of feed (N/mm) and edge part (N),
+    ρ each element's distance from the axis (R_t on a straight side: then ΣdF_t), so that the torque
+    is R_t times them.
     area_per_feed: (m, p) total cut area per mm of feed, Σ b_k sin φ_k cos α over the cutting
-    flutes (mm; × f gives mm²).
+    flutes (∫ sin φ_k sin κ cos α ds along an edge with a corner) (mm; × f gives mm²).
     """
 
     phi: np.ndarray
@@ -203,7 +218,7 @@ class Forces:
 
     @property
     def torque(self):
-        """(m, p) torque about the tool axis, R_t·ΣF_t (N·mm)."""
+        """(m, p) torque about the tool axis, Σ ρ·dF_t (R_t·ΣF_t on straight sides) (N·mm)."""
         return self.radius * (self.feed[:, None] * self.cutting_tangential + self.edge_tangential)
 
     @property
@@ -356,24 +371,172 @@ def joined_forces(parts):
     return dataclasses.replace(first, **per_cl)
 
 
+def corner_integrals(start, end, corner_radius):
+    """∫ over s in [start, end] on the corner arc of 1, sin κ, cos κ, sin² κ and sin κ cos κ, κ = s/r.
+
+    start, end: (...) arc lengths (mm), NaN for none (integrals 0); corner_radius r > 0 (mm).
+    interval_integrals with ψ = 0 − (−1/r)·s. Returns five (...) arrays (mm).
+    """
+    return interval_integrals(start, end, 0.0, -1.0 / corner_radius)
+
+
+def edge_integrals(start, end, radius, corner_radius, psi_max):
+    """Integrals along runs [start, end] (K,) of the peripheral edge (arc length s, mm; engine.profile).
+
+    κ = s/r on the corner (0 ≤ s ≤ r·ψ_max), 90° on the straight side beyond; ρ = R − r + r sin κ the
+    distance from the axis (R on the side). Returns seven (K,) arrays (mm, ρ-weighted ones mm²):
+    ∫ ds, ∫ sin κ ds, ∫ cos κ ds, ∫ sin² κ ds, ∫ sin κ cos κ ds, ∫ ρ ds, ∫ ρ sin κ ds.
+    """
+    start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    top = corner_radius * psi_max
+    side = np.maximum(end - np.maximum(start, top), 0.0)
+    if corner_radius <= 0.0:
+        zero = np.zeros_like(side)
+        return side, side, zero, side, zero, radius * side, radius * side
+    corner_end = np.minimum(end, top)
+    on_corner = corner_end > start
+    width, i_s, i_c, i_ss, i_sc = corner_integrals(np.where(on_corner, start, np.nan),
+                                                   np.where(on_corner, corner_end, np.nan), corner_radius)
+    inner = radius - corner_radius
+    return (width + side, i_s + side, i_c, i_ss + side, i_sc,
+            inner * width + corner_radius * i_s + radius * side, inner * i_s + corner_radius * i_ss + radius * side)
+
+
+def _runs_of(found, n_rows, name):
+    """`found` checked to be EdgeIntervals of n_rows rows; ValueError naming `name` otherwise."""
+    if not isinstance(found, EdgeIntervals):
+        raise ValueError(f"{name} must be EdgeIntervals (engine.intervals), got {type(found).__name__}")
+    if found.n_rows != n_rows:
+        raise ValueError(f"{name} must have {n_rows} rows (CL points × angles), got {found.n_rows}")
+    return found
+
+
+def profile_forces(runs, phi_deg, rotation, tool, inclination, feed, coefficients, *, immersion=FULL_SLOT,
+                   spindle_rpm=None):
+    """Forces of straight flutes along their whole peripheral edge (corner arc and side) from their engaged runs.
+
+    runs: Z EdgeIntervals, flute k's (k = 0..Z−1) of m·p rows (row i·p + j: CL point i, flute 1 at
+    phi_deg[j], flute k at phi_deg[j] + 360·k/Z), in arc length s along the edge (mm; engine.profile).
+    phi_deg: (p,) deg. rotation: (m, 3, 3) R of each CL point. tool: Tool (radius, corner radius,
+    flute length; any corner radius, 0 included). inclination: α (deg), scalar or (m,). feed: feed
+    per tooth, scalar or (m,) (mm). immersion: (start, end) deg. Returns Forces.
+
+    Per flute, with κ the element's angle (s/r on the corner, 90° on the side), e = ∂d/∂φ, n = sin κ·d −
+    cos κ·w, a = cos κ·d + sin κ·w and c = f sin φ_k cos α (docs/FORCES.md):
+
+        F = −(K_tc c ∫sin κ + K_te ∫1)·e
+            + (−K_rc c ∫sin² κ + K_ac c ∫sin κ cos κ − K_re ∫sin κ + K_ae ∫cos κ)·d
+            + (K_rc c ∫sin κ cos κ + K_ac c ∫sin² κ + K_re ∫cos κ + K_ae ∫sin κ)·w
+
+    (∫ over the engaged runs in ds, edge_integrals), with e = cos φ·u − sin φ·v and d = sin φ·u + cos φ·v.
+    """
+    phi = np.asarray(phi_deg, dtype=float).reshape(-1)
+    rotation = np.asarray(rotation, dtype=float)
+    if rotation.ndim != 3 or rotation.shape[1:] != (3, 3):
+        raise ValueError(f"rotation must have shape (m, 3, 3), got {rotation.shape}")
+    m, p, flutes = rotation.shape[0], phi.size, int(tool.flutes)
+    runs = list(runs)
+    if len(runs) != flutes:
+        raise ValueError(f"runs must hold one EdgeIntervals per flute ({flutes}), got {len(runs)}")
+    psi_max = corner_top(tool)
+    sums = np.zeros((7, flutes, m * p))
+    for k, found in enumerate(runs):
+        found = _runs_of(found, m * p, f"runs of flute {k + 1}")
+        for j, values in enumerate(edge_integrals(found.start, found.end, tool.radius, tool.corner_radius, psi_max)):
+            sums[j, k] = np.bincount(found.rows, weights=values, minlength=m * p)
+    if not np.isfinite(sums).all():
+        raise ValueError("runs must be finite")
+    angles = flute_angles(phi, flutes)                                        # (Z, p)
+    cuts = in_immersion(angles, immersion)[:, None, :]                        # (Z, 1, p)
+    length, i_s, i_c, i_ss, i_sc, rho, rho_s = np.where(cuts, sums.reshape(7, flutes, m, p), 0.0)
+    s, c = np.sin(np.radians(angles))[:, None, :], np.cos(np.radians(angles))[:, None, :]
+    scale = np.cos(np.radians(np.broadcast_to(np.asarray(inclination, dtype=float), (m,))))
+    chip = np.where(cuts, s, 0.0) * scale[None, :, None]                      # h / (f sin κ), (Z, m, p)
+
+    def tool_frame(tangential, across, axial):
+        """Σ over the flutes of −tangential·e + across·d + axial·w, each (Z, m, p) -> (m, p, 3)."""
+        return np.stack([(-tangential * c + across * s).sum(axis=0), (tangential * s + across * c).sum(axis=0),
+                         axial.sum(axis=0)], axis=-1)
+
+    k = coefficients
+    return Forces(
+        phi=phi, rotation=rotation, radius=float(tool.radius), feed=_feeds(feed, m),
+        spindle_rpm=None if spindle_rpm is None else float(spindle_rpm),
+        cutting=tool_frame(k.ktc * chip * i_s, chip * (k.kac * i_sc - k.krc * i_ss),
+                           chip * (k.krc * i_sc + k.kac * i_ss)),
+        edge=tool_frame(k.kte * length, k.kae * i_c - k.kre * i_s, k.kre * i_c + k.kae * i_s),
+        cutting_tangential=k.ktc * (chip * rho_s).sum(axis=0) / tool.radius,
+        edge_tangential=k.kte * rho.sum(axis=0) / tool.radius,
+        area_per_feed=(chip * i_s).sum(axis=0),
+    )
+
+
+def flute_runs(stock, tool, toolpath, phi_deg, *, runs_at=None, chunk_instants=CHUNK_INSTANTS):
+    """Z EdgeIntervals: flute k's engaged runs along its peripheral edge (arc length s, mm) at every CL point
+    and angle φ + 360·k/Z, φ in phi_deg (p,), rows i·p + j.
+
+    Solved by profile.profile_intervals against `stock` (a Staircase or a TerracedStock, as given), about
+    `chunk_instants` instants at a time; or, with runs_at, taken from runs_at(angles (p,) deg), which must give
+    the EdgeIntervals of the len(toolpath)·p edges at those angles (e.g. against the in-process stock).
+    """
+    phi = np.asarray(phi_deg, dtype=float).reshape(-1)
+    m, p = len(toolpath), phi.size
+    shifts = 360.0 * np.arange(tool.flutes) / tool.flutes
+    if runs_at is not None:
+        return [_runs_of(runs_at(phi + shift), m * p, f"runs_at for flute {k + 1}") for k, shift in enumerate(shifts)]
+    terraced = as_terraced(stock, tool.corner_radius) if tool.corner_radius > 0.0 else None
+    step = max(1, int(chunk_instants) // max(p, 1))
+    out = []
+    for shift in shifts:
+        parts = [(start, profile_intervals(stock, tool, toolpath.rows(slice(start, min(m, start + step))), phi + shift,
+                                           terraced)) for start in range(0, m, step)]
+        out.append(parts[0][1] if len(parts) == 1 else _stacked_runs(parts, m * p, p))
+    return out
+
+
+def _stacked_runs(parts, n_rows, p):
+    """One EdgeIntervals of n_rows rows from [(first CL point, EdgeIntervals of its chunk)] in order."""
+    fields = ("start", "end", "start_surface", "start_section", "start_wall", "end_surface", "end_section", "end_wall")
+    rows = np.concatenate([part.rows + first * p for first, part in parts])
+    return EdgeIntervals(n_rows, rows, *(np.concatenate([getattr(part, name) for _, part in parts]) for name in fields))
+
+
 def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL_SLOT, feed=None, first=None,
-                lengths_at=None):
-    """Forces of a pass: straight flutes through the engine's engage per flute (edge_forces),
-    helical ones (tool.helix ≠ 0) through helix.flute_engagement (helical_forces).
+                lengths_at=None, runs_at=None):
+    """Forces of a pass: straight flat-end flutes through the engine's engage per flute (edge_forces),
+    helical ones (tool.helix ≠ 0) through helix.flute_engagement (helical_forces), tools with a corner
+    radius through their flutes' runs along the whole peripheral edge (flute_runs, profile_forces).
 
     feed: feed per tooth, scalar or (m,) mm (default settings.feed_per_tooth). first: flute 1's
-    (m, p) lengths when already computed, lengths_at: how the other flutes' lengths are found
-    (flute_lengths; straight flutes only). Returns Forces.
+    (m, p) lengths when already computed (flat-end straight flutes; a tool with a corner needs the runs,
+    not the lengths, and solves flute 1 again). lengths_at: how a flat-end tool's flutes' lengths are
+    found (flute_lengths). runs_at: a function of the angles (p,) deg giving the EdgeIntervals of the
+    m·p edges at them (flute_runs), for any straight-fluted tool; a flat-end tool takes their lengths.
+    Returns Forces.
     """
-    if tool.helix != 0.0 and lengths_at is not None:
-        raise ValueError("lengths_at is for straight flutes only")
+    if tool.helix != 0.0 and (lengths_at is not None or runs_at is not None):
+        raise ValueError("lengths_at and runs_at are for straight flutes only")
+    if lengths_at is not None and runs_at is not None:
+        raise ValueError("give lengths_at or runs_at, not both")
+    if tool.corner_radius > 0.0 and lengths_at is not None:
+        raise ValueError(f"the forces of a {tool.kind} mill need each flute's engaged runs along its corner, not "
+                         "only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; "
+                         "pass runs_at instead")
     immersion = check_immersion(immersion)
     rotation = toolpath.frames()
+    feed = settings.feed_per_tooth if feed is None else feed
     if tool.helix != 0.0:
         engaged = flute_engagement(stock, tool, toolpath, settings, immersion=immersion)
-        return helical_forces(engaged, rotation, coefficients, feed=settings.feed_per_tooth if feed is None else feed,
-                              spindle_rpm=settings.spindle_rpm)
+        return helical_forces(engaged, rotation, coefficients, feed=feed, spindle_rpm=settings.spindle_rpm)
+    if tool.corner_radius > 0.0:
+        runs = flute_runs(stock, tool, toolpath, settings.phi, runs_at=runs_at)
+        return profile_forces(runs, settings.phi, rotation, tool, toolpath.inclinations(settings), feed, coefficients,
+                              immersion=immersion, spindle_rpm=settings.spindle_rpm)
+    if runs_at is not None:
+        m, p = len(toolpath), settings.phi.size
+
+        def lengths_at(shifted):
+            return _runs_of(runs_at(shifted.phi), m * p, "runs_at").length.reshape(m, p)
     lengths = flute_lengths(stock, tool, toolpath, settings, first=first, lengths_at=lengths_at)
-    return edge_forces(lengths, settings.phi, rotation, tool.radius, toolpath.inclinations(settings),
-                       settings.feed_per_tooth if feed is None else feed, coefficients,
-                       immersion=immersion, spindle_rpm=settings.spindle_rpm)
+    return edge_forces(lengths, settings.phi, rotation, tool.radius, toolpath.inclinations(settings), feed,
+                       coefficients, immersion=immersion, spindle_rpm=settings.spindle_rpm)

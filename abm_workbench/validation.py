@@ -6,8 +6,12 @@ one of the two methods engages) a relative error means nothing, and the absolute
 l_ABM − l_ref (mm) is reported instead; the two kinds are kept apart in every summary.
 
 Arrays are over m CL points × p rotation angles φ. Lengths in mm, angles in degrees,
-relative errors as fractions (0.01 = 1 %). Everything here is numpy, except :func:`validate`,
-which runs the boolean reference through :mod:`abm_workbench.cad.boolean` (FreeCAD), and
+relative errors as fractions (0.01 = 1 %). Every tool is checked along its whole cutting edge: the
+peripheral edge (a flat-end mill's side line; a bull-nose or ball-end mill's corner arc and side, its
+length of cut the arc length along both, LEP and UEP heights along the axis above the tip) and the end
+edge (its engaged length compared apart: Comparison.end_abm, end_ref). Everything here is numpy, except
+:func:`validate`, which runs the boolean reference through :mod:`abm_workbench.cad.profile_boolean` (FreeCAD;
+a flat-end mill's side lines by :mod:`abm_workbench.cad.boolean`, as before), and
 :func:`validate_helix`, its counterpart for helical edges (:mod:`abm_workbench.cad.helix_boolean`):
 per instant and flute the axial length of cut, LEP and UEP (axial positions l) of
 flute_engagement against the helix boolean.
@@ -51,7 +55,11 @@ class Comparison:
     error is relative (l_ref ≥ TINY_LENGTH). error: difference / l_ref where relative, else
     difference (mm). lep_abm, lep_ref, uep_abm, uep_ref: LEP and UEP along the edge (mm, NaN
     without engagement). lep_difference, uep_difference: ABM − reference (mm, NaN unless both
-    engage). depth_abm, depth_ref: (m,) depth of cut (mm, NaN without engagement).
+    engage). depth_abm, depth_ref: (m,) depth of cut (mm, NaN without engagement). end_abm, end_ref: engaged
+    length of the end cutting edge (mm; NaN where a side did not compute it: an engine's CL points
+    against the in-process stock, a reference without end edges); end_difference: end_abm − end_ref (NaN
+    unless both are known). For a tool with a corner, l is the arc length along the peripheral edge (corner
+    arc and straight side) and LEP, UEP are heights along the tool axis above the tip.
     """
 
     l_abm: np.ndarray
@@ -67,6 +75,14 @@ class Comparison:
     uep_difference: np.ndarray
     depth_abm: np.ndarray
     depth_ref: np.ndarray
+    end_abm: np.ndarray = None
+    end_ref: np.ndarray = None
+    end_difference: np.ndarray = None
+
+    def __post_init__(self):
+        for name in ("end_abm", "end_ref", "end_difference"):
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, np.full(np.shape(self.l_abm), np.nan))
 
     @property
     def relative_error(self):
@@ -82,6 +98,16 @@ class Comparison:
     def mismatched(self):
         """(m, p) bool: exactly one of ABM and the reference engages (checked instants only)."""
         return self.checked & ((self.l_abm > 0.0) != (self.l_ref > 0.0))
+
+    @property
+    def end_checked(self):
+        """(m, p) bool: both sides give the end edge's engaged length (checked instants only)."""
+        return self.checked & np.isfinite(self.end_abm) & np.isfinite(self.end_ref)
+
+    @property
+    def end_mismatched(self):
+        """(m, p) bool: exactly one side finds the end edge in the stock (instants of end_checked)."""
+        return self.end_checked & ((np.nan_to_num(self.end_abm) > 0.0) != (np.nan_to_num(self.end_ref) > 0.0))
 
 
 @dataclass(frozen=True)
@@ -100,7 +126,8 @@ class InProcessCheck:
 class Validation:
     """A validated pass: the engine's Engagement, the reference, their Comparison, the timings.
 
-    reference: dict of (m, p) arrays length, lep_l, uep_l, pieces (see cad.boolean).
+    reference: dict of (m, p) arrays length, lep_l, uep_l, pieces, end_length, end_pieces (cad.profile_boolean;
+    a tool with a corner also corner_length, and (m, p, 3) lep_xyz, uep_xyz).
     seconds: {"abm": engine time, "boolean": reference time} (s). in_process: an InProcessCheck
     when both sides worked against the in-process stock, None against the stock as given.
     """
@@ -125,22 +152,33 @@ class Validation:
 def compare(engagement: Engagement, reference, toolpath: Toolpath, tool: Tool):
     """The Comparison of an Engagement (m × p) with a reference dict of (m, p) arrays.
 
-    reference: length, lep_l, uep_l (mm along the edge, NaN without engagement), at the same
-    CL points of `toolpath` and the same angles engagement.phi. The reference depth of cut is
-    computed from its LEP and UEP on the edge lines of `tool`.
+    reference: length, lep_l, uep_l (mm along the edge, or for a tool with a corner heights along the axis
+    above the tip; NaN without engagement), at the same CL points of `toolpath` and the same angles
+    engagement.phi; optionally end_length (the end edge's engaged length, mm) and lep_xyz, uep_xyz ((m, p, 3)
+    the LEP and UEP points, mm). The reference depth of cut is taken from the z of its LEP and UEP points
+    where it gives them, else computed from its LEP and UEP on the edge lines of `tool` (a flat-end mill's).
     """
     arrays = _reference_arrays(engagement, reference)
-    base, direction = edge_lines(toolpath, tool, engagement.phi)
-    z_lep = base[..., 2] + arrays["lep_l"] * direction[:, None, 2]
-    z_uep = base[..., 2] + arrays["uep_l"] * direction[:, None, 2]
+    if "lep_xyz" in reference and "uep_xyz" in reference:
+        z_lep, z_uep = (np.asarray(reference[name], dtype=float)[..., 2] for name in ("lep_xyz", "uep_xyz"))
+    else:
+        if tool.corner_radius > 0.0:
+            raise ValueError("a reference for a tool with a corner must give lep_xyz and uep_xyz")
+        base, direction = edge_lines(toolpath, tool, engagement.phi)
+        z_lep = base[..., 2] + arrays["lep_l"] * direction[:, None, 2]
+        z_uep = base[..., 2] + arrays["uep_l"] * direction[:, None, 2]
     return _comparison(engagement, arrays, z_lep, z_uep)
 
 
 def _reference_arrays(engagement, reference):
-    """{length, lep_l, uep_l}: the reference's (m, p) float arrays, shape-checked against `engagement`."""
+    """{length, lep_l, uep_l, end_length}: the reference's (m, p) float arrays, shape-checked against
+    `engagement` (end_length NaN where the reference has none)."""
     m, p = engagement.shape
     arrays = {}
-    for name in ("length", "lep_l", "uep_l"):
+    for name in ("length", "lep_l", "uep_l", "end_length"):
+        if name == "end_length" and name not in reference:
+            arrays[name] = np.full((m, p), np.nan)
+            continue
         array = np.asarray(reference[name], dtype=float)
         if array.shape != (m, p):
             raise ValueError(f"reference[{name!r}] must have shape {(m, p)}, got {array.shape}")
@@ -155,11 +193,12 @@ def _comparison(engagement, arrays, z_lep, z_uep):
     difference = l_abm - l_ref
     relative = l_ref >= TINY_LENGTH
     error = np.where(relative, difference / np.where(relative, l_ref, 1.0), difference)
+    end_abm = np.asarray(engagement.end_length, dtype=float)
     return Comparison(
         l_abm, l_ref, difference, relative, error,
         engagement.lep_l, arrays["lep_l"], engagement.uep_l, arrays["uep_l"],
         engagement.lep_l - arrays["lep_l"], engagement.uep_l - arrays["uep_l"],
-        engagement.depth_of_cut, _depth(z_lep, z_uep),
+        engagement.depth_of_cut, _depth(z_lep, z_uep), end_abm, arrays["end_length"], end_abm - arrays["end_length"],
     )
 
 
@@ -187,6 +226,9 @@ def _statistics(comparison, mask):
         "max_lep_difference": float(np.nanmax(lep)) if np.isfinite(lep).any() else np.nan,
         "max_uep_difference": float(np.nanmax(uep)) if np.isfinite(uep).any() else np.nan,
         "mismatched": int((mask & comparison.mismatched).sum()),
+        "end_instants": int((mask & comparison.end_checked).sum()),
+        "max_end_difference": _largest(np.abs(comparison.end_difference[mask & comparison.end_checked])),
+        "end_mismatched": int((mask & comparison.end_mismatched).sum()),
     }
 
 
@@ -199,7 +241,10 @@ def segment_summary(engagement: Engagement, comparison: Comparison, cls=None):
     mean_rel_error (|relative error| over those, NaN if none), max_abs_difference
     (max |l_ABM − l_ref| over all instants, mm), max_lep_difference, max_uep_difference (mm),
     mismatched (instants where the reference finds no engagement: ABM engages throughout a
-    segment). Instants without an ABM segment are counted in surface_summary's "none".
+    segment); end_instants (those where both sides give the end edge's engaged length),
+    max_end_difference (max |end_ABM − end_ref| over them, mm, NaN if none), end_mismatched (those
+    where only one side finds the end edge in the stock). Instants without an ABM segment are
+    counted in surface_summary's "none".
     """
     rows = []
     for cl in np.flatnonzero(comparison.checked.any(axis=1)) if cls is None else cls:
@@ -245,9 +290,13 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     """Run the engine on one pass and the boolean reference at its CL points `cls`; a Validation.
 
     solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's (a Staircase or a
-    TerracedStock). sweep: (SweptPieces of the whole program, (m,) program row of each CL point), both
-    in the pass's frame, to check against the in-process stock (the engine's engage_in_process against
-    cad.inprocess_boolean.edge_lengths_in_process), or None for the stock as given. progress(done,
+    TerracedStock). The reference sections every cutting edge of the tool (cad.profile_boolean): a flat-end
+    mill's side lines (cad.boolean's reference, unchanged) and end edges; a bull-nose or ball-end mill's
+    corner arcs (true circular arcs), side lines and end edges. sweep: (SweptPieces of the whole program,
+    (m,) program row of each CL point), both in the pass's frame, to check against the in-process stock (the
+    engine's engage_in_process against cad.profile_boolean.flat_lengths_in_process), or None for the stock
+    as given; ValueError, before any work, with a sweep for a tool with a corner radius
+    (cad.profile_boolean.CORNER_IN_PROCESS). progress(done,
     total) is called after each CL point of the reference. cls: the CL indices (0-based, distinct) the
     reference checks, None: all; elsewhere the reference's arrays are NaN (Comparison.checked) and the
     statistics leave those CL points out (ValueError, before any work, for a list that is empty, repeats
@@ -258,9 +307,12 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
     """
-    from .cad.boolean import edge_lengths_by_boolean
-    from .cad.inprocess_boolean import ProgramSweep, edge_lengths_in_process
+    from .cad.inprocess_boolean import ProgramSweep
+    from .cad.profile_boolean import (CORNER_IN_PROCESS, flat_lengths_by_boolean, flat_lengths_in_process,
+                                      profile_lengths_by_boolean)
 
+    if sweep is not None and tool.corner_radius > 0.0:
+        raise ValueError(CORNER_IN_PROCESS)
     chosen = _checked_rows(cls, len(toolpath))
     started = time.perf_counter()
     if sweep is None:
@@ -274,10 +326,11 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     part = toolpath if chosen is None else toolpath.rows(chosen)
     started = time.perf_counter()
     if sweep is None:
-        function, extra = edge_lengths_by_boolean, ()
+        function = profile_lengths_by_boolean if tool.corner_radius > 0.0 else flat_lengths_by_boolean
+        extra = ()
     else:
         part_rows = np.asarray(rows) if chosen is None else np.asarray(rows)[chosen]
-        function, extra = edge_lengths_in_process, (ProgramSweep(pieces, part_rows, part),)
+        function, extra = flat_lengths_in_process, (ProgramSweep(pieces, part_rows, part),)
         workers = 1 if _repeats_cl_point(part) else workers
     reference = reference_by_workers(function, solid, tool, part, engagement.phi, extra, workers=workers,
                                      scheduler=scheduler, progress=progress)
@@ -418,7 +471,8 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
     arrays over CL points first), computed in `workers` processes or on a Dask cluster, one CL
     point per task.
 
-    reference: a module-level function of cad (edge_lengths_by_boolean, flute_lengths_by_boolean).
+    reference: a module-level function of cad (profile_lengths_by_boolean, flat_lengths_by_boolean,
+    flat_lengths_in_process, flute_lengths_by_boolean).
     workers: 1 (or a pass of one CL point) runs it here; N > 1 in N spawned processes
     (worker_processes.WorkerProcesses); 0 one per core. scheduler: the address of a Dask scheduler
     ("tcp://host:port"), instead of local processes. progress(done, total) after each CL point. On

@@ -109,7 +109,8 @@ def model(number):
     folder = os.path.join(MODELS, f"model_test_{number}")
     job = load_job(os.path.join(folder, "job.json"))
     tool = Tool(job["diameter"], int(job["flutes"]), job["flute_length"])
-    settings = CutSettings(job["feed_per_tooth"], job["inclination"], *job["phi_range"], job["phi_step"])
+    settings = CutSettings(job["feed_per_tooth"], job["inclination"], job["phi_start"], job["phi_end"],
+                           job["phi_step"])  # jobs.load_job reads phi_range as its two parameters
     return load_toolpath(os.path.join(folder, "toolpath.csv")), tool, settings
 
 

@@ -156,6 +156,17 @@
     </message>
 </context>
 <context>
+    <name>ABM_EngageCamJob</name>
+    <message>
+        <source>Engage CAM job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compute where the cutter engages the stock in a FreeCAD CAM Job: select the Job (every operation the engine computes) or some of its operations; the results follow the Job when it recomputes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ABM_ImportStock</name>
     <message>
         <source>Import stock…</source>
@@ -173,7 +184,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Add a toolpath from a CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k) or an APT / CL file</source>
+        <source>Add a toolpath from the selected CAM Job or operation, or from a CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k), an APT / CL file, G-code or an FCStd holding a CAM Job</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -7,6 +7,9 @@ This subpackage is the only place that imports FreeCAD and Part (through
 - :mod:`.recognise`: a solid (STEP, BREP, FCStd) back into a Staircase.
 - :mod:`.boolean`: lengths of cut by OpenCASCADE booleans, the reference the engine is
   checked against (the paper's Siemens NX check).
+- :mod:`.profile_edges`, :mod:`.profile_boolean`: the whole cutting edge of any tool (corner arcs as
+  true circular arcs, sides, end edges) built from the tool's definition and sectioned with the stock;
+  :mod:`.profile_inprocess`: an estimate of what earlier moves took from a corner tool's edges.
 - :mod:`.annotate`: a FreeCAD document with the stock, the toolpath and the engagement of
   chosen CL points drawn on the model.
 """

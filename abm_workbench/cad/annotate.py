@@ -7,9 +7,12 @@ Objects (all Part::Feature unless said), per CL point i in a group ``CL<i>`` (ze
   points over φ (one polyline per run of consecutive engaged angles);
 - ``CL<i>_Seg_<letter>_<surface>``: per engagement segment, the engaged part of the cutter
   surface, the ruled surface between the LEP and UEP polylines over the segment's φ range
-  (a line LEP–UEP for a segment of one angle);
+  (a line LEP–UEP for a segment of one angle); for a tool with a corner radius, the cutting edge
+  from LEP to UEP at each angle of the segment instead, its corner part drawn as circular arcs and
+  its side part as segments (cad.profile_edges);
 - ``CL<i>_Intersection``: the material of the stock as given inside the cutter
-  (cad.boolean.cutter_intersection), for the CL points asked for;
+  (cad.boolean.cutter_intersection: a cylinder, or the body of a tool with a corner radius), for the
+  CL points asked for;
 - validated against the in-process stock, for the CL points given: ``CL<i>_Removed``, the solids
   of the volumes that the earlier moves near the tool swept (what they removed is the stock
   inside them; the reference sections the edges with each), and ``CL<i>_InProcessTop``, the top
@@ -32,6 +35,7 @@ from ..report.colours import SURFACE_COLOURS
 from .boolean import cutter_intersection
 from .freecad_env import FreeCAD, Part
 from .inprocess_boolean import swept_near_tool
+from .profile_edges import EdgeGeometry, profile_piece_shapes, tool_frames
 
 V = FreeCAD.Vector
 #: Consecutive polyline points closer than this (mm) are merged.
@@ -60,7 +64,7 @@ def annotated_document(name, solid, engagement: Engagement, toolpath: Toolpath, 
         for cl in range(len(toolpath)) if cls is None else cls:
             prefix = f"CL{cl:0{width}d}"
             group = document.addObject("App::DocumentObjectGroup", prefix)
-            for obj in _cl_objects(builder, prefix, engagement, int(cl)):
+            for obj in _cl_objects(builder, prefix, engagement, int(cl), tool, toolpath):
                 group.addObject(obj)
             if cl in intersections:
                 shape = cutter_intersection(solid, tool, toolpath, int(cl))
@@ -135,8 +139,9 @@ def _packed(rgb):
     return (r << 24) | (g << 16) | (b << 8)
 
 
-def _cl_objects(builder, prefix, engagement, cl):
-    """The LEP and UEP polylines and one object per engagement segment of CL point `cl`."""
+def _cl_objects(builder, prefix, engagement, cl, tool=None, toolpath=None):
+    """The LEP and UEP polylines and one object per engagement segment of CL point `cl` (for a `tool` with a
+    corner radius, of `toolpath`, the edges from LEP to UEP as arcs and segments)."""
     lep, uep = engagement.lep_xyz[cl], engagement.uep_xyz[cl]
     runs = _runs(engagement.segment[cl] >= 0)
     objects = []
@@ -148,10 +153,14 @@ def _cl_objects(builder, prefix, engagement, cl):
     for index, segment in enumerate(engagement.segments(cl)):
         rows = np.flatnonzero(engagement.segment[cl] == index)
         surface = segment["surface"]
+        if tool is not None and tool.corner_radius > 0.0:
+            shape, what = _edge_pieces(tool, toolpath, engagement, cl, rows), "cutting edges from LEP to UEP"
+        else:
+            shape, what = _band(lep[rows], uep[rows]), "engaged cutter surface"
         obj = builder.feature(
-            f"{prefix}_Seg_{segment['letter']}_{surface}", _band(lep[rows], uep[rows]),
-            f"engaged cutter surface, segment {segment['letter']}, UEP on {surface.replace('_', ' ')}",
-            colour=SURFACE_COLOURS[surface])
+            f"{prefix}_Seg_{segment['letter']}_{surface}", shape,
+            f"{what}, segment {segment['letter']}, UEP on {surface.replace('_', ' ')}",
+            colour=SURFACE_COLOURS[surface], line_width=2.0 if tool is not None and tool.corner_radius else None)
         for kind, prop, value, tip in (
             ("App::PropertyInteger", "ClIndex", cl, "CL point (0-based)"),
             ("App::PropertyString", "Segment", segment["letter"], "engagement segment letter"),
@@ -201,6 +210,19 @@ def _runs(mask):
     """[(start, stop)] of the runs of True in a 1-D bool array (stop exclusive)."""
     edges = np.flatnonzero(np.diff(np.concatenate([[0], mask.astype(np.int8), [0]])))
     return list(zip(edges[::2].tolist(), edges[1::2].tolist()))
+
+
+def _edge_pieces(tool, toolpath, engagement, cl, rows):
+    """Part.Compound of the peripheral edge of a tool with a corner at CL point `cl` from the LEP's height
+    to the UEP's (engagement.lep_l, uep_l) at each angle of `rows`: arcs on the corner, segments on the side."""
+    geometry = EdgeGeometry.of(tool, toolpath.cl[cl], tool_frames(toolpath)[cl], engagement.phi[rows])
+    s0 = geometry.arc_length(engagement.lep_l[cl, rows])
+    s1 = geometry.arc_length(engagement.uep_l[cl, rows])
+    edges = [edge for k in range(len(rows)) if s1[k] - s0[k] > POINT_TOL
+             for edge in profile_piece_shapes(geometry, k, s0[k], s1[k])]
+    if not edges:
+        return Part.Compound([Part.Vertex(V(*engagement.lep_xyz[cl, row])) for row in rows])
+    return Part.Compound(edges)
 
 
 def _band(lep, uep):

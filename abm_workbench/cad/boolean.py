@@ -109,8 +109,13 @@ def cutter_intersection(shape, tool: Tool, toolpath: Toolpath, i):
     """The stock material inside the cutter at CL point i: a Part.Shape (mm).
 
     The cutter is the cylinder of radius R_t and height L (flute length) standing on the CL
-    point with axis R·e_z.
+    point with axis R·e_z; a tool with a corner radius is its own body, the profile with the rounded
+    corner turned about the axis (cad.profile_edges.tool_solid).
     """
+    if tool.corner_radius > 0.0:
+        from .profile_boolean import cutter_solid
+
+        return shape.common(cutter_solid(tool, toolpath, i))
     _, direction = edge_lines(toolpath, tool, [0.0])
     cylinder = Part.makeCylinder(
         tool.radius, tool.flute_length, FreeCAD.Vector(*toolpath.cl[i]), FreeCAD.Vector(*direction[i])

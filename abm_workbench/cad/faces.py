@@ -12,6 +12,8 @@ tolerance :data:`~abm_workbench.engine.tolerances.RECOGNITION_TOL` (``TOL`` belo
   the edge are among its values at the span ends and at these roots: that gives exact bounding
   boxes (FreeCAD's ``BoundBox`` of B-spline geometry encloses the control polygon, not the
   curve) and decides whether a plan curve has one x per y.
+- Edges on any other curve (an offset curve) or without a 3D curve are refused; a degenerated
+  edge (a cone's apex, a sphere's pole) is its one point.
 - Faces by surface type. A plane by its normal; a cylinder and a surface of extrusion by their
   axis or direction; a B-spline or Bézier surface by its control net, since the surface lies in
   the convex hull of its control points: it is a horizontal plane when all its poles share z
@@ -20,6 +22,14 @@ tolerance :data:`~abm_workbench.engine.tolerances.RECOGNITION_TOL` (``TOL`` belo
   the plan position depends on the other parameter only: an extrusion of a plan curve along z).
   A plane is horizontal when its z spread over the face (from its edges, exactly) is within TOL,
   vertical when its horizontal drift over the face's height is.
+- A trimmed surface is classified by its basis, an offset surface as the surface it equals: the
+  offset of a plane is a parallel plane, of a cylinder a coaxial cylinder, of an extrusion of a
+  line (or of a circle about the extrusion direction) the extrusion of a parallel line (of a
+  concentric circle), placed through the offset surface's own point at the face's middle. Any
+  other offset is refused in words.
+- A vertical wall's plan curve must have an exact B-spline form: lines, conics (a parabola or
+  hyperbola as its rational degree-2 B-spline over the face), B-spline and Bézier curves; any
+  other (an offset curve) is refused in words.
 
 A face that is neither is refused with an InputError naming the face, how far it leans and
 near which point: "Face7: wall not vertical: leans 26.6° near x = 3, y = 14.2".
@@ -47,8 +57,10 @@ class FaceKind:
     it) or "wall" (vertical). z: the height of a horizontal face (mm), NaN for a wall.
     box: (6,) exact x_min, x_max, y_min, y_max, z_min, z_max of the face (mm). plan: for a
     wall whose surface is not a plane, its plan curve as a Part curve (Circle, or the curve
-    extruded, or the B-spline/Bézier curve of the control net's rows), to be trimmed;
-    None for planes and horizontal faces.
+    extruded, a parabola or hyperbola as its exact B-spline over the face, or the B-spline/Bézier
+    curve of the control net's rows), to be trimmed; None for planes and horizontal faces.
+    surface: the surface classified (:func:`exact_surface`): the face's own, or the plane,
+    cylinder or extrusion a trimmed or offset surface equals.
     """
 
     name: str
@@ -56,6 +68,34 @@ class FaceKind:
     z: float
     box: tuple
     plan: object = None
+    surface: object = None
+
+
+#: Curves whose edges are read exactly as B-splines (lines degree 1, conics rational degree 2).
+EXACT_CURVES = (Part.Line, Part.Circle, Part.Ellipse, Part.Parabola, Part.Hyperbola, Part.BSplineCurve,
+                Part.BezierCurve)
+
+
+def edge_curve(edge):
+    """The Part curve an edge lies on, or None for a degenerated edge (a point: a cone's apex, a
+    sphere's pole). ValueError in words for an edge without a 3D curve, or on a curve that has no
+    exact B-spline form (not in EXACT_CURVES: an offset curve)."""
+    if edge.Degenerated:
+        return None
+    try:
+        curve = edge.Curve
+    except (TypeError, FreeCAD.Base.FreeCADError, Part.OCCError):  # FreeCAD's "undefined curve type"
+        raise ValueError(f"the edge {_ends(edge)} has no 3D curve, so its extent cannot be found") from None
+    if not isinstance(curve, EXACT_CURVES):
+        raise ValueError(f"the edge {_ends(edge)} lies on {_a(type(curve).__name__)}, which has no exact B-spline "
+                         "form, so its extent cannot be found exactly")
+    return curve
+
+
+def _ends(edge):
+    """'from (x, y, z) to (x, y, z)', or 'at (x, y, z)' for a closed edge: its vertices in words (mm)."""
+    points = ["(" + ", ".join(f"{v:.6g}" for v in vertex.Point) + ")" for vertex in edge.Vertexes]
+    return f"from {points[0]} to {points[-1]}" if len(points) > 1 else f"at {points[0]}"
 
 
 def bspline_of_edge(edge):
@@ -101,9 +141,13 @@ def _bernstein_to_power(degree):
 def critical_points(edge, axis):
     """(k, 3) points of an edge, in order along it: its start, every turning point of coordinate
     `axis` (0 x, 1 y, 2 z) and its end (mm). The coordinate's extremes over the edge, and every
-    change of its direction, are among them. All spans at once: (m spans, degree p).
+    change of its direction, are among them. All spans at once: (m spans, degree p). A degenerated
+    edge gives its one point; ValueError for an edge that cannot be read exactly (:func:`edge_curve`).
     """
-    if isinstance(edge.Curve, Part.Line):  # no turning points
+    curve = edge_curve(edge)
+    if curve is None:
+        return np.array([tuple(edge.Vertexes[0].Point)])
+    if isinstance(curve, Part.Line):  # no turning points
         return np.array([tuple(edge.valueAt(u)) for u in edge.ParameterRange])
     spans = bspline_of_edge(edge).toBezier()
     p = spans[0].Degree
@@ -142,8 +186,9 @@ def _bezier_points(poles, weights, t):
 
 
 def edge_box(edge):
-    """(6,) exact x_min, x_max, y_min, y_max, z_min, z_max of an edge (mm)."""
-    if isinstance(edge.Curve, Part.Line):
+    """(6,) exact x_min, x_max, y_min, y_max, z_min, z_max of an edge (mm); ValueError for an edge that
+    cannot be read exactly (:func:`edge_curve`)."""
+    if edge.Degenerated or isinstance(edge_curve(edge), Part.Line):
         ends = critical_points(edge, 0)
         return tuple(float(v) for pair in zip(ends.min(axis=0), ends.max(axis=0)) for v in pair)
     limits = []
@@ -193,29 +238,95 @@ def fold(points, axis):
 def classify_face(face, name, where="", known=None):
     """FaceKind of a face of a 2.5D solid; InputError naming it when it is neither horizontal nor vertical.
 
-    where: prefix of messages, e.g. "part.step: ". known: edge boxes by hash (see shape_box).
+    where: prefix of messages, e.g. "part.step: ". known: edge boxes by hash (see shape_box). A face
+    with an edge that cannot be read exactly, on an offset surface that equals no plane, cylinder or
+    extrusion, or a vertical wall whose plan curve has no exact B-spline form, is refused in words too.
     """
-    box = shape_box(face, known)
-    surface = face.Surface
+    try:
+        box = shape_box(face, known)
+        surface = exact_surface(face)
+    except ValueError as error:
+        raise InputError(f"{where}{name}: {error}") from None
     height = box[5] - box[4]
     if isinstance(surface, Part.Plane):
         normal = np.array(tuple(surface.Axis)) * (-1.0 if face.Orientation == "Reversed" else 1.0)
         if height <= TOL:
-            return FaceKind(name, "up" if normal[2] > 0 else "down", _level(face, box), box)
+            return FaceKind(name, "up" if normal[2] > 0 else "down", _level(face, box), box, surface=surface)
         horizontal = np.hypot(normal[0], normal[1])
         if abs(normal[2]) * height <= TOL * max(horizontal, TOL):
-            return FaceKind(name, "wall", float("nan"), box)
+            return FaceKind(name, "wall", float("nan"), box, surface=surface)
         _refuse_plane(face, name, normal, where)
     if isinstance(surface, (Part.Cylinder, Part.SurfaceOfExtrusion)):
         axis = np.array(tuple(surface.Axis if isinstance(surface, Part.Cylinder) else surface.Direction))
         axis = axis / np.linalg.norm(axis)
         if np.hypot(axis[0], axis[1]) * height <= TOL * abs(axis[2]):
-            return FaceKind(name, "wall", float("nan"), box, _axial_plan(surface))
+            try:
+                plan = _axial_plan(surface, face)
+            except ValueError as error:
+                raise InputError(f"{where}{name}: a vertical wall on {error}") from None
+            return FaceKind(name, "wall", float("nan"), box, plan, surface)
         _refuse(face, name, f"a {type(surface).__name__} whose axis is {_degrees(np.arccos(min(1.0, abs(axis[2]))))}° "
                 f"from vertical", where)
     if isinstance(surface, (Part.BSplineSurface, Part.BezierSurface)):
-        return _net_face(face, name, box, where)
+        return _net_face(face, name, box, where, surface)
     _refuse(face, name, f"a {type(surface).__name__} surface", where)
+
+
+def exact_surface(face):
+    """The surface classify_face reads for `face` (see the module's docstring): the face's own; a
+    trimmed surface's basis; for an offset surface the Part.Plane, Part.Cylinder or
+    Part.SurfaceOfExtrusion (of a line, or of a circle) it equals, through the offset surface's own
+    point at the middle of the face's parameter range. ValueError in words for any other offset."""
+    u0, u1, v0, v1 = face.ParameterRange
+    return _unwrapped(face.Surface, 0.5 * (u0 + u1), 0.5 * (v0 + v1))
+
+
+def _unwrapped(surface, u, v):
+    """`surface` without trims and offsets (see exact_surface), at parameters (u, v) of the face's middle."""
+    if isinstance(surface, Part.RectangularTrimmedSurface):
+        return _unwrapped(surface.BasisSurface, u, v)
+    if not isinstance(surface, Part.OffsetSurface):
+        return surface
+    basis = _unwrapped(surface.BasisSurface, u, v)
+    point = surface.value(u, v)
+    if isinstance(basis, Part.Plane):
+        return Part.Plane(point, basis.Axis)
+    if isinstance(basis, Part.Cylinder):
+        return _cylinder(basis.Center, basis.Axis, point)
+    if isinstance(basis, Part.SurfaceOfExtrusion):
+        curve, direction = basis.BasisCurve, basis.Direction
+        if isinstance(curve, Part.Line):
+            return Part.SurfaceOfExtrusion(Part.Line(point, point + curve.Direction), direction)
+        if isinstance(curve, Part.Circle) and curve.Axis.cross(direction).Length <= 1e-12 * direction.Length:
+            return _cylinder(curve.Center, direction, point)
+    raise ValueError(f"an OffsetSurface ({surface.OffsetValue:g} mm) of {_described(basis)}: its offset has no "
+                     "exact form the walls take (offsets of planes, cylinders and extrusions of lines and circles "
+                     "are taken)")
+
+
+def _cylinder(center, axis, point):
+    """The Part.Cylinder about the line through `center` along `axis` through `point` (FreeCAD Vectors, mm);
+    ValueError when the point lies on the axis."""
+    axis = FreeCAD.Vector(axis).normalize()
+    offset = point - center
+    radial = offset - axis * offset.dot(axis)
+    if radial.Length <= TOL:
+        raise ValueError("an OffsetSurface that shrinks a cylinder to its axis")
+    cylinder = Part.Cylinder()
+    cylinder.Center, cylinder.Axis, cylinder.Radius = center, axis, radial.Length
+    return cylinder
+
+
+def _described(surface):
+    """'a SurfaceOfExtrusion of an OffsetCurve', 'a Sphere': a surface's type in words."""
+    if isinstance(surface, Part.SurfaceOfExtrusion):
+        return f"a SurfaceOfExtrusion of {_a(type(surface.BasisCurve).__name__)}"
+    return _a(type(surface).__name__)
+
+
+def _a(name):
+    """'an OffsetCurve', 'a Sphere': a type's name with its article."""
+    return f"{'an' if name[0] in 'AEIOU' else 'a'} {name}"
 
 
 def _level(face, box):
@@ -256,29 +367,37 @@ def _refuse(face, name, what, where):
     raise InputError(f"{where}{name}: {kind}: {what} {_near(face)}; {RULE}")
 
 
-def _axial_plan(surface):
-    """The plan curve of a vertical cylinder (a Part.Circle at its centre) or extrusion (its basis curve)."""
+def _axial_plan(surface, face):
+    """The plan curve of a vertical cylinder (a Part.Circle at its centre) or extrusion (its basis curve; a
+    parabola or hyperbola, unbounded, as its exact rational B-spline over the face's range of the curve's
+    parameter). ValueError in words for a basis curve with no exact B-spline form (an offset curve)."""
     if isinstance(surface, Part.Cylinder):
         return Part.Circle(surface.Center, FreeCAD.Vector(0, 0, 1), surface.Radius)
-    return surface.BasisCurve
+    curve = surface.BasisCurve
+    if isinstance(curve, (Part.Parabola, Part.Hyperbola)):
+        u0, u1 = face.ParameterRange[:2]
+        return bspline_of_edge(Part.Edge(curve, u0, u1))
+    if not isinstance(curve, EXACT_CURVES):
+        raise ValueError(f"{_described(surface)}, which has no exact B-spline form for the walls")
+    return curve
 
 
-def _net_face(face, name, box, where):
-    """FaceKind of a face on a B-spline or Bézier surface, decided from its control net."""
-    surface = face.Surface
+def _net_face(face, name, box, where, surface):
+    """FaceKind of a face on a B-spline or Bézier surface (`surface`, untrimmed), decided from its control net."""
     poles = np.array([[tuple(p) for p in row] for row in surface.getPoles()])
     weights = np.array(surface.getWeights(), dtype=float)
     if np.ptp(poles[..., 2]) <= TOL:
         u0, u1, v0, v1 = face.ParameterRange
         up = face.normalAt(0.5 * (u0 + u1), 0.5 * (v0 + v1)).z > 0
-        return FaceKind(name, "up" if up else "down", _level(face, box), box)
+        return FaceKind(name, "up" if up else "down", _level(face, box), box, surface=surface)
     for direction in (1, 0):
         rows = poles if direction == 1 else poles.transpose(1, 0, 2)
         w = weights if direction == 1 else weights.T
         spread = np.hypot(np.ptp(rows[..., 0], axis=1), np.ptp(rows[..., 1], axis=1))
         separable = np.allclose(w * w[:1, :1], w[:, :1] * w[:1, :], rtol=1e-12, atol=0.0)
         if spread.max() <= TOL and separable:
-            return FaceKind(name, "wall", float("nan"), box, _net_plan(surface, direction, rows[:, 0], w[:, 0]))
+            return FaceKind(name, "wall", float("nan"), box, _net_plan(surface, direction, rows[:, 0], w[:, 0]),
+                            surface)
     u0, u1, v0, v1 = face.ParameterRange
     if abs(face.normalAt(0.5 * (u0 + u1), 0.5 * (v0 + v1)).z) >= 0.5:
         z = poles[..., 2]

@@ -98,10 +98,10 @@ class Recognition:
 def load_solid(path, name=None):
     """The shape in a STEP (.step, .stp), BREP (.brep, .brp) or FreeCAD (.FCStd) file.
 
-    name chooses one solid when the file holds several: for FCStd the object's Name or Label;
-    for STEP and BREP "Solid1", "Solid2", … in the file's order. Without it, the file's one
-    solid (or one top-level object holding solids); a document already open is used as it is
-    and left open. InputError naming the file when it is missing, unreadable, empty, when
+    name chooses one solid when the file holds several: for FCStd the object's Name or Label (its
+    shape where the document shows it: :func:`placed_shape`); for STEP and BREP "Solid1",
+    "Solid2", … in the file's order. Without it, the file's one solid (or one top-level object
+    holding solids); a document already open is used as it is and left open. InputError naming the file when it is missing, unreadable, empty, when
     `name` matches nothing, or when several solids are there and none is chosen: the message
     lists the names and says "choose one with --solid NAME".
     """
@@ -235,10 +235,23 @@ def _load_document_solid(path, name):
                 detail = ("no object holds a solid" if not chosen
                           else f"several solids ({names}); choose one with --solid NAME")
                 raise InputError(f"{path}: {detail}")
-        return chosen[0].Shape
+        return placed_shape(chosen[0])
     finally:
         if not already:
             FreeCAD.closeDocument(document.Name)
+
+
+def placed_shape(obj):
+    """The shape of a document object where the document shows it (mm): its own placement and those of
+    the containers above it (App::Part and other groups with a placement) applied, a link (App::Link)
+    taken as the object it shows with the link's placement; ``Part.getShape`` along the object's path
+    from its top-level container (an object belongs to one container at most), or of the object
+    itself at the top."""
+    paths = obj.Parents
+    if paths:
+        root, path = paths[0]
+        return Part.getShape(root, path, needSubElement=False)
+    return Part.getShape(obj)
 
 
 def _same_file(a, b):
@@ -280,9 +293,9 @@ def recognise(shape, *, walls="exact", wall_points="chebyshev", y_window=None, s
     solid = single_solid(shape, where)
     names = {face.hashCode(): f"Face{k}" for k, face in enumerate(shape.Faces, start=1)}
     known = {}
+    kinds = {face.hashCode(): classify_face(face, names[face.hashCode()], where, known) for face in solid.Faces}
     limits = shape_box(solid, known)
     window = _window(y_window, limits, where)
-    kinds = {face.hashCode(): classify_face(face, names[face.hashCode()], where, known) for face in solid.Faces}
     tops, wall_faces = [], []
     for face in solid.Faces:
         role = _face_role(face, kinds[face.hashCode()], limits, where)

@@ -21,7 +21,9 @@ How (decisions exact, with the one tolerance
    geometry between the piece's ends, which are snapped onto the solid's vertical edges:
    a plane gives a :class:`PlanLine`, a vertical cylinder a :class:`PlanArc` (centre, radius,
    start angle, signed sweep), any other wall the B-spline of its plan curve cut to the piece
-   (:class:`PlanSpline`; Bézier and conic curves converted exactly, rational ones with weights).
+   (:class:`PlanSpline`; Bézier and conic curves converted exactly, rational ones with weights;
+   parabolas and hyperbolas as their rational quadratic B-splines over the face). A trimmed or
+   offset surface is read as the plane, cylinder or extrusion it equals (:func:`.faces.exact_surface`).
    Each curve names its face (``face="Face7"``).
 4. Each curve runs with the material on its left (from the face's outward normal), and the
    curves are chained end to end into closed loops. The slab's region is their even-odd fill.
@@ -176,7 +178,7 @@ def _plan_pieces(edge, spanning, corners, z_mid, where, k):
 
 def _face_of(point, spanning, where, k):
     """(face, FaceKind) of the wall face through a section point (3D); InputError when none or several."""
-    near = [(face, kind) for face, kind in spanning if _plan_distance(face, kind, point) <= 10 * TOL]
+    near = [(face, kind) for face, kind in spanning if _plan_distance(kind, point) <= 10 * TOL]
     if len(near) > 1:
         near = [(face, kind) for face, kind in near if face.isPartOfDomain(*face.Surface.parameter(point))]
     if len(near) != 1:
@@ -186,11 +188,11 @@ def _face_of(point, spanning, where, k):
     return near[0]
 
 
-def _plan_distance(face, kind, point):
+def _plan_distance(kind, point):
     """Plan distance (mm) from a point to a wall face's surface, extended beyond the face."""
     if kind.plan is None:
-        normal = face.Surface.Axis
-        return abs(normal.dot(point - face.Surface.Position)) / max(np.hypot(normal.x, normal.y), TOL)
+        normal = kind.surface.Axis
+        return abs(normal.dot(point - kind.surface.Position)) / max(np.hypot(normal.x, normal.y), TOL)
     plan = kind.plan
     level = V(point.x, point.y, plan.value(plan.FirstParameter).z)
     nearest = plan.value(plan.parameter(level))

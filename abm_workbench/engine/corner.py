@@ -37,11 +37,13 @@ CORNER_TOP marks a run that reaches the arc's top at 90°, where the straight si
 Shapes: N arcs; centre, d, w (N, 3) (mm, unit vectors); r and ψ_max floats. Lengths in mm.
 """
 
+import functools
+
 import numpy as np
 
 from .engagement import SURFACES
 from .intervals import EdgeIntervals
-from .polynomials import horner, product
+from .polynomials import guarded_root, horner, product
 from .terraced import merged_intervals, plan_crossings, side_changes
 from .terraced_pieces import bernstein_to_power, slab_pieces
 
@@ -51,6 +53,8 @@ _CODE = {name: SURFACES.index(name) for name in ("top", "straight_wall", "curved
 CORNER_TOP = -2
 #: A plan ellipse whose smaller semi-axis is below this (mm) is taken as the segment it nearly is.
 FLAT = 1e-9
+#: Levels of halving in the isolation of a piece's crossings (isolated_changes) before the general root finder.
+SPLIT_DEPTH = 6
 #: Bound on arcs × pieces held at once.
 CHUNK_VALUES = 1 << 20
 #: Kinds of breakpoint along an arc.
@@ -80,7 +84,7 @@ def corner_intervals(stock, centre, d, w, radius, psi_max, pieces=None):
                   for level, kind in ((slab.z_bottom, _BOTTOM), (slab.z_top, _TOP))]
         events.append(_plan_events(groups[k], rows, c[rows, :2], a[rows, :2], b[rows, :2], top))
         ray_rows, ray_at, _ = plan_crossings(groups[k], start_plan[rows, 0], start_plan[rows, 1],
-                                             np.ones(rows.size), np.zeros(rows.size))
+                                             np.ones(rows.size), np.zeros(rows.size), isolated_changes)
         inside_start = np.bincount(ray_rows[ray_at > 0.0], minlength=rows.size) % 2 == 1
         runs = _runs(rows, events, inside_start, c[rows, 2], a[rows, 2], b[rows, 2], top, slab.z_bottom, slab.z_top,
                      k == top_slab, wall_code)
@@ -153,7 +157,7 @@ def _flat_crossings(groups, rows, cp, ap, bp, top):
     moving = size > 0.0
     rows, longer, size = rows[moving], longer[moving], size[moving]  # a point in plan (r = 0) crosses nothing
     ux, uy = longer[:, 0] / size, longer[:, 1] / size
-    at_rows, at, wall = plan_crossings(groups, cp[rows, 0], cp[rows, 1], ux, uy)
+    at_rows, at, wall = plan_crossings(groups, cp[rows, 0], cp[rows, 1], ux, uy, isolated_changes)
     g = rows[at_rows]
     along_a = ap[g, 0] * ux[at_rows] + ap[g, 1] * uy[at_rows]
     along_b = bp[g, 0] * ux[at_rows] + bp[g, 1] * uy[at_rows]
@@ -176,7 +180,7 @@ def _ellipse_crossings(groups, rows, cp, ap, bp, det, top):
     for group in groups:
         k = group.degree
         per = max(1, CHUNK_VALUES // max(1, group.control.shape[0]))
-        to_bernstein = np.linalg.inv(bernstein_to_power(2 * k))
+        to_bernstein = _bases(2 * k)[1]
         for first in range(0, rows.size, per):
             sl = slice(first, first + per)
             gap_x = np.maximum(low_x[sl, None] - group.centre[:, 0], group.centre[:, 0] - high_x[sl, None])
@@ -194,7 +198,14 @@ def _ellipse_crossings(groups, rows, cp, ap, bp, det, top):
             g = product(l1, l1) + product(l2, l2) - det[rows[arc], None] ** 2 * product(weight, weight)
             scale = np.abs(g).max(axis=1, keepdims=True)
             g = g / np.where(scale > 0.0, scale, 1.0)
-            pair, u = side_changes(2 * k, g @ to_bernstein.T)
+            bernstein = g @ to_bernstein.T
+            # A polynomial whose Bernstein coefficients all lie on one side of 0 keeps that side on the whole
+            # piece (it lies in their hull): no crossing; the rest go to the root finder.
+            mixed = np.flatnonzero((bernstein >= 0.0).any(axis=1) & (bernstein < 0.0).any(axis=1))
+            if mixed.size == 0:
+                continue
+            arc, piece, h = arc[mixed], piece[mixed], h[mixed]
+            pair, u = isolated_changes(2 * k, bernstein[mixed])
             if pair.size == 0:
                 continue
             point = horner(np.moveaxis(h[pair], 1, -1), u[:, None])
@@ -209,6 +220,78 @@ def _ellipse_crossings(groups, rows, cp, ap, bp, det, top):
     if not out:
         return empty
     return tuple(np.concatenate(v) for v in zip(*out))
+
+
+def isolated_changes(degree, bernstein):
+    """terraced.side_changes of M polynomials given by their Bernstein coefficients (M, degree + 1) on
+    [0, 1]: (pair, u), sorted by pair.
+
+    Descartes' rule of signs in the Bernstein basis isolates the roots: a piece of [0, 1] whose
+    coefficients (found by de Casteljau halving) have no change of sign holds no root, and one whose
+    coefficients are all nonzero with one change holds exactly one, simple, where the side changes
+    once; it is refined in that piece alone. A polynomial the halving does not settle within
+    SPLIT_DEPTH levels (roots closer than 2^−SPLIT_DEPTH, a tangency, a coefficient 0 at a
+    split) goes whole to side_changes.
+    """
+    if degree == 1:
+        return side_changes(1, bernstein)  # in closed form
+    m = bernstein.shape[0]
+    owner, lo, width, coefficients = np.arange(m), np.zeros(m), np.ones(m), bernstein
+    found_owner, found_lo, found_width, found_coefficients = [], [], [], []
+    unsettled = np.zeros(m, dtype=bool)
+    for depth in range(SPLIT_DEPTH + 1):
+        negative = np.signbit(coefficients) & (coefficients != 0.0)
+        variations = (negative[:, 1:] != negative[:, :-1]).sum(axis=1)
+        nonzero = (coefficients != 0.0).all(axis=1)
+        one_sign = nonzero & (variations == 0) | (negative.all(axis=1) | (coefficients >= 0.0).all(axis=1))
+        single = nonzero & (variations == 1)
+        found_owner.append(owner[single])
+        found_lo.append(lo[single])
+        found_width.append(width[single])
+        found_coefficients.append(coefficients[single])
+        split = ~(one_sign | single)
+        if depth == SPLIT_DEPTH:
+            unsettled[owner[split]] = True
+            break
+        owner, lo, width, coefficients = owner[split], lo[split], width[split], coefficients[split]
+        if owner.size == 0:
+            break
+        left, right = _halves(coefficients)
+        owner = np.concatenate([owner, owner])
+        lo = np.concatenate([lo, lo + 0.5 * width])
+        width = np.concatenate([0.5 * width, 0.5 * width])
+        coefficients = np.concatenate([left, right])
+    owner, lo, width, coefficients = (np.concatenate(v) for v in (found_owner, found_lo, found_width,
+                                                                  found_coefficients))
+    keep = ~unsettled[owner]
+    owner, lo, width, coefficients = owner[keep], lo[keep], width[keep], coefficients[keep]
+    power = coefficients @ _bases(degree)[0].T
+    local = guarded_root(np.ascontiguousarray(power.T), np.zeros(owner.size), np.ones(owner.size),
+                         coefficients[:, 0], coefficients[:, -1])
+    rest = np.flatnonzero(unsettled)
+    pair, at = side_changes(degree, bernstein[rest]) if rest.size else (np.zeros(0, dtype=np.intp), np.zeros(0))
+    pair, at = np.concatenate([owner, rest[pair]]), np.concatenate([lo + width * local, at])
+    order = np.lexsort((at, pair))
+    return pair[order], at[order]
+
+
+@functools.lru_cache(maxsize=None)
+def _bases(degree):
+    """(Bernstein -> power, power -> Bernstein) matrices of one degree, made once."""
+    to_power = bernstein_to_power(degree)
+    return to_power, np.linalg.inv(to_power)
+
+
+def _halves(coefficients):
+    """Bernstein coefficients (M, d + 1) of each polynomial on the two halves of its interval (de Casteljau)."""
+    d = coefficients.shape[1] - 1
+    rows = [coefficients]
+    for _ in range(d):
+        previous = rows[-1]
+        rows.append(0.5 * (previous[:, :-1] + previous[:, 1:]))
+    left = np.stack([row[:, 0] for row in rows], axis=1)
+    right = np.stack([row[:, -1] for row in rows[::-1]], axis=1)
+    return left, right
 
 
 def _ellipse_angle(q, cp, ap, bp, det):

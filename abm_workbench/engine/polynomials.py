@@ -124,6 +124,17 @@ def bracketed_root(columns, lo, hi, f_lo, f_hi):
     return x
 
 
+def guarded_root(columns, lo, hi, f_lo, f_hi):
+    """The root of p in [lo, hi] where p(lo) = f_lo and p(hi) = f_hi differ in sign, both nonzero: the
+    safeguarded Newton of bracketed_root's fallback from the secant point, which never leaves the bracket
+    (for a polynomial that need not be monotone there, where plain Newton may run to another root).
+    columns (d+1, m), lo, hi, f_lo, f_hi (m,) as bracketed_root takes them; (m,) roots to ROOT_TOL."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        start = lo - f_lo * (hi - lo) / (f_hi - f_lo)
+    start = np.where((start > lo) & (start < hi), start, 0.5 * (lo + hi))
+    return _safeguarded_newton(columns, lo, hi, f_lo, start)
+
+
 def _newton_step(columns, x):
     """p(x)/p′(x), 0 where p(x) = 0, for columns (d+1, m) and x (m,) (call under np.errstate)."""
     f, step = value_and_slope(columns, x)

@@ -23,12 +23,13 @@ import dataclasses
 import numpy as np
 
 from .corner import CORNER_TOP, corner_intervals
+from .corner_staircase import staircase_corner_intervals
 from .engagement import CASES, SURFACES, edge_lines, empty_results, finished_engagement, inside_intervals
 from .intervals import EdgeIntervals
 from .model import Staircase
 from .terraced import merged_intervals, terraced_intervals
 from .terraced_model import TerracedStock
-from .terraced_pieces import slab_pieces
+from .terraced_pieces import slab_pieces, split_pieces
 from .terraced_staircase import staircase_as_terraced
 
 _CORNER_CASE = CASES.index("corner")
@@ -52,10 +53,15 @@ def end_lengths(stock, tool, toolpath, phi_deg):
     return stock_intervals(stock, origins, d.reshape(-1, 3), length).length.reshape(m, p)
 
 
-def as_terraced(stock):
-    """(TerracedStock, its slab_pieces) of a Staircase (its exact terraced form) or a TerracedStock."""
+def as_terraced(stock, longest=None):
+    """(TerracedStock, its slab_pieces) of a Staircase (its exact terraced form) or a TerracedStock; with
+    `longest` (mm), curved pieces wider than that halved (terraced_pieces.split_pieces: the corner meets
+    fewer of them)."""
     terraced = staircase_as_terraced(stock) if isinstance(stock, Staircase) else stock
-    return terraced, slab_pieces(terraced)
+    groups, straight = slab_pieces(terraced)
+    if longest is not None:
+        groups = split_pieces(groups, longest)
+    return terraced, (groups, straight)
 
 
 def height_at(s, radius, psi_max):
@@ -65,6 +71,34 @@ def height_at(s, radius, psi_max):
     with np.errstate(divide="ignore", invalid="ignore"):
         corner = radius * (1.0 - np.cos(np.where(on_corner, s / np.where(radius > 0.0, radius, 1.0), 0.0)))
     return np.where(on_corner, corner, radius + (s - radius * psi_max))
+
+
+def arc_length_at(height, radius, psi_max):
+    """Arc length s (mm) along the peripheral edge of its point at `height` (mm) above the tip (height_at's
+    inverse; the corner's ψ = acos(1 − height/r))."""
+    height = np.asarray(height, dtype=float)
+    top = radius * (1.0 - np.cos(psi_max))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        corner = radius * np.arccos(np.clip(1.0 - height / (radius if radius > 0.0 else 1.0), -1.0, 1.0))
+    return np.where(height <= top, corner, radius * psi_max + (height - radius))
+
+
+def edge_between(result, toolpath, tool, frame, cl, row, t):
+    """Points (n, k, 3) of the peripheral edge of n instants (CL point cl (n,) of `toolpath`, angle
+    result.phi[row] (n,)) at the heights a fraction t (k,) of the way from each instant's LEP to its UEP
+    (result.lep_l, uep_l), in the part frame: the toolpath is in the engine frame `frame` ((R, t),
+    part -> engine, or None), as the Engagement `result` was computed there."""
+    r, psi_max = tool.corner_radius, corner_top(tool)
+    lep, uep = result.lep_l[cl, row], result.uep_l[cl, row]
+    heights = lep[:, None] + np.asarray(t, dtype=float)[None, :] * (uep - lep)[:, None]
+    frames = toolpath.rows(np.asarray(cl)).frames()
+    phi = np.radians(result.phi[row])
+    d = np.sin(phi)[:, None] * frames[:, :, 0] + np.cos(phi)[:, None] * frames[:, :, 1]
+    points = point_at(arc_length_at(heights, r, psi_max), toolpath.cl[cl][:, None], d[:, None], frames[:, None, :, 2],
+                      tool.radius, r, psi_max)
+    if frame is not None:
+        points = (points - frame[1]) @ frame[0]
+    return points
 
 
 def point_at(s, tip, d, w, radius, corner_radius, psi_max):
@@ -80,9 +114,9 @@ def point_at(s, tip, d, w, radius, corner_radius, psi_max):
 
 def profile_intervals(stock, tool, toolpath, phi_deg, terraced=None):
     """EdgeIntervals of the m·p peripheral edges (row i·p + k for CL point i, angle k) in arc length s (mm):
-    the corner's (against the stock's terraced form `terraced`, (TerracedStock, pieces), made when None)
-    and the straight side's (the stock's own engine), joined where a run goes on from the corner's top to
-    the side."""
+    the corner's (on a Staircase by corner_staircase, on a TerracedStock by corner.py against `terraced`,
+    (TerracedStock, pieces), made when None; a Staircase ignores it) and the straight side's (the stock's own
+    engine), joined where a run goes on from the corner's top to the side."""
     r, big, length = tool.corner_radius, tool.radius, tool.flute_length
     psi_max = corner_top(tool)
     d = radial_directions(toolpath, phi_deg)
@@ -92,9 +126,12 @@ def profile_intervals(stock, tool, toolpath, phi_deg, terraced=None):
     d = d.reshape(-1, 3)
     parts = []
     if r > 0.0:
-        terraced, pieces = as_terraced(stock) if terraced is None else terraced
-        corner = corner_intervals(terraced, tip + (big - r) * d + r * w, d, w, r, psi_max, pieces)
-        parts.append(corner)
+        centre = tip + (big - r) * d + r * w
+        if isinstance(stock, Staircase):
+            parts.append(staircase_corner_intervals(stock, centre, d, w, r, psi_max))
+        else:
+            terraced, pieces = as_terraced(stock) if terraced is None else terraced
+            parts.append(corner_intervals(terraced, centre, d, w, r, psi_max, pieces))
     if length > r:
         side = stock_intervals(stock, tip + big * d + r * w, w, length - r)
         parts.append(_shifted(side, r * psi_max))
@@ -142,7 +179,7 @@ def profile_engagement(stock, tool, toolpath, settings, *, chunk_instants=1 << 1
     the paper's Table 1 is for flat-end mills."""
     phi = settings.phi
     m, p = len(toolpath), phi.size
-    terraced = as_terraced(stock)
+    terraced = None if isinstance(stock, Staircase) else as_terraced(stock, tool.corner_radius)
     out, lep_xyz, uep_xyz = empty_results(m, p)
     labels = {name: np.full((m, p), fill, dtype=dtype) for name, fill, dtype in (
         ("lep_surface", 0, np.int8), ("lep_section", -1, np.int32), ("lep_wall", -1, np.int32))}

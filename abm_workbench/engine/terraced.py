@@ -131,12 +131,14 @@ def _slab_range(z0, dz, z_bottom, z_top, length, is_top):
     return lo, hi, lo_code, hi_code
 
 
-def plan_crossings(groups, ox, oy, ux, uy):
+def plan_crossings(groups, ox, oy, ux, uy, changes=None):
     """Every crossing of the slab's boundary with the plan lines o + t·u (n lines, u unit).
 
     Returns rows (E,), t (E,) the crossing's parameter along its line (mm), wall (E,) the
-    flat curve index; per line an even number (loops are closed).
+    flat curve index; per line an even number (loops are closed). changes: side_changes or a
+    function of the same arguments and result that finds them (None: side_changes).
     """
+    changes = side_changes if changes is None else changes
     rows, ts, walls = [], [], []
     for group in groups:
         d = group.degree
@@ -160,7 +162,7 @@ def plan_crossings(groups, ox, oy, ux, uy):
             line, piece, side = line[mixed], piece[mixed], side[mixed]
             if line.size == 0:
                 continue
-            r, u = side_changes(d, side * group.weights[piece])
+            r, u = changes(d, side * group.weights[piece])
             point = horner(np.moveaxis(group.homogeneous[piece[r]], 1, -1), u[:, None])
             px, py = point[:, 0] / point[:, 2], point[:, 1] / point[:, 2]
             # Changes at a piece's ends are at its exact end control points.

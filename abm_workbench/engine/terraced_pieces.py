@@ -133,3 +133,46 @@ def slab_pieces(stock):
                                           centre, radius))
         groups.append(slab_groups)
     return groups, np.array(straight, dtype=bool)
+
+
+def split_pieces(groups, longest, depth=8):
+    """The same slab pieces (slab_pieces' groups) with every piece of degree ≥ 2 whose circle is wider than
+    `longest` mm halved (de Casteljau on its homogeneous control points) until it is not, at most `depth`
+    times: the same curves, in pieces whose circles are tighter, so fewer are near any one place. The
+    halves of a piece meet exactly (one computed point ends one and starts the other)."""
+    out = []
+    for slab_groups in groups:
+        refined = []
+        for group in slab_groups:
+            if group.degree < 2:
+                refined.append(group)
+                continue
+            homogeneous = np.concatenate([group.control * group.weights[..., None], group.weights[..., None]], axis=-1)
+            wall, radius = group.wall, group.radius
+            for _ in range(depth):
+                wide = radius > longest
+                if not wide.any():
+                    break
+                left, right = _halved(homogeneous[wide])
+                homogeneous = np.concatenate([homogeneous[~wide], np.stack([left, right], axis=1).reshape(
+                    -1, *left.shape[1:])])
+                wall = np.concatenate([wall[~wide], np.repeat(wall[wide], 2)])
+                control = homogeneous[..., :2] / homogeneous[..., 2:]
+                centre = 0.5 * (control.min(axis=1) + control.max(axis=1))
+                radius = np.sqrt(((control - centre[:, None]) ** 2).sum(axis=2)).max(axis=1)
+            weights = homogeneous[..., 2]
+            control = homogeneous[..., :2] / homogeneous[..., 2:]
+            centre = 0.5 * (control.min(axis=1) + control.max(axis=1))
+            refined.append(PieceGroup(group.degree, control, weights, wall,
+                                      np.einsum("ki,pic->pkc", bernstein_to_power(group.degree), homogeneous), centre,
+                                      np.sqrt(((control - centre[:, None]) ** 2).sum(axis=2)).max(axis=1)))
+        out.append(refined)
+    return out
+
+
+def _halved(homogeneous):
+    """Homogeneous control points (P, d+1, 3) of each piece's halves u ∈ [0, ½] and [½, 1] (de Casteljau)."""
+    rows = [homogeneous]
+    for _ in range(homogeneous.shape[1] - 1):
+        rows.append(0.5 * (rows[-1][:, :-1] + rows[-1][:, 1:]))
+    return np.stack([row[:, 0] for row in rows], axis=1), np.stack([row[:, -1] for row in rows[::-1]], axis=1)

@@ -173,6 +173,9 @@ def zmap_engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutS
     """
     if tool.helix != 0.0:
         raise ValueError(f"the Z-map samples a straight edge; the tool has a helix angle of {tool.helix:g} deg")
+    if tool.corner_radius != 0.0:
+        raise ValueError(f"the Z-map samples a flat-end mill's edge; the tool has a corner radius of "
+                         f"{tool.corner_radius:g} mm")
     zmap = ZMap(stock, grid)
     step = grid if edge_step is None else edge_step
     step = _positive("edge_step", step)

@@ -27,8 +27,8 @@ import os
 from ..cad.freecad_env import FreeCAD
 
 #: Version of the document objects' properties: bump it when they change, and migrate (4: the toolpath's Operation;
-#: 5: the engagement's stock model).
-VERSION = 5
+#: 5: the engagement's stock model; 6: its corner radius).
+VERSION = 6
 #: Editor modes of FreeCAD properties.
 READ_ONLY, HIDDEN = 1, 2
 #: The property holding the input file of each kind of object; its relative twin adds RELATIVE.

@@ -67,6 +67,7 @@ the GUI replaces by a worker thread.
 """
 
 import atexit
+import functools
 import hashlib
 import os
 import shutil
@@ -78,6 +79,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
+from ..engine.profile import edge_between
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, MATERIALS
 from ..jobs import BY_NAME, MATERIAL_CHOICES, WALL_MODELS, Job, force_model, label_words, resolve, swept_y_window
@@ -102,6 +104,7 @@ COEFFICIENT_PROPERTIES = {name: name.capitalize() for name in COEFFICIENT_NAMES}
 #: create_engagement keyword -> (property, value when not set). Required ones are 0 when not set.
 SETTINGS = {
     "diameter": ("Diameter", 0.0), "flutes": ("Flutes", 0), "flute_length": ("FluteLength", 0.0),
+    "corner_radius": ("CornerRadius", 0.0),
     "feed_per_tooth": ("FeedPerTooth", 0.0), "spindle_rpm": ("SpindleSpeed", 0.0),
     **{name: (BY_NAME[name].prop, BY_NAME[name].default)
        for name in ("inclination", "phi_start", "phi_end", "phi_step", "helix", "immersion_start", "immersion_end")},
@@ -163,7 +166,8 @@ def given_parameters(obj):
     """The engagement object's cutting properties as jobs.resolve's `given` (unset: None)."""
     return {
         "diameter": _or_none(obj.Diameter.Value), "flutes": _or_none(obj.Flutes),
-        "flute_length": _or_none(obj.FluteLength.Value), "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
+        "flute_length": _or_none(obj.FluteLength.Value), "corner_radius": obj.CornerRadius.Value,
+        "feed_per_tooth": _or_none(obj.FeedPerTooth.Value),
         "inclination": obj.Inclination.Value, "spindle_rpm": _or_none(obj.SpindleSpeed),
         "phi_start": obj.PhiStart.Value, "phi_end": obj.PhiEnd.Value, "phi_step": obj.PhiStep.Value,
     }
@@ -234,6 +238,7 @@ class EngagementFeature(FeatureProxy):
         ])
         add_version_3_properties(obj)
         add_version_5_properties(obj, STOCK_MODELS[0])
+        add_version_6_properties(obj)
         add_properties(obj, "Cut", [
             ("App::PropertyLength", "FeedPerTooth", "feed per tooth f (required; a constant FEDRAT in the "
                                                     "toolpath file wins)", 0.0),
@@ -335,10 +340,10 @@ class EngagementFeature(FeatureProxy):
         elapsed = time.perf_counter() - started
         if not result.engaged.any():
             if in_process is not None and in_process.initial.any():
-                raise InputError(f"{obj.Toolpath.File}: earlier moves of the program already removed all the "
+                raise InputError(f"{hints.source}: earlier moves of the program already removed all the "
                                  "material this operation's tool would meet (StockModel initial computes it "
                                  "against the stock as given)")
-            raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock: no CL point of the pass "
+            raise InputError(f"{hints.source}: the tool never touches the stock: no CL point of the pass "
                              f"engages it (are the toolpath and {obj.Stock.Proxy.source_name(obj.Stock)} in the "
                              "same frame?)")
         warnings = [*hints.messages(), *parameters.conflicts, *([model_note] if model_note else [])]
@@ -374,7 +379,7 @@ class EngagementFeature(FeatureProxy):
             tolerance = SWEEP_TOLERANCE.check(obj.SweepTolerance.Value)
         except ParameterError as error:
             raise InputError(f"{obj.Label}: {label_words(error)[:-1]} (property {SWEEP_TOLERANCE.prop}).") from None
-        job = Job(obj.Stock.Proxy.source_name(obj.Stock), obj.Toolpath.File,
+        job = Job(obj.Stock.Proxy.source_name(obj.Stock), hints.source,
                   stock_model=None if obj.StockModel == STOCK_MODELS[0] else obj.StockModel,
                   sweep_tolerance=tolerance)
         return in_process_sweep(Prepared(job, {}, toolpath, hints, parameters, tool, settings, model))
@@ -407,10 +412,12 @@ class EngagementFeature(FeatureProxy):
     def migrate(self, obj, saved_version):
         """Version 2 added the y window and the validation report; objects saved before were computed
         over the whole y range. Version 3 added the helix and the forces (straight flutes, forces off).
-        Version 5 added the stock model; objects saved before were computed against the stock as given."""
+        Version 5 added the stock model; objects saved before were computed against the stock as given.
+        Version 6 added the corner radius; objects saved before were flat-end mills (0)."""
         add_version_2_properties(obj, "whole")
         add_version_3_properties(obj)
         add_version_5_properties(obj, STOCK_MODELS[1])
+        add_version_6_properties(obj)
         super().migrate(obj, saved_version)
 
     def onChanged(self, obj, prop):
@@ -454,6 +461,22 @@ class EngagementFeature(FeatureProxy):
         """
         kept = self._kept.get(obj.ResultsDigest)
         return kept.result if kept is not None else None
+
+    def edge_along(self, obj):
+        """None where the drawn edge is straight (a flat-end mill, or the tool or results not known now);
+        for a tool with a corner, the `along` function gui.surface_mesh takes: each engaged instant's
+        peripheral edge between its LEP and its UEP, in the part's frame (engine.profile.edge_between)."""
+        kept = self._kept.get(obj.ResultsDigest)
+        if kept is None or kept.toolpath is None or obj.Toolpath is None:
+            return None
+        try:
+            _, hints = obj.Toolpath.Proxy.load(obj.Toolpath)
+            tool, _ = tool_and_settings(resolve(given_parameters(obj), hints, {}).values, obj.HelixAngle.Value)
+        except (InputError, ParameterError):
+            return None
+        if tool.corner_radius == 0.0:
+            return None
+        return functools.partial(edge_between, kept.result, kept.toolpath, tool, hints.frame)
 
     def forces(self, obj):
         """The PassForces of the results (fx, fy, fz, torque, power per instant), or None: forces off,
@@ -677,6 +700,17 @@ def add_version_5_properties(obj, model):
     obj.StockModelUsed = model
 
 
+def add_version_6_properties(obj):
+    """Add what version 6 added, if missing: CornerRadius (group "Tool", mm, 0: a flat-end mill)."""
+    if "CornerRadius" in obj.PropertiesList:
+        return
+    parameter = BY_NAME["corner_radius"]
+    add_properties(obj, "Tool", [
+        ("App::PropertyLength", parameter.prop, f"{parameter.help} (the toolpath file's CUTTER or TLDATA wins)",
+         parameter.default),
+    ])
+
+
 def show_material(obj):
     """Coefficient properties of the engagement `obj` for its Material: the table's values, read-only,
     or (custom) as they are, editable."""
@@ -860,7 +894,7 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
     """Add an engagement object of `stock` and `toolpath` (objects of create_stock / create_toolpath)
     to `doc` (default the active document; RuntimeError if none).
 
-    settings: diameter, flutes, flute_length, feed_per_tooth (mm), spindle_rpm, inclination,
+    settings: diameter, flutes, flute_length, corner_radius, feed_per_tooth (mm), spindle_rpm, inclination,
     phi_start, phi_end, phi_step (deg), or phi_range=(start, end); helix (deg); forces (bool),
     material (a forces.MATERIALS name or "custom"), ktc, krc, kac (N/mm²), kte, kre, kae (N/mm),
     immersion_start, immersion_end (deg), or immersion=(start, end); stock_model ("in-process" or
@@ -889,14 +923,15 @@ def create_engagement(doc=None, stock=None, toolpath=None, name="Engagement", *,
     else:
         obj.YWindow = "custom"
         obj.YWindowMin, obj.YWindowMax = (float(value) for value in y_window)
-    if toolpath is not None and getattr(toolpath, "File", ""):
+    if toolpath is not None and (getattr(toolpath, "File", "") or getattr(toolpath, "CamJob", None)):
         try:
             _, hints = toolpath.Proxy.load(toolpath)
         except InputError:
             hints = None  # execute reports it
         if hints is not None:
             for key, value in (("diameter", hints.diameter), ("flute_length", hints.flute_length),
-                               ("spindle_rpm", hints.spindle_rpm)):
+                               ("corner_radius", hints.corner_radius),
+                               ("spindle_rpm", hints.spindle_rpm), ("flutes", hints.flutes)):
                 if value is not None and key not in settings:
                     settings[key] = value
     for key, value in sorted(settings.items(), key=lambda item: item[0] != "material"):  # the table first

@@ -26,7 +26,7 @@ import numpy as np
 from ..engine import CASES, SURFACES, Engagement
 from ..errors import InputError
 from ..formats import replacing, results_csv, results_npz
-from ..formats.results_columns import FORCE_COLUMNS, RESULT_COLUMNS
+from ..formats.results_columns import ADDED_COLUMNS, FORCE_COLUMNS, RESULT_COLUMNS
 from ..formats.results_csv import chunk_texts, summary_path, write_text
 from ..forces import ANGLE_EPS
 
@@ -65,7 +65,7 @@ def read_engagement(path):
     """The Engagement in results file `path` (CSV or .npz); InputError naming the file when it is not one."""
     name = os.fspath(path)
     columns = read_results(path)
-    missing = [column for column in RESULT_COLUMNS if column not in columns]
+    missing = [column for column in RESULT_COLUMNS if column not in columns and column not in ADDED_COLUMNS]
     if missing:
         raise InputError(f"{name}: not a results file: missing column {missing[0]!r}")
     m, p = _pass_shape(name, columns["cl"])
@@ -97,6 +97,7 @@ def read_engagement(path):
         area=grid("area"), lep_xyz=lep_xyz, uep_xyz=uep_xyz, depth_of_cut=depth,
         lep_surface=lookup("lep_surface", SURFACES), lep_section=grid("lep_section", np.int32),
         lep_wall=grid("lep_wall", np.int32),
+        end_length=grid("end_length") if "end_length" in columns else None,
     )
 
 

@@ -2,9 +2,12 @@
 
 ``create_toolpath(doc, path)`` adds a ``Part::FeaturePython`` (proxy :class:`ToolpathFeature`):
 
-- group "Source": ``File``, a CL file as CAM systems write it or a toolpath CSV (read by its
-  content, docs/CL_FILES.md); ``Operation``, the file's operation computed (1-based; 0: its one
-  milling operation).
+- group "Source": ``File``, a CL file as CAM systems write it, a toolpath CSV or G-code (read by
+  its content, docs/CL_FILES.md, docs/GCODE.md); ``CamJob``, a FreeCAD CAM Job of the document
+  (wins over File: its program is read from the Job as it is, so the toolpath follows the Job when
+  it recomputes; cam.job_program); ``CamOperation``, the Job's operation computed (wins over
+  Operation); ``Operation``, the program's operation computed (1-based; 0: its one milling
+  operation).
 - group "Summary" (read-only, set by ``execute`` from the file): ``CLPoints``, and what an APT
   file says about the tool and the cut, 0 where it says nothing: ``Operations`` (every
   operation of the file: number, name, tool, CL points), ``ToolDiameter`` and
@@ -40,6 +43,7 @@ class ToolpathFeature(FeatureProxy):
             ("App::PropertyFile", "File", "toolpath: a CL file (APT, NX CLSF, CATIA, Creo, SOLIDWORKS CAM, ...) or a "
                                           "toolpath CSV"),
         ])
+        add_cam_property(obj)
         add_operation_property(obj)
         add_properties(obj, "Summary", [
             ("App::PropertyInteger", "CLPoints", "number of CL points of the pass"),
@@ -72,8 +76,23 @@ class ToolpathFeature(FeatureProxy):
         obj.FeedUnit = hints.feed_unit if constant else ""
         obj.Warnings = hints.messages()
 
+    def source_name(self, obj):
+        """What the toolpath comes from, for messages: the CAM Job's document and label, or the file."""
+        job = getattr(obj, "CamJob", None)
+        return obj.File if job is None else f"{_document_name(job)}#{job.Label}"
+
     def load(self, obj):
-        """(Toolpath, PathHints) of the file, cached while the file is unchanged."""
+        """(Toolpath, PathHints) of the CAM Job or the file, cached while it is unchanged."""
+        job = getattr(obj, "CamJob", None)
+        operation = getattr(obj, "Operation", 0) or None
+        if job is not None:
+            from ..cam.job_program import job_fingerprint
+
+            chosen = obj.CamOperation.Label if obj.CamOperation is not None else operation
+            key = ("job", job.Name, job_fingerprint(job), chosen)
+            if self._cache is None or self._cache[0] != key:
+                self._cache = (key, self._read(obj, _document_name(job), chosen, job))
+            return self._cache[1]
         path = obj.File
         if not path:
             from ..errors import InputError
@@ -87,12 +106,23 @@ class ToolpathFeature(FeatureProxy):
             self._cache = ((path, stamp, operation), self._read(obj, path, operation))
         return self._cache[1]
 
-    def _read(self, obj, path, operation):
-        """load_path, a file of several operations told in the GUI's words."""
+    def _read(self, obj, path, operation, job=None):
+        """load_path (of the CAM `job` when given), a program of several operations told in the GUI's words."""
         from ..errors import InputError
-        from ..formats.cl import OperationChoiceError
+        from ..formats.cl import STEP, TOLERANCE, OperationChoiceError
 
         try:
+            if job is not None:
+                from ..cam.job_program import job_program
+
+                program = job_program(job, path, TOLERANCE, STEP)
+                if isinstance(operation, str):  # the label of the CAM operation chosen
+                    named = [op.number for op in program.operations if op.name == operation]
+                    if not named:
+                        raise InputError(f"{obj.Label}: the CAM operation {operation} is not in the program of "
+                                         f"{job.Label} (inactive, or no moves)")
+                    operation = named[0]
+                return load_path(program.source, operation, program=program)
             return load_path(path, operation)
         except OperationChoiceError as error:
             listing = "; ".join(op.summary() for op in error.operations)
@@ -103,6 +133,20 @@ class ToolpathFeature(FeatureProxy):
         """Objects saved before the Operation property took the file's one milling operation."""
         add_operation_property(obj)
         super().migrate(obj, saved_version)
+
+
+def _document_name(obj):
+    """The file of the document of `obj`, or its name before it is saved."""
+    return obj.Document.FileName or obj.Document.Name
+
+
+def add_cam_property(obj):
+    """Add CamJob and CamOperation (group "Source") when missing."""
+    add_properties(obj, "Source", [
+        ("App::PropertyLink", "CamJob", "a FreeCAD CAM Job of this document: its program (wins over File; "
+                                        "CamOperation or Operation chooses the operation)"),
+        ("App::PropertyLink", "CamOperation", "the CAM Job's operation computed (wins over Operation)"),
+    ])
 
 
 def add_operation_property(obj):
@@ -128,12 +172,16 @@ def polyline(points):
     return Part.makePolygon([FreeCAD.Vector(*p) for p in points.tolist()])
 
 
-def create_toolpath(doc=None, path=None, name="Toolpath"):
-    """Add a toolpath object reading `path` (CSV, APT, CLS) to `doc` (default the active document;
-    RuntimeError if none). Returns the object (not yet recomputed)."""
+def create_toolpath(doc=None, path=None, name="Toolpath", *, cam_job=None, cam_operation=None, operation=0):
+    """Add a toolpath object reading `path` (CSV, APT, CLS, G-code), or the program of `cam_job` (a FreeCAD CAM
+    Job of the document), to `doc` (default the active document; RuntimeError if none); the operation
+    computed: `cam_operation` (an operation of the Job), else `operation` (1-based; 0: the program's one
+    milling operation). Returns the object (not yet recomputed)."""
     doc = document_or_active(doc)
     obj = doc.addObject("Part::FeaturePython", name)
     ToolpathFeature(obj)
     if path is not None:
         obj.File = os.fspath(path)
+    obj.CamJob, obj.CamOperation = cam_job, cam_operation
+    obj.Operation = operation
     return obj

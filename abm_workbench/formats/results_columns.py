@@ -20,8 +20,10 @@ from ..engine import CASES, SURFACES, segment_letter
 RESULT_COLUMNS = (
     "cl", "phi_deg", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall",
     "case", "segment", "h", "area", "lep_x", "lep_y", "lep_z", "uep_x", "uep_y", "uep_z",
-    "lep_surface", "lep_section", "lep_wall",
+    "lep_surface", "lep_section", "lep_wall", "end_length",
 )
+#: Results columns added after files were first written: a reader takes a file without them (as NaN).
+ADDED_COLUMNS = ("end_length",)
 SUMMARY_COLUMNS = (
     "cl", "depth_of_cut", "segment", "phi_start", "phi_end", "uep_surface", "uep_section", "uep_wall",
     "max_length", "mean_length",

@@ -1,9 +1,12 @@
 """An Engagement as CSV: one row per (CL point, φ), and a summary per engagement segment.
 
 ``R.csv`` columns, one row per instant, CL points in pass order and φ ascending within each:
-cl (0-based), phi_deg, lep_l, uep_l, length (mm along the edge), pieces, uep_surface (name),
-uep_section, uep_wall, case (Table 1 name), segment (letter, empty without engagement),
-h (mm), area (mm²), lep_x, lep_y, lep_z, uep_x, uep_y, uep_z (mm).
+cl (0-based), phi_deg, lep_l, uep_l (mm along the tool axis above the tip), length (mm along
+the peripheral edge, arc length on a corner), pieces, uep_surface (name), uep_section, uep_wall,
+case (Table 1 name, or "2.5D", "corner"), segment (letter, empty without engagement), h (mm),
+area (mm²), lep_x, lep_y, lep_z, uep_x, uep_y, uep_z (mm), lep_surface, lep_section, lep_wall,
+end_length (mm, the engaged length of the end edge; a file written before it was added reads
+without it, as NaN).
 
 ``R.summary.csv`` columns, one row per CL point and engagement segment (one row with an
 empty segment for a CL point without engagement): cl, depth_of_cut (mm), segment,

@@ -33,16 +33,17 @@ from ..errors import InputError
 from . import MAX_MAGNITUDE
 from .overlapped import consume_overlapped
 from .stored_zip import StoredZip
-from .results_columns import (FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS, INPROCESS_SUMMARY_COLUMNS,
-                              INT_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS, TEXT_COLUMNS, TOOLPATH_COLUMNS,
-                              column_dtype, text_labels)
+from .results_columns import (ADDED_COLUMNS, FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS,
+                              INPROCESS_SUMMARY_COLUMNS, INT_COLUMNS, RESULT_COLUMNS, SUMMARY_COLUMNS, TEXT_COLUMNS,
+                              TOOLPATH_COLUMNS, column_dtype, text_labels)
 
 #: The `format` member's text.
 FORMAT = "abm-results/1"
 #: Key prefixes of the summary columns and of the labels of the text columns.
 SUMMARY, LABELS = "summary/", "labels/"
 #: Columns every archive has, and the ones it may have, per table.
-_TABLES = {"": (RESULT_COLUMNS, INPROCESS_COLUMNS + FORCE_COLUMNS),
+_TABLES = {"": (tuple(c for c in RESULT_COLUMNS if c not in ADDED_COLUMNS),
+               ADDED_COLUMNS + INPROCESS_COLUMNS + FORCE_COLUMNS),
            SUMMARY: (SUMMARY_COLUMNS, TOOLPATH_COLUMNS + FORCE_SUMMARY_COLUMNS + INPROCESS_SUMMARY_COLUMNS)}
 #: The first bytes of a zip file (a local file header).
 _ZIP = b"PK\x03\x04"

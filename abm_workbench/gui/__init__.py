@@ -1,8 +1,9 @@
 """The ABM workbench's GUI (imported only when FreeCAD.GuiUp).
 
 - :mod:`.commands`: ``ABM_OpenModelTest``, ``ABM_ImportStock``, ``ABM_ImportToolpath``,
-  ``ABM_ComputeEngagement``, ``ABM_InspectEngagement``, ``ABM_ValidateEngagement``, each inside
-  a document transaction (undo works), errors to the report view in plain words.
+  ``ABM_ComputeEngagement``, ``ABM_EngageCamJob`` (a FreeCAD CAM Job: :mod:`.cam_jobs`),
+  ``ABM_InspectEngagement``, ``ABM_ValidateEngagement``, each inside a document transaction (undo
+  works), errors to the report view in plain words.
 - :mod:`.task_panel`: the engagement's tool and cut, with units, checked as typed; its numbers
   read and shown in each field's declared unit by :mod:`.numbers`.
 - :mod:`.dock`: the engagement dock: CL point slider, colour by and legend, plots.

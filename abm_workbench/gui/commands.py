@@ -26,7 +26,8 @@ from .reporting import PROG, CommandError, recompute_checked, report_error
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODEL_TEST_1 = os.path.join(ROOT, "resources", "models", "model_test_1")
 STOCK_FILTER = "Stock (*.step *.stp *.brep *.brp *.FCStd *.json);;All files (*)"
-TOOLPATH_FILTER = "Toolpath (*.csv *.apt *.cls);;All files (*)"
+TOOLPATH_FILTER = ("Toolpath (*.csv *.apt *.cls *.ngc *.nc *.gcode *.tap *.FCStd);;CL file (*.apt *.cls *.cl);;"
+                   "G-code (*.ngc *.nc *.gcode *.tap);;FreeCAD CAM Job (*.FCStd);;All files (*)")
 
 
 def load_settings(path):
@@ -188,21 +189,39 @@ def is_solid_object(obj):
 
 
 class ImportToolpath(_ImportFile):
-    """A toolpath from a CSV or APT / CL file."""
+    """A toolpath from the selected FreeCAD CAM Job (or one of its operations), else from a file: CSV, APT /
+    CL, G-code, or an FCStd holding a CAM Job."""
 
     Name = "ABM_ImportToolpath"
     MenuText = QT_TRANSLATE_NOOP("ABM_ImportToolpath", "Import toolpath…")
     ToolTip = QT_TRANSLATE_NOOP("ABM_ImportToolpath",
-                                "Add a toolpath from a CSV (x,y,z,theta_a,theta_b or x,y,z,i,j,k) or an APT / CL file")
+                                "Add a toolpath from the selected CAM Job or operation, or from a CSV "
+                                "(x,y,z,theta_a,theta_b or x,y,z,i,j,k), an APT / CL file, G-code or an FCStd "
+                                "holding a CAM Job")
     Accel = "A, T"
     TITLE = "Import toolpath"
     FILTER = TOOLPATH_FILTER
 
+    def Activated(self):
+        from ..cam.freecad_cam import job_of
+
+        doc = FreeCAD.ActiveDocument
+        selected = [obj for obj in FreeCADGui.Selection.getSelection(doc.Name) if job_of(obj)] if doc else []
+        if selected:
+            self.execute(selected[0])
+        else:
+            super().Activated()
+
     @staticmethod
-    def create(doc, path):
+    def create(doc, source):
+        """The toolpath object of `source`: a file path, or a CAM Job or operation of the document."""
+        from ..cam.freecad_cam import is_job, job_of
         from ..features import create_toolpath
 
-        return create_toolpath(doc, path)
+        if isinstance(source, (str, os.PathLike)):
+            return create_toolpath(doc, source)
+        job = job_of(source)
+        return create_toolpath(doc, cam_job=job, cam_operation=None if is_job(source) else source)
 
 
 def pick(doc, kind, selection):
@@ -253,6 +272,32 @@ class ComputeEngagement(Command):
         recompute_checked(doc, (engagement,))
         dock.show(engagement)
         return engagement
+
+
+class EngageCamJob(Command):
+    """The engagement of the selected FreeCAD CAM Job (or of some of its operations): toolpaths linked to the
+    Job, its stock, engagements with the tool controllers' tools (:mod:`.cam_jobs`), computed."""
+
+    Name = "ABM_EngageCamJob"
+    MenuText = QT_TRANSLATE_NOOP("ABM_EngageCamJob", "Engage CAM job")
+    ToolTip = QT_TRANSLATE_NOOP("ABM_EngageCamJob",
+                                "Compute where the cutter engages the stock in a FreeCAD CAM Job: select the Job "
+                                "(every operation the engine computes) or some of its operations; the results "
+                                "follow the Job when it recomputes")
+    Accel = "A, J"
+
+    def Activated(self):
+        doc = FreeCAD.ActiveDocument
+        self.execute(FreeCADGui.Selection.getSelection(doc.Name))
+
+    def activated(self, doc, selection):
+        from .cam_jobs import engage
+
+        made = engage(doc, selection)
+        with busy("Computing the engagement of the CAM job…"):
+            recompute_checked(doc, made)
+        dock.show(made[-1])
+        return made
 
 
 def selected_engagement(doc):
@@ -375,8 +420,8 @@ class ShowInProcessStock(Command):
         return show_for_dock()
 
 
-COMMANDS = (OpenModelTest, ImportStock, ImportToolpath, ComputeEngagement, InspectEngagement, ValidateEngagement,
-            ShowInProcessStock)
+COMMANDS = (OpenModelTest, ImportStock, ImportToolpath, ComputeEngagement, EngageCamJob, InspectEngagement,
+            ValidateEngagement, ShowInProcessStock)
 #: Command names in menu and toolbar order.
 NAMES = tuple(command.Name for command in COMMANDS)
 

@@ -61,6 +61,7 @@ FIELDS = (
     ("Diameter", noop("Diameter"), "mm", 1.0),
     ("Flutes", noop("Flutes"), None, 1.0),
     ("FluteLength", noop("Flute length"), "mm", 1.0),
+    ("CornerRadius", noop("Corner radius"), "mm", 0.5),
     ("HelixAngle", noop("Helix angle β"), "deg", 5.0),
     ("FeedPerTooth", noop("Feed per tooth"), "mm", 0.01),
     ("SpindleSpeed", noop("Spindle speed (rpm)"), None, 100.0),
@@ -87,7 +88,7 @@ NONE = "none"
 #: The angles (°) an App::PropertyAngle holds: FreeCAD clamps any other to this range, in silence.
 ANGLE_PROPERTY_RANGE = (-360.0, 360.0)
 #: Cutting parameters a toolpath file can fix, with their fields.
-FILE_FIELDS = ("diameter", "flute_length", "spindle_rpm", "feed_per_tooth")
+FILE_FIELDS = ("diameter", "flute_length", "corner_radius", "spindle_rpm", "feed_per_tooth")
 INVALID_STYLE = "background-color: #ffc8c8;"
 
 

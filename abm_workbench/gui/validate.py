@@ -86,18 +86,18 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
                                                workers=validation_workers() if workers is None else workers,
                                                sweep=sweep)
     except NoEngagementError:
-        raise InputError(f"{obj.Toolpath.File}: the tool never touches the stock at CL points "
+        raise InputError(f"{hints.source}: the tool never touches the stock at CL points "
                          f"{_cl_list(chosen)}") from None
     forces = None if model is None else pass_forces_of(stock.model, tool, pass_, settings, model,
                                                          validation.engagement, in_process=sweep)
     subset = len(chosen) < len(toolpath)
     run = "ABM against booleans" if helix is None else (
         f"Helical edges (β = {tool.helix:g}°), flute 1 of {tool.flutes}, ABM against booleans")
-    title = f"{run}: {obj.Label} ({os.path.basename(stock.source)} / {os.path.basename(obj.Toolpath.File)})"
+    title = f"{run}: {obj.Label} ({os.path.basename(stock.source)} / {os.path.basename(hints.source)})"
     description = (f"CL points {_cl_list(chosen)} of the pass, numbered 0..{len(chosen) - 1} here."
                    if subset else "")
     walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
-    job = ReportJob(title, description, stock.source, obj.Toolpath.File, pass_, tool, settings,
+    job = ReportJob(title, description, stock.source, hints.source, pass_, tool, settings,
                     parameters.describe(lambda parameter: parameter.prop), walls, stock.y_window, stock_seconds,
                     stock_model="in-process: the stock minus what earlier cutting moves of the program removed"
                     if sweep is not None else "initial: the stock as given" + (f" ({model_note})" if model_note else ""))

@@ -188,7 +188,7 @@ class EngagementViewProvider(ViewProvider):
             self._show()
             return
         if result is not self.meshed:
-            self.mesh, self.meshed = surface_mesh(result), result
+            self.mesh, self.meshed = surface_mesh(result, self.Object.Proxy.edge_along(self.Object)), result
             self.surface.removeAllChildren()
             group, hints = coin.SoSeparator(), coin.SoShapeHints()
             hints.vertexOrdering = coin.SoShapeHints.COUNTERCLOCKWISE  # with an unknown shape type:

@@ -2,9 +2,10 @@
 
 - :func:`load_stock`: a staircase JSON (``.json``), or a solid (``.step``, ``.stp``,
   ``.brep``, ``.brp``, ``.FCStd``) recognised as a staircase. FreeCAD is imported only for
-  solids, so JSON jobs never need it.
-- :func:`load_path`: a toolpath CSV (``.csv``) or an APT / CL file (``.apt``, ``.cls``), with
-  what an APT file says about the tool, spindle and feed (:class:`PathHints`).
+  solids, so JSON jobs never need it. :func:`solid_in_part` reads a solid and the engine frame
+  its own 2.5D direction asks for; :func:`path_in_frame` takes the toolpath into that frame.
+- :func:`load_path`: a toolpath CSV, an APT / CL file, G-code or a FreeCAD CAM Job (read by
+  content), with what the file says about the tool, spindle and feed (:class:`PathHints`).
 - :func:`load_job`: a job JSON of default parameters, each checked by its declaration.
 
 The y window of a recognised solid is the stock's whole y range by default: the staircase
@@ -17,6 +18,7 @@ Lengths in mm, angles in degrees, spindle speed in rpm. Bad input raises
 :class:`~abm_workbench.errors.InputError` naming the file.
 """
 
+import dataclasses
 import os
 from dataclasses import dataclass, field
 from typing import Optional
@@ -94,7 +96,8 @@ class Stock:
 class PathHints:
     """What a toolpath file says besides the CL points of the chosen operation.
 
-    diameter, flute_length: mm, or None where the file does not give them. spindle_rpm: rpm.
+    diameter, flute_length, corner_radius: mm, or None where the file does not give them. flutes: the
+    number of flutes where the file gives it (a FreeCAD toolbit's), else None. spindle_rpm: rpm.
     feed: (m,) feed at each CL point in feed_unit ("MMPM" or "MMPR"; NaN before the first
     FEDRAT), or None. records: {parameter name: the record that gave it} where it differs from
     the parameter's declared record. unknown: (major word, first line, count) of records not
@@ -117,6 +120,8 @@ class PathHints:
     program: object = field(default=None, repr=False, compare=False)
     operation: object = field(default=None, repr=False, compare=False)
     frame: Optional[tuple] = field(default=None, repr=False, compare=False)
+    flutes: Optional[int] = None
+    corner_radius: Optional[float] = None
 
     def messages(self):
         """Every warning, each record kind not understood, and the records ignored (one line), as text
@@ -131,7 +136,7 @@ class PathHints:
         return list(self.warnings) + unknown + ignored
 
 
-def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None, solid=None):
+def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None, solid=None, shape=None):
     """The stock in `path` as a :class:`Stock`, in the frame the engine works in.
 
     A ``.json`` file is read as an abm-staircase/1 staircase (its walls are the paper's
@@ -143,8 +148,10 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
     None: the whole range; or a function of the solid's highest z giving (y0, y1), as
     :func:`swept_y_window` does). frame: (R (3, 3), t (3,)) from part coordinates to the
     operation's engine frame (PathHints.frame), or None: the stock is moved there first (a JSON
-    staircase only by a translation). solid: the name of the solid in a file that holds several
-    (``cad.recognise.load_solid``). InputError naming the file for anything else.
+    staircase only by a translation). A solid refused there because its own 2.5D direction is not
+    that frame's z says so (:func:`solid_in_part` gives the frame it is). solid: the name of the
+    solid in a file that holds several (``cad.recognise.load_solid``). shape: that solid already
+    read, in part coordinates, or None. InputError naming the file for anything else.
     """
     name = os.fspath(path)
     suffix = os.path.splitext(name)[1].lower()
@@ -157,10 +164,9 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
     if suffix not in SOLID_SUFFIXES:
         raise InputError(f"{name}: unknown stock file type; expected .json, .step, .stp, .brep, .brp or .FCStd")
     from ..cad.recognise import load_solid  # FreeCAD only for solids
-    shape = load_solid(name, solid)
-    if frame is not None:
-        from ..cad.solids import moved
-        shape = moved(shape, *frame)
+    from ..cad.solids import moved
+    part = load_solid(name, solid) if shape is None else shape
+    shape = part if frame is None else moved(part, *frame)
     if callable(y_window):
         y_window = y_window(shape.BoundBox.ZMax)
     if y_window is not None:
@@ -170,7 +176,24 @@ def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, f
             raise InputError(f"{name}: y window {y_window[0]:g}..{y_window[1]:g} mm misses the stock's y range "
                              f"{box.YMin:g}..{box.YMax:g} mm")
         y_window = (low, high)
-    return recognised(shape, name, walls=walls, wall_points=wall_points, y_window=y_window, frame=frame)
+    try:
+        return recognised(shape, name, walls=walls, wall_points=wall_points, y_window=y_window, frame=frame)
+    except InputError:
+        _refuse_turned(part, frame, name)
+        raise
+
+
+def _refuse_turned(part, frame, name):
+    """InputError in words when the solid `part` (part coordinates) is 2.5D along another direction than
+    the z of the engine frame `frame` (cad.stock_frame): a stock refused in `frame` for that reason."""
+    from ..cad.stock_frame import stock_frame
+    turned = stock_frame(part, frame)
+    if turned is not frame:
+        up = (np.eye(3) if frame is None else frame[0])[2]
+        angle = np.degrees(np.arccos(np.clip(turned[0][2] @ up, -1.0, 1.0)))
+        raise InputError(f"{name}: the stock is 2.5D along ({_vector_words(turned[0][2])}) in the part, {angle:.3g}° "
+                         "from the z of the operation's frame: the operation must be computed in its frame turned "
+                         "to the stock (abm engage, validate and schedule do)") from None
 
 
 def recognised(shape, name, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None):
@@ -183,6 +206,35 @@ def recognised(shape, name, *, walls="exact", wall_points="chebyshev", y_window=
     if found.staircase is None:
         return Stock(None, name, shape, walls, frame, found.terraced, found.reason)
     return Stock(found.staircase.staircase, name, shape, walls, frame)
+
+
+def solid_in_part(path, solid=None, frame=None):
+    """(Part.Shape, engine frame) of a stock solid file: the solid in part coordinates
+    (``cad.recognise.load_solid``; solid: its name in a file holding several) and the frame (R, t),
+    part -> engine, it is computed in: `frame` (the operation's, PathHints.frame; None: the part's)
+    when the stock is 2.5D along its z, else `frame` turned the least to the stock's own 2.5D
+    direction (``cad.stock_frame.stock_frame``; `frame` itself when kept)."""
+    from ..cad.recognise import load_solid
+    from ..cad.stock_frame import stock_frame
+    shape = load_solid(os.fspath(path), solid)
+    return shape, stock_frame(shape, frame)
+
+
+def path_in_frame(toolpath, hints, frame):
+    """(Toolpath, PathHints) of the operation of `hints` in the engine frame `frame` ((R, t), part ->
+    engine, or None), as load_path gives them in the operation's own: the same when `frame` is
+    hints.frame, else its CL points, tool axes and feed directions taken into `frame` (each CL point's
+    frame turned to its feed there, engine.feed) and hints.frame set to it. Tool axes may point any way
+    in `frame` (sideways, down): the engine takes every direction."""
+    if frame is hints.frame:
+        return toolpath, hints
+    turned = (np.eye(3), np.zeros(3)) if frame is None else frame
+    return hints.operation.toolpath(turned), dataclasses.replace(hints, frame=frame)
+
+
+def _vector_words(vector):
+    """'0, -0.984808, 0.173648': a unit vector's components to 6 digits, rounding's dust (1e-12) dropped."""
+    return ", ".join(f"{v:.6g}" for v in np.round(vector, 12) + 0.0)
 
 
 def _json_stock(name, frame):
@@ -203,17 +255,20 @@ def _json_stock(name, frame):
     return Stock(staircase, name, frame=frame)
 
 
-def load_path(path, operation=None, *, tolerance=None, step=None):
+def load_path(path, operation=None, *, tolerance=None, step=None, options=None, program=None):
     """(Toolpath, PathHints) of operation `operation` (1-based; None: the file's one milling operation)
-    of a toolpath file of any name, read by its content (formats.cl: APT / CL text or the toolpath
-    CSV; arcs and curves to `tolerance` mm, their CL points at most `step` mm apart, None: the
-    defaults). The Toolpath is in the operation's engine frame (PathHints.frame). InputError naming
-    the file for an operation the engine cannot run (formats.cl.OperationChoiceError when the file has
-    several and none is chosen)."""
+    of a toolpath file of any name, read by its content (formats.cl: APT / CL text, the toolpath CSV,
+    G-code or a FreeCAD CAM Job, with `options`, a formats.gcode.options.ReadOptions or None; arcs and
+    curves to `tolerance` mm, their CL points at most `step` mm apart, None: the defaults), or of
+    `program` (a Program already read, named `path`). The Toolpath is in the operation's engine frame
+    (PathHints.frame). InputError naming the file for an operation the engine cannot run
+    (formats.cl.OperationChoiceError when the file has several and none is chosen)."""
     from ..formats.cl import STEP, TOLERANCE, read_program
 
     name = os.fspath(path)
-    program = read_program(name, TOLERANCE if tolerance is None else tolerance, STEP if step is None else step)
+    if program is None:
+        program = read_program(name, TOLERANCE if tolerance is None else tolerance, STEP if step is None else step,
+                               options)
     chosen = program.operation(operation)
     refusal = chosen.refusal()
     if refusal is not None:
@@ -223,15 +278,23 @@ def load_path(path, operation=None, *, tolerance=None, step=None):
     tool = chosen.tool
     records = {}
     if program.format == "csv":
-        records = {"diameter": "diameter column"}
-    elif tool.flute_length is not None and any(record.startswith("CSI_SET_FLUTE_LENGTH") for record in tool.records):
-        records = {"flute_length": "CSI_SET_FLUTE_LENGTH"}
+        records = {"diameter": "diameter column", "corner_radius": "corner_radius column"}
+    elif program.format in ("gcode", "fcstd"):
+        records = {"spindle_rpm": "S word", "feed_per_tooth": "F words",
+                   **{key: tool.records[0] for key in ("diameter", "corner_radius", "flute_length", "flutes")
+                      if tool.records}}
+    else:
+        sizes = next((record.split()[0] for record in tool.records if record.split()[0] in ("CUTTER", "TLDATA")), None)
+        if sizes is not None and sizes != "CUTTER":
+            records = {"diameter": sizes, "corner_radius": sizes}
+        if tool.flute_length is not None and any(record.startswith("CSI_SET_FLUTE_LENGTH") for record in tool.records):
+            records["flute_length"] = "CSI_SET_FLUTE_LENGTH"
     same = np.array_equal(rotation, np.eye(3)) and not np.any(translation)
     hints = PathHints(name, tool.diameter, tool.flute_length, chosen.spindle_rpm, chosen.feed, chosen.feed_unit,
                       tuple((word, line, count) for word, (line, count) in program.unknown.items()),
                       tuple(program.warnings), records,
                       tuple((word, line, count) for word, (line, count) in program.ignored.items()),
-                      program, chosen, None if same else frame)
+                      program, chosen, None if same else frame, tool.flutes, tool.corner_radius)
     return toolpath, hints
 
 
@@ -246,7 +309,9 @@ def swept_y_window(toolpath: Toolpath, tool: Tool, z_max=np.inf, margin=SWEPT_MA
     rotation = toolpath.frames()  # (m, 3, 3)
     radial = tool.radius * np.hypot(rotation[:, 1, 0], rotation[:, 1, 1])
     lowest = toolpath.cl[:, 2] - tool.radius * np.hypot(rotation[:, 2, 0], rotation[:, 2, 1])
-    reach = np.clip((z_max - lowest) / rotation[:, 2, 2], 0.0, tool.flute_length)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = np.where(rotation[:, 2, 2] > 0.0, np.clip((z_max - lowest) / rotation[:, 2, 2], 0.0, tool.flute_length),
+                         tool.flute_length)  # an axis level or pointing down: the whole flute
     along = reach * rotation[:, 1, 2]
     y = toolpath.cl[:, 1]
     low = y - radial + np.minimum(along, 0.0)
@@ -340,4 +405,8 @@ def program_moves(program, chosen, tool):
             rows = start + np.flatnonzero(cut)
         start += lines.size
     columns = [np.concatenate(column) for column in zip(*parts)]
-    return ProgramMoves(*columns), rows, notes
+    try:
+        return ProgramMoves(*columns), rows, notes
+    except ValueError as error:  # a cutting move the sweep cannot take (its axis turned right round)
+        raise InputError(f"{program.source}: the in-process stock cannot sweep the program: {error}; the stock "
+                         "model initial (the stock as given) can") from None

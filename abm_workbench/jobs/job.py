@@ -17,10 +17,12 @@ import time
 from dataclasses import dataclass, field
 from typing import Optional
 
+import numpy as np
+
 from ..errors import InputError, ParameterError
 from ..forces import COEFFICIENT_NAMES, Coefficients, material
 from ..formats.cl import STEP, TOLERANCE
-from .inputs import SOLID_SUFFIXES, load_job, load_path, load_stock, swept_y_window
+from .inputs import SOLID_SUFFIXES, load_job, load_path, load_stock, path_in_frame, solid_in_part, swept_y_window
 from .parameters import BY_NAME, check_pairs
 from .resolve import resolve, tool_and_settings
 
@@ -43,7 +45,9 @@ class Job:
     assumption); None: in-process where the engine has it (straight flutes, ABM), else
     initial. sweep_tolerance: mm, the sub-step of five-axis moves at the tool's rim. tolerance, step:
     mm, the chordal tolerance of a CL file's arcs and curves and the largest distance between their CL
-    points (formats.cl.read_program).
+    points (formats.cl.read_program). options: what reading the toolpath needs besides it (a FreeCAD
+    CAM Job's name, a G-code program's tool table, machine and work offsets:
+    formats.gcode.options.ReadOptions), or None.
     """
 
     stock: str
@@ -61,6 +65,29 @@ class Job:
     sweep_tolerance: float = 0.05
     tolerance: float = TOLERANCE
     step: float = STEP
+    options: Optional[object] = None
+
+
+def with_cam_stock(job: Job):
+    """`job` with the Stock of a FreeCAD CAM Job where it names none: with no stock, its toolpath's document
+    (an FCStd) as the stock file and that Job's Stock as its solid; with an FCStd stock and no solid named,
+    the Stock of the CAM Job that document holds, if it holds one. InputError when it names no stock and its
+    toolpath is no FreeCAD document."""
+    name = getattr(job.options, "cam_job", None)
+    if job.stock is None:
+        if not os.fspath(job.toolpath).lower().endswith(".fcstd"):
+            raise InputError(f"{job.toolpath}: give the stock (--stock): only a FreeCAD CAM Job's document (FCStd) "
+                             "holds its own")
+        from ..cam.documents import job_stock  # FreeCAD only for a document
+
+        return dataclasses.replace(job, stock=job.toolpath, solid=job.solid or job_stock(job.toolpath, name))
+    if job.solid is None and os.fspath(job.stock).lower().endswith(".fcstd"):
+        from ..cam.documents import job_stock
+
+        same = os.path.abspath(job.stock) == os.path.abspath(job.toolpath)
+        solid = job_stock(job.stock, name if same else None, required=False)
+        return dataclasses.replace(job, solid=solid) if solid else job
+    return job
 
 
 @dataclass(frozen=True)
@@ -91,7 +118,8 @@ class Prepared:
 def prepare(job: Job, *, forces=None):
     """The Prepared job (the stock is read apart, by load_job_stock). forces: override job.forces."""
     defaults = load_job(job.job_file) if job.job_file else {}
-    toolpath, hints = load_path(job.toolpath, job.operation, tolerance=job.tolerance, step=job.step)
+    toolpath, hints = load_path(job.toolpath, job.operation, tolerance=job.tolerance, step=job.step,
+                                options=job.options)
     parameters = resolve(job.given, hints, defaults, job.job_file)
     helix = _value("helix", job, defaults)
     tool, settings = tool_and_settings(parameters.values, helix)
@@ -141,7 +169,11 @@ def is_solid(path):
 
 
 def load_job_stock(prepared: Prepared):
-    """(Stock, seconds to read it) of a prepared job: a solid's options checked, the y window chosen.
+    """(Prepared, Stock, seconds to read it) of a prepared job: a solid's options checked, the y window
+    chosen. A solid stock is computed in its operation's frame turned to the stock's own 2.5D
+    direction (inputs.solid_in_part), a JSON stock in the part when the operation's frame is turned: the
+    Prepared returned is then the job with its toolpath and hints in that frame (inputs.path_in_frame),
+    else `prepared` itself.
 
     ParameterError naming walls, wall_points or y_window when they are given for a JSON stock.
     """
@@ -152,16 +184,26 @@ def load_job_stock(prepared: Prepared):
                 raise ParameterError(name, f"applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to "
                                            f"{job.stock}")
     window = job.y_window or ("swept" if job.walls == "quintic" else "whole")
+    if not (window in Y_WINDOW_WORDS if isinstance(window, str) else isinstance(window, tuple) and len(window) == 2):
+        raise InputError(f"y window must be whole, swept or (y0, y1), got {window!r}")
+    started = time.perf_counter()
+    shape = None
+    if is_solid(job.stock):
+        shape, frame = solid_in_part(job.stock, job.solid, prepared.hints.frame)
+        toolpath, hints = path_in_frame(prepared.toolpath, prepared.hints, frame)
+        prepared = dataclasses.replace(prepared, toolpath=toolpath, hints=hints)
+    elif prepared.hints.frame is not None and not np.allclose(prepared.hints.frame[0], np.eye(3), rtol=0.0, atol=1e-12):
+        # A JSON stock stands in the part and can only be moved: the operation is computed in the part, its
+        # tool axes as they come (the engine takes every direction).
+        toolpath, hints = path_in_frame(prepared.toolpath, prepared.hints, None)
+        prepared = dataclasses.replace(prepared, toolpath=toolpath, hints=hints)
     if window == "whole":
         window = None
     elif window == "swept":
         window = functools.partial(swept_y_window, prepared.toolpath, prepared.tool)  # with the solid's top z
-    elif not (isinstance(window, tuple) and len(window) == 2):
-        raise InputError(f"y window must be whole, swept or (y0, y1), got {window!r}")
-    started = time.perf_counter()
     stock = load_stock(job.stock, walls=job.walls or "exact", wall_points=job.wall_points or "chebyshev",
-                       y_window=window, frame=prepared.hints.frame, solid=job.solid)
-    return stock, time.perf_counter() - started
+                       y_window=window, frame=prepared.hints.frame, solid=job.solid, shape=shape)
+    return prepared, stock, time.perf_counter() - started
 
 
 def cl_indices(text, m, field="cl"):

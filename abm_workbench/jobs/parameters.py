@@ -108,6 +108,9 @@ PARAMETERS = (
               option="--flutes", help="number of flutes Z"),
     Parameter("flute_length", "flute length", "mm", REQUIRED, 0.0, low_open=True, prop="FluteLength",
               option="--flute-length", record="CUTTER", help="length of the cutting edge L"),
+    Parameter("corner_radius", "corner radius", "mm", 0.0, 0.0, prop="CornerRadius", option="--corner-radius",
+              record="CUTTER", help="corner radius r of the tool: 0 a flat-end mill, half the diameter a ball-end "
+              "mill, between a bull-nose (torus) mill"),
     Parameter("helix", "helix angle", "deg", 0.0, -60.0, 60.0, False, False, prop="HelixAngle", option="--helix",
               help="helix angle β of the flutes, |β| ≤ 60° (flat-end mills); 0 for straight flutes"),
     Parameter("feed_per_tooth", "feed per tooth", "mm", REQUIRED, 0.0, low_open=True, prop="FeedPerTooth",
@@ -132,7 +135,7 @@ PARAMETERS = (
 BY_NAME = {parameter.name: parameter for parameter in PARAMETERS}
 #: The cutting parameters a job file, the command line or the engagement object give, with the
 #: toolpath file's tool, spindle and feed winning (jobs.resolve).
-CUTTING = ("diameter", "flutes", "flute_length", "feed_per_tooth", "inclination", "spindle_rpm", "phi_start",
+CUTTING = ("diameter", "flutes", "flute_length", "corner_radius", "feed_per_tooth", "inclination", "spindle_rpm", "phi_start",
            "phi_end", "phi_step")
 #: The sub-step of five-axis moves for the in-process stock: a run option, not a cutting parameter
 #: (kept out of PARAMETERS, so neither the job file nor the cutting options take it).
@@ -171,7 +174,8 @@ def _job_key(name):
 
 def check_pairs(values):
     """Cross-checks of checked `values` {name: value}: φ end not below φ start, at most MAX_ANGLES
-    angles, immersion start below its end. ParameterError naming the later field."""
+    angles, the corner radius at most half the diameter, immersion start below its end. ParameterError
+    naming the later field."""
     start, end, step = (values.get(name) for name in ("phi_start", "phi_end", "phi_step"))
     if start is not None and end is not None:
         if end < start:
@@ -179,6 +183,10 @@ def check_pairs(values):
         if step is not None and (end - start) / step > MAX_ANGLES:
             raise ParameterError("phi_step", f"gives more than {MAX_ANGLES:,} angles from {start:g}° to {end:g}°; "
                                              "take a larger step")
+    diameter, corner = values.get("diameter"), values.get("corner_radius")
+    if diameter is not None and corner is not None and corner > 0.5 * diameter:
+        raise ParameterError("corner_radius", f"must be at most half the tool diameter ({0.5 * diameter:g} mm: a "
+                                              f"ball-end mill), got {corner:g} mm")
     low, high = values.get("immersion_start"), values.get("immersion_end")
     if low is not None and high is not None and not low < high:
         raise ParameterError("immersion_end", f"must be above the start of immersion {low:g}°, got {high:g}°")

@@ -1,7 +1,8 @@
 """Each parameter's value from the sources that can give it, and where it came from.
 
 Precedence: the toolpath file where it really gives a value (the tool and feed the path was
-made for: CUTTER / TLDATA diameter and flute length, SPINDL, a constant FEDRAT), else the
+made for: CUTTER / TLDATA diameter, corner radius and flute length, a FreeCAD toolbit's flutes,
+SPINDL, a constant FEDRAT), else the
 front end's own input (command-line options, the engagement object's properties, the task
 panel's fields), else the job file, else the default. A source is recorded as (kind, text):
 ("file", "path.apt CUTTER"), ("given", ""), ("job", "job.json") or ("default", ""); each front
@@ -16,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..engine import CutSettings, Tool
-from ..errors import MissingParameter
+from ..errors import MissingParameter, ParameterError
 from ..formats.cl.units import MM_PER_INCH
 from .parameters import BY_NAME, CUTTING, REQUIRED, check_pairs
 
@@ -52,6 +53,7 @@ class Parameters:
         items = [
             ("diameter", f"diameter {v['diameter']:g} mm"), ("flutes", f"{v['flutes']:g} flutes"),
             ("flute_length", f"flute length {v['flute_length']:g} mm"),
+            ("corner_radius", f"corner radius {v['corner_radius']:g} mm"),
             ("feed_per_tooth", f"feed {v['feed_per_tooth']:g} mm/tooth"),
             ("inclination", f"inclination {v['inclination']:g}°"), ("spindle_rpm", f"spindle {spindle}"),
             ("phi_start", f"φ {v['phi_start']:g}..{v['phi_end']:g}°"), ("phi_step", f"step {v['phi_step']:g}°"),
@@ -71,7 +73,8 @@ def resolve(given, hints, job, job_source=None):
     F / Z (mm/rev), inches converted.
     """
     values, sources, conflicts = {}, {}, []
-    from_file = {"diameter": hints.diameter, "flute_length": hints.flute_length, "spindle_rpm": hints.spindle_rpm}
+    from_file = {"diameter": hints.diameter, "flute_length": hints.flute_length, "corner_radius": hints.corner_radius,
+                 "spindle_rpm": hints.spindle_rpm, "flutes": hints.flutes}
     order = [name for name in CUTTING if name != "feed_per_tooth"] + ["feed_per_tooth"]
     for name in order:
         parameter = BY_NAME[name]
@@ -100,8 +103,14 @@ def resolve(given, hints, job, job_source=None):
 
 
 def tool_and_settings(values, helix=0.0):
-    """(Tool, CutSettings) of checked parameter values (Parameters.values) and a helix angle (deg)."""
-    tool = Tool(values["diameter"], values["flutes"], values["flute_length"], BY_NAME["helix"].check(helix))
+    """(Tool, CutSettings) of checked parameter values (Parameters.values) and a helix angle (deg).
+    ParameterError for a helix on a tool with a corner radius (not computed)."""
+    helix = BY_NAME["helix"].check(helix)
+    corner = values.get("corner_radius", 0.0)
+    if helix and corner:
+        raise ParameterError("helix", f"is {helix:g}°, but helical flutes on a corner are not computed: a tool with a "
+                                      f"corner radius ({corner:g} mm) needs straight flutes (helix 0)")
+    tool = Tool(values["diameter"], values["flutes"], values["flute_length"], helix, corner)
     settings = CutSettings(values["feed_per_tooth"], values["inclination"], values["phi_start"], values["phi_end"],
                            values["phi_step"], values["spindle_rpm"])
     return tool, settings

@@ -86,7 +86,8 @@ def in_process_sweep(prepared, method="abm", warn=None):
         raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
     if job.stock_model == "initial":
         return None, ""
-    missing = "a helical tool" if tool.helix else "the Z-map method" if method != "abm" else None
+    missing = ("a helical tool" if tool.helix else "the Z-map method" if method != "abm" else
+               f"a {tool.kind} mill (corner radius {tool.corner_radius:g} mm)" if tool.corner_radius else None)
     if missing is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
@@ -404,7 +405,11 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     if plot and prepared.force_model is not None:
         outputs.append(os.path.splitext(plot)[0] + ".forces.png")
     check_outputs(outputs, _inputs(job))
-    stock, _ = load_job_stock(prepared)
+    if method.name != "abm" and tool.corner_radius:
+        raise ParameterError("method", f"the Z-map baseline samples a flat-end mill's edge; this {tool.kind} mill "
+                                       f"(corner radius {tool.corner_radius:g} mm) is computed by the ABM engine only")
+    prepared, stock, _ = load_job_stock(prepared)
+    toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     check_model(stock, method.name, tool.helix)
     in_process, model_note = in_process_sweep(prepared, method.name, warn)
 
@@ -497,11 +502,12 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
         flutes = [flute - 1]
     if checking is not None and (tool.helix or flutes):
         raise ParameterError("check", "is not available with helical edges (--helix, --flute) yet")
+    check_report_outputs(job, report, fcstd)
+    prepared, stock, stock_seconds = load_job_stock(prepared)
+    toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     in_process, model_note = _validated_sweep(job, prepared, flutes, warn)
     if model_note:
         warn(f"{job.toolpath}: {model_note}; validating against the stock as given")
-    check_report_outputs(job, report, fcstd)
-    stock, stock_seconds = load_job_stock(prepared)
     check_model(stock, helix=tool.helix)
     started = time.perf_counter()
     solid = stock.solid()
@@ -621,9 +627,13 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
         raise ParameterError(f"max_{kind}", f"must be a positive number, got {limit:g}")
     if min_feed is not None and not (np.isfinite(min_feed) and min_feed > 0.0):
         raise ParameterError("min_feed", f"must be a positive feed per tooth (mm), got {min_feed:g}")
-    if os.path.splitext(out)[1].lower() not in (".apt", ".cls", ".csv"):
-        raise ParameterError("out", f"must end in .apt, .cls or .csv, got {out}")
+    suffix = os.path.splitext(out)[1].lower()
+    if suffix not in (".apt", ".cls", ".csv", ".fcstd"):
+        raise ParameterError("out", f"must end in .apt, .cls, .csv or (for a FreeCAD CAM Job) .FCStd, got {out}")
     prepared = prepare(job, forces=True)
+    if suffix == ".fcstd" and prepared.hints.program.format != "fcstd":
+        raise ParameterError("out", f"a FreeCAD document (.FCStd) is written for a FreeCAD CAM Job's program only, "
+                                    f"not for {job.toolpath}")
     for message in prepared.warnings():
         warn(message)
     toolpath, tool, settings, hints = prepared.toolpath, prepared.tool, prepared.settings, prepared.hints
@@ -635,7 +645,8 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     if report:
         check_report_outputs(job, report)
     check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
-    stock, _ = load_job_stock(prepared)
+    prepared, stock, _ = load_job_stock(prepared)
+    toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     check_model(stock, helix=tool.helix)
     in_process, model_note = in_process_sweep(prepared, warn=warn)
     if model_note:
@@ -668,13 +679,27 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
             write_schedule_report(folder, forces, plan, title=f"Feed schedule: {title}",
                                   parameters=prepared.parameters.describe())
         program = hints.program
-        if program is not None and program.format == "apt" and os.path.splitext(out)[1].lower() != ".csv":
+        if suffix == ".fcstd":
+            _write_dressup(out, job, hints.operation, plan.feed, tool.flutes, settings.spindle_rpm, comment)
+        elif program is not None and program.format == "apt" and suffix != ".csv":
             _write_program_feeds(out, program, hints.operation, plan.feed, tool.flutes, settings.spindle_rpm)
         else:
             write_feed_toolpath(out, toolpath, plan.feed, flutes=tool.flutes, diameter=tool.diameter,
                                 flute_length=tool.flute_length, spindle_rpm=settings.spindle_rpm, comment=comment)
     written = [out] + ([os.path.join(report, "index.html")] if report else [])
     return ScheduleResult(prepared, stock, plan, kind, limit, written)
+
+
+def _write_dressup(out, job, operation, feed_per_tooth, flutes, spindle_rpm, comment):
+    """The FreeCAD document of `job`'s CAM Job written to `out` with `operation` dressed with the scheduled feeds
+    (cam.dressup; mm/min, so a spindle speed is needed)."""
+    from ..cam.dressup import write_scheduled_document
+
+    if spindle_rpm is None:
+        raise InputError(f"{job.toolpath}: {operation.label()}: the dressup's feeds are per minute and need a "
+                         "spindle speed (its tool controller's, or give the spindle speed)")
+    write_scheduled_document(job.toolpath, out, getattr(job.options, "cam_job", None), operation,
+                             feed_per_tooth * flutes * spindle_rpm, comment)
 
 
 def _write_program_feeds(out, program, operation, feed_per_tooth, flutes, spindle_rpm):

@@ -149,7 +149,7 @@ def report_page(validation, job: ReportJob, cls, forces=None, force_png=None, vi
         _headline(validation, paper_range),
         "<h2>Job</h2>", _job_table(validation, job),
         _inprocess_section(validation, job, cls, views or {}) if validation.in_process is not None else "",
-        "<h2>Error by UEP surface, whole pass</h2>", _error_definition(), _surface_table(validation),
+        "<h2>Error by UEP surface, whole pass</h2>", _error_definition(job.tool), _surface_table(validation),
         "<p class='note'>The paper (Siemens NX reference): negligible error with the UEP on a top or a straight "
         "wall, below 6 % with the UEP on a curved wall.</p>",
         "<h2>Length of cut along the pass <small>(Fig. 6(e)/(f))</small></h2>",
@@ -185,6 +185,7 @@ def _headline(validation, paper_range):
         (_percent(total["max_rel_error"]), f"largest |relative error| over {total['relative_instants']} instants"),
         (_percent(total["mean_rel_error"]), "mean |relative error|"),
         (f"{total['max_abs_difference']:.3g} mm", "largest |l_ABM − l_ref|, all instants"),
+        (f"{_mm(total['max_end_difference'])} mm", f"largest |Δ end edge| over {total['end_instants']} instants"),
         (depth, f"depth of cut (ABM); {paper}"),
         (f"{validation.speed_ratio:.0f} ×", f"ABM {seconds['abm']:.3g} s vs boolean {seconds['boolean']:.3g} s"),
     ]
@@ -203,7 +204,7 @@ def _job_table(validation, job):
         ("CL points checked", _checked_words(validation.checked)),
         ("rotation angles", f"φ {settings.phi_start:g}..{settings.phi_end:g}° step {settings.phi_step:g}°: "
                             f"{p} angles, {m * p} instants"),
-        ("tool", f"flat end mill D {job.tool.diameter:g} mm, {job.tool.flutes} flutes, flute length "
+        ("tool", f"{tool_words(job.tool)}, {job.tool.flutes} flutes, flute length "
                  f"{job.tool.flute_length:g} mm" + (f", helix {job.tool.helix:g}°" if job.tool.helix else "")),
         ("cutting", f"feed {settings.feed_per_tooth:g} mm/tooth, inclination {settings.inclination:g}°"
                     + (f", {settings.spindle_rpm:g} rpm" if settings.spindle_rpm else "")),
@@ -211,6 +212,15 @@ def _job_table(validation, job):
         ("stock model", job.stock_model),
     ]
     return _table(("", ""), rows, header=False)
+
+
+def tool_words(tool):
+    """'flat end mill D 12 mm', 'bull-nose mill D 16 mm, corner radius 4 mm', 'ball-end mill D 6 mm (R 3 mm)'."""
+    if tool.corner_radius == 0.0:
+        return f"flat end mill D {tool.diameter:g} mm"
+    if tool.corner_radius == tool.radius:
+        return f"ball-end mill D {tool.diameter:g} mm (R {tool.corner_radius:g} mm)"
+    return f"bull-nose mill D {tool.diameter:g} mm, corner radius {tool.corner_radius:g} mm"
 
 
 def _checked_words(checked):
@@ -258,14 +268,22 @@ def _inprocess_section(validation, job, cls, views):
     ])
 
 
-def _error_definition():
-    """How the error is defined."""
+def _error_definition(tool=None):
+    """How the error is defined (and, for a tool with a corner, what l, LEP and UEP are on it)."""
+    corner = ""
+    if tool is not None and tool.corner_radius > 0.0:
+        corner = (f" For this {tool.kind} mill the cutting edge is the corner arc (radius {tool.corner_radius:g} mm, "
+                  "sectioned by the boolean as a true circular arc) followed by the straight side: l is the arc "
+                  "length along both, LEP and UEP are heights along the tool axis above the tip (mm).")
     return (f"<p class='note'>Error of the length of cut as the paper defines it: relative, "
             f"(l<sub>ABM</sub> − l<sub>ref</sub>)/l<sub>ref</sub>, with l<sub>ref</sub> from the OpenCASCADE "
             f"boolean of the cutting edges with the stock solid. Where l<sub>ref</sub> &lt; {TINY_LENGTH:g} mm "
             f"(the edge grazes the stock) the absolute difference l<sub>ABM</sub> − l<sub>ref</sub> in mm is "
             f"used instead; those instants are counted apart. LEP/UEP: largest difference along the edge "
-            f"(mm). Mismatched: instants where only one method finds engagement.</p>")
+            f"(mm). Mismatched: instants where only one method finds engagement. End edge: the largest "
+            f"|end<sub>ABM</sub> − end<sub>ref</sub>| of the end cutting edge's engaged length (tip to the corner, in "
+            f"the tip plane) over the instants where both give it, and the instants where only one finds it in "
+            f"the stock.{_e(corner)}</p>")
 
 
 def _statistics_cells(row):
@@ -273,12 +291,13 @@ def _statistics_cells(row):
     return [
         str(row["instants"]), str(row["relative_instants"]), _percent(row["max_rel_error"]),
         _percent(row["mean_rel_error"]), _mm(row["max_abs_difference"]), _mm(row["max_lep_difference"]),
-        _mm(row["max_uep_difference"]), str(row["mismatched"]),
+        _mm(row["max_uep_difference"]), str(row["mismatched"]), _mm(row["max_end_difference"]),
+        str(row["end_mismatched"]),
     ]
 
 
 _STATISTICS_HEAD = ("instants", "relative", "max |rel. error|", "mean |rel. error|", "max |Δl| (mm)",
-                    "max |ΔLEP| (mm)", "max |ΔUEP| (mm)", "mismatched")
+                    "max |ΔLEP| (mm)", "max |ΔUEP| (mm)", "mismatched", "max |Δ end| (mm)", "end mismatched")
 
 
 def _surface_table(validation):
@@ -357,7 +376,8 @@ def _files():
     rows = [
         ("comparison.csv", "one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, "
                            "error, error_kind, "
-                           "LEP and UEP of both, pieces of both, segment, uep_surface (against the in-process "
+                           "LEP and UEP of both, pieces of both, segment, uep_surface, end_abm, end_ref, "
+                           "end_difference (the end edge's engaged length; against the in-process "
                            "stock also l_initial: ABM in the stock as given)"),
         ("segments.csv", "error per CL point and engagement segment"),
         ("surfaces.csv", "error per kind of UEP surface"),

@@ -3,7 +3,9 @@
 - ``comparison.csv``: one row per instant (CL point × φ): cl, phi_deg, l_abm, l_ref,
   difference (l_abm − l_ref), error (relative where error_kind is ``relative``, the
   difference in mm where it is ``absolute_mm``: l_ref < 1e-3 mm), error_kind, lep_abm, lep_ref,
-  uep_abm, uep_ref (along the edge), pieces_abm, pieces_ref, segment, uep_surface (ABM's).
+  uep_abm, uep_ref (along the edge; for a tool with a corner, heights along the axis above the tip),
+  pieces_abm, pieces_ref, segment, uep_surface (ABM's), end_abm, end_ref, end_difference (the end
+  cutting edge's engaged length by both and ABM − reference; empty where a side did not compute it).
 - ``segments.csv``: one row per CL point and engagement segment (validation.segment_summary).
 - ``surfaces.csv``: one row per kind of UEP surface (validation.surface_summary).
 - ``depth.csv``: one row per CL point: cl, cl_x, cl_y, cl_z, depth_abm, depth_ref, difference,
@@ -25,11 +27,11 @@ from ..validation import letters, segment_summary, surface_summary
 
 COMPARISON_COLUMNS = (
     "cl", "phi_deg", "l_abm", "l_ref", "difference", "error", "error_kind", "lep_abm", "lep_ref", "uep_abm",
-    "uep_ref", "pieces_abm", "pieces_ref", "segment", "uep_surface",
+    "uep_ref", "pieces_abm", "pieces_ref", "segment", "uep_surface", "end_abm", "end_ref", "end_difference",
 )
 STATISTICS_COLUMNS = (
     "instants", "relative_instants", "max_rel_error", "mean_rel_error", "max_abs_difference",
-    "max_lep_difference", "max_uep_difference", "mismatched",
+    "max_lep_difference", "max_uep_difference", "mismatched", "end_instants", "max_end_difference", "end_mismatched",
 )
 SEGMENT_COLUMNS = ("cl", "segment", "phi_start", "phi_end", "surface", "section", "wall", *STATISTICS_COLUMNS)
 SURFACE_COLUMNS = ("surface", *STATISTICS_COLUMNS)
@@ -52,6 +54,7 @@ def report_tables(validation, toolpath):
         "uep_abm": comparison.uep_abm, "uep_ref": comparison.uep_ref,
         "pieces_abm": engagement.pieces, "pieces_ref": validation.reference["pieces"],
         "segment": letters(engagement), "uep_surface": engagement.surface_names(),
+        "end_abm": comparison.end_abm, "end_ref": comparison.end_ref, "end_difference": comparison.end_difference,
     }
     depth = {
         "cl": np.arange(m), "cl_x": toolpath.cl[:, 0], "cl_y": toolpath.cl[:, 1], "cl_z": toolpath.cl[:, 2],

@@ -328,7 +328,8 @@ def test_restore_without_results_file_marks_touched_and_migrates(doc, tmp_path):
     reopened = FreeCAD.openDocument(str(path))
     try:
         engagement = reopened.getObject("Engagement")
-        assert engagement.Version == VERSION == 5
+        assert engagement.Version == VERSION == 6
+        assert engagement.CornerRadius.Value == 0.0  # version 6: a flat-end mill, as every older one
         toolpath = reopened.getObject("Toolpath")
         assert toolpath.Version == VERSION and toolpath.Operation == 0 and toolpath.Operations == []
         assert engagement.YWindow == "whole" and engagement.ValidationReport == ""  # what version 1 computed

@@ -64,12 +64,23 @@ def test_engagement_points_are_written_in_part_coordinates(runs):
         np.testing.assert_allclose(written, local @ rotation.T + origin, atol=1e-9, equal_nan=True)
 
 
-def test_a_json_staircase_cannot_be_turned(tmp_path, capsys, runs):
-    clsf = tmp_path / "job.clsf"
-    clsf.write_text("TOOL PATH/P,TOOL,EM12\nTLDATA/MILL,12,0,75,0,0\nMSYS/0,0,0,0,1,0,1,0,0\nGOTO/10,0,1\n"
-                    "END-OF-PATH\n")
-    status = cli.main(["engage", "--stock", os.path.join(MODEL, "stock.json"), "--toolpath", str(clsf),
-                       "--job", os.path.join(MODEL, "job.json"), "--out", str(tmp_path / "R.csv")])
-    assert status == 2
-    assert "can only be moved, not turned: give the stock as a solid" in capsys.readouterr().err
-    assert os.listdir(tmp_path) == ["job.clsf"]
+def test_a_json_staircase_under_a_turned_mcs_is_computed_in_the_part(tmp_path):
+    """A JSON staircase stands in the part and can only be moved: a program whose MSYS turns 90° about z
+    (its points in the MCS) is computed in the part, and gives what the same points written in the part
+    give."""
+    turn = np.column_stack([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])  # MCS -> part
+    origin = np.array([5.0, -3.0, 0.0])
+    path = load_toolpath(os.path.join(MODEL, "toolpath.csv"))
+    programs = {"part.clsf": (path.cl, path.axes, ""),
+                "turned.clsf": ((path.cl - origin) @ turn, path.axes @ turn,
+                                "MSYS/" + ",".join(f"{v:.12g}" for v in (*origin, *turn[:, 0], *turn[:, 1])) + "\n")}
+    for name, (points, axes, msys) in programs.items():
+        moves = "".join("GOTO/" + ",".join(f"{v:.12f}" for v in (*p, *a)) + "\n" for p, a in zip(points, axes))
+        (tmp_path / name).write_text(f"TOOL PATH/P,TOOL,EM12\nTLDATA/MILL,12,0,75,0,0\n{msys}{moves}END-OF-PATH\n")
+        assert cli.main(["engage", "--stock", os.path.join(MODEL, "stock.json"), "--toolpath", str(tmp_path / name),
+                         "--job", os.path.join(MODEL, "job.json"), "--phi-step", "5",
+                         "--out", str(tmp_path / (name + ".csv"))]) == 0
+    part, turned = (read_results(tmp_path / (name + ".csv")) for name in programs)
+    assert np.count_nonzero(part["length"] > 0) > 500
+    for column in ("length", "lep_l", "uep_l", "pieces", "lep_x", "lep_y", "lep_z", "uep_x", "uep_y", "uep_z"):
+        np.testing.assert_allclose(turned[column], part[column], atol=1e-9, equal_nan=True, err_msg=column)

@@ -63,7 +63,8 @@ def test_engage_on_step_and_apt_matches_the_json_stock(case, capsys):
     summary, sources = out.splitlines()
     assert summary.startswith("abm: 3 CL points x 19 angles = 57 instants in ")
     assert sources.startswith("abm: parameters: diameter 12 mm [path.apt CUTTER], 2 flutes [job.json], "
-                              "flute length 25 mm [path.apt CSI_SET_FLUTE_LENGTH], feed 0.1 mm/tooth [job.json]")
+                              "flute length 25 mm [path.apt CSI_SET_FLUTE_LENGTH], "
+                              "corner radius 0 mm [path.apt CUTTER], feed 0.1 mm/tooth [job.json]")
     assert "spindle 4000 rpm [path.apt SPINDL]" in sources and "step 10° [job.json]" in sources
     assert sources.endswith("; stock: exact walls, y window -12..12 mm; in-process stock (0 of 3 CL points changed "
                             "by earlier moves)")

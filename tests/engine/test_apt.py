@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from abm_workbench.engine import axis_to_angles
 from abm_workbench.errors import InputError
 from abm_workbench.formats.apt import AptProgram, load_apt
-from abm_workbench.formats.cl import OperationChoiceError
+from abm_workbench.formats.cl import OperationChoiceError, read_program
 
 
 def write(tmp_path, text, name="path.apt", newline="\n"):
@@ -209,17 +209,27 @@ def test_tool_records(tmp_path, record, diameter, length):
     assert (program.diameter, program.flute_length, program.warnings) == (diameter, length, ())
 
 
-MILLING_NOT_YET = "a milling tool the ABM engine does not compute yet (it computes flat-end mills)"
-NOT_MILLING = "not a milling tool (the ABM engine computes flat-end mills)"
+MILLING_NOT_YET = ("a milling tool the ABM engine does not compute yet (it computes flat-end, bull-nose and "
+                   "ball-end mills)")
+NOT_MILLING = "not a milling tool (the ABM engine computes flat-end, bull-nose and ball-end mills)"
 
 
 @pytest.mark.parametrize("record, words, reason", [
-    ("CUTTER/10,1,4,1,0,0,30", "bull-nose mill D10 R1 mm", MILLING_NOT_YET),
-    ("CUTTER/6,3", "ball mill D6 R3 mm", MILLING_NOT_YET),
+    ("CUTTER/10,0,0,0,0,15,30", "tapered mill D10 mm", MILLING_NOT_YET),
     ("TLDATA/DRILL,5,118", "drill D5 mm", NOT_MILLING),
 ])
 def test_a_file_of_other_tools_is_refused_by_name(tmp_path, record, words, reason):
     fails(tmp_path, f"{record}\nGOTO/0,0,0\n", None, f"operation 1: {words}: {reason}")
+
+
+@pytest.mark.parametrize("record, diameter, corner", [
+    ("CUTTER/10,1,4,1,0,0,30", 10.0, 1.0), ("CUTTER/6,3", 6.0, 3.0), ("TLDATA/MILL,32,5,100,0,0", 32.0, 5.0),
+])
+def test_bull_nose_and_ball_mills_are_read_for_the_engine(tmp_path, record, diameter, corner):
+    program = read_program(str(write(tmp_path, f"{record}\nGOTO/0,0,0\nGOTO/1,0,0\n")))
+    operation = program.operation()
+    assert operation.refusal() is None
+    assert (operation.tool.diameter, operation.tool.corner_radius) == (diameter, corner)
 
 
 @pytest.mark.parametrize("text, line, warning, kept", [

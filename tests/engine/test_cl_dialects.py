@@ -60,14 +60,13 @@ def test_nx_clsf_operations_tools_msys_arcs_and_nurbs():
     contour = program.operations[1]
     # GOTO/x,y,z,i,j,k without MULTAX is position and axis; the three-number GOTO after keeps the axis.
     np.testing.assert_allclose(contour.axes_file, [[0, 0.6, 0.8], [0, 0.6, 0.8], [0, 0, 1]], atol=1e-15)
-    assert contour.refusal() == ("operation 2: ball mill D6 R3 mm: a milling tool the ABM engine does not compute yet "
-                                 "(it computes flat-end mills)")
+    assert contour.refusal() is None  # a ball mill is computed
     with pytest.raises(OperationChoiceError) as caught:
         program.operation()
     assert [op.number for op in caught.value.operations] == [1, 2, 3]
-    assert "2 milling operations; choose one with --operation N" in str(caught.value)
+    assert "3 milling operations; choose one with --operation N" in str(caught.value)
     assert program.operation(3).lines.tolist() == [43, 44]
-    assert [op.number for op in program.milling()] == [1, 3]
+    assert [op.number for op in program.milling()] == [1, 2, 3]
 
 
 def test_nx_nurbs_points_lie_on_the_cubic_and_keep_the_chord_error():
@@ -153,7 +152,8 @@ def test_mastercam_unit_rapid_slash_trailing_commas_helix_and_drilling():
     np.testing.assert_allclose(np.hypot(helix[:, 0], helix[:, 1]), 30.0, rtol=1e-15)
     angle = np.arctan2(helix[:, 1], helix[:, 0])
     np.testing.assert_allclose(helix[:, 2], -2 * angle / (math.pi / 2), atol=1e-12)
-    assert drill.refusal() == "operation 2: drill D6.8 mm: not a milling tool (the ABM engine computes flat-end mills)"
+    assert drill.refusal() == ("operation 2: drill D6.8 mm: not a milling tool (the ABM engine computes flat-end, "
+                               "bull-nose and ball-end mills)")
     assert (len(drill.lines), drill.cycle_points.lines.tolist(), drill.cycles) == (0, [20, 21, 22], ("DRILL",))
     assert program.operation() is mill
 
@@ -180,13 +180,14 @@ def test_a_single_horizontal_axis_is_the_operation_frame(tmp_path):
     np.testing.assert_allclose(toolpath.cl @ rotation - rotation.T @ translation, op.points_part, atol=1e-12)
 
 
-def test_an_axis_beyond_a_half_space_is_refused_with_operation_and_line(tmp_path):
+def test_axes_beyond_a_half_space_are_taken_as_they_come(tmp_path):
+    """Up, sideways and down in one operation: the engine takes every direction, in the file's frame."""
     path = tmp_path / "wild.cl"
-    path.write_text("CUTTER/10\nGOTO/0,0,0,0,0,1\nGOTO/1,0,0,1,0,0\nGOTO/2,0,0,-1,0,0\n")
+    path.write_text("CUTTER/10\nGOTO/0,0,0,0,0,1\nGOTO/1,0,0,1,0,0\nGOTO/2,0,0,-1,0,0\nGOTO/3,0,0,0,0,-1\n")
     op = read_program(path).operation()
-    with pytest.raises(InputError, match=rf"^{path}:3: operation 1: tool axis \(1, 0, 0\), written in the file.s "
-                                         r"frame \(no MSYS, CSYS or ROTABL\), turns 90 degrees"):
-        op.toolpath()
+    toolpath = op.toolpath()
+    np.testing.assert_allclose(toolpath.axes, [[0, 0, 1], [1, 0, 0], [-1, 0, 0], [0, 0, -1]], atol=1e-15)
+    np.testing.assert_allclose(toolpath.cl, op.points_part, atol=1e-15)
 
 
 def test_rotabl_turns_the_following_points_into_the_part():

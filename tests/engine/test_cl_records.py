@@ -102,7 +102,8 @@ def test_loadtl_kind_words_name_drills_taps_and_turning_tools(tmp_path):
     text = "LOADTL/1,TAP\nCUTTER/8\nGOTO/0,0,0\nLOADTL/2,ADJUST,1,MILL\nCUTTER/8\nGOTO/1,0,0\n"
     ops = program(tmp_path, text).operations
     assert [op.tool.kind for op in ops] == ["tap", "flat"]
-    assert ops[0].refusal() == "operation 1: tap D8 mm: not a milling tool (the ABM engine computes flat-end mills)"
+    assert ops[0].refusal() == ("operation 1: tap D8 mm: not a milling tool (the ABM engine "
+                                "computes flat-end, bull-nose and ball-end mills)")
 
 
 def test_a_frame_change_after_moves_starts_an_operation(tmp_path):

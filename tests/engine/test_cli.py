@@ -64,7 +64,7 @@ def test_engage_with_every_option(case, capsys):
     assert summary.startswith(f"abm: {M} CL points x {P} angles = {M * P} instants in ")
     assert "depth of cut " in summary and summary.endswith("wrote R.csv, R.summary.csv, R.png")
     assert sources == ("abm: parameters: diameter 12 mm [--diameter], 2 flutes [--flutes], flute length 30 mm "
-                       "[--flute-length], feed 0.1 mm/tooth [--feed-per-tooth], inclination 10° [--inclination], "
+                       "[--flute-length], corner radius 0 mm [default], feed 0.1 mm/tooth [--feed-per-tooth], inclination 10° [--inclination], "
                        "spindle 4000 rpm [--spindle-rpm], φ 0..180° [--phi-range], step 5° [--phi-step]; in-process stock "
                        "(0 of 12 CL points changed by earlier moves)")
     results = read_results(case / "R.csv")
@@ -149,7 +149,8 @@ def _nothing(folder):
         (_write("toolpath.csv", "x,y,z,theta_a,theta_b\n10,0,0,0,10\n20,0,zero,0,10\n"), [],
          "toolpath.csv:3: column 'z': 'zero' is not a number"),
         (_write("toolpath.csv", "x,y,z,i,j,k\n10,0,0,0,0,1\n20,0,0,0,0,-1\n"), [],
-         "toolpath.csv:3: operation 1: tool axis (0, 0, -1), written in the file's frame"),
+         "toolpath.csv: the in-process stock cannot sweep the program: row 1 (line 3): the tool axis turns by 180° "
+         "in one cutting move"),
         (_nothing, ["--stock", "missing.json"], "missing.json: cannot read: No such file or directory"),
         (_nothing, ["--phi-range", "a:b"], "--phi-range: expected START:END in degrees such as 0:180, got 'a:b'"),
         (_nothing, ["--phi-range", "0:90:180"], "--phi-range: expected START:END"),

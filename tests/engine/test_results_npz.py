@@ -9,6 +9,7 @@ import pytest
 
 from abm_workbench import cli
 from abm_workbench.engine import CASES, SURFACES, engage, segment_letter
+from abm_workbench.engine.stocks import engage_stock
 from abm_workbench.errors import InputError
 from abm_workbench.features.stored import read_engagement, read_forces
 from abm_workbench.formats import replacing, results_csv, results_npz
@@ -64,7 +65,7 @@ def test_npz_holds_the_engines_doubles(written):
     """Against the stock as given the archive's columns are the engine's arrays bit for bit, and the
     Engagement read back (features.stored) is the engine's."""
     stock, tool, toolpath, settings = model_job(1)
-    engagement = engage(stock, tool, toolpath, settings)
+    engagement = engage_stock(stock, tool, toolpath, settings)
     columns = results_npz.read_results(written / "F.npz")
     m, p = engagement.shape
     assert np.array_equal(columns["cl"], np.repeat(np.arange(m), p))

@@ -17,7 +17,7 @@ from tests.conftest import ROOT
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
 SCREENSHOTS = os.path.join(ROOT, "build", "screenshots")
 NAMES = ["ABM_OpenModelTest", "ABM_ImportStock", "ABM_ImportToolpath", "ABM_ComputeEngagement",
-         "ABM_InspectEngagement", "ABM_ValidateEngagement", "ABM_ShowInProcessStock"]
+         "ABM_EngageCamJob", "ABM_InspectEngagement", "ABM_ValidateEngagement", "ABM_ShowInProcessStock"]
 APT = "MULTAX/ON\nCUTTER/12,0,6,0,0,0,60\nCSI_SET_FLUTE_LENGTH/30\nSPINDL/RPM,4000,CLW\nFEDRAT/MMPM,800\n{moves}END-OF-PATH\n"
 
 BODY = """

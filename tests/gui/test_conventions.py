@@ -14,7 +14,7 @@ from tests.conftest import ROOT
 
 MODEL = os.path.join(ROOT, "resources", "models", "model_test_1")
 NAMES = ["ABM_OpenModelTest", "ABM_ImportStock", "ABM_ImportToolpath", "ABM_ComputeEngagement",
-         "ABM_InspectEngagement", "ABM_ValidateEngagement"]
+         "ABM_EngageCamJob", "ABM_InspectEngagement", "ABM_ValidateEngagement"]
 GUI_SOURCES = sorted(glob.glob(os.path.join(ROOT, "abm_workbench", "gui", "*.py"))) + [os.path.join(ROOT, "InitGui.py")]
 
 

@@ -113,3 +113,39 @@ def test_packed_colours_are_coin_rgba():
     packed = packed_rgba([(1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0), (0.5, 0.25, 1.0)])
     assert packed.dtype == np.uint32
     assert [int(v) for v in packed] == [0xFF0000FF, 0x00FF00FF, 0x0000FFFF, (128 << 24) | (64 << 16) | (255 << 8) | 255]
+
+
+@pytest.fixture(scope="module")
+def ball():
+    """Model test 1 with a D12 ball-end mill and an MSYS-free CL pass, as a document object, recomputed."""
+    doc = FreeCAD.newDocument("ABMMeshBall")
+    stock = create_stock(doc, os.path.join(MODEL, "stock.json"))
+    toolpath = create_toolpath(doc, os.path.join(MODEL, "toolpath.csv"))
+    obj = create_engagement(doc, stock, toolpath, diameter=12, flutes=2, flute_length=30, corner_radius=6,
+                            feed_per_tooth=0.1, inclination=10, phi_step=5)
+    doc.recompute()
+    assert obj.isValid(), obj.getStatusString()
+    yield obj
+    FreeCAD.closeDocument(doc.Name)
+
+
+def test_a_ball_mills_surface_follows_its_corner(ball):
+    """Every vertex lies on the tool: below the height r = R of the ball's centre T + r·w, at distance r from
+    that centre; above it, at distance R from the axis."""
+    result = ball.Proxy.result(ball)
+    mesh = surface_mesh(result, ball.Proxy.edge_along(ball))
+    assert mesh.rows > 2 and len(mesh.points) == mesh.rows * len(mesh.cl)
+    toolpath = ball.Toolpath.Proxy.load(ball.Toolpath)[0]
+    axes = toolpath.axes[np.tile(mesh.cl, mesh.rows)]
+    relative = mesh.points - toolpath.cl[np.tile(mesh.cl, mesh.rows)]
+    height = (relative * axes).sum(axis=1)
+    across = np.linalg.norm(relative - height[:, None] * axes, axis=1)
+    from_centre = np.linalg.norm(relative - 6.0 * axes, axis=1)
+    np.testing.assert_allclose(np.where(height < 6.0, from_centre, across), 6.0, atol=1e-9)
+    assert (height < 6.0).sum() > 100  # the corner is drawn
+    # Each instant's first and last vertices are its LEP and UEP.
+    n = len(mesh.cl)
+    np.testing.assert_array_equal(mesh.points[:n], result.lep_xyz[mesh.cl, mesh.row])
+    np.testing.assert_array_equal(mesh.points[-n:], result.uep_xyz[mesh.cl, mesh.row])
+    colours, _ = vertex_colours(result, mesh, "segment")
+    assert colours.shape == (len(mesh.points), 3)

@@ -1,9 +1,11 @@
 """CL files as CAM systems write them: APT / CLDATA text, NX CLSF, CATIA, Creo NCL, SOLIDWORKS
-CAM / CAMWorks, Mastercam and PowerMill APT, and the project's toolpath CSV.
+CAM / CAMWorks, Mastercam and PowerMill APT, and the project's toolpath CSV; G-code
+(formats.gcode) and FreeCAD CAM Jobs (abm_workbench.cam) read into the same programs.
 
 :func:`read_program` reads a file (by its content, whatever its name) into a :class:`Program`
 of :class:`Operation` objects; docs/CL_FILES.md tells which records are read and what each
-becomes. Lengths in mm, angles in degrees, feeds in mm/min or mm/rev, spindle in rpm.
+becomes, docs/GCODE.md the same of G-code. Lengths in mm, angles in degrees, feeds in mm/min or
+mm/rev, spindle in rpm.
 
 Modules: :mod:`.sniff` (content), :mod:`.lexer` (records), :mod:`.reader` (the modal state
 machine), :mod:`.arcs` (CIRCLE), :mod:`.nurbs` (NX NURBS), :mod:`.units`, :mod:`.tools`,
@@ -24,15 +26,27 @@ TOLERANCE = 0.001
 STEP = 0.1
 
 
-def read_program(path, tolerance=TOLERANCE, step=STEP):
-    """The :class:`Program` of the CL file or toolpath CSV at `path`; arcs and curves to `tolerance` mm,
-    their CL points at most `step` mm apart. InputError naming the file (and line) for anything unreadable."""
+def read_program(path, tolerance=TOLERANCE, step=STEP, options=None):
+    """The :class:`Program` of the CL file, toolpath CSV, G-code or FreeCAD document (its CAM Job) at `path`;
+    arcs and curves to `tolerance` mm, their CL points at most `step` mm apart; options: a
+    formats.gcode.options.ReadOptions (the CAM Job's name, tool table, machine, work offsets) or None.
+    InputError naming the file (and line) for anything unreadable."""
     name = os.fspath(path)
     if not tolerance > 0.0:
         raise InputError(f"{name}: the chordal tolerance must be positive, got {tolerance:g} mm")
     if not step > 0.0:
         raise InputError(f"{name}: the step along arcs and curves must be positive, got {step:g} mm")
     kind, text, encoding = read_file(name)
+    if options is not None:
+        options.check(kind, name)
+    if kind == "fcstd":
+        from ...cam.documents import read_job_file  # FreeCAD only for a document
+
+        return read_job_file(name, options, tolerance, step)
+    if kind == "gcode":
+        from ..gcode.reader import read_gcode_text
+
+        return replace(read_gcode_text(text, name, tolerance, step, options), encoding=encoding)
     if kind == "csv":
         from .csv_program import read_csv_program
 

@@ -12,10 +12,12 @@ Every frame is (R (3, 3), t (3,)) with ``part = R @ file + t`` (mm).
   coordinates of the turned part: part = Rᵀ·file with R the table's rotation.
 
 The engine frame of an operation (:func:`engine_frame`) is the frame its tool axes point up
-in: the file frame (the MCS or setup frame the operation was written in) when every cutting
-axis has k > 0 there; otherwise a frame whose Z is the normalised mean of the cutting axes
-(X the file's X made square to it, or the file's Y when X is too close to Z), origin that of
-the file frame. A CL point whose axis is 90 degrees or more from that Z is refused.
+in on the whole: the file frame (the MCS or setup frame the operation was written in) when every
+cutting axis has k > 0 there; otherwise a frame whose Z is the normalised mean of the cutting axes
+(X the file's X made square to it, or the file's Y when X is too close to Z), origin that of the
+file frame; the file frame when the axes cancel out. Single axes may point sideways or down in it:
+the engine takes every direction. A solid stock then turns it to its own 2.5D direction
+(``cad.stock_frame``).
 """
 
 import math
@@ -78,24 +80,21 @@ def engine_frame(to_part, axes_file):
     """(R, t) from part coordinates to the operation's engine frame (see the module docstring).
 
     to_part: the operation's (R, t) file -> part. axes_file: (n, 3) unit cutting axes in the
-    file frame. Returns (frame, bad): frame the (R, t) part -> engine, bad the index of the
-    first axis at 90 degrees or more from the engine Z, or None.
+    file frame. Returns the (R, t) part -> engine. Axes may point anywhere in it (the engine takes
+    every direction); the frame only chooses which way the stock's 2.5D direction is read up.
     """
     rotation, translation = to_part
     inverse = (rotation.T, -rotation.T @ translation)
     axes_file = np.asarray(axes_file, dtype=float).reshape(-1, 3)
     if len(axes_file) == 0 or (axes_file[:, 2] > 0.0).all():
-        return inverse, None
+        return inverse
     mean = axes_file.mean(axis=0)
     size = np.linalg.norm(mean)
-    if size < 1e-9:  # the axes cancel out: no frame has them all up; blame the first one not up here
-        return inverse, int(np.flatnonzero(axes_file[:, 2] <= 0.0)[0])
+    if size < 1e-9:  # the axes cancel out: the file's own frame
+        return inverse
     z = mean / size
     x = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
     x = x - (x @ z) * z
     x /= np.linalg.norm(x)
     local = np.array([x, np.cross(z, x), z])  # rows: the new axes in file coordinates
-    frame = compose((local, np.zeros(3)), inverse)
-    up = axes_file @ z
-    bad = np.flatnonzero(up <= 0.0)
-    return frame, (int(bad[0]) if bad.size else None)
+    return compose((local, np.zeros(3)), inverse)

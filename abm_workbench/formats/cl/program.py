@@ -16,8 +16,8 @@ from ...errors import CLPointError, InputError
 from .frames import IDENTITY, engine_frame
 from .tools import ToolSpec
 
-#: Tool kinds the engine computes: flat-end mills, and tools a file does not describe.
-ENGINE_KINDS = ("flat", "unknown")
+#: Tool kinds the engine computes: flat-end, bull-nose and ball-end mills, and tools a file does not describe.
+ENGINE_KINDS = ("flat", "bull-nose", "ball", "unknown")
 
 
 @dataclass(frozen=True, eq=False)
@@ -112,29 +112,17 @@ class Operation:
         return f"operation {self.number}" + (f" ({self.name})" if self.name else "")
 
     def engine_frame(self):
-        """(R, t) from part coordinates to the frame the engine works in for this operation.
+        """(R, t) from part coordinates to the frame the engine works in for this operation: the operation's
+        own frame (MCS / setup), or one its tool axes point up in on the whole (see :mod:`.frames`)."""
+        return engine_frame(self.to_part, self.axes_file)
 
-        The operation's own frame (MCS / setup), in which its tool axes point up (see
-        :mod:`.frames`). InputError naming the operation, the line and the reason for a CL
-        point whose axis turns 90 degrees or more from that frame.
-        """
-        frame, bad = engine_frame(self.to_part, self.axes_file)
-        if bad is not None:
-            axis = ", ".join(f"{v:.6g}" for v in self.axes_file[bad])
-            written = f"the frame of {self.frame}" if self.frame else "the file's frame (no MSYS, CSYS or ROTABL)"
-            raise InputError(f"{self.source}:{self.lines[bad]}: {self.label()}: tool axis ({axis}), written in "
-                             f"{written}, turns 90 degrees or more from the operation's frame (its axes span more "
-                             "than a half-space), so the engine, which needs the tool pointing up in one frame per "
-                             "operation, cannot take it")
-        return frame
-
-    def toolpath(self):
-        """The engine :class:`Toolpath` of the cutting moves in :meth:`engine_frame` coordinates, each
-        CL point's frame turned to its feed (engine.feed) and its inclination to that feed its own
-        (the job's one value for a single pass)."""
+    def toolpath(self, frame=None):
+        """The engine :class:`Toolpath` of the cutting moves in `frame` ((R, t) part -> engine; None:
+        :meth:`engine_frame`) coordinates, each CL point's frame turned to its feed (engine.feed) and
+        its inclination to that feed its own (the job's one value for a single pass)."""
         if len(self.lines) == 0:
             raise InputError(f"{self.source}:{self.first_line}: {self.label()}: no cutting moves")
-        rotation, translation = self.engine_frame()
+        rotation, translation = self.engine_frame() if frame is None else frame
         points = self.points_part @ rotation.T + translation
         axes = self.axes_part @ rotation.T
         alpha, feed = feed_frame(self.directions_part @ rotation.T)
@@ -147,17 +135,18 @@ class Operation:
             raise InputError(f"{self.source}:{self.lines[error.index]}: {self.label()}: {error.detail}") from None
 
     def refusal(self):
-        """None for a flat-end milling operation with cutting moves, else the plain reason, naming the
-        tool's kind as it is (a ball mill is a milling tool the engine does not compute yet; a drill,
-        tap or turning tool is no milling tool)."""
+        """None for a milling operation of a flat-end, bull-nose or ball-end mill with cutting moves, else
+        the plain reason, naming the tool's kind as it is (a tapered mill is a milling tool the engine does
+        not compute yet; a drill, tap or turning tool is no milling tool)."""
         if self.tool.kind not in ENGINE_KINDS:
             what = self.tool.describe()
             if self.tool.milling:
-                reason = "a milling tool the ABM engine does not compute yet (it computes flat-end mills)"
+                reason = ("a milling tool the ABM engine does not compute yet (it computes flat-end, bull-nose "
+                          "and ball-end mills)")
             elif self.tool.kind in ("turning", "grooving"):
                 reason = "a turning program, not milling"
             else:
-                reason = "not a milling tool (the ABM engine computes flat-end mills)"
+                reason = "not a milling tool (the ABM engine computes flat-end, bull-nose and ball-end mills)"
             return f"operation {self.number}: {what}: {reason}"
         if len(self.lines) == 0:
             holes = len(self.cycle_points) if self.cycle_points is not None else 0
@@ -175,8 +164,10 @@ class Program:
     """A CL program: source file, units as written ("mm" or "inch"), operations (tuple, file
     order), ignored ({major word: (first line, count)} of records known to carry nothing the
     engine needs), unknown (the same for records not understood), warnings (list of
-    ``"file:line: ..."``), format ("apt" or "csv"), text (the file's text, for rewriting),
-    last_line (the file's number of lines), encoding (the text's, for rewriting)."""
+    ``"file:line: ..."``), format ("apt", "csv", "gcode" or "fcstd": a FreeCAD CAM Job), text (the
+    file's text, for rewriting), last_line (the file's number of lines), encoding (the text's, for
+    rewriting), stock (the name of the object of the file that holds the program's stock solid: a
+    CAM Job's Stock; "" for none)."""
 
     source: str
     units: str
@@ -188,9 +179,11 @@ class Program:
     text: str = field(default="", repr=False)
     last_line: int = 0
     encoding: str = "utf-8"
+    stock: str = ""
 
     def milling(self):
-        """The operations the engine can run: flat-end mills (or undescribed tools) with cutting moves."""
+        """The operations the engine can run: flat-end, bull-nose and ball-end mills (or undescribed tools)
+        with cutting moves."""
         return tuple(op for op in self.operations if op.refusal() is None)
 
     def operation(self, n=None):

@@ -26,10 +26,10 @@ from dataclasses import dataclass, replace
 from typing import Optional
 
 #: Kinds of tool an operation may have.
-KINDS = ("flat", "ball", "bull-nose", "tapered", "drill", "spot drill", "countersink", "reamer", "boring bar", "tap",
-         "thread mill", "turning", "grooving", "unknown")
-#: The kinds that are milling tools, the engine's (flat-end, bull-nose, ball) and the tapered ones.
-MILL_KINDS = ("flat", "ball", "bull-nose", "tapered")
+KINDS = ("flat", "ball", "bull-nose", "tapered", "saw", "drill", "spot drill", "countersink", "reamer", "boring bar",
+         "tap", "thread mill", "turning", "grooving", "probe", "unknown")
+#: The kinds that are milling tools, the engine's (flat-end, bull-nose, ball), the tapered ones and slitting saws.
+MILL_KINDS = ("flat", "ball", "bull-nose", "tapered", "saw")
 #: Words naming a kind of tool in LOADTL, LOAD/TOOL, TOOLNO and TLDATA records.
 KIND_WORDS = {
     "DRILL": "drill", "CDRILL": "spot drill", "SPOT": "spot drill", "CSINK": "countersink", "CBORE": "boring bar",
@@ -46,9 +46,10 @@ _NAME_WORDS = (
     (r"CHAMFER|ENGRAV|TAPER|DOVETAIL", "tapered"), (r"\bDRILL", "drill"),
 )
 _NAMES = {"flat": "flat-end mill", "ball": "ball mill", "bull-nose": "bull-nose mill", "tapered": "tapered mill",
-          "drill": "drill", "spot drill": "spot drill", "countersink": "countersink", "reamer": "reamer",
-          "boring bar": "boring bar", "tap": "tap", "thread mill": "thread mill", "turning": "turning tool",
-          "grooving": "grooving tool", "unknown": "tool of unknown kind"}
+          "saw": "slitting saw", "probe": "probe", "drill": "drill", "spot drill": "spot drill",
+          "countersink": "countersink", "reamer": "reamer", "boring bar": "boring bar", "tap": "tap",
+          "thread mill": "thread mill", "turning": "turning tool", "grooving": "grooving tool",
+          "unknown": "tool of unknown kind"}
 
 
 @dataclass(frozen=True)
@@ -57,7 +58,8 @@ class ToolSpec:
     the records that gave them (``"WORD line N"`` strings, file order); unit: the length unit its
     sizes were written in ("mm" or "inch"; they are given here in mm); name: its name as the file
     writes it, or ""; length: the tool's whole length (mm) where the file gives it (APT CUTTER's
-    height, NX TLDATA's length), else None."""
+    height, NX TLDATA's length), else None; flutes: its number of flutes where the file gives it (a
+    FreeCAD toolbit's Flutes), else None."""
 
     kind: str = "unknown"
     diameter: Optional[float] = None
@@ -67,6 +69,7 @@ class ToolSpec:
     unit: str = "mm"
     name: str = ""
     length: Optional[float] = None
+    flutes: Optional[int] = None
 
     @property
     def milling(self):
