@@ -134,22 +134,35 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
 def in_process_lengths(stock, tool, toolpath, phi_deg, pieces, program_index):
     """(m, p) length of cut (mm) against the in-process stock at angles phi_deg (p,) (any, e.g.
     another flute's φ + 360·k/Z) of the m CL points of `toolpath`; pieces and program_index as
-    for engage_in_process. Every edge line's intervals in the stock, less the removals."""
+    for engage_in_process. Every edge line's intervals in the stock, less the removals (for a tool
+    with a corner, its peripheral edges': in_process_runs)."""
     phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     if tool.corner_radius > 0.0:
-        program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
-        edges = _CornerEdges(tool, toolpath, phi)
-        inside = profile_intervals(stock, tool, toolpath, phi)
-        first = np.flatnonzero(np.r_[True, inside.rows[1:] != inside.rows[:-1]]) if inside.rows.size else inside.rows
-        last = np.r_[first[1:], inside.rows.size] - 1
-        rows, enter, leave = edges.removals(pieces, program_index, inside.rows[first], inside.start[first],
-                                            inside.end[last])
-        return subtract(inside, rows, enter, leave).length.reshape(len(toolpath), -1)
+        return in_process_runs(stock, tool, toolpath, phi, pieces, program_index).length.reshape(len(toolpath), -1)
     base, direction = edge_lines(toolpath, tool, phi)
     origins, directions = base.reshape(-1, 3), np.repeat(direction, phi.size, axis=0)
     inside = stock_intervals(stock, origins, directions, tool.flute_length)
     remaining, _ = inprocess_intervals(inside, pieces, program_index, origins, directions, phi.size)
     return remaining.length.reshape(len(toolpath), -1)
+
+
+def in_process_runs(stock, tool, toolpath, phi_deg, pieces, program_index):
+    """EdgeIntervals of the m·p peripheral edges (row i·p + k, arc length s in mm, as profile.profile_intervals
+    gives them) of a tool with a corner against the in-process stock at angles phi_deg (p,); pieces and
+    program_index as for engage_in_process: each edge's runs in the stock less what the earlier moves removed
+    from its corner arc and its straight side (the runs forces.pass_forces takes as runs_at)."""
+    if tool.corner_radius <= 0.0:
+        raise ValueError("in_process_runs is for tools with a corner radius; a flat-end tool's edges are lines "
+                         "(in_process_lengths)")
+    phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    edges = _CornerEdges(tool, toolpath, phi)
+    inside = profile_intervals(stock, tool, toolpath, phi)
+    first = np.flatnonzero(np.r_[True, inside.rows[1:] != inside.rows[:-1]]) if inside.rows.size else inside.rows
+    last = np.r_[first[1:], inside.rows.size] - 1
+    rows, enter, leave = edges.removals(pieces, program_index, inside.rows[first], inside.start[first],
+                                        inside.end[last])
+    return subtract(inside, rows, enter, leave)
 
 
 #: Ends of an edge's engaged range are widened by this (mm) where they come back from heights (the range

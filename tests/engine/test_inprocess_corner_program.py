@@ -404,3 +404,31 @@ def test_corner_radius_errors_name_the_row():
         ProgramMoves(np.zeros((2, 3)), [[0, 0, 1]] * 2, [False, True], [3, 3], [10, 10], [11, 12], [-1.0, 0.0])
     with pytest.raises(ValueError, match="corner_radius"):
         ProgramMoves(np.zeros((2, 3)), [[0, 0, 1]] * 2, [False, True], [3, 3], [10, 10], [11, 12], [0.0])
+
+
+def test_forces_take_the_in_process_runs():
+    """jobs.run.pass_forces_of against the in-process stock with a tool with a corner: every flute's runs are
+    in_process_runs (flute 1's lengths are engage_in_process's, checked against the reference above); CL points
+    no earlier move touched keep the forces against the stock as given, changed ones lose some."""
+    from abm_workbench.forces import material, pass_forces
+    from abm_workbench.jobs.run import pass_forces_of
+    from abm_workbench.engine.stocks import in_process_runs
+
+    program = Program()
+    program.add(straight(-16, -4, -4.0, 3.0, 5), 5.0, 15.0, 2.0)
+    tool = Tool(8.0, 3, 12.0, corner_radius=2.0)
+    # Each CL point reached by a rapid: only the first pass can have removed material there.
+    rows = program.add(straight(-16, 16, 0.5, 2.5, 9), tool.radius, tool.flute_length, tool.corner_radius,
+                       cutting=False)
+    toolpath = Toolpath(program.array("cl")[rows], np.zeros(rows.size), np.zeros(rows.size))
+    pieces = swept_pieces(program.moves())
+    settings = CutSettings(0.1, 0.0, 0.0, 355.0, 5.0)
+    got, _, changed = engage_in_process(STAIRCASE, tool, toolpath, settings, pieces, rows)
+    runs = in_process_runs(STAIRCASE, tool, toolpath, settings.phi, pieces, rows)
+    np.testing.assert_array_equal(runs.length.reshape(got.length.shape), got.length)
+    model = (material("al7075-t6"), (0.0, 180.0))
+    inside = pass_forces_of(STAIRCASE, tool, toolpath, settings, model, got, in_process=(pieces, rows))
+    given = pass_forces(STAIRCASE, tool, toolpath, settings, model[0], immersion=model[1])
+    assert changed.any() and not changed.all()
+    np.testing.assert_array_equal(inside.cutting[~changed], given.cutting[~changed])
+    assert (np.abs(inside.cutting[changed] - given.cutting[changed]).max(axis=(1, 2)) > 1e-6).all()
