@@ -6,7 +6,7 @@ P(ψ) = C + r·sin ψ·d − r·cos ψ·w, ψ in [ψ_0, ψ_1] ⊂ [0, π/2], arc
 (a constant-axis piece of an earlier move, inprocess_swept) the arc is inside where F(ψ) = G(P(ψ)) ≤ 0,
 G the convex, 1-Lipschitz gauge of S. An arc may enter and leave a convex solid more than once, so its
 crossings are isolated with bounds that hold on a whole interval [a, b] of ψ (h = b − a), from F and a
-subgradient v of G at both ends (docs/ENGINE.md, "Corner arcs against the swept solids"):
+subgradient v of G at both ends (docs/ENGINE.md, "Tools with a corner in the in-process stock"):
 
 * below: F(ψ) ≥ F(a) + v_a·(P(ψ) − P(a)) (G is convex), a sinusoid in ψ whose slope at a is
   D(a) = v_a·P'(a) and whose curvature is at most r (|v| ≤ 1, |P''| = r): F is above the larger of the
@@ -270,8 +270,8 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
     lo … hi by more than LENGTH_EPS, one removal [lo, hi] for an arc covered whole, each depending on
     its arc alone (each (arc, piece) pair is solved over the whole arc, 0 … top, whatever is left of it).
 
-    The search (docs/ENGINE.md, "Corner arcs"): the chains whose balls meet each arc's bounding sphere
-    (the KD tree), kept when not surely apart from its capsule (the chord of what is left of the arc,
+    The search (docs/ENGINE.md, "Tools with a corner in the in-process stock"): the chains whose balls meet
+    each arc's bounding sphere (the KD tree), kept when not surely apart from its capsule (the chord of what is left of the arc,
     grown by its sagitta); a rigid chain that ends before the arc's CL point whole, the others' spans and
     pieces likewise; then rounds in which each arc solves its 1, 2, 4, … pairs that reach deepest (the
     arc's middle farthest inside the hull seen along its axis), narrows what is left of it and drops the

@@ -42,8 +42,6 @@ NEWTON_MAX = 200
 #: A move shorter than this (mm) is a tool standing still; a line within this angle (rad) of
 #: the move's direction runs along it.
 STILL = 1e-12
-#: Bisection steps on the position s of the tool along a move when minimising the gauge (s in [0, 1]).
-GAUGE_STEPS = 52
 #: Pieces within this (of the gauge's value, mm) of the largest one are active at a point.
 ACTIVE = 1e-11
 
@@ -149,8 +147,9 @@ def swept_gauge(x, c0, move, axis, radius, height, corner):
     ≤ max(|y − foot| − R, −a, a − H) (flat end), a, the height of y − c0 − s·move along the axis.
 
     The position s: for a flat end the smallest of the gauge over the closed-form candidates (the ends,
-    where |b| is least, where two pieces are equal); for a corner, bisection on the sign of the rate of
-    the gauge along the move (monotone: the gauge is convex in s), GAUGE_STEPS steps.
+    where |b| is least, where two pieces are equal); for a corner, the root of the rate of the squared
+    distance to K along the move (monotone: convex in s) by monotone_root, then the meeting with the top
+    piece a − H where that one is larger (_corner_position).
     """
     q = x - c0
     k = q.shape[0]

@@ -318,7 +318,8 @@ def test_bull_nose_and_ball_against_the_in_process_stock(case, capsys, corner):
     stock = load_staircase(case / "stock.json")
 
     def engine(corner_swept):
-        moves = ProgramMoves(toolpath.cl, np.tile([0.0, 0.0, 1.0], (n, 1)), np.arange(n) > 0, np.full(n, 6.0), np.full(n, 30.0),
+        moves = ProgramMoves(toolpath.cl, np.tile([0.0, 0.0, 1.0], (n, 1)), np.arange(n) > 0, np.full(n, 6.0),
+                             np.full(n, 30.0),
                              np.arange(n) + 2, np.full(n, corner_swept))
         return engage_in_process(stock, tool, toolpath, settings, swept_pieces(moves), np.arange(n))[0].length
 

@@ -102,7 +102,8 @@ def test_ball_and_bull_nose_operations_are_swept_with_their_corner(case):  # noq
 
     text = PROGRAM.format(first=_moves(0.0), second=_moves(-0.5)).replace("CUTTER/12,0,", "CUTTER/12,6,").replace(
         "CUTTER/8,0,", "CUTTER/8,2,")
-    text = text.replace("END\n", "LOADTL/3\nCUTTER/5,0,0,0,118,0,40\nCSI_SET_FLUTE_LENGTH/20\nCYCLE/DRILL,5,2,MMPM,100\n"
+    text = text.replace("END\n", "LOADTL/3\nCUTTER/5,0,0,0,118,0,40\nCSI_SET_FLUTE_LENGTH/20\n"
+                                 "CYCLE/DRILL,5,2,MMPM,100\n"
                                  "GOTO/50,0,10\nCYCLE/OFF\nRAPID\nGOTO/60,0,20\nGOTO/60,0,4\nEND\n")
     (case / "three.cl").write_text(text)
     program = read_program(str(case / "three.cl"))
