@@ -560,11 +560,10 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
 def _validated_sweep(job, prepared, flutes, warn):
     """(in_process_sweep's (SweptPieces, rows) or None, why not or '') for validate: the rule of engage,
     and the stock as given when single flutes of a tool are checked (the helix boolean) or the tool has a
-    corner (the OpenCASCADE reference sweeps flat-end tools only: cad.profile_boolean.CORNER_IN_PROCESS)."""
+    corner (validate_without_corner)."""
     tool = prepared.tool
-    missing = ("--flute (the helix boolean)" if flutes is not None else
-               f"a {tool.kind} mill (corner radius {tool.corner_radius:g} mm): the OpenCASCADE reference sweeps "
-               "flat-end tools only" if tool.corner_radius > 0.0 else None)
+    missing = "--flute (the helix boolean)" if flutes is not None else (
+        CORNER_VALIDATE.format(kind=tool.kind, r=tool.corner_radius) if tool.corner_radius > 0.0 else None)
     if missing is None:
         return in_process_sweep(prepared, warn=warn)
     if job.stock_model == "in-process":
@@ -572,6 +571,21 @@ def _validated_sweep(job, prepared, flutes, warn):
                                             "use initial")
     return None, "" if job.stock_model == "initial" else \
         f"the in-process stock is not available for validate with {missing} yet"
+
+
+#: What validate cannot check against the in-process stock: a tool with a corner (kind, corner radius r).
+CORNER_VALIDATE = ("a {kind} mill (corner radius {r:g} mm): the OpenCASCADE reference sweeps flat-end tools "
+                   "only")
+
+
+def validate_without_corner(tool, sweep, model_note):
+    """(sweep, model_note) for validating `tool`: a tool with a corner is checked against the stock as given
+    (the OpenCASCADE reference has no exact solid for the volume it sweeps: cad.profile_boolean's
+    CORNER_IN_PROCESS), saying so; any other tool keeps in_process_sweep's (sweep, model_note)."""
+    if sweep is None or tool.corner_radius <= 0.0:
+        return sweep, model_note
+    return None, ("the in-process stock is not available for validate with "
+                  f"{CORNER_VALIDATE.format(kind=tool.kind, r=tool.corner_radius)} yet")
 
 
 def _stock_model_text(job, prepared, in_process, model_note):

@@ -326,3 +326,26 @@ def test_bull_nose_and_ball_against_the_in_process_stock(case, capsys, corner):
     want = engine(corner)
     np.testing.assert_allclose(results["length"].reshape(n, P), want, rtol=0, atol=1e-9)
     assert np.abs(engine(0.0) - want).max() > 1e-3
+
+
+def test_validate_takes_a_corner_tool_against_the_stock_as_given():
+    """validate has no OpenCASCADE reference for a corner tool's in-process stock: the stock as given, said in words
+    (the command line's rule and the GUI's), refused when in-process is asked for; flat-end mills keep their sweep."""
+    from types import SimpleNamespace
+
+    from abm_workbench.engine import Tool
+    from abm_workbench.errors import ParameterError
+
+    ball, flat = Tool(8.0, 2, 12.0, corner_radius=4.0), Tool(8.0, 2, 12.0)
+    sweep = (object(), np.arange(3))
+    assert runs.validate_without_corner(flat, sweep, "") == (sweep, "")
+    assert runs.validate_without_corner(ball, None, "why") == (None, "why")
+    note = "the in-process stock is not available for validate with a ball mill (corner radius 4 mm): the " \
+           "OpenCASCADE reference sweeps flat-end tools only yet"
+    assert runs.validate_without_corner(ball, sweep, "") == (None, note)
+    for model, want in ((None, note), ("initial", "")):
+        prepared = SimpleNamespace(tool=ball, job=SimpleNamespace(stock_model=model))
+        assert runs._validated_sweep(prepared.job, prepared, None, None) == (None, want)
+    prepared = SimpleNamespace(tool=ball, job=SimpleNamespace(stock_model="in-process"))
+    with pytest.raises(ParameterError, match="in-process is not available for validate with a ball mill"):
+        runs._validated_sweep(prepared.job, prepared, None, None)
