@@ -16,7 +16,7 @@ engaged length. Lengths in mm, φ in degrees.
 For a flat-end mill the peripheral edge is the side line alone, which cad.boolean already sections:
 :func:`flat_lengths_by_boolean` keeps that reference's arrays bit for bit and adds the end edge's;
 :func:`flat_lengths_in_process` does the same for cad.inprocess_boolean's reference against the in-process
-stock. The in-process stock of a tool with a corner is not available (:data:`CORNER_IN_PROCESS`).
+stock. The in-process stock of a tool with a corner has no reference here (:data:`CORNER_IN_PROCESS`).
 """
 
 import numpy as np
@@ -36,10 +36,10 @@ ON_EDGE_TOL = 1e-6
 LOCAL_MARGIN = 1.0
 #: Why a tool with a corner radius is not checked against the in-process stock.
 CORNER_IN_PROCESS = (
-    "the in-process stock is not available for a tool with a corner radius: the engine computes bull-nose and "
-    "ball-end mills against the stock as given only, and OpenCASCADE has no exact solid for the volume a "
-    "rounded-corner tool sweeps along a move (the hull's side through the torus's silhouette is no analytic "
-    "surface); validate it against the stock as given (--stock-model initial)")
+    "the in-process stock is not available for a tool with a corner radius in validate: OpenCASCADE has no exact "
+    "solid for the volume a rounded-corner tool sweeps along a move (the hull's side through the torus's "
+    "silhouette is no analytic surface), so there is no reference to check the engine's in-process results "
+    "against (engage and schedule compute them); validate it against the stock as given (--stock-model initial)")
 
 
 def _angles(phi_deg):

@@ -1,8 +1,8 @@
 """How much a validation against the stock as given leaves out for a tool with a corner: an estimate of the
 material earlier moves of the program removed from its cutting edges.
 
-Neither the engine nor the OpenCASCADE reference computes the in-process stock for a bull-nose or ball-end
-mill (cad.profile_boolean.CORNER_IN_PROCESS). For a report to say what checking the stock as given misses,
+The OpenCASCADE reference does not compute the in-process stock for a bull-nose or ball-end mill
+(cad.profile_boolean.CORNER_IN_PROCESS; the engine does, but validate checks it against the stock as given). For a report to say what checking the stock as given misses,
 :func:`removed_lengths` estimates, at chosen CL points, how much of each edge's length of cut in the stock as
 given (the exact intervals of cad.profile_boolean.edge_intervals) lies inside the tool at some earlier
 position of the program: every cutting move before the CL point is sampled at tool positions at most

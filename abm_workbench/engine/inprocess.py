@@ -27,6 +27,7 @@ from .engagement import SURFACES
 from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
 from .intervals import EdgeIntervals
+from .inprocess_swept import line_swept_interval
 from .swept import FEASIBLE_EPS, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
 
@@ -93,6 +94,8 @@ class ProgramMoves:
     move from row j − 1 to row j removes material (a rapid does not; row 0 has no move).
     radius, flute_length: (N,) the tool at row j (mm), which makes the move into row j.
     line: (N,) int, the source line of the row (−1 unknown), named in errors and warnings.
+    corner_radius: (N,) the corner radius r of the tool at row j (mm, 0 ≤ r ≤ radius: 0 a flat-end
+    mill, radius a ball-end mill), or None for flat-end mills throughout (zeros).
     """
 
     cl: np.ndarray
@@ -101,6 +104,7 @@ class ProgramMoves:
     radius: np.ndarray
     flute_length: np.ndarray
     line: np.ndarray
+    corner_radius: np.ndarray = None
 
     def __post_init__(self):
         cl = _float_array("cl", self.cl, (None, 3))
@@ -124,6 +128,13 @@ class ProgramMoves:
                 j = int(low[0])
                 raise ValueError(f"row {j} (line {line[j]}): {name} must be positive, got {values[j]}")
             object.__setattr__(self, name, values)
+        corner = np.zeros(n) if self.corner_radius is None else _float_array("corner_radius", self.corner_radius, (n,))
+        wrong = np.flatnonzero((corner < 0.0) | (corner > self.radius))
+        if wrong.size:
+            j = int(wrong[0])
+            raise ValueError(f"row {j} (line {line[j]}): corner_radius must be within [0, radius {self.radius[j]:g}], "
+                             f"got {corner[j]}")
+        object.__setattr__(self, "corner_radius", corner)
         opposite = np.flatnonzero(cutting[1:] & (row_dot(axis[1:], axis[:-1]) < -1.0 + _OPPOSITE_EPS)) + 1
         if opposite.size:
             j = int(opposite[0])
@@ -146,7 +157,7 @@ class ProgramMoves:
             raise ValueError("rotation must be an orthonormal 3×3 matrix")
         translation = _float_array("translation", translation, (3,))
         return ProgramMoves(self.cl @ rotation.T + translation, self.axis @ rotation.T, self.cutting, self.radius,
-                            self.flute_length, self.line)
+                            self.flute_length, self.line, self.corner_radius)
 
 
 @dataclass(frozen=True)
@@ -173,6 +184,10 @@ class SweptPieces:
     over the balls' centres.
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
+    corner, span_corner, chain_corner: (P,), (S,), (C,) the tool's corner radius (mm; None: 0, flat-end
+    mills throughout). The tool solid is then the cylinder of its radius and height with the bottom
+    rim rounded by the corner radius (docs/ENGINE.md, "Tools with a corner in the in-process
+    stock"); it lies inside the cylinder, so every bound made for the cylinder holds for it.
     """
 
     c0: np.ndarray
@@ -208,6 +223,23 @@ class SweptPieces:
     ball_bound: np.ndarray
     tree: object  # scipy.spatial.cKDTree
     tolerance: float
+    corner: np.ndarray = None
+    span_corner: np.ndarray = None
+    chain_corner: np.ndarray = None
+
+    def __post_init__(self):
+        for name, like in (("corner", "radius"), ("span_corner", "span_radius"), ("chain_corner", "chain_radius")):
+            if getattr(self, name) is None:
+                object.__setattr__(self, name, np.zeros(getattr(self, like).shape))
+
+    @property
+    def any_corner(self):
+        """Whether some piece's tool has a corner radius (corner)."""
+        return bool(self.corner.any())
+
+    def corners(self, level, index):
+        """(K,) the corner radius of the tools of the pieces, spans or chains at index (K,)."""
+        return _rows(self.corner if level == "piece" else getattr(self, level + "_corner"), index)
 
     @property
     def any_rigid(self):
@@ -270,7 +302,7 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     j = np.flatnonzero(moves.cutting[1:]) + 1
     w0, w1 = moves.axis[j - 1], moves.axis[j]
     p0, p1 = moves.cl[j - 1], moves.cl[j]
-    radius, height = moves.radius[j], moves.flute_length[j]
+    radius, height, corner = moves.radius[j], moves.flute_length[j], moves.corner_radius[j]
     rho = np.hypot(radius, height)
     turn = np.arccos(np.clip(row_dot(w0, w1), -1.0, 1.0))
     steps = np.ceil(turn * rho / tolerance)
@@ -292,27 +324,30 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     c0, c1, axis = _steps(p0[move], p1[move], w0[move], w1[move], turn[move], span_index[owner] * count[owner] + rank,
                           spans[move] * count[owner])
     first = np.cumsum(count) - count
-    chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner)
+    s_corner = corner[span_of]
+    chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner, s_corner)
     from scipy.spatial import cKDTree  # here: scipy.spatial takes a while to import
 
     tree = cKDTree(chains[-2] if chains[-2].size else np.zeros((0, 3)))
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
                        s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, tree,
-                       tolerance)
+                       tolerance, corner[move], s_corner, s_corner[chains[0]])
 
 
-def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span):
+def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span, corner=None):
     """The chains of the spans (SweptPieces's chain_… and ball_… fields, in order).
 
-    span_move, radius, height (S,), s0, s1, s_axis (S, 3): the spans; c0, c1, axis (P, 3), piece_span
+    span_move, radius, height, corner (S,), s0, s1, s_axis (S, 3): the spans; c0, c1, axis (P, 3), piece_span
     (P,): the pieces and their span. A chain breaks where the moves stop following each other
-    or the tool changes, and after _CHAIN spans or a path as long as the tool's radius. Its
+    or the tool changes (radius, height or corner radius), and after _CHAIN spans or a path as long as the tool's radius. Its
     axis w is the mean of its spans' axes; its slack the largest distance of a piece's ends
     from its path, its lean the largest |w_p − w| of a piece's axis w_p (see _apart).
     """
     n = span_move.size
     step = np.linalg.norm(s1 - s0, axis=1)
-    run = (np.cumsum(np.r_[True, (np.diff(span_move) > 1) | (np.diff(radius) != 0) | (np.diff(height) != 0)]) - 1)[:n]
+    corner = np.zeros(n) if corner is None else corner
+    run = (np.cumsum(np.r_[True, (np.diff(span_move) > 1) | (np.diff(radius) != 0) | (np.diff(height) != 0)
+                           | (np.diff(corner) != 0)]) - 1)[:n]
     run_first = np.flatnonzero(np.r_[True, run[1:] != run[:-1]]) if n else np.zeros(0, dtype=np.intp)
     before = np.cumsum(step) - step
     along = before - before[run_first][run]
@@ -409,6 +444,24 @@ def _inside(x, c0, c1, axis, radius, low, high):
         r_lo = np.where(still, np.where(cc <= 0.0, 0.0, np.inf), np.where(disc >= 0.0, (bb - root) / aa, np.inf))
         r_hi = np.where(still, np.where(cc <= 0.0, 1.0, -np.inf), np.where(disc >= 0.0, (bb + root) / aa, -np.inf))
     return np.maximum(np.maximum(lo, r_lo), 0.0) <= np.minimum(np.minimum(hi, r_hi), 1.0)
+
+
+def _deep_inside(a, b, c0, c1, axis, radius, height, slack, corner):
+    """(K,) bool: both ends a, b (K, 3) of each segment lie at least `slack` inside the volume swept by the
+    tool (c0, c1, axis, radius, height, corner: hulls and their tools' corner radii), so the segment does
+    (the volume is convex). A tool with a corner holds the cylinders of radius R − r over its whole
+    height and of radius R above its corner; both ends must lie in one of them (each convex)."""
+    hull = (c0, c1, axis, radius - slack, slack, height - slack)
+    inside = _inside(a, *hull) & _inside(b, *hull)
+    bent = np.flatnonzero(corner > 0.0)
+    if bent.size:
+        narrow = (c0[bent], c1[bent], axis[bent], radius[bent] - corner[bent] - slack[bent], slack[bent],
+                  height[bent] - slack[bent])
+        upper = (c0[bent], c1[bent], axis[bent], radius[bent] - slack[bent], corner[bent] + slack[bent],
+                 height[bent] - slack[bent])
+        inside[bent] = ((narrow[3] > 0.0) & _inside(a[bent], *narrow) & _inside(b[bent], *narrow)
+                        | (upper[3] > 0.0) & _inside(a[bent], *upper) & _inside(b[bent], *upper))
+    return inside
 
 
 def _unit(x):
@@ -972,8 +1025,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     at = np.flatnonzero(keep)
     c0, c1, axis, radius, h = (_rows(column, at) for column in hulls)
     slack = pieces.span_slack[span]
-    hull = (c0, c1, axis, radius - slack, slack, h - slack)
-    inside = _inside(_rows(a, at), *hull) & _inside(_rows(b, at), *hull)
+    inside = _deep_inside(_rows(a, at), _rows(b, at), c0, c1, axis, radius, h, slack, pieces.corners("span", span))
     out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
     seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
@@ -1047,8 +1099,7 @@ def _solved(seg, piece, envelope, origins, directions, pieces, whole=False):
     found = [_none()]
     for begin in range(0, seg.size, _PAIR_BATCH):
         s, q = seg[begin:begin + _PAIR_BATCH], piece[begin:begin + _PAIR_BATCH]
-        enter, leave = line_hull_interval(_rows(origins, s), _rows(directions, s),
-                                          *pieces.hulls("chain" if whole else "piece", q))
+        enter, leave = _line_interval(_rows(origins, s), _rows(directions, s), pieces, "chain" if whole else "piece", q)
         # Kept when it overlaps the line's first range by more than LENGTH_EPS, not the
         # current one: which removals are kept then does not depend on the order they are
         # found in (docs/ENGINE.md, "Same input, same bits").
@@ -1058,6 +1109,27 @@ def _solved(seg, piece, envelope, origins, directions, pieces, whole=False):
         found.append((s[hit], enter[hit], leave[hit], span))
         _narrow(envelope, *found[-1][:3])
     return tuple(np.concatenate(part) for part in zip(*found))
+
+
+def _line_interval(origin, direction, pieces, level, index):
+    """(enter, leave) (K,) of the lines (origin, direction (K, 3)) in the hulls of pieces or chains `index`
+    (K,) at `level`: swept.line_hull_interval for flat-end tools (closed form), and
+    inprocess_swept.line_swept_interval for tools with a corner."""
+    hulls = pieces.hulls(level, index)
+    if not pieces.any_corner:
+        return line_hull_interval(origin, direction, *hulls)
+    corner = pieces.corners(level, index)
+    bent = corner > 0.0
+    if not bent.any():
+        return line_hull_interval(origin, direction, *hulls)
+    enter, leave = np.full(corner.size, np.nan), np.full(corner.size, np.nan)
+    flat = np.flatnonzero(~bent)
+    if flat.size:
+        enter[flat], leave[flat] = line_hull_interval(origin[flat], direction[flat], *(h[flat] for h in hulls))
+    bent = np.flatnonzero(bent)
+    enter[bent], leave[bent] = line_swept_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
+                                                   corner[bent])
+    return enter, leave
 
 
 def _extent(origin, direction, c0, c1, axis, radius, height):

@@ -13,11 +13,13 @@ import dataclasses
 
 import numpy as np
 
-from .engagement import edge_lines, engage, inside_intervals
+from .engagement import edge_lines, empty_results, engage, finished_engagement, inside_intervals
 from .inprocess import inprocess_intervals, removal_intervals, subtract
+from .inprocess_arc import arc_removal_intervals
 from .interval_engagement import engagement_from_intervals
 from .model import Staircase
-from .profile import end_lengths, profile_engagement
+from .profile import (_chunk_results, as_terraced, corner_top, end_lengths, profile_engagement, profile_intervals,
+                      radial_directions)
 from .terraced import engage_terraced, terraced_intervals
 from .terraced_model import TerracedStock
 
@@ -91,7 +93,13 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
     (the same intervals as in_process_lengths finds). A CL point whose lines lost material
     (changed) takes that result in every per-instant and per-CL field (case "2.5D"); every
     other CL point keeps the stock's Engagement as it is (the staircase's Table 1 cases).
+
+    A tool with a corner radius (bull-nose, ball-end) goes to _corner_in_process: its corner arcs, straight
+    sides and end edges against the in-process stock; its changed CL points keep case "corner", and their
+    end_length is the end edge's in the in-process stock too.
     """
+    if tool.corner_radius > 0.0:
+        return _corner_in_process(stock, tool, toolpath, settings, pieces, program_index)
     initial = engage_stock(stock, tool, toolpath, settings)
     m, p = initial.shape
     program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
@@ -126,10 +134,168 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
 def in_process_lengths(stock, tool, toolpath, phi_deg, pieces, program_index):
     """(m, p) length of cut (mm) against the in-process stock at angles phi_deg (p,) (any, e.g.
     another flute's φ + 360·k/Z) of the m CL points of `toolpath`; pieces and program_index as
-    for engage_in_process. Every edge line's intervals in the stock, less the removals."""
+    for engage_in_process. Every edge line's intervals in the stock, less the removals (for a tool
+    with a corner, its peripheral edges': in_process_runs)."""
     phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    if tool.corner_radius > 0.0:
+        return in_process_runs(stock, tool, toolpath, phi, pieces, program_index).length.reshape(len(toolpath), -1)
     base, direction = edge_lines(toolpath, tool, phi)
     origins, directions = base.reshape(-1, 3), np.repeat(direction, phi.size, axis=0)
     inside = stock_intervals(stock, origins, directions, tool.flute_length)
     remaining, _ = inprocess_intervals(inside, pieces, program_index, origins, directions, phi.size)
     return remaining.length.reshape(len(toolpath), -1)
+
+
+def in_process_runs(stock, tool, toolpath, phi_deg, pieces, program_index):
+    """EdgeIntervals of the m·p peripheral edges (row i·p + k, arc length s in mm, as profile.profile_intervals
+    gives them) of a tool with a corner against the in-process stock at angles phi_deg (p,); pieces and
+    program_index as for engage_in_process: each edge's runs in the stock less what the earlier moves removed
+    from its corner arc and its straight side (the runs forces.pass_forces takes as runs_at)."""
+    if tool.corner_radius <= 0.0:
+        raise ValueError("in_process_runs is for tools with a corner radius; a flat-end tool's edges are lines "
+                         "(in_process_lengths)")
+    phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    edges = _CornerEdges(tool, toolpath, phi)
+    inside = profile_intervals(stock, tool, toolpath, phi)
+    first = np.flatnonzero(np.r_[True, inside.rows[1:] != inside.rows[:-1]]) if inside.rows.size else inside.rows
+    last = np.r_[first[1:], inside.rows.size] - 1
+    rows, enter, leave = edges.removals(pieces, program_index, inside.rows[first], inside.start[first],
+                                        inside.end[last])
+    return subtract(inside, rows, enter, leave)
+
+
+#: Ends of an edge's engaged range are widened by this (mm) where they come back from heights (the range
+#: the search for removals is given must hold all the edge's material).
+_RANGE_SLACK = 1e-9
+
+
+class _CornerEdges:
+    """The cutting edges of a tool with a corner at m CL points × p angles (row i·p + k): the corner arcs
+    (centre, d, w; arc length s = r·ψ), the straight sides (origin, direction w; l = s − r·ψ_max) and the
+    end edges (origin the tip, direction d), as the engine's profile module defines them."""
+
+    def __init__(self, tool, toolpath, phi):
+        self.tool = tool
+        self.p = phi.size
+        self.r, self.big, self.length = tool.corner_radius, tool.radius, tool.flute_length
+        self.corner_length = self.r * corner_top(tool)
+        d = radial_directions(toolpath, phi)
+        self.d = d.reshape(-1, 3)
+        self.w = np.repeat(toolpath.axes, self.p, axis=0)
+        self.tip = np.repeat(toolpath.cl, self.p, axis=0)
+        self.centre = self.tip + (self.big - self.r) * self.d + self.r * self.w
+        self.side = self.tip + self.big * self.d + self.r * self.w
+
+    def removals(self, pieces, program_index, line, lo, hi):
+        """(rows, enter, leave) in arc length s of the peripheral edges `line` (ascending) whose material lies
+        within lo … hi (s, mm): the corner arcs' (inprocess_arc) and the straight sides' (inprocess), joined."""
+        corner = self.corner_length
+        parts = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
+        on_arc = lo < corner
+        if on_arc.any():
+            parts.append(arc_removal_intervals(pieces, program_index, line[on_arc], lo[on_arc],
+                                               np.minimum(hi[on_arc], corner), self.centre, self.d, self.w, self.r,
+                                               corner_top(self.tool), self.p))
+        on_side = (hi > corner) & (self.length > self.r)
+        if on_side.any():
+            rows, enter, leave = removal_intervals(pieces, program_index, line[on_side],
+                                                   np.maximum(lo[on_side] - corner, 0.0), hi[on_side] - corner,
+                                                   self.side, self.w, self.p)
+            parts.append((rows, enter + corner, leave + corner))
+        rows, enter, leave = (np.concatenate(part) for part in zip(*parts))
+        order = np.argsort(rows, kind="stable")
+        return rows[order], enter[order], leave[order]
+
+    def end_lines(self):
+        """(origins, directions, length) of the end edges, or None for a ball (no end edge)."""
+        reach = self.big - self.r
+        return (self.tip, self.d, reach) if reach > 0.0 else None
+
+    def s_of_height(self, height):
+        """Arc length s (mm) of the peripheral edge's points at `height` above the tip (the inverse of
+        profile.height_at)."""
+        r = self.r
+        with np.errstate(invalid="ignore"):
+            on_corner = r * np.arccos(np.clip(1.0 - height / r, -1.0, 1.0))
+        return np.where(height < r, on_corner, self.corner_length + (height - r))
+
+
+def _corner_in_process(stock, tool, toolpath, settings, pieces, program_index):
+    """engage_in_process for a tool with a corner: (Engagement, initial length (m, p), changed (m,)).
+
+    The stock's Engagement (profile.profile_engagement) first; each instant's engaged range of the
+    peripheral edge (from its LEP and UEP heights) bounds the search for removals on the corner arc and on
+    the straight side, the end edge's intervals in the stock bound it on the end edge. The CL points with a
+    removal get their edges' intervals in the stock less the removals; those that lost length on any edge
+    (changed) take that result in every per-instant and per-CL field, case "corner", with the end edge's
+    in-process length; the others keep the stock's Engagement."""
+    initial = engage_stock(stock, tool, toolpath, settings)
+    m, p = initial.shape
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    if program_index.shape != (m,):
+        raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
+    phi = settings.phi
+    edges = _CornerEdges(tool, toolpath, phi)
+    line = np.flatnonzero(initial.engaged.reshape(-1))
+    total = edges.corner_length + max(tool.flute_length - tool.corner_radius, 0.0)
+    lo = np.maximum(edges.s_of_height(initial.lep_l.reshape(-1)[line]) - _RANGE_SLACK, 0.0)
+    hi = np.minimum(edges.s_of_height(initial.uep_l.reshape(-1)[line]) + _RANGE_SLACK, total)
+    rows, enter, leave = edges.removals(pieces, program_index, line, lo, hi)
+    found = [rows]
+    end = edges.end_lines()
+    if end is not None:
+        end_inside = stock_intervals(stock, *end)
+        first = np.flatnonzero(np.r_[True, end_inside.rows[1:] != end_inside.rows[:-1]]) if end_inside.rows.size \
+            else end_inside.rows
+        last = np.r_[first[1:], end_inside.rows.size] - 1
+        end_rows, end_enter, end_leave = removal_intervals(pieces, program_index, end_inside.rows[first],
+                                                           end_inside.start[first], end_inside.end[last], end[0],
+                                                           end[1], p)
+        found.append(end_rows)
+    changed = np.zeros(m, dtype=bool)
+    touched = np.unique(np.concatenate(found) // p)
+    if touched.size == 0:
+        return initial, initial.length, changed
+    part = toolpath.rows(touched)
+    local = np.searchsorted(touched, rows // p) * p + rows % p
+    inside = profile_intervals(stock, tool, part, phi, as_terraced(stock))
+    remaining = subtract(inside, local, enter, leave)
+    lost = remaining.length != inside.length
+    end_length = None
+    if end is not None:
+        keep = np.isin(end_inside.rows // p, touched)
+        from .intervals import EdgeIntervals
+        end_part = EdgeIntervals(touched.size * p, np.searchsorted(touched, end_inside.rows[keep] // p) * p
+                                 + end_inside.rows[keep] % p, *(getattr(end_inside, name)[keep] for name in (
+                                     "start", "end", "start_surface", "start_section", "start_wall", "end_surface",
+                                     "end_section", "end_wall")))
+        end_local = np.searchsorted(touched, end_rows // p) * p + end_rows % p
+        end_remaining = subtract(end_part, end_local, end_enter, end_leave)
+        lost |= end_remaining.length != end_part.length
+        end_length = end_remaining.length.reshape(-1, p)
+    lost = lost.reshape(-1, p).any(axis=1)
+    if not lost.any():
+        return initial, initial.length, changed
+    changed[touched[lost]] = True
+    in_process = _profile_engagement(remaining, part, tool, settings, end_length)
+    per_cl = {field.name: getattr(initial, field.name).copy() for field in dataclasses.fields(initial)
+              if field.name not in ("phi", "h")}
+    for name, values in per_cl.items():
+        values[touched[lost]] = getattr(in_process, name)[lost]
+    return dataclasses.replace(initial, **per_cl), initial.length, changed
+
+
+def _profile_engagement(intervals, toolpath, tool, settings, end_length):
+    """The Engagement of a tool with a corner from its peripheral edges' intervals (in arc length s, rows
+    i·p + k), as profile.profile_engagement builds it; end_length (m, p) mm or None (zeros: a ball)."""
+    phi = settings.phi
+    m, p = len(toolpath), phi.size
+    chunk = _chunk_results(intervals, toolpath, tool, phi)
+    out, _, _ = empty_results(m, p)
+    out = {name: chunk[name] for name in out}
+    engagement = finished_engagement(phi, settings, out, chunk["lep_xyz"], chunk["uep_xyz"],
+                                     toolpath.inclinations(settings), axial=chunk["axial"],
+                                     end_length=np.zeros((m, p)) if end_length is None else end_length)
+    return dataclasses.replace(engagement, **{name: chunk[name] for name in ("lep_surface", "lep_section",
+                                                                            "lep_wall")})

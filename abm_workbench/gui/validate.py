@@ -62,7 +62,7 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
     InputError with the command line's message for bad input.
     """
     from ..features.engagement import force_model_of
-    from ..jobs.run import pass_forces_of, validation as checked_validation
+    from ..jobs.run import pass_forces_of, validate_without_corner, validation as checked_validation
     from ..report.html import ReportJob, write_report
     from ..report.staging import staged
     from ..validation import NoEngagementError
@@ -78,7 +78,8 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
         raise InputError("CL points: choose at least one")
     index = np.array(chosen)
     pass_ = toolpath.rows(index)
-    sweep, model_note = obj.Proxy.stock_model(obj, toolpath, hints, parameters, tool, settings, model)
+    sweep, model_note = validate_without_corner(tool, *obj.Proxy.stock_model(obj, toolpath, hints, parameters,
+                                                                            tool, settings, model))
     if sweep is not None:
         sweep = (sweep[0], np.asarray(sweep[1])[index])
     try:

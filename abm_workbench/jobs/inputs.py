@@ -349,6 +349,23 @@ def load_job(path):
     return job
 
 
+def _swept_corner(operation, chosen, tool, radius):
+    """The corner radius (mm) an operation's tool is swept with in the in-process stock: the chosen
+    operation's resolved `tool`'s; a ball or bull-nose mill's from the file (a ball's radius where it gives
+    none), at most `radius`; 0 for a flat-end mill or a tool of unknown kind; None for any other kind (swept
+    as a flat-end cylinder, which the notes say)."""
+    if operation is chosen:
+        return min(tool.corner_radius, radius)
+    spec = operation.tool
+    if spec.kind in ("flat", "unknown"):
+        return 0.0
+    if spec.kind == "ball":
+        return radius if spec.corner_radius is None else min(spec.corner_radius, radius)
+    if spec.kind == "bull-nose" and spec.corner_radius is not None:
+        return min(spec.corner_radius, radius)
+    return None
+
+
 def program_moves(program, chosen, tool):
     """(ProgramMoves of every CL point of `program` in program order, in part coordinates; (m,) the rows
     of the cutting CL points of operation `chosen`; notes: what the in-process stock leaves out or
@@ -361,8 +378,10 @@ def program_moves(program, chosen, tool):
     file gives a diameter but no flute length removes material with its whole length: the tool's
     length where the file gives it, else the extent of the program (the diagonal of the box of all
     its moves, which reaches through any stock the program comes near); one with no diameter, a
-    turning operation and canned-cycle hole positions are not swept; the notes say so. Every tool is
-    swept as a flat-end cylinder of its diameter and that length.
+    turning operation and canned-cycle hole positions are not swept; the notes say so. A ball or
+    bull-nose mill is swept with its corner radius (the chosen operation's: `tool`'s), every other tool
+    as a flat-end cylinder of its diameter and that length (a tapered mill, a saw or a drill among
+    them, the notes say so).
     """
     from ..engine.inprocess import ProgramMoves
 
@@ -390,6 +409,10 @@ def program_moves(program, chosen, tool):
             whence = "the tool's length in the file" if operation.tool.length else "the program's extent"
             notes.append(f"{what}: the file gives no flute length: in the in-process stock it removes material with "
                          f"its whole length, {length:.4g} mm ({whence})")
+        corner = _swept_corner(operation, chosen, tool, 0.5 * diameter)
+        if corner is None:
+            corner = 0.0
+            notes.append(f"{what}: swept as a flat-end cylinder of its diameter in the in-process stock")
         rotation, translation = operation.to_part
         rapids = operation.rapids
         points = np.concatenate([operation.points_file, rapids.points]) @ rotation.T + translation
@@ -400,7 +423,7 @@ def program_moves(program, chosen, tool):
         cutting = cut.copy()
         cutting[0] = False
         parts.append((points[order], axes[order], cutting, np.full(lines.size, 0.5 * diameter),
-                      np.full(lines.size, length), lines[order]))
+                      np.full(lines.size, length), lines[order], np.full(lines.size, corner)))
         if operation is chosen:
             rows = start + np.flatnonzero(cut)
         start += lines.size

@@ -19,7 +19,7 @@ from typing import Optional
 import numpy as np
 
 from ..engine import Staircase, flute_engagement, zmap_engage
-from ..engine.stocks import engage_in_process, engage_stock, in_process_lengths
+from ..engine.stocks import engage_in_process, engage_stock, in_process_lengths, in_process_runs
 from ..errors import InputError, ParameterError
 from ..formats import check_output_path, replacing, results_npz
 from ..formats.results_columns import chunk_columns
@@ -72,8 +72,9 @@ def in_process_sweep(prepared, method="abm", warn=None):
     """((SweptPieces of the prepared job's whole program in its engine frame, (m,) program rows of its CL
     points) for a run against the in-process stock, or None for the stock as given; why not, or '').
 
-    The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM,
-    with or without the straight-flute forces), else the stock as given, the reason said. What the
+    The job's stock_model decides; by default in-process where the engine has it (the straight-edge ABM of
+    flat-end, bull-nose and ball-end mills, with or without the straight-flute forces), else the stock as
+    given, the reason said. What the
     in-process stock leaves out or takes otherwise (inputs.program_moves' notes) is told to warn(),
     with how arcs and curves are swept. ParameterError when in-process is asked for where it is not
     available, or the stock model is unknown.
@@ -86,8 +87,7 @@ def in_process_sweep(prepared, method="abm", warn=None):
         raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
     if job.stock_model == "initial":
         return None, ""
-    missing = ("a helical tool" if tool.helix else "the Z-map method" if method != "abm" else
-               f"a {tool.kind} mill (corner radius {tool.corner_radius:g} mm)" if tool.corner_radius else None)
+    missing = "a helical tool" if tool.helix else "the Z-map method" if method != "abm" else None
     if missing is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
@@ -121,15 +121,20 @@ def check_model(stock, method="abm", helix=0.0):
 def pass_forces_of(staircase, tool, toolpath, settings, model, engagement, feed=None, in_process=None):
     """The Forces of a pass under force model (Coefficients, immersion (start, end) deg), reusing flute 1's
     straight-edge lengths of `engagement`; feed: (m,) feed per tooth (mm) per CL point, or None.
-    in_process: (SweptPieces, (m,) program rows of the CL points) to take every flute's lengths against
-    the in-process stock (straight flutes), or None for the stock as given."""
+    in_process: (SweptPieces, (m,) program rows of the CL points) to take every flute's lengths (a tool
+    with a corner: its runs along the peripheral edge) against the in-process stock (straight flutes),
+    or None for the stock as given."""
     coefficients, immersion = model
-    lengths_at = None
-    if in_process is not None:
+    lengths_at = runs_at = None
+    if in_process is not None and tool.corner_radius > 0.0:
+        def runs_at(phi):
+            return in_process_runs(staircase, tool, toolpath, phi, *in_process)
+    elif in_process is not None:
         def lengths_at(shifted):
             return in_process_lengths(staircase, tool, toolpath, shifted.phi, *in_process)
     return pass_forces(staircase, tool, toolpath, settings, coefficients, immersion=immersion, feed=feed,
-                       first=engagement.length if tool.helix == 0.0 else None, lengths_at=lengths_at)
+                       first=engagement.length if tool.helix == 0.0 else None, lengths_at=lengths_at,
+                       runs_at=runs_at)
 
 
 def _in_process_forces(staircase, tool, toolpath, settings, model, in_process, feed):
@@ -554,13 +559,33 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
 
 def _validated_sweep(job, prepared, flutes, warn):
     """(in_process_sweep's (SweptPieces, rows) or None, why not or '') for validate: the rule of engage,
-    and the stock as given when single flutes of a tool are checked (the helix boolean)."""
-    if flutes is None:
+    and the stock as given when single flutes of a tool are checked (the helix boolean) or the tool has a
+    corner (validate_without_corner)."""
+    tool = prepared.tool
+    missing = "--flute (the helix boolean)" if flutes is not None else (
+        CORNER_VALIDATE.format(kind=tool.kind, r=tool.corner_radius) if tool.corner_radius > 0.0 else None)
+    if missing is None:
         return in_process_sweep(prepared, warn=warn)
     if job.stock_model == "in-process":
-        raise ParameterError("stock_model", "in-process is not available with --flute (the helix boolean) yet: "
+        raise ParameterError("stock_model", f"in-process is not available for validate with {missing} yet: "
                                             "use initial")
-    return None, "" if job.stock_model == "initial" else "the in-process stock is not available with --flute yet"
+    return None, "" if job.stock_model == "initial" else \
+        f"the in-process stock is not available for validate with {missing} yet"
+
+
+#: What validate cannot check against the in-process stock: a tool with a corner (kind, corner radius r).
+CORNER_VALIDATE = ("a {kind} mill (corner radius {r:g} mm): the OpenCASCADE reference sweeps flat-end tools "
+                   "only")
+
+
+def validate_without_corner(tool, sweep, model_note):
+    """(sweep, model_note) for validating `tool`: a tool with a corner is checked against the stock as given
+    (the OpenCASCADE reference has no exact solid for the volume it sweeps: cad.profile_boolean's
+    CORNER_IN_PROCESS), saying so; any other tool keeps in_process_sweep's (sweep, model_note)."""
+    if sweep is None or tool.corner_radius <= 0.0:
+        return sweep, model_note
+    return None, ("the in-process stock is not available for validate with "
+                  f"{CORNER_VALIDATE.format(kind=tool.kind, r=tool.corner_radius)} yet")
 
 
 def _stock_model_text(job, prepared, in_process, model_note):

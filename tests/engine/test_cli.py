@@ -289,3 +289,64 @@ def test_progress_lines_and_bar(monkeypatch):
     progress(4, 4)
     assert stream.getvalue() == (f"\rabm: boolean [{'#' * 8}{'.' * 22}] 1/4 CL points, 2.0 s elapsed, ETA 6 s"
                                  f"\rabm: boolean [{'#' * 30}] 4/4 CL points, 8.0 s elapsed, ETA 0 s\n")
+
+
+@pytest.mark.parametrize("corner", [3.0, 6.0])
+def test_bull_nose_and_ball_against_the_in_process_stock(case, capsys, corner):
+    """A bull-nose (R3) and a ball-end (R6) mill run against the in-process stock, with no fallback: the results are
+    engine.stocks.engage_in_process's against the program swept with the tool's corner radius (not a flat-end
+    cylinder's, which removes more), and some CL points of the second pass lost material to the first."""
+    from abm_workbench.engine import CutSettings, Tool
+    from abm_workbench.engine.inprocess import ProgramMoves, swept_pieces
+    from abm_workbench.engine.stocks import engage_in_process
+    from abm_workbench.formats.staircase_json import load_staircase
+    from abm_workbench.formats.toolpath_csv import load_toolpath
+
+    x = np.linspace(10, 120, M)
+    cl = np.concatenate([np.stack([x, np.full(M, -4.0), x / 60 - 1.5], 1),
+                         np.stack([x[::-1], np.full(M, 4.0), x[::-1] / 60 - 1.0], 1)])
+    (case / "toolpath.csv").write_text("x,y,z,theta_a,theta_b\n" + "".join(f"{a:.6f},{b:.6f},{c:.6f},0,0\n"
+                                                                        for a, b, c in cl))
+    status, out, err = run(BASE + ["--corner-radius", f"{corner:g}"], capsys)
+    assert (status, err) == (0, "")
+    changed = int(out.splitlines()[1].split("in-process stock (")[1].split(" of ")[0])
+    assert 0 < changed <= M and out.splitlines()[1].endswith(f"of {2 * M} CL points changed by earlier moves)")
+    results = read_results(case / "R.csv")
+    n = len(cl)
+    tool = Tool(12.0, 2, 30.0, corner_radius=corner)
+    toolpath = load_toolpath(case / "toolpath.csv")  # its frames turned to the feed, as the job takes them
+    settings = CutSettings(0.1, inclination=10.0, phi_start=0.0, phi_end=180.0, phi_step=5.0)
+    stock = load_staircase(case / "stock.json")
+
+    def engine(corner_swept):
+        moves = ProgramMoves(toolpath.cl, np.tile([0.0, 0.0, 1.0], (n, 1)), np.arange(n) > 0, np.full(n, 6.0),
+                             np.full(n, 30.0),
+                             np.arange(n) + 2, np.full(n, corner_swept))
+        return engage_in_process(stock, tool, toolpath, settings, swept_pieces(moves), np.arange(n))[0].length
+
+    want = engine(corner)
+    np.testing.assert_allclose(results["length"].reshape(n, P), want, rtol=0, atol=1e-9)
+    assert np.abs(engine(0.0) - want).max() > 1e-3
+
+
+def test_validate_takes_a_corner_tool_against_the_stock_as_given():
+    """validate has no OpenCASCADE reference for a corner tool's in-process stock: the stock as given, said in words
+    (the command line's rule and the GUI's), refused when in-process is asked for; flat-end mills keep their sweep."""
+    from types import SimpleNamespace
+
+    from abm_workbench.engine import Tool
+    from abm_workbench.errors import ParameterError
+
+    ball, flat = Tool(8.0, 2, 12.0, corner_radius=4.0), Tool(8.0, 2, 12.0)
+    sweep = (object(), np.arange(3))
+    assert runs.validate_without_corner(flat, sweep, "") == (sweep, "")
+    assert runs.validate_without_corner(ball, None, "why") == (None, "why")
+    note = "the in-process stock is not available for validate with a ball mill (corner radius 4 mm): the " \
+           "OpenCASCADE reference sweeps flat-end tools only yet"
+    assert runs.validate_without_corner(ball, sweep, "") == (None, note)
+    for model, want in ((None, note), ("initial", "")):
+        prepared = SimpleNamespace(tool=ball, job=SimpleNamespace(stock_model=model))
+        assert runs._validated_sweep(prepared.job, prepared, None, None) == (None, want)
+    prepared = SimpleNamespace(tool=ball, job=SimpleNamespace(stock_model="in-process"))
+    with pytest.raises(ParameterError, match="in-process is not available for validate with a ball mill"):
+        runs._validated_sweep(prepared.job, prepared, None, None)

@@ -91,3 +91,29 @@ def test_an_operation_whose_material_is_gone_says_so(case, capsys):  # noqa: F81
         "would meet (--stock-model initial computes it against the stock as given)")
     status, _, err = run(BASE + ["--operation", "2", "--stock-model", "initial"], capsys)
     assert status == 0, err
+
+
+def test_ball_and_bull_nose_operations_are_swept_with_their_corner(case):  # noqa: F811 (the fixture imported above)
+    """inputs.program_moves: a ball (CUTTER/12,6) and a bull-nose (CUTTER/8,2) operation are swept with their corner
+    radii, the chosen one with the job's tool's; a drill among them as a flat-end cylinder, which the notes say."""
+    from abm_workbench.engine import Tool
+    from abm_workbench.formats.cl import read_program
+    from abm_workbench.jobs.inputs import program_moves
+
+    text = PROGRAM.format(first=_moves(0.0), second=_moves(-0.5)).replace("CUTTER/12,0,", "CUTTER/12,6,").replace(
+        "CUTTER/8,0,", "CUTTER/8,2,")
+    text = text.replace("END\n", "LOADTL/3\nCUTTER/5,0,0,0,118,0,40\nCSI_SET_FLUTE_LENGTH/20\n"
+                                 "CYCLE/DRILL,5,2,MMPM,100\n"
+                                 "GOTO/50,0,10\nCYCLE/OFF\nRAPID\nGOTO/60,0,20\nGOTO/60,0,4\nEND\n")
+    (case / "three.cl").write_text(text)
+    program = read_program(str(case / "three.cl"))
+    assert [op.tool.kind for op in program.operations] == ["ball", "bull-nose", "drill"]
+    first, second, third = program.operations
+    moves, rows, notes = program_moves(program, second, Tool(8.0, 2, 20.0, corner_radius=1.5))
+    by_line = dict(zip(moves.line.tolist(), moves.corner_radius.tolist()))
+    assert {by_line[line] for line in first.lines.tolist()} == {6.0}
+    assert {by_line[line] for line in second.lines.tolist()} == {1.5}  # the job's tool, not the file's 2
+    assert len(third.lines) and {by_line[line] for line in third.lines.tolist()} == {0.0}
+    assert [note for note in notes if "swept as a flat-end cylinder" in note] == [
+        f"{third.label()} ({third.tool.describe()}): swept as a flat-end cylinder of its diameter in the in-process "
+        "stock"]
