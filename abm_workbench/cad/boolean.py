@@ -12,6 +12,7 @@ import numpy as np
 
 from ..engine import Tool, Toolpath, edge_lines
 from .freecad_env import FreeCAD, Part
+from .profile_edges import cutter_solid
 
 #: A result edge must lie within this distance (mm) of the segment it is mapped to.
 ON_LINE_TOL = 1e-6
@@ -113,8 +114,6 @@ def cutter_intersection(shape, tool: Tool, toolpath: Toolpath, i):
     corner turned about the axis (cad.profile_edges.tool_solid).
     """
     if tool.corner_radius > 0.0:
-        from .profile_boolean import cutter_solid
-
         return shape.common(cutter_solid(tool, toolpath, i))
     _, direction = edge_lines(toolpath, tool, [0.0])
     cylinder = Part.makeCylinder(

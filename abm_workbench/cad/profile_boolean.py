@@ -381,10 +381,3 @@ def _segment_sections(shape, tip, directions, stretches):
         found[j].append((float(positions[0]), float(positions[1])))
     return found
 
-
-def cutter_solid(tool: Tool, toolpath: Toolpath, i):
-    """Part.Solid of the tool's cutting part at CL point i of `toolpath` (profile_edges.tool_solid)."""
-    from .profile_edges import tool_solid
-
-    return tool_solid(tool, toolpath.cl[i], tool_frames(toolpath)[i])
-

@@ -208,3 +208,8 @@ def tool_solid(tool: Tool, tip, frame):
     solid = Part.Solid(solid) if solid.ShapeType != "Solid" else solid
     solid.Placement = FreeCAD.Placement(FreeCAD.Matrix(*np.column_stack([frame, tip]).ravel(), 0.0, 0.0, 0.0, 1.0))
     return solid
+
+
+def cutter_solid(tool: Tool, toolpath: Toolpath, i):
+    """Part.Solid of the tool's cutting part at CL point i of `toolpath` (:func:`tool_solid` in its frame)."""
+    return tool_solid(tool, toolpath.cl[i], tool_frames(toolpath)[i])
