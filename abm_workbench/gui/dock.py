@@ -415,6 +415,15 @@ def forget(doc):
         dock.refresh()
 
 
+def forget_gone():
+    """Empty the dock if the engagement it shows was deleted (or taken back by undo)."""
+    dock = find() if FreeCAD.GuiUp else None
+    if dock is not None and dock.obj is not None and not _alive(dock.obj):
+        dock.obj = None
+        dock.refresh()
+
+
 state.listen("show", show)
+state.listen("gone", forget_gone)
 state.listen("refresh", refresh)
 state.listen("forget", forget)
