@@ -255,7 +255,7 @@ def toolpath_needs(path, tool_table=""):
 
         options = ReadOptions(tool_table=tool_table)
     try:
-        worker.work(load_path, path, None, options=options, text="Reading the toolpath…")
+        worker.work(load_path, path, None, options=options, text=noop("Reading the toolpath…"))
     except OperationChoiceError as error:
         if any(operation.refusal() is None for operation in error.operations):
             return "operation", error.operations

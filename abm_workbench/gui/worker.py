@@ -32,6 +32,7 @@ import time
 from PySide import QtCore, QtGui
 
 from ..errors import InputError
+from .i18n import noop
 
 #: Milliseconds a wait stays silent (wait cursor, user input held back) before the progress dialog shows.
 SILENT_MS = 400
@@ -40,7 +41,7 @@ POLL_MS = 50
 #: Milliseconds a cancelled call is waited for (the GUI drawn) before it is left to end in the background.
 GRACE_MS = 3000
 #: The engine's words (the default of :func:`work`).
-ENGINE_TEXT = "Computing the engagement…"
+ENGINE_TEXT = noop("Computing the engagement…")
 CANCELLED = "recompute cancelled: nothing computed"
 #: Worker threads given up by Cancel that still run (kept alive until they end).
 _ABANDONED = set()
@@ -57,9 +58,9 @@ def install():
 
     engagement.engine_call = run
     stock.recognise_call = lambda function, *args, **keywords: work(
-        function, *args, text="Reading and recognising the stock…", **keywords)
+        function, *args, text=noop("Reading and recognising the stock…"), **keywords)
     inprocess_stock.boolean_call = lambda function, *args: work(
-        function, *args, text="Computing the in-process stock (OpenCASCADE booleans)…")
+        function, *args, text=noop("Computing the in-process stock (OpenCASCADE booleans)…"))
 
 
 def run(function, *args):
