@@ -107,12 +107,7 @@ class EngagementDock(QtGui.QDockWidget):
         self.tabs.addTab(self.canvas, translate("Engagement"))
         self.tabs.addTab(self.force_canvas, translate("Forces"))
         layout.addWidget(self.tabs, 1)
-        scroll = QtGui.QScrollArea()  # on a screen too small even for that, scrolled rather than clipped
-        scroll.setObjectName("ABM_DockScroll")
-        scroll.setWidgetResizable(True)
-        scroll.setFrameShape(QtGui.QFrame.NoFrame)
-        scroll.setWidget(body)
-        self.setWidget(scroll)
+        self.setWidget(body)
         self.chosen = None  # the CL point whose plots are due
         self.plots_due = QtCore.QTimer(self)  # plots drawn once the events queued are handled
         self.plots_due.setSingleShot(True)

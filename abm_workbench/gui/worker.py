@@ -7,7 +7,8 @@ the GUI thread waits in an event loop of its own and stays drawn:
 - the engagement's engine calls (``features.engagement.engine_call``: flute 1's engagement, the
   in-process engine and the forces);
 - reading and recognising a stock (``features.stock.recognise_call``);
-- the in-process stock's OpenCASCADE booleans (``features.inprocess_stock.boolean_call``);
+- not yet the in-process stock's OpenCASCADE booleans (``features.inprocess_stock.boolean_call`` is
+  their hook, but in a worker thread they crashed FreeCAD: they run on the GUI thread, as before);
 - validation (``gui.validate``: the engine and the boolean reference, the report written);
 - reading a toolpath file to ask which operation to compute (``gui.commands``).
 
@@ -59,8 +60,9 @@ def install():
     engagement.engine_call = run
     stock.recognise_call = lambda function, *args, **keywords: work(
         function, *args, text=noop("Reading and recognising the stock…"), **keywords)
-    inprocess_stock.boolean_call = lambda function, *args: work(
-        function, *args, text=noop("Computing the in-process stock (OpenCASCADE booleans)…"))
+    # The in-process stock's booleans stay on the GUI thread: in a worker thread they crashed FreeCAD (the
+    # GUI test of the dock and the in-process stock); inprocess_stock.boolean_call is the place for it.
+    del inprocess_stock
 
 
 def run(function, *args):
