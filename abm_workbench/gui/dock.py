@@ -205,7 +205,7 @@ class EngagementDock(QtGui.QDockWidget):
         axes, new = _reused_axes(self.figure, PLOTS)
         phi = result.phi
         for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h[cl]),
-                                     ("length of cut (mm)", "cut area (mm²)", "h (mm)")):
+                                     ("length of\ncut (mm)", "cut area\n(mm²)", "h (mm)")):  # two lines: short axes
             ax.plot(phi, np.where(result.engaged[cl], values, np.nan), color="0.6", linewidth=1.0)
             for index, segment in enumerate(result.segments(cl)):
                 rows = result.segment[cl] == index
@@ -231,7 +231,7 @@ class EngagementDock(QtGui.QDockWidget):
                 axes[3].plot([cl], [values[cl]], "o", color="red")
         axes[3].relim()
         axes[3].autoscale_view()
-        axes[3].set(xlabel="CL point")
+        axes[3].set_xlabel("CL point", fontsize="small")
         axes[3].set_ylabel("mm", fontsize="small")
         axes[3].set_title("Pass progression", fontsize="small")
         axes[3].legend(fontsize="x-small")
@@ -296,6 +296,9 @@ def _reused_axes(figure, count):
         for ax in axes:
             ax.grid(True, alpha=0.3)
             ax.tick_params(labelsize="x-small")
+        for ax in axes[:2]:  # the plots over φ share its axis, its numbers under the lowest only: room for the curves
+            ax.sharex(axes[2])
+            ax.tick_params(labelbottom=False)
         return list(axes), True
     for ax in figure.axes:
         for artist in [*ax.lines, *([ax.get_legend()] if ax.get_legend() else [])]:
