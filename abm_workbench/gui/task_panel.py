@@ -197,7 +197,9 @@ class EngagementPanel:
             widget.setToolTip(_tip(obj, name))
             self.names.append(name)
             row, column = 2 * (index // 3), index % 3
-            grid.addWidget(QtGui.QLabel(label), row, column)
+            words = QtGui.QLabel(label)
+            words.setWordWrap(True)  # its unit under its name when the combo view is narrow
+            grid.addWidget(words, row, column)
             grid.addWidget(widget, row + 1, column)
         box.rows.addRow(grid)
         for name, label, unit, step in FORCE_FIELDS[6:]:
@@ -487,7 +489,11 @@ def _tip(obj, name):
 
 class Section(QtGui.QWidget):
     """A titled part of the panel that folds: a header button (an arrow and the title) over its rows
-    (``rows``, a QFormLayout; ``grid`` puts fields side by side, each label above its field)."""
+    (``rows``, a QFormLayout; ``grid`` puts fields side by side, each label above its field).
+
+    The header is the arrow button (``header``, its text the title, not drawn) beside the title as a label
+    that wraps and folds the section when clicked too: a long title never makes the panel wider than the
+    combo view (a button's text cannot wrap, and the narrow combo view then clips the fields' right edge)."""
 
     def __init__(self, name, title, parent):
         super().__init__(parent)
@@ -498,14 +504,21 @@ class Section(QtGui.QWidget):
         self.header = QtGui.QToolButton()
         self.header.setObjectName(f"ABM_SectionHeader_{name}")
         self.header.setText(title)
-        self.header.setToolButtonStyle(QtCore.Qt.ToolButtonTextBesideIcon)
+        self.header.setToolTip(title)
+        self.header.setToolButtonStyle(QtCore.Qt.ToolButtonIconOnly)
         self.header.setAutoRaise(True)
         self.header.setCheckable(True)
         self.header.setChecked(True)
-        self.header.setStyleSheet("QToolButton {{ font-weight: bold; border: none; }}".format())
-        self.header.setSizePolicy(QtGui.QSizePolicy.Expanding, QtGui.QSizePolicy.Fixed)
+        self.header.setStyleSheet("QToolButton { border: none; }")
         self.header.toggled.connect(self._toggled)
-        layout.addWidget(self.header)
+        self.title = _Title(f"<b>{title}</b>", self.header)
+        self.title.setObjectName(f"ABM_SectionTitle_{name}")
+        row = QtGui.QHBoxLayout()
+        row.setContentsMargins(0, 0, 0, 0)
+        row.setSpacing(2)
+        row.addWidget(self.header)
+        row.addWidget(self.title, 1)
+        layout.addLayout(row)
         self.body = QtGui.QWidget()
         self.rows = QtGui.QFormLayout(self.body)
         self.rows.setContentsMargins(12, 0, 0, 4)
@@ -537,6 +550,21 @@ class Section(QtGui.QWidget):
     def _toggled(self, shown):
         self.header.setArrowType(QtCore.Qt.DownArrow if shown else QtCore.Qt.RightArrow)
         self.body.setVisible(shown)
+
+
+class _Title(QtGui.QLabel):
+    """A section's title: wraps, and a click on it folds or unfolds the section as its arrow `button` does."""
+
+    def __init__(self, text, button):
+        super().__init__(text)
+        self.button = button
+        self.setWordWrap(True)
+        self.setSizePolicy(QtGui.QSizePolicy.Expanding, QtGui.QSizePolicy.Preferred)
+
+    def mousePressEvent(self, event):  # noqa: N802 (Qt's name)
+        if event.button() == QtCore.Qt.LeftButton:
+            self.button.toggle()
+        event.accept()
 
 
 class Combo(QtGui.QComboBox):
