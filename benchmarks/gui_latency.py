@@ -4,8 +4,10 @@ dock's CL point moved by one (a key press on its slider) until the 3D view shows
 highlight, and until the dock's plots are drawn too.
 
 Then the GUI's longest stall (the longest gap between two ticks of a 10 ms timer of the GUI thread)
-while long work runs in a worker thread: the in-process stock at a CL point (its OpenCASCADE
-booleans, "Show in-process stock"), a validation of two CL points, and a recompute with forces;
+while long work runs: a recompute with forces (measured before the in-process stock exists: a
+recompute of the engagement recomputes that too), a validation of two CL points (and, apart, the
+seconds of its half on the GUI thread, ``validate.prepare``), and the in-process stock at a CL
+point (its OpenCASCADE booleans, still on the GUI thread, "Show in-process stock");
 and how soon Cancel answers: a validation of every CL point cancelled after 1.5 s by a click on its
 progress dialog's Cancel, the seconds from the click until the dialog is gone and the GUI thread
 ticks again, and until the command has returned.
@@ -140,18 +142,23 @@ def run():
             inside = [started] + [t for t in ticks if started <= t <= ended] + [ended]
             return max(b - a for a, b in zip(inside, inside[1:])), ended - started
 
-        from abm_workbench.gui import inprocess_view
+        from abm_workbench.gui import inprocess_view, validate
         doc = engagement.Document
+        # the forces' recompute first: once the in-process stock exists, a recompute of the engagement
+        # recomputes it too (its booleans, on the GUI thread), which is not what this figure is about
+        out["forces_stall"] = stall(lambda: (engagement.touch(), doc.recompute()))
         engagement.Forces = False
         doc.recompute()
         settle()
         cl = int(shown.spin.value())
-        out["inprocess"] = stall(lambda: inprocess_view.show_at(engagement, cl))
         report = os.path.join(os.path.dirname({out!r}), "report")
+        started = time.perf_counter()
+        validate.prepare(engagement, [cl, cl + 1], report + "_prepared")  # its GUI-thread half alone
+        out["validation_prepare"] = time.perf_counter() - started
         out["validation"] = stall(lambda: commands.ValidateEngagement().execute(engagement, f"{{cl}},{{cl + 1}}",
                                                                                 report, False))
-        engagement.Forces = True
-        out["forces_stall"] = stall(lambda: (engagement.touch(), doc.recompute()))
+        out["inprocess"] = stall(lambda: inprocess_view.show_at(engagement, cl))
+        out["inprocess_compute"] = inprocess_view.stock_of(engagement).ComputeTime
         clicked = {{}}
 
         def cancel_soon():
@@ -246,6 +253,8 @@ def main(argv=None):
         gone, returned, written = figures["cancel"]
         print(f"| {root} | {a:.3f} (of {a_s:.1f} s) | {b:.3f} (of {b_s:.1f} s) | {c:.3f} (of {c_s:.1f} s) | "
               f"{gone:.3f} | {returned:.3f}{' (a report written!)' if written else ''} |")
+        print(f"  {root}: validation's GUI-thread half (prepare) {figures['validation_prepare']:.3f} s; "
+              f"the in-process stock's own ComputeTime {figures['inprocess_compute']:.1f} s")
     if len(rows) > 1:
         first = rows[0]
         for row in rows[1:]:
