@@ -12,7 +12,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Tool table of {file}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Tool table (*.tbl *.FCStd);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{file} holds several operations: choose the one to compute (the toolpath's Operation; change it later in the property editor)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validating {label} at {count} CL points against booleans…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -28,23 +40,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Tool table of {file}</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>{file} holds several operations: choose the one to compute (the toolpath's Operation; change it later in the property editor)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>not for the engine</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Folder for the validation report</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Validating {label} at {count} CL points against booleans…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -64,7 +64,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>in-process stock: {count} CL points changed by earlier moves of the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>stock as given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>changed by earlier moves: longest length of cut in-process {now} mm / initial {before} mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -80,6 +88,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>; peak force {force} N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>not changed by earlier moves</source>
         <translation type="unfinished"></translation>
     </message>
@@ -92,15 +104,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>&lt;b&gt;{label}&lt;/b&gt;: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>no forces: turn Cutting forces on in the engagement's task panel and recompute</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>in-process stock: {count} CL points changed by earlier moves of the program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>changed by earlier moves: longest length of cut in-process {now} mm / initial {before} mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -108,23 +116,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>No engagement: select one and use Inspect engagement</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; peak force {force} N</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>UEP surface of the engagement segment:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;{label}&lt;/b&gt;: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>{label}: no results (recompute it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No engagement: select one and use Inspect engagement</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -133,6 +129,10 @@
     </message>
     <message>
         <source>CL {cl}: the tool does not engage the stock here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UEP surface of the engagement segment:</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -297,10 +297,6 @@
     </message>
     <message>
         <source>Reading and recognising the stock…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Computing the in-process stock (OpenCASCADE booleans)…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -12,8 +12,20 @@
         <translation>Werkzeugbahn importieren</translation>
     </message>
     <message>
+        <source>Tool table of {file}</source>
+        <translation>Werkzeugtabelle zu {file}</translation>
+    </message>
+    <message>
         <source>Tool table (*.tbl *.FCStd);;All files (*)</source>
         <translation>Werkzeugtabelle (*.tbl *.FCStd);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>{file} holds several operations: choose the one to compute (the toolpath's Operation; change it later in the property editor)</source>
+        <translation>{file} enthält mehrere Operationen: die zu berechnende wählen (Operation der Werkzeugbahn; später im Eigenschafteneditor änderbar)</translation>
+    </message>
+    <message>
+        <source>Validating {label} at {count} CL points against booleans…</source>
+        <translation>{label} wird an {count} CL-Punkten gegen boolesche Operationen validiert…</translation>
     </message>
     <message>
         <source>Reading the toolpath…</source>
@@ -28,24 +40,12 @@
         <translation>Zu prüfende CL-Punkte (all oder z. B. 0,22,40; je etwa 1 s):</translation>
     </message>
     <message>
-        <source>Tool table of {file}</source>
-        <translation>Werkzeugtabelle zu {file}</translation>
-    </message>
-    <message>
-        <source>{file} holds several operations: choose the one to compute (the toolpath's Operation; change it later in the property editor)</source>
-        <translation>{file} enthält mehrere Operationen: die zu berechnende wählen (Operation der Werkzeugbahn; später im Eigenschafteneditor änderbar)</translation>
-    </message>
-    <message>
         <source>not for the engine</source>
         <translation>nicht für den Rechenkern</translation>
     </message>
     <message>
         <source>Folder for the validation report</source>
         <translation>Ordner für den Validierungsbericht</translation>
-    </message>
-    <message>
-        <source>Validating {label} at {count} CL points against booleans…</source>
-        <translation>{label} wird an {count} CL-Punkten gegen boolesche Operationen validiert…</translation>
     </message>
     <message>
         <source>{file}: not imported: its program loads tools by number, and no tool table was chosen (a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
@@ -64,8 +64,16 @@
         <translation>resultierende Schnittkraft</translation>
     </message>
     <message>
+        <source>in-process stock: {count} CL points changed by earlier moves of the program</source>
+        <translation>Zwischenrohteil: {count} CL-Punkte durch frühere Bewegungen des Programms verändert</translation>
+    </message>
+    <message>
         <source>stock as given</source>
         <translation>Rohteil wie gegeben</translation>
+    </message>
+    <message>
+        <source>changed by earlier moves: longest length of cut in-process {now} mm / initial {before} mm</source>
+        <translation>durch frühere Bewegungen verändert: größte Schnittlänge am Zwischenrohteil {now} mm / am Ausgangsrohteil {before} mm</translation>
     </message>
     <message>
         <source>ABM engagement</source>
@@ -80,6 +88,10 @@
         <translation>Kräfte</translation>
     </message>
     <message>
+        <source>; peak force {force} N</source>
+        <translation>; Kraftspitze {force} N</translation>
+    </message>
+    <message>
         <source>not changed by earlier moves</source>
         <translation>nicht durch frühere Bewegungen verändert</translation>
     </message>
@@ -92,40 +104,24 @@
         <translation>Einfärben nach</translation>
     </message>
     <message>
+        <source>&lt;b&gt;{label}&lt;/b&gt;: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm</source>
+        <translation>&lt;b&gt;{label}&lt;/b&gt;: {m} CL-Punkte × {p} Winkel φ; Schnitttiefe {low}–{high} mm</translation>
+    </message>
+    <message>
         <source>no forces: turn Cutting forces on in the engagement's task panel and recompute</source>
         <translation>keine Kräfte: Schnittkräfte in der Aufgabenansicht des Eingriffs einschalten und neu berechnen</translation>
-    </message>
-    <message>
-        <source>in-process stock: {count} CL points changed by earlier moves of the program</source>
-        <translation>Zwischenrohteil: {count} CL-Punkte durch frühere Bewegungen des Programms verändert</translation>
-    </message>
-    <message>
-        <source>changed by earlier moves: longest length of cut in-process {now} mm / initial {before} mm</source>
-        <translation>durch frühere Bewegungen verändert: größte Schnittlänge am Zwischenrohteil {now} mm / am Ausgangsrohteil {before} mm</translation>
     </message>
     <message>
         <source>engagement segment (UEP surface)</source>
         <translation>Eingriffssegment (UEP-Fläche)</translation>
     </message>
     <message>
-        <source>No engagement: select one and use Inspect engagement</source>
-        <translation>Kein Eingriff: einen auswählen und „Eingriff untersuchen“ verwenden</translation>
-    </message>
-    <message>
-        <source>; peak force {force} N</source>
-        <translation>; Kraftspitze {force} N</translation>
-    </message>
-    <message>
-        <source>UEP surface of the engagement segment:</source>
-        <translation>UEP-Fläche des Eingriffssegments:</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;{label}&lt;/b&gt;: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm</source>
-        <translation>&lt;b&gt;{label}&lt;/b&gt;: {m} CL-Punkte × {p} Winkel φ; Schnitttiefe {low}–{high} mm</translation>
-    </message>
-    <message>
         <source>{label}: no results (recompute it)</source>
         <translation>{label}: keine Ergebnisse (neu berechnen)</translation>
+    </message>
+    <message>
+        <source>No engagement: select one and use Inspect engagement</source>
+        <translation>Kein Eingriff: einen auswählen und „Eingriff untersuchen“ verwenden</translation>
     </message>
     <message>
         <source>CL {cl}: depth of cut {depth} mm, max length of cut {length} mm; segments</source>
@@ -134,6 +130,10 @@
     <message>
         <source>CL {cl}: the tool does not engage the stock here</source>
         <translation>CL {cl}: das Werkzeug greift hier nicht in das Rohteil ein</translation>
+    </message>
+    <message>
+        <source>UEP surface of the engagement segment:</source>
+        <translation>UEP-Fläche des Eingriffssegments:</translation>
     </message>
     <message>
         <source>Tool diameter</source>
@@ -298,10 +298,6 @@
     <message>
         <source>Reading and recognising the stock…</source>
         <translation>Rohteil wird gelesen und erkannt…</translation>
-    </message>
-    <message>
-        <source>Computing the in-process stock (OpenCASCADE booleans)…</source>
-        <translation>Zwischenrohteil wird berechnet (boolesche Operationen von OpenCASCADE)…</translation>
     </message>
 </context>
 <context>

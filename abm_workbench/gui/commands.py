@@ -277,13 +277,13 @@ def ask_toolpath_options(path, tool_table=""):
     need = toolpath_needs(path, tool_table)
     if need is not None and need[0] == "tool table":
         chosen, _ = QtGui.QFileDialog.getOpenFileName(
-            window, translate("Tool table of {file}").format(file=os.path.basename(path)), os.path.dirname(path),
+            window, translate("Tool table of {file}", file=os.path.basename(path)), os.path.dirname(path),
             translate("Tool table (*.tbl *.FCStd);;All files (*)"))
         if not chosen:
             FreeCAD.Console.PrintWarning(
                 f"{PROG}: " + translate("{file}: not imported: its program loads tools by number, and no tool table "
                                         "was chosen (a LinuxCNC tool table, or the FreeCAD document that posted "
-                                        "the program)").format(file=os.path.basename(path)) + "\n")
+                                        "the program)", file=os.path.basename(path)) + "\n")
             return None
         tool_table = chosen
         need = toolpath_needs(path, tool_table)
@@ -294,8 +294,8 @@ def ask_toolpath_options(path, tool_table=""):
         dialog.setObjectName("ABM_ChooseOperation")
         dialog.setWindowTitle(translate("Import toolpath"))
         dialog.setLabelText(translate("{file} holds several operations: choose the one to compute "
-                                      "(the toolpath's Operation; change it later in the property editor)")
-                            .format(file=os.path.basename(path)))
+                                      "(the toolpath's Operation; change it later in the property editor)",
+                                      file=os.path.basename(path)))
         dialog.setComboBoxItems([operation_words(op) for op in operations])
         dialog.setComboBoxEditable(False)
         milling = [op for op in operations if op.refusal() is None]
@@ -497,8 +497,8 @@ class ValidateEngagement(Command):
             raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
         count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
         cls = cl_indices(cls_text, count)
-        progress = ProgressDialog(translate("Validating {label} at {count} CL points against booleans…")
-                                  .format(label=engagement.Label, count=len(cls)))
+        progress = ProgressDialog(translate("Validating {label} at {count} CL points against booleans…",
+                                            label=engagement.Label, count=len(cls)))
         try:
             run = prepare(engagement, cls, folder or report_folder(engagement))
             page = worker.work(run, sink=progress, cancelled=Cancelled("validation cancelled: nothing written"))

@@ -127,7 +127,7 @@ class EngagementDock(QtGui.QDockWidget):
         obj = self.obj
         result = _result(obj)
         if result is None:
-            self.title.setText(translate("{label}: no results (recompute it)").format(label=obj.Label)
+            self.title.setText(translate("{label}: no results (recompute it)", label=obj.Label)
                                if _alive(obj) else translate("No engagement: select one and use Inspect engagement"))
             self.about.setText("")
             self.legend.clear()
@@ -140,10 +140,10 @@ class EngagementDock(QtGui.QDockWidget):
         if cl is None:
             cl = self.spin.value() if self.spin.maximum() == m - 1 and self.spin.value() < m else _deepest(result)
         forces = _forces(obj)
-        peak = "" if forces is None else translate("; peak force {force} N").format(force=f"{obj.PeakForce:.4g}")
-        self.title.setText(translate("<b>{label}</b>: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm")
-                           .format(label=obj.Label, m=m, p=result.shape[1], low=f"{obj.DepthOfCutMin.Value:.2f}",
-                                   high=f"{obj.DepthOfCutMax.Value:.2f}") + f"{peak}; {stock_model_words(obj)}")
+        peak = "" if forces is None else translate("; peak force {force} N", force=f"{obj.PeakForce:.4g}")
+        self.title.setText(translate("<b>{label}</b>: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm",
+                                     label=obj.Label, m=m, p=result.shape[1], low=f"{obj.DepthOfCutMin.Value:.2f}",
+                                     high=f"{obj.DepthOfCutMax.Value:.2f}") + f"{peak}; {stock_model_words(obj)}")
         self.tabs.setTabEnabled(FORCES_TAB, forces is not None)
         self.colour_by.model().item(COLOUR_BY.index("force")).setEnabled(forces is not None)
         self.tabs.setTabToolTip(FORCES_TAB, "" if forces is not None else
@@ -175,11 +175,11 @@ class EngagementDock(QtGui.QDockWidget):
         if segments:
             parts = ", ".join(f"{s['letter']} {s['phi_start']:g}–{s['phi_end']:g}° {s['surface'].replace('_', ' ')}"
                               for s in segments)
-            self.about.setText(translate("CL {cl}: depth of cut {depth} mm, max length of cut {length} mm; segments")
-                               .format(cl=cl, depth=f"{depth:.3f}", length=f"{result.length[cl].max():.3f}")
+            self.about.setText(translate("CL {cl}: depth of cut {depth} mm, max length of cut {length} mm; segments",
+                                         cl=cl, depth=f"{depth:.3f}", length=f"{result.length[cl].max():.3f}")
                                + f" {parts}{in_process_words(obj, result, cl)}")
         else:
-            self.about.setText(translate("CL {cl}: the tool does not engage the stock here").format(cl=cl)
+            self.about.setText(translate("CL {cl}: the tool does not engage the stock here", cl=cl)
                                + in_process_words(obj, result, cl))
         self.chosen = cl
         self.plots_due.start()
@@ -320,8 +320,8 @@ def stock_model_words(obj):
     earlier moves changed, against the in-process stock)."""
     used = getattr(obj, "StockModelUsed", "initial")
     if used == "in-process":
-        return translate("in-process stock: {count} CL points changed by earlier moves of the program").format(
-            count=obj.ChangedCLPoints)
+        return translate("in-process stock: {count} CL points changed by earlier moves of the program",
+                         count=obj.ChangedCLPoints)
     return translate("stock as given") + used[len('initial'):]
 
 
@@ -335,8 +335,7 @@ def in_process_words(obj, result, cl):
     if not in_process.changed[cl]:
         return "; " + translate("not changed by earlier moves")
     return "; " + translate("changed by earlier moves: longest length of cut in-process {now} mm / initial {before} "
-                            "mm").format(now=f"{result.length[cl].max():.2f}",
-                                         before=f"{in_process.initial[cl].max():.2f}")
+                            "mm", now=f"{result.length[cl].max():.2f}", before=f"{in_process.initial[cl].max():.2f}")
 
 
 def colour_bar(legend):

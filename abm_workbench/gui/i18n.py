@@ -33,11 +33,19 @@ FOLDER = os.path.join(os.path.dirname(os.path.dirname(GUI)), "translations")
 TEMPLATE = os.path.join(FOLDER, "ABM.ts")
 
 
-def translate(text, context=CONTEXT):
-    """`text` in the user's language (as it is without a translation)."""
+def translate(text, context=CONTEXT, **values):
+    """`text` in the user's language (as it is without a translation), its {placeholders} filled with
+    `values` when given. A translation whose placeholders are not the text's (a translator's slip) is
+    not used: the text is shown untranslated rather than the GUI failing."""
     from PySide import QtCore
 
-    return QtCore.QCoreApplication.translate(context, text)
+    translated = QtCore.QCoreApplication.translate(context, text)
+    if not values:
+        return translated
+    try:
+        return translated.format(**values)
+    except (KeyError, IndexError, ValueError):
+        return text.format(**values)
 
 
 def noop(text):
