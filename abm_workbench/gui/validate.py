@@ -23,9 +23,7 @@ import time
 import numpy as np
 
 from ..errors import InputError, ParameterError
-
-
-from .worker import Cancelled as _WorkCancelled
+from .cancel import Cancelled as _WorkCancelled  # not .worker: this module runs without Qt too
 
 
 class Cancelled(_WorkCancelled):

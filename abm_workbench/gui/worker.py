@@ -32,7 +32,7 @@ import time
 
 from PySide import QtCore, QtGui
 
-from ..errors import InputError
+from .cancel import Cancelled  # noqa: F401 (worker.Cancelled, as callers name it)
 from .i18n import noop
 
 #: Milliseconds a wait stays silent (wait cursor, user input held back) before the progress dialog shows.
@@ -46,10 +46,6 @@ ENGINE_TEXT = noop("Computing the engagement…")
 CANCELLED = "recompute cancelled: nothing computed"
 #: Worker threads given up by Cancel that still run (kept alive until they end).
 _ABANDONED = set()
-
-
-class Cancelled(InputError):
-    """The work was stopped by Cancel: nothing was made."""
 
 
 def install():
