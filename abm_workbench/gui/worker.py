@@ -32,7 +32,7 @@ import time
 
 from PySide import QtCore, QtGui
 
-from .cancel import Cancelled  # noqa: F401 (worker.Cancelled, as callers name it)
+from .cancel import Cancelled  # also worker.Cancelled, as callers name it
 from .i18n import noop
 
 #: Milliseconds a wait stays silent (wait cursor, user input held back) before the progress dialog shows.
