@@ -240,7 +240,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Angles φ of the tool's rotation</source>
+        <source>Tool rotation angles φ</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -240,7 +240,7 @@
         <translation>Schnitt</translation>
     </message>
     <message>
-        <source>Angles φ of the tool's rotation</source>
+        <source>Tool rotation angles φ</source>
         <translation>Drehwinkel φ des Werkzeugs</translation>
     </message>
     <message>

@@ -87,7 +87,7 @@ FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm
 SECTIONS = (
     ("tool", noop("Tool"), ("Diameter", "Flutes", "FluteLength", "CornerRadius", "HelixAngle")),
     ("cut", noop("Cut"), ("FeedPerTooth", "SpindleSpeed", "Inclination")),
-    ("angles", noop("Angles φ of the tool's rotation"), ("PhiStart", "PhiEnd", "PhiStep")),
+    ("angles", noop("Tool rotation angles φ"), ("PhiStart", "PhiEnd", "PhiStep")),
     ("stock", noop("Stock model"), ("YWindowMin", "YWindowMax")),
     ("forces", noop("Cutting forces"), ()),
 )
@@ -134,12 +134,12 @@ class EngagementPanel:
                                    f"{translate('Toolpath')}: {_label(obj.Toolpath)}")
         self.source.setWordWrap(True)
         layout.addWidget(self.source)
-        self.message = QtGui.QLabel()  # at the top: seen whatever the panel is scrolled to
+        self.message = _Note()  # at the top: seen whatever the panel is scrolled to
         self.message.setObjectName("ABM_Message")
         self.message.setWordWrap(True)
         self.message.setStyleSheet("color: #b00000;")
         layout.addWidget(self.message)
-        self.fixed = QtGui.QLabel()
+        self.fixed = _Note()
         self.fixed.setObjectName("ABM_Fixed")
         self.fixed.setWordWrap(True)
         layout.addWidget(self.fixed)
@@ -179,7 +179,7 @@ class EngagementPanel:
 
     def _force_fields(self, box):
         """The Forces check box beside the Material combo, then the coefficients (three a row, each label above
-        its field) and the immersion, into the section `box`."""
+        its field, the unit under the name: narrow enough for the combo view) and the immersion, into the section `box`."""
         obj = self.obj
         forces = QtGui.QCheckBox(translate("Cutting forces"))
         forces.setObjectName("ABM_Forces")
@@ -197,9 +197,7 @@ class EngagementPanel:
             widget.setToolTip(_tip(obj, name))
             self.names.append(name)
             row, column = 2 * (index // 3), index % 3
-            words = QtGui.QLabel(label)
-            words.setWordWrap(True)  # its unit under its name when the combo view is narrow
-            grid.addWidget(words, row, column)
+            grid.addWidget(QtGui.QLabel(label.replace(" (", "\n(")), row, column)  # the unit under the name
             grid.addWidget(widget, row + 1, column)
         box.rows.addRow(grid)
         for name, label, unit, step in FORCE_FIELDS[6:]:
@@ -550,6 +548,19 @@ class Section(QtGui.QWidget):
     def _toggled(self, shown):
         self.header.setArrowType(QtCore.Qt.DownArrow if shown else QtCore.Qt.RightArrow)
         self.body.setVisible(shown)
+
+
+class _Note(QtGui.QLabel):
+    """A label shown only while it has text: the empty message and note take no room above the fields
+    (all sections unfolded, the panel then fits a 1000-pixel screen with its labels wrapped)."""
+
+    def __init__(self):
+        super().__init__()
+        self.setVisible(False)
+
+    def setText(self, text):  # noqa: N802 (Qt's name)
+        super().setText(text)
+        self.setVisible(bool(text))
 
 
 class _Title(QtGui.QLabel):
