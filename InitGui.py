@@ -41,9 +41,10 @@ from abm_workbench.gui.view_providers import install_observer  # noqa: E402
 
 install_observer()
 
-# Edit -> Preferences -> ABM, and the translations (translations/ABM_<language>.qm).
+# Edit -> Preferences -> ABM (its icon: resources/icons/preferences-abm.svg, which FreeCAD finds by the
+# group's name), and the translations (translations/ABM_<language>.qm, loaded again when the language changes).
 from abm_workbench.gui import i18n, preferences  # noqa: E402
 
+FreeCADGui.addIconPath(preferences.ICONS)
 FreeCADGui.addPreferencePage(preferences.PreferencesPage, "ABM")
-FreeCADGui.addLanguagePath(i18n.FOLDER)
-FreeCADGui.updateLocale()
+i18n.install()

@@ -1,10 +1,10 @@
 # One obvious way to run things. FreeCAD's Python is the system interpreter: never the
 # `python3` that happens to be first on PATH.
 PYTHON := /usr/bin/python3
-DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth
+DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth qttools5-dev-tools
 OUT := build
 
-.PHONY: figures deps model-test-1 model-test-2 model-test-4 model-test-5 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
+.PHONY: translations figures deps model-test-1 model-test-2 model-test-4 model-test-5 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -112,6 +112,14 @@ install:
 # The docs' drawn figures (docs/images/frames_feed.png ...), from the engine's own frames.
 figures: deps
 	$(PYTHON) docs/make_figures.py docs/images
+
+# The GUI's translations: the template translations/ABM.ts from the sources, each translations/ABM_<language>.ts
+# brought up to date with it, and compiled to the ABM_<language>.qm that FreeCAD loads (Qt's lrelease,
+# from qttools5-dev-tools). The .qm files are committed, so an install needs no Qt tools.
+LRELEASE := $(shell command -v lrelease 2>/dev/null || echo /usr/lib/qt5/bin/lrelease)
+translations: deps
+	$(PYTHON) -m abm_workbench.gui.i18n
+	for ts in translations/ABM_*.ts; do QT_SELECT=qt5 $(LRELEASE) -silent $$ts -qm $${ts%.ts}.qm || exit 1; done
 
 # The README's GUI screenshots (docs/images/gui_*.png): model test 1 in the FreeCAD GUI under Xvfb.
 screenshots: deps

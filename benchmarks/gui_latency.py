@@ -3,6 +3,15 @@ then OK, until the recompute is done and the 3D view drawn again; the same with 
 dock's CL point moved by one (a key press on its slider) until the 3D view shows the new
 highlight, and until the dock's plots are drawn too.
 
+Then the GUI's longest stall (the longest gap between two ticks of a 10 ms timer of the GUI thread)
+while long work runs: a recompute with forces (measured before the in-process stock exists: a
+recompute of the engagement recomputes that too), a validation of two CL points (and, apart, the
+seconds of its half on the GUI thread, ``validate.prepare``), and the in-process stock at a CL
+point (its OpenCASCADE booleans, still on the GUI thread, "Show in-process stock");
+and how soon Cancel answers: a validation of every CL point cancelled after 1.5 s by a click on its
+progress dialog's Cancel, the seconds from the click until the dialog is gone and the GUI thread
+ticks again, and until the command has returned.
+
     /usr/bin/python3 benchmarks/gui_latency.py [--root CHECKOUT ...] [--repeat N]
 
 Each --root is a checkout of the workbench (default: this one); give the old one too (e.g.
@@ -115,6 +124,66 @@ def run():
             drawn()
             plotted.append(time.perf_counter() - started)
         out["slider"], out["plots"] = highlighted, plotted
+
+        # ---- stalls of the GUI thread during long work, and Cancel --------------------------------
+        ticks = []
+        heart = QtCore.QTimer()
+        heart.timeout.connect(lambda: ticks.append(time.perf_counter()))
+        heart.start(10)
+
+        def stall(action):
+            # the longest gap (s) between two ticks while action() runs, and its seconds
+            settle()
+            del ticks[:]
+            started = time.perf_counter()
+            action()
+            ended = time.perf_counter()
+            settle()
+            inside = [started] + [t for t in ticks if started <= t <= ended] + [ended]
+            return max(b - a for a, b in zip(inside, inside[1:])), ended - started
+
+        from abm_workbench.gui import inprocess_view, validate
+        doc = engagement.Document
+        # the forces' recompute first: once the in-process stock exists, a recompute of the engagement
+        # recomputes it too (its booleans, on the GUI thread), which is not what this figure is about
+        # a new inclination: a touch alone finds the results kept for these inputs and computes nothing
+        out["forces_stall"] = stall(lambda: (setattr(engagement, "Inclination", 14.5), doc.recompute()))
+        engagement.Forces = False
+        doc.recompute()
+        settle()
+        cl = int(shown.spin.value())
+        report = os.path.join(os.path.dirname({out!r}), "report")
+        started = time.perf_counter()
+        validate.prepare(engagement, [cl, cl + 1], report + "_prepared")  # its GUI-thread half alone
+        out["validation_prepare"] = time.perf_counter() - started
+        out["validation"] = stall(lambda: commands.ValidateEngagement().execute(engagement, f"{{cl}},{{cl + 1}}",
+                                                                                report, False))
+        out["inprocess"] = stall(lambda: inprocess_view.show_at(engagement, cl))
+        out["inprocess_compute"] = inprocess_view.stock_of(engagement).ComputeTime
+        clicked = {{}}
+
+        def cancel_soon():
+            dialog = window.findChild(QtWidgets.QProgressDialog, "ABM_Progress")
+            if dialog is None or not dialog.isVisible():
+                QtCore.QTimer.singleShot(50, cancel_soon)
+                return
+            def gone():
+                if dialog.isVisible():
+                    QtCore.QTimer.singleShot(5, gone)
+                else:
+                    clicked["gone"] = time.perf_counter()
+            button = dialog.findChild(QtWidgets.QPushButton)
+            clicked["at"] = time.perf_counter()
+            click(button)
+            QtCore.QTimer.singleShot(0, gone)
+
+        QtCore.QTimer.singleShot(1500, cancel_soon)
+        started = time.perf_counter()
+        commands.ValidateEngagement().execute(engagement, "all", report + "_cancelled", False)
+        returned = time.perf_counter()
+        out["cancel"] = [clicked.get("gone", returned) - clicked["at"], returned - clicked["at"],
+                         os.path.exists(report + "_cancelled")]
+        heart.stop()
         out["ok"] = True
     except Exception:
         out["error"] = traceback.format_exc()
@@ -163,9 +232,10 @@ def main(argv=None):
     parser.add_argument("--repeat", type=int, default=3, help="edits and slider moves measured (median)")
     args = parser.parse_args(argv)
     roots = args.root or [HERE]
-    rows = []
+    rows, stalls = [], {}
     for root in roots:
         figures = measure(root, args.repeat)
+        stalls[root] = figures
         rows.append((root, figures["open"], median(figures["edit"]), median(figures["forces"]),
                      median(figures["slider"]) * 1000.0, median(figures.get("plots", figures["slider"])) * 1000.0))
     print(f"load average: {' '.join(f'{value:.2f}' for value in os.getloadavg())}")
@@ -174,6 +244,18 @@ def main(argv=None):
     print("|---|---|---|---|---|---|")
     for root, *values in rows:
         print(f"| {root} | " + " | ".join(f"{value:.3g}" for value in values) + " |")
+    print()
+    print("| checkout | longest GUI stall: in-process stock (s) | validation of 2 CL points (s) | forces recompute (s) "
+          "| Cancel: dialog gone (s) | Cancel: command returned (s) |")
+    print("|---|---|---|---|---|---|")
+    for root in roots:
+        figures = stalls[root]
+        (a, a_s), (b, b_s), (c, c_s) = figures["inprocess"], figures["validation"], figures["forces_stall"]
+        gone, returned, written = figures["cancel"]
+        print(f"| {root} | {a:.3f} (of {a_s:.1f} s) | {b:.3f} (of {b_s:.1f} s) | {c:.3f} (of {c_s:.1f} s) | "
+              f"{gone:.3f} | {returned:.3f}{' (a report written!)' if written else ''} |")
+        print(f"  {root}: validation's GUI-thread half (prepare) {figures['validation_prepare']:.3f} s; "
+              f"the in-process stock's own ComputeTime {figures['inprocess_compute']:.1f} s")
     if len(rows) > 1:
         first = rows[0]
         for row in rows[1:]:

@@ -4,6 +4,138 @@
 <context>
     <name>ABM</name>
     <message>
+        <source>Import stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import toolpath</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool table of {file}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool table (*.tbl *.FCStd);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{file} holds several operations: choose the one to compute (the toolpath's Operation; change it later in the property editor)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validating {label} at {count} CL points against booleans…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the toolpath…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validate engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL points to check (all, or e.g. 0,22,40; about 1 s each):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not for the engine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Folder for the validation report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{file}: not imported: its program loads tools by number, and no tool table was chosen (a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>length of cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cut area</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>resultant cutting force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in-process stock: {count} CL points changed by earlier moves of the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stock as given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>changed by earlier moves: longest length of cut in-process {now} mm / initial {before} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ABM engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; peak force {force} N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not changed by earlier moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;{label}&lt;/b&gt;: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no forces: turn Cutting forces on in the engagement's task panel and recompute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>engagement segment (UEP surface)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{label}: no results (recompute it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No engagement: select one and use Inspect engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL {cl}: depth of cut {depth} mm, max length of cut {length} mm; segments</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL {cl}: the tool does not engage the stock here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UEP surface of the engagement segment:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Tool diameter</source>
         <translation type="unfinished"></translation>
     </message>
@@ -64,7 +196,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner radius</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -92,6 +232,26 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool rotation angles φ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stock model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cutting forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Immersion from</source>
         <translation type="unfinished"></translation>
     </message>
@@ -101,10 +261,6 @@
     </message>
     <message>
         <source>Engagement: tool and cut</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cutting forces</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -140,7 +296,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Cancel</source>
+        <source>Reading and recognising the stock…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

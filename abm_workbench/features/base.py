@@ -22,9 +22,12 @@ Migration: every object carries a read-only ``Version`` property (group "Base"),
 workbench adds missing properties, renames old ones, etc. there, then sets ``Version``.
 """
 
+import functools
 import os
+import sys
 
 from ..cad.freecad_env import FreeCAD
+from ..errors import InputError, ParameterError
 
 #: Version of the document objects' properties: bump it when they change, and migrate (4: the toolpath's Operation;
 #: 5: the engagement's stock model; 6: its corner radius).
@@ -36,6 +39,57 @@ FILE_PROPERTIES = {"ABM::Stock": "SourceFile", "ABM::Toolpath": "File"}
 RELATIVE = "Relative"
 #: Property type flag: changing it does not touch the object (FreeCAD's Prop_Output).
 PROP_OUTPUT = 8
+
+
+class _Named(type):
+    """Metaclass of RecomputeFailed: see there."""
+
+    previous = None  # sys.tracebacklimit before FreeCAD reported one
+
+    def __str__(cls):
+        _Named.previous = getattr(sys, "tracebacklimit", None)
+        sys.tracebacklimit = 0
+        return PROG
+
+
+class RecomputeFailed(InputError, metaclass=_Named):
+    """An InputError that fails an object's recompute with its message alone, no Python traceback.
+
+    FreeCAD 0.20 reports an exception leaving a Python feature's ``execute`` as
+    ``<traceback><str(type)>: <message>`` (``PyException``: the type and message as strings, then
+    the traceback printed by ``PyTraceBack_Print``), and marks the object Invalid with the message
+    as its status string. str() of this class, which FreeCAD takes first, is "ABM" and sets
+    ``sys.tracebacklimit`` to 0, so the traceback prints as nothing; the instance, which FreeCAD
+    lets go right after, puts the limit back as it is deleted. Python code catching it sees an
+    InputError with the same message.
+    """
+
+    def __del__(self):
+        if getattr(sys, "tracebacklimit", None) == 0:
+            if _Named.previous is None:
+                del sys.tracebacklimit
+            else:
+                sys.tracebacklimit = _Named.previous
+
+
+#: How FreeCAD names a failed recompute of an engagement in the report view ("ABM: <message>").
+PROG = "ABM"
+
+
+def failing_in_words(execute):
+    """Decorate a proxy's ``execute(self, obj)``: an InputError (a ParameterError too) fails the recompute
+    with its message alone, no Python traceback in the report view (:class:`RecomputeFailed`)."""
+
+    @functools.wraps(execute)
+    def wrapped(self, obj):
+        try:
+            return execute(self, obj)
+        except RecomputeFailed:
+            raise
+        except (InputError, ParameterError) as error:
+            raise RecomputeFailed(str(error)) from None
+
+    return wrapped
 
 
 def file_property(obj):

@@ -89,7 +89,7 @@ from ..jobs.job import Prepared
 from ..jobs.parameters import SWEEP_TOLERANCE
 from ..jobs.run import STOCK_MODELS, check_model, in_part_frame, in_process_sweep
 from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_properties, document_or_active
-from .base import remember_relative
+from .base import PROG, RecomputeFailed, remember_relative  # noqa: F401 (RecomputeFailed: its home was here)
 from .stored import InProcess, PassForces, read_archive, read_engagement, read_forces, read_in_process, write_archive
 from .stored import write_results_csv
 from .stock import StockFeature
@@ -180,39 +180,6 @@ def property_words(label, error):
     return InputError(f"{label}: {label_words(error)[:-1]}{prop}.")
 
 
-class _Named(type):
-    """Metaclass of RecomputeFailed: see there."""
-
-    previous = None  # sys.tracebacklimit before FreeCAD reported one
-
-    def __str__(cls):
-        _Named.previous = getattr(sys, "tracebacklimit", None)
-        sys.tracebacklimit = 0
-        return PROG
-
-
-class RecomputeFailed(InputError, metaclass=_Named):
-    """An InputError that fails an object's recompute with its message alone, no Python traceback.
-
-    FreeCAD 0.20 reports an exception leaving a Python feature's ``execute`` as
-    ``<traceback><str(type)>: <message>`` (``PyException``: the type and message as strings, then
-    the traceback printed by ``PyTraceBack_Print``), and marks the object Invalid with the message
-    as its status string. str() of this class, which FreeCAD takes first, is "ABM" and sets
-    ``sys.tracebacklimit`` to 0, so the traceback prints as nothing; the instance, which FreeCAD
-    lets go right after, puts the limit back as it is deleted. Python code catching it sees an
-    InputError with the same message.
-    """
-
-    def __del__(self):
-        if getattr(sys, "tracebacklimit", None) == 0:
-            if _Named.previous is None:
-                del sys.tracebacklimit
-            else:
-                sys.tracebacklimit = _Named.previous
-
-
-#: How FreeCAD names a failed recompute of an engagement in the report view ("ABM: <message>").
-PROG = "ABM"
 
 
 class EngagementFeature(FeatureProxy):

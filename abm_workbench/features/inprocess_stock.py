@@ -32,10 +32,20 @@ from ..cad.inprocess_boolean import inprocess_solid
 from ..engine.inprocess import swept_pieces
 from ..errors import InputError
 from ..jobs.inputs import program_moves
-from .base import PROP_OUTPUT, FeatureProxy, add_properties, document_or_active
+from .base import PROP_OUTPUT, FeatureProxy, add_properties, document_or_active, failing_in_words
 
 #: Default sub-step (mm) of five-axis moves at the tool's rim for the view.
 VIEW_TOLERANCE = 0.5
+
+
+def _call(function, *args):
+    return function(*args)
+
+
+#: boolean_call(function, *args) -> function(*args): how execute runs the OpenCASCADE booleans (seconds
+#: to minutes near a dense five-axis program). Headless, a plain call; the GUI puts a worker thread with
+#: progress and Cancel here (``gui.worker.install``).
+boolean_call = _call
 
 
 class InProcessStockFeature(FeatureProxy):
@@ -84,6 +94,7 @@ class InProcessStockFeature(FeatureProxy):
             self._sweep = (key, (moves, swept_pieces(moves, tolerance), rows))
         return self._sweep[1]
 
+    @failing_in_words
     def execute(self, obj):
         """Cut the stock solid by the earlier moves near the CL point; set the Shape and the results."""
         moves, pieces, rows = self.sweep(obj)
@@ -94,7 +105,7 @@ class InProcessStockFeature(FeatureProxy):
         stock_shape = obj.Engagement.Stock.Shape
         started = time.perf_counter()
         near = obj.Reach.Value + tool_sphere(moves, row) if obj.Reach.Value > 0.0 else None
-        shape = inprocess_solid(stock_shape, (moves, pieces), row, near)
+        shape = boolean_call(inprocess_solid, stock_shape, (moves, pieces), row, near)
         obj.Shape = shape
         obj.ProgramRow = row
         obj.RemovedVolume = stock_shape.Volume - shape.Volume

@@ -25,12 +25,23 @@ from ..errors import InputError
 from ..engine import PlanLine
 from ..jobs import WALL_MODELS, WALL_POINTS, load_stock
 from ..jobs.inputs import recognised
-from .base import FeatureProxy, add_properties, document_or_active
+from .base import FeatureProxy, add_properties, document_or_active, failing_in_words
 
 #: Recognised stocks kept per stock object (wall models × y windows asked for).
 _CACHED = 4
 _WALL_MODEL_TIP = ("exact: each wall is the solid's own curve (default); quintic: the paper's quintic through "
                    "six points on the wall. A JSON stock always has the paper's quintic walls.")
+
+
+
+def _call(function, *args, **keywords):
+    return function(*args, **keywords)
+
+
+#: recognise_call(function, *args, **keywords) -> function(*args, **keywords): how a stock is read and
+#: recognised (STEP / BREP reading and recognition, seconds for a large solid). Headless, a plain call;
+#: the GUI puts a worker thread with progress and Cancel here (``gui.worker.install``).
+recognise_call = _call
 
 
 class StockFeature(FeatureProxy):
@@ -60,6 +71,7 @@ class StockFeature(FeatureProxy):
     def _reset(self):
         self._cache = {}  # {(key of the source, walls, wall points, y window): jobs.Stock}
 
+    @failing_in_words
     def execute(self, obj):
         """Recognise the stock, set the Shape and the summary properties."""
         stock = self.load(obj)
@@ -126,11 +138,12 @@ class StockFeature(FeatureProxy):
             if shape is None or shape.isNull():
                 raise InputError(f"{source.Label}: the linked object has no shape")
             shape = shape.copy() if frame is None else moved(shape, *frame)
-            return recognised(shape, source.Label, walls=walls, wall_points=obj.WallPoints, y_window=y_window,
-                              frame=frame)
+            return recognise_call(recognised, shape, source.Label, walls=walls, wall_points=obj.WallPoints,
+                                  y_window=y_window, frame=frame)
         if not obj.SourceFile:
             raise InputError(f"{obj.Label}: no stock source: set SourceObject or SourceFile")
-        return load_stock(obj.SourceFile, walls=walls, wall_points=obj.WallPoints, y_window=y_window, frame=frame)
+        return recognise_call(load_stock, obj.SourceFile, walls=walls, wall_points=obj.WallPoints, y_window=y_window,
+                              frame=frame)
 
 
 def create_stock(doc=None, source=None, name="Stock", *, walls="exact", wall_points="chebyshev"):

@@ -7,7 +7,8 @@
   (wins over File: its program is read from the Job as it is, so the toolpath follows the Job when
   it recomputes; cam.job_program); ``CamOperation``, the Job's operation computed (wins over
   Operation); ``Operation``, the program's operation computed (1-based; 0: its one milling
-  operation).
+  operation); ``ToolTable``, the tools of a G-code program's T words (a LinuxCNC tool table or
+  the FCStd that posted it; empty: none).
 - group "Summary" (read-only, set by ``execute`` from the file): ``CLPoints``, and what an APT
   file says about the tool and the cut, 0 where it says nothing: ``Operations`` (every
   operation of the file: number, name, tool, CL points), ``ToolDiameter`` and
@@ -26,7 +27,7 @@ import numpy as np
 
 from ..cad.freecad_env import FreeCAD, Part
 from ..jobs import load_path
-from .base import FeatureProxy, add_properties, document_or_active
+from .base import FeatureProxy, add_properties, document_or_active, failing_in_words
 
 #: Consecutive CL points closer than this (mm) are one vertex of the polyline.
 POINT_TOL = 1e-9
@@ -45,6 +46,7 @@ class ToolpathFeature(FeatureProxy):
         ])
         add_cam_property(obj)
         add_operation_property(obj)
+        add_tool_table_property(obj)
         add_properties(obj, "Summary", [
             ("App::PropertyInteger", "CLPoints", "number of CL points of the pass"),
             ("App::PropertyLength", "ToolDiameter", "tool diameter the file gives (CUTTER / TLDATA), 0 if none"),
@@ -59,6 +61,7 @@ class ToolpathFeature(FeatureProxy):
     def _reset(self):
         self._cache = None  # ((path, mtime), (Toolpath, PathHints))
 
+    @failing_in_words
     def execute(self, obj):
         """Read the file; set the Shape (polyline of the operation's CL points, part coordinates) and the
         summary properties."""
@@ -102,8 +105,9 @@ class ToolpathFeature(FeatureProxy):
         except OSError:
             stamp = None
         operation = getattr(obj, "Operation", 0) or None
-        if self._cache is None or self._cache[0] != (path, stamp, operation):
-            self._cache = ((path, stamp, operation), self._read(obj, path, operation))
+        tools = getattr(obj, "ToolTable", "")
+        if self._cache is None or self._cache[0] != (path, stamp, operation, tools):
+            self._cache = ((path, stamp, operation, tools), self._read(obj, path, operation))
         return self._cache[1]
 
     def _read(self, obj, path, operation, job=None):
@@ -123,6 +127,11 @@ class ToolpathFeature(FeatureProxy):
                                          f"{job.Label} (inactive, or no moves)")
                     operation = named[0]
                 return load_path(program.source, operation, program=program)
+            tools = getattr(obj, "ToolTable", "")
+            if tools:
+                from ..formats.gcode.options import ReadOptions
+
+                return load_path(path, operation, options=ReadOptions(tool_table=tools))
             return load_path(path, operation)
         except OperationChoiceError as error:
             listing = "; ".join(op.summary() for op in error.operations)
@@ -132,6 +141,7 @@ class ToolpathFeature(FeatureProxy):
     def migrate(self, obj, saved_version):
         """Objects saved before the Operation property took the file's one milling operation."""
         add_operation_property(obj)
+        add_tool_table_property(obj)
         super().migrate(obj, saved_version)
 
 
@@ -162,6 +172,15 @@ def add_operation_property(obj):
         ], read_only=True)
 
 
+def add_tool_table_property(obj):
+    """Add ToolTable (group "Source") when missing."""
+    if "ToolTable" not in obj.PropertiesList:
+        add_properties(obj, "Source", [
+            ("App::PropertyFile", "ToolTable", "G-code: the tools of its T words, a LinuxCNC tool table or the FreeCAD "
+                                               "document (FCStd) that posted the program (empty: none)"),
+        ])
+
+
 def polyline(points):
     """A wire through points (k, 3) mm, consecutive duplicates dropped; a vertex for one point."""
     points = np.asarray(points, dtype=float)
@@ -172,11 +191,13 @@ def polyline(points):
     return Part.makePolygon([FreeCAD.Vector(*p) for p in points.tolist()])
 
 
-def create_toolpath(doc=None, path=None, name="Toolpath", *, cam_job=None, cam_operation=None, operation=0):
+def create_toolpath(doc=None, path=None, name="Toolpath", *, cam_job=None, cam_operation=None, operation=0,
+                    tool_table=""):
     """Add a toolpath object reading `path` (CSV, APT, CLS, G-code), or the program of `cam_job` (a FreeCAD CAM
     Job of the document), to `doc` (default the active document; RuntimeError if none); the operation
     computed: `cam_operation` (an operation of the Job), else `operation` (1-based; 0: the program's one
-    milling operation). Returns the object (not yet recomputed)."""
+    milling operation); tool_table: a G-code program's tool table (LinuxCNC, or the FCStd that posted it).
+    Returns the object (not yet recomputed)."""
     doc = document_or_active(doc)
     obj = doc.addObject("Part::FeaturePython", name)
     ToolpathFeature(obj)
@@ -184,4 +205,5 @@ def create_toolpath(doc=None, path=None, name="Toolpath", *, cam_job=None, cam_o
         obj.File = os.fspath(path)
     obj.CamJob, obj.CamOperation = cam_job, cam_operation
     obj.Operation = operation
+    obj.ToolTable = os.fspath(tool_table)
     return obj

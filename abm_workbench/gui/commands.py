@@ -19,7 +19,7 @@ import FreeCADGui
 
 from . import dock, task_panel, view_providers  # noqa: F401 (the dock and task panel listen to gui.state)
 from . import preferences
-from .i18n import QT_TRANSLATE_NOOP
+from .i18n import QT_TRANSLATE_NOOP, noop, translate
 from .progress import ProgressDialog, busy
 from .reporting import PROG, CommandError, recompute_checked, report_error
 
@@ -141,12 +141,14 @@ class _ImportFile(Command):
     def Activated(self):
         from PySide import QtGui
 
-        path, _ = QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), self.TITLE, "", self.FILTER)
+        path, _ = QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), translate(self.TITLE), "",
+                                                    self.FILTER)
         if path:
             self.execute(path)
 
-    def activated(self, doc, source):
-        made = self.create(doc, source)
+    def activated(self, doc, source, *options):
+        made = self.create(doc, source, *options)
+        made.Proxy.load(made)  # bad input refused in words before the recompute (the long reading in a worker)
         view_providers.attach(made)
         recompute_checked(doc, (made,))
         fit_view()
@@ -163,7 +165,7 @@ class ImportStock(_ImportFile):
                                 "Add a staircase stock from the selected solid, or from a STEP, BREP or FCStd solid "
                                 "(recognised, exact walls) or a staircase JSON")
     Accel = "A, S"
-    TITLE = "Import stock"
+    TITLE = noop("Import stock")
     FILTER = STOCK_FILTER
 
     def Activated(self):
@@ -199,29 +201,117 @@ class ImportToolpath(_ImportFile):
                                 "(x,y,z,theta_a,theta_b or x,y,z,i,j,k), an APT / CL file, G-code or an FCStd "
                                 "holding a CAM Job")
     Accel = "A, T"
-    TITLE = "Import toolpath"
+    TITLE = noop("Import toolpath")
     FILTER = TOOLPATH_FILTER
 
     def Activated(self):
+        from PySide import QtGui
+
         from ..cam.freecad_cam import job_of
 
         doc = FreeCAD.ActiveDocument
         selected = [obj for obj in FreeCADGui.Selection.getSelection(doc.Name) if job_of(obj)] if doc else []
         if selected:
             self.execute(selected[0])
-        else:
-            super().Activated()
+            return
+        path, _ = QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), translate(self.TITLE), "",
+                                                    self.FILTER)
+        if not path:
+            return
+        try:
+            options = ask_toolpath_options(path)
+        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
+            report_error(error)
+            return
+        if options is not None:
+            self.execute(path, *options)
 
     @staticmethod
-    def create(doc, source):
-        """The toolpath object of `source`: a file path, or a CAM Job or operation of the document."""
+    def create(doc, source, operation=0, tool_table=""):
+        """The toolpath object of `source`: a file path (its `operation`, 1-based, 0: its one milling
+        operation; a G-code program's `tool_table`), or a CAM Job or operation of the document."""
         from ..cam.freecad_cam import is_job, job_of
         from ..features import create_toolpath
 
         if isinstance(source, (str, os.PathLike)):
-            return create_toolpath(doc, source)
+            return create_toolpath(doc, source, operation=int(operation), tool_table=tool_table)
         job = job_of(source)
         return create_toolpath(doc, cam_job=job, cam_operation=None if is_job(source) else source)
+
+
+def toolpath_needs(path, tool_table=""):
+    """What reading the toolpath file `path` needs from the user: ("operation", operations) when it holds
+    several milling operations (formats.cl Operation objects, all of the program's), ("tool table", message)
+    when it is G-code whose T words need a tool table and none is given; else None (it reads, or fails for
+    a reason the import will say). Read in a worker thread."""
+    from ..errors import InputError
+    from ..formats.cl.program import OperationChoiceError
+    from ..jobs import load_path
+    from . import worker
+
+    options = None
+    if tool_table:
+        from ..formats.gcode.options import ReadOptions
+
+        options = ReadOptions(tool_table=tool_table)
+    try:
+        worker.work(load_path, path, None, options=options, text=noop("Reading the toolpath…"))
+    except OperationChoiceError as error:
+        if any(operation.refusal() is None for operation in error.operations):
+            return "operation", error.operations
+    except worker.Cancelled:
+        raise
+    except InputError as error:
+        if not tool_table and "no tool table" in str(error):
+            return "tool table", str(error)
+    return None
+
+
+def ask_toolpath_options(path, tool_table=""):
+    """(operation, tool table) to import the toolpath file `path` with, asked in dialogs where the file needs
+    them (:func:`toolpath_needs`): the operation of a program of several, the tool table of G-code; None when
+    the user cancels."""
+    from PySide import QtGui
+
+    window = FreeCADGui.getMainWindow()
+    need = toolpath_needs(path, tool_table)
+    if need is not None and need[0] == "tool table":
+        chosen, _ = QtGui.QFileDialog.getOpenFileName(
+            window, translate("Tool table of {file}", file=os.path.basename(path)), os.path.dirname(path),
+            translate("Tool table (*.tbl *.FCStd);;All files (*)"))
+        if not chosen:
+            FreeCAD.Console.PrintWarning(
+                f"{PROG}: " + translate("{file}: not imported: its program loads tools by number, and no tool table "
+                                        "was chosen (a LinuxCNC tool table, or the FreeCAD document that posted "
+                                        "the program)", file=os.path.basename(path)) + "\n")
+            return None
+        tool_table = chosen
+        need = toolpath_needs(path, tool_table)
+    operation = 0
+    if need is not None and need[0] == "operation":
+        operations = need[1]
+        dialog = QtGui.QInputDialog(window)
+        dialog.setObjectName("ABM_ChooseOperation")
+        dialog.setWindowTitle(translate("Import toolpath"))
+        dialog.setLabelText(translate("{file} holds several operations: choose the one to compute "
+                                      "(the toolpath's Operation; change it later in the property editor)",
+                                      file=os.path.basename(path)))
+        dialog.setComboBoxItems([operation_words(op) for op in operations])
+        dialog.setComboBoxEditable(False)
+        milling = [op for op in operations if op.refusal() is None]
+        dialog.setTextValue(operation_words(milling[0]))
+        if not dialog.exec_():
+            dialog.deleteLater()
+            return None
+        operation = operations[[operation_words(op) for op in operations].index(dialog.textValue())].number
+        dialog.deleteLater()
+    return operation, tool_table
+
+
+def operation_words(operation):
+    """An operation of a program as the dialog lists it: its summary, and why the engine refuses it if it does."""
+    refusal = operation.refusal()
+    return operation.summary() + ("" if refusal is None else f" ({translate('not for the engine')}: {refusal})")
 
 
 def pick(doc, kind, selection):
@@ -338,60 +428,80 @@ class ValidateEngagement(Command):
     Accel = "A, V"
 
     def Activated(self):
+        """Ask for the CL points (checked at once: a bad list is said in a dialog, and asked again), then, for an
+        unsaved document without a report folder, the folder; then validate."""
         from PySide import QtGui
 
-        from .validate import report_folder
+        from .validate import cl_indices, report_folder
 
+        window = FreeCADGui.getMainWindow()
         try:
             doc = FreeCAD.ActiveDocument
             engagement = selected_engagement(doc)
-            shown = dock.find()
-            current = shown.spin.value() if shown is not None and shown.obj is engagement else None
-            window = FreeCADGui.getMainWindow()
-            text, ok = QtGui.QInputDialog.getText(
-                window, "Validate engagement", "CL points to check (all, or e.g. 0,22,40; about 1 s each):",
-                text="all" if current is None else str(current))
+            if engagement.Proxy.result(engagement) is None:
+                raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+            count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
+        except Exception as error:  # noqa: BLE001 (said in a dialog and the report view; the GUI goes on)
+            report_error(error, window)
+            return
+        shown = dock.find()
+        text = str(shown.spin.value()) if shown is not None and shown.obj is engagement else "all"
+        while True:
+            dialog = QtGui.QInputDialog(window)
+            dialog.setObjectName("ABM_ValidateCLPoints")
+            dialog.setWindowTitle(translate("Validate engagement"))
+            dialog.setLabelText(translate("CL points to check (all, or e.g. 0,22,40; about 1 s each):"))
+            dialog.setTextValue(text)
+            ok = dialog.exec_()
+            text = dialog.textValue()
+            dialog.deleteLater()
             if not ok:
                 return
-            folder = report_folder(engagement)
-            root = preferences.report_root()
-            if root:
-                folder = os.path.join(root, f"{doc.Name}_{engagement.Name}_validation")
-            elif not doc.FileName:
-                chosen = QtGui.QFileDialog.getExistingDirectory(window, "Folder for the validation report")
-                if not chosen:
-                    return
-                folder = os.path.join(chosen, f"{engagement.Name}_validation")
-        except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
-            report_error(error)
-            return
-        self.execute(engagement, text, folder)
+            try:
+                cl_indices(text, count)
+                break
+            except Exception as error:  # noqa: BLE001 (said in a dialog, then asked again)
+                report_error(error, window)
+        folder = report_folder(engagement)
+        root = preferences.report_root()
+        if root:
+            folder = os.path.join(root, f"{doc.Name}_{engagement.Name}_validation")
+        elif not doc.FileName:
+            chosen = QtGui.QFileDialog.getExistingDirectory(window, translate("Folder for the validation report"))
+            if not chosen:
+                return
+            folder = os.path.join(chosen, f"{engagement.Name}_validation")
+        self.execute(engagement, text, folder, True, window)
 
     def execute(self, *args):
         """run(*args), errors to the report view, a cancel said as such; the report's path, or None."""
         from .validate import Cancelled
 
         try:
-            return self.run(*args)
+            return self.run(*args[:4])
         except Cancelled as cancelled:
             FreeCAD.Console.PrintWarning(f"{PROG}: {cancelled}\n")
             return None
         except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)
-            report_error(error)
+            report_error(error, args[4] if len(args) > 4 else None)
             return None
 
     def activated(self, doc, engagement, cls_text="all", folder=None, open_report=True):
         """Validate `engagement` at the CL points of `cls_text` ("all" or "0,22,40") into `folder`
-        (default beside the document); records ValidationReport and opens the report. Its path."""
-        from .validate import cl_indices, report_folder, validate_engagement
+        (default beside the document) in a worker thread (the progress dialog's Cancel answers at once);
+        records ValidationReport and opens the report. Its path."""
+        from . import worker
+        from .validate import Cancelled, cl_indices, prepare, report_folder
 
         if engagement.Proxy.result(engagement) is None:
             raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
         count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
         cls = cl_indices(cls_text, count)
-        progress = ProgressDialog(f"Validating {engagement.Label} at {len(cls)} CL points against booleans…")
+        progress = ProgressDialog(translate("Validating {label} at {count} CL points against booleans…",
+                                            label=engagement.Label, count=len(cls)))
         try:
-            page = validate_engagement(engagement, cls, folder or report_folder(engagement), progress)
+            run = prepare(engagement, cls, folder or report_folder(engagement))
+            page = worker.work(run, sink=progress, cancelled=Cancelled("validation cancelled: nothing written"))
         finally:
             progress.close()
         engagement.ValidationReport = page

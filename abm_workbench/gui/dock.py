@@ -31,12 +31,18 @@ import FreeCADGui
 from .colouring import COLOUR_BY, QUANTITIES
 from . import state
 from .colouring import HIGHLIGHT_COLOUR
+from .i18n import noop, translate
 
 OBJECT_NAME = "ABM_EngagementDock"
+#: The quantities' names of colouring.QUANTITIES, for the translation template.
+QUANTITY_WORDS = (noop("length of cut"), noop("cut area"), noop("resultant cutting force"))
 #: Width (px) of the legend's colour bar.
 BAR_WIDTH = 220
 #: Height of the length plot × its largest value, so the segment legend sits above the curve.
 LEGEND_HEADROOM = 1.7
+#: Smallest height (px) of the plots: the dock fits beside FreeCAD's panels on a screen 768 pixels high
+#: (the plots are laid out again for the height they get).
+CANVAS_MIN_HEIGHT = 260
 #: Index of the "Forces" tab.
 FORCES_TAB = 1
 #: Stacked plots of the "Engagement" tab: length of cut, cut area, h, pass progression.
@@ -47,7 +53,7 @@ class EngagementDock(QtGui.QDockWidget):
     """The dock (see the module docstring); ``show_object(obj, cl)`` fills it."""
 
     def __init__(self, parent):
-        super().__init__("ABM engagement", parent)
+        super().__init__(translate("ABM engagement"), parent)
         self.setObjectName(OBJECT_NAME)
         self.obj = None
         body = QtGui.QWidget()
@@ -57,7 +63,7 @@ class EngagementDock(QtGui.QDockWidget):
         layout.addWidget(self.title)
 
         row = QtGui.QHBoxLayout()
-        row.addWidget(QtGui.QLabel("CL point"))
+        row.addWidget(QtGui.QLabel(translate("CL point")))
         self.slider = QtGui.QSlider(QtCore.Qt.Horizontal)
         self.slider.setObjectName("ABM_CLSlider")
         self.spin = QtGui.QSpinBox()
@@ -73,12 +79,12 @@ class EngagementDock(QtGui.QDockWidget):
         layout.addWidget(self.about)
 
         row = QtGui.QHBoxLayout()
-        row.addWidget(QtGui.QLabel("Colour by"))
+        row.addWidget(QtGui.QLabel(translate("Colour by")))
         self.colour_by = QtGui.QComboBox()
         self.colour_by.setObjectName("ABM_ColourBy")
         for value in COLOUR_BY:
-            self.colour_by.addItem(QUANTITIES[value][1] if value in QUANTITIES else "engagement segment (UEP surface)",
-                                   value)
+            self.colour_by.addItem(translate(QUANTITIES[value][1]) if value in QUANTITIES
+                                   else translate("engagement segment (UEP surface)"), value)
         self.colour_by.currentIndexChanged.connect(self._colour_by_changed)
         row.addWidget(self.colour_by, 1)
         layout.addLayout(row)
@@ -92,14 +98,14 @@ class EngagementDock(QtGui.QDockWidget):
         self.figure = Figure(figsize=(4.2, 7.0), dpi=80)
         self.canvas = FigureCanvasQTAgg(self.figure)
         self.canvas.mpl_connect("resize_event", lambda event: self.figure.axes and _lay_out(self.figure))
-        self.canvas.setMinimumHeight(420)
+        self.canvas.setMinimumHeight(CANVAS_MIN_HEIGHT)
         self.force_figure = Figure(figsize=(4.2, 7.0), dpi=80, layout="constrained")
         self.force_canvas = FigureCanvasQTAgg(self.force_figure)
-        self.force_canvas.setMinimumHeight(420)
+        self.force_canvas.setMinimumHeight(CANVAS_MIN_HEIGHT)
         self.tabs = QtGui.QTabWidget()
         self.tabs.setObjectName("ABM_PlotTabs")
-        self.tabs.addTab(self.canvas, "Engagement")
-        self.tabs.addTab(self.force_canvas, "Forces")
+        self.tabs.addTab(self.canvas, translate("Engagement"))
+        self.tabs.addTab(self.force_canvas, translate("Forces"))
         layout.addWidget(self.tabs, 1)
         self.setWidget(body)
         self.chosen = None  # the CL point whose plots are due
@@ -121,8 +127,8 @@ class EngagementDock(QtGui.QDockWidget):
         obj = self.obj
         result = _result(obj)
         if result is None:
-            self.title.setText(f"{obj.Label}: no results (recompute it)" if _alive(obj) else
-                               "No engagement: select one and use Inspect engagement")
+            self.title.setText(translate("{label}: no results (recompute it)", label=obj.Label)
+                               if _alive(obj) else translate("No engagement: select one and use Inspect engagement"))
             self.about.setText("")
             self.legend.clear()
             for figure, canvas in ((self.figure, self.canvas), (self.force_figure, self.force_canvas)):
@@ -134,14 +140,15 @@ class EngagementDock(QtGui.QDockWidget):
         if cl is None:
             cl = self.spin.value() if self.spin.maximum() == m - 1 and self.spin.value() < m else _deepest(result)
         forces = _forces(obj)
-        peak = "" if forces is None else f"; peak force {obj.PeakForce:.4g} N"
-        self.title.setText(f"<b>{obj.Label}</b>: {m} CL points × {result.shape[1]} angles φ; depth of cut "
-                           f"{obj.DepthOfCutMin.Value:.2f}–{obj.DepthOfCutMax.Value:.2f} mm{peak}; "
-                           f"{stock_model_words(obj)}")
+        peak = "" if forces is None else translate("; peak force {force} N", force=f"{obj.PeakForce:.4g}")
+        self.title.setText(translate("<b>{label}</b>: {m} CL points × {p} angles φ; depth of cut {low}–{high} mm",
+                                     label=obj.Label, m=m, p=result.shape[1], low=f"{obj.DepthOfCutMin.Value:.2f}",
+                                     high=f"{obj.DepthOfCutMax.Value:.2f}") + f"{peak}; {stock_model_words(obj)}")
         self.tabs.setTabEnabled(FORCES_TAB, forces is not None)
         self.colour_by.model().item(COLOUR_BY.index("force")).setEnabled(forces is not None)
         self.tabs.setTabToolTip(FORCES_TAB, "" if forces is not None else
-                                "no forces: turn Forces on in the engagement's task panel and recompute")
+                                translate("no forces: turn Cutting forces on in the engagement's task panel and "
+                                          "recompute"))
         for widget in (self.slider, self.spin):
             widget.blockSignals(True)
             widget.setRange(0, m - 1)
@@ -168,11 +175,12 @@ class EngagementDock(QtGui.QDockWidget):
         if segments:
             parts = ", ".join(f"{s['letter']} {s['phi_start']:g}–{s['phi_end']:g}° {s['surface'].replace('_', ' ')}"
                               for s in segments)
-            self.about.setText(f"CL {cl}: depth of cut {depth:.3f} mm, max length of cut "
-                               f"{result.length[cl].max():.3f} mm; segments {parts}{in_process_words(obj, result, cl)}")
+            self.about.setText(translate("CL {cl}: depth of cut {depth} mm, max length of cut {length} mm; segments",
+                                         cl=cl, depth=f"{depth:.3f}", length=f"{result.length[cl].max():.3f}")
+                               + f" {parts}{in_process_words(obj, result, cl)}")
         else:
-            self.about.setText(f"CL {cl}: the tool does not engage the stock here"
-                               f"{in_process_words(obj, result, cl)}")
+            self.about.setText(translate("CL {cl}: the tool does not engage the stock here", cl=cl)
+                               + in_process_words(obj, result, cl))
         self.chosen = cl
         self.plots_due.start()
 
@@ -197,7 +205,7 @@ class EngagementDock(QtGui.QDockWidget):
         axes, new = _reused_axes(self.figure, PLOTS)
         phi = result.phi
         for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h[cl]),
-                                     ("length of cut (mm)", "cut area (mm²)", "h (mm)")):
+                                     ("length of\ncut (mm)", "cut area\n(mm²)", "h (mm)")):  # two lines: short axes
             ax.plot(phi, np.where(result.engaged[cl], values, np.nan), color="0.6", linewidth=1.0)
             for index, segment in enumerate(result.segments(cl)):
                 rows = result.segment[cl] == index
@@ -223,7 +231,7 @@ class EngagementDock(QtGui.QDockWidget):
                 axes[3].plot([cl], [values[cl]], "o", color="red")
         axes[3].relim()
         axes[3].autoscale_view()
-        axes[3].set(xlabel="CL point")
+        axes[3].set_xlabel("CL point", fontsize="small")
         axes[3].set_ylabel("mm", fontsize="small")
         axes[3].set_title("Pass progression", fontsize="small")
         axes[3].legend(fontsize="x-small")
@@ -267,7 +275,7 @@ class EngagementDock(QtGui.QDockWidget):
         if legend.kind == "segment":
             rows = "".join(f"<tr><td style='background:{_hex(rgb)}'>&nbsp;&nbsp;&nbsp;&nbsp;</td>"
                            f"<td>&nbsp;{name.replace('_', ' ')}</td></tr>" for name, rgb in legend.entries)
-            self.legend.setText(f"UEP surface of the engagement segment:<table>{rows}</table>")
+            self.legend.setText(translate("UEP surface of the engagement segment:") + f"<table>{rows}</table>")
             return
         self.legend.setPixmap(colour_bar(legend))
 
@@ -288,6 +296,9 @@ def _reused_axes(figure, count):
         for ax in axes:
             ax.grid(True, alpha=0.3)
             ax.tick_params(labelsize="x-small")
+        for ax in axes[:2]:  # the plots over φ share its axis, its numbers under the lowest only: room for the curves
+            ax.sharex(axes[2])
+            ax.tick_params(labelbottom=False)
         return list(axes), True
     for ax in figure.axes:
         for artist in [*ax.lines, *([ax.get_legend()] if ax.get_legend() else [])]:
@@ -309,8 +320,9 @@ def stock_model_words(obj):
     earlier moves changed, against the in-process stock)."""
     used = getattr(obj, "StockModelUsed", "initial")
     if used == "in-process":
-        return f"in-process stock: {obj.ChangedCLPoints} CL points changed by earlier moves of the program"
-    return f"stock as given{used[len('initial'):]}"
+        return translate("in-process stock: {count} CL points changed by earlier moves of the program",
+                         count=obj.ChangedCLPoints)
+    return translate("stock as given") + used[len('initial'):]
 
 
 def in_process_words(obj, result, cl):
@@ -321,9 +333,9 @@ def in_process_words(obj, result, cl):
     if in_process is None:
         return ""
     if not in_process.changed[cl]:
-        return "; not changed by earlier moves"
-    return (f"; changed by earlier moves: longest length of cut in-process {result.length[cl].max():.2f} mm / "
-            f"initial {in_process.initial[cl].max():.2f} mm")
+        return "; " + translate("not changed by earlier moves")
+    return "; " + translate("changed by earlier moves: longest length of cut in-process {now} mm / initial {before} "
+                            "mm", now=f"{result.length[cl].max():.2f}", before=f"{in_process.initial[cl].max():.2f}")
 
 
 def colour_bar(legend):
@@ -415,6 +427,15 @@ def forget(doc):
         dock.refresh()
 
 
+def forget_gone():
+    """Empty the dock if the engagement it shows was deleted (or taken back by undo)."""
+    dock = find() if FreeCAD.GuiUp else None
+    if dock is not None and dock.obj is not None and not _alive(dock.obj):
+        dock.obj = None
+        dock.refresh()
+
+
 state.listen("show", show)
+state.listen("gone", forget_gone)
 state.listen("refresh", refresh)
 state.listen("forget", forget)

@@ -8,13 +8,21 @@ context :data:`CONTEXT` but the commands'.
 ``/usr/bin/python3 -m abm_workbench.gui.i18n`` writes ``translations/ABM.ts``, the template a
 translator opens in Qt Linguist: every string literal passed to ``translate``, ``noop`` or
 ``QT_TRANSLATE_NOOP`` in ``abm_workbench/gui`` (found by parsing the sources, as Qt's own
-``pylupdate`` does). A translation ``ABM_<language>.qm`` put beside it is loaded by FreeCAD
-(InitGui.py adds the folder with ``FreeCADGui.addLanguagePath``).
+``pylupdate`` does), and brings each translation ``translations/ABM_<language>.ts`` up to date with
+it (its translations kept, new texts added unfinished, texts gone dropped). ``make translations``
+does that and compiles each to ``ABM_<language>.qm`` with Qt's ``lrelease``.
+
+:func:`install` (InitGui.py) adds the folder with ``FreeCADGui.addLanguagePath``: FreeCAD loads the
+``.qm`` of its language from there at start and again whenever the language is changed in the
+preferences. Widgets made after that show the new language (the dock and the task panel are made
+anew when shown).
 """
 
 import ast
+import glob
 import os
 import sys
+import xml.etree.ElementTree as ElementTree
 from xml.sax.saxutils import escape
 
 #: Translation context of the GUI's words.
@@ -25,11 +33,19 @@ FOLDER = os.path.join(os.path.dirname(os.path.dirname(GUI)), "translations")
 TEMPLATE = os.path.join(FOLDER, "ABM.ts")
 
 
-def translate(text, context=CONTEXT):
-    """`text` in the user's language (as it is without a translation)."""
+def translate(text, context=CONTEXT, **values):
+    """`text` in the user's language (as it is without a translation), its {placeholders} filled with
+    `values` when given. A translation whose placeholders are not the text's (a translator's slip) is
+    not used: the text is shown untranslated rather than the GUI failing."""
     from PySide import QtCore
 
-    return QtCore.QCoreApplication.translate(context, text)
+    translated = QtCore.QCoreApplication.translate(context, text)
+    if not values:
+        return translated
+    try:
+        return translated.format(**values)
+    except (KeyError, IndexError, ValueError):
+        return text.format(**values)
 
 
 def noop(text):
@@ -71,25 +87,64 @@ def messages(folder=GUI):
     return found
 
 
-def template(found):
-    """The .ts XML (Qt Linguist's format) of {context: [text, …]}, untranslated."""
-    lines = ['<?xml version="1.0" encoding="utf-8"?>', "<!DOCTYPE TS>", '<TS version="2.1">']
+def template(found, translations=None, language=None):
+    """The .ts XML (Qt Linguist's format) of {context: [text, …]}: untranslated, or with `translations`
+    {(context, text): translation} of `language` ("de") where they have one."""
+    translations = translations or {}
+    head = '<TS version="2.1">' if language is None else f'<TS version="2.1" language="{escape(language)}">'
+    lines = ['<?xml version="1.0" encoding="utf-8"?>', "<!DOCTYPE TS>", head]
     for context in sorted(found):
         lines += ["<context>", f"    <name>{escape(context)}</name>"]
         for text in found[context]:
-            lines += ["    <message>", f"        <source>{escape(text)}</source>",
-                      '        <translation type="unfinished"></translation>', "    </message>"]
+            done = translations.get((context, text))
+            translation = ('        <translation type="unfinished"></translation>' if not done else
+                           f"        <translation>{escape(done)}</translation>")
+            lines += ["    <message>", f"        <source>{escape(text)}</source>", translation, "    </message>"]
         lines.append("</context>")
     lines.append("</TS>")
     return "\n".join(lines) + "\n"
 
 
+def read_translations(path):
+    """{(context, source): translation} of the finished messages of the .ts file `path`."""
+    found = {}
+    for context in ElementTree.parse(path).getroot().iter("context"):
+        name = context.findtext("name")
+        for message in context.iter("message"):
+            translation = message.find("translation")
+            if translation is not None and translation.get("type") != "unfinished" and translation.text:
+                found[(name, message.findtext("source"))] = translation.text
+    return found
+
+
+def translations_of(folder=FOLDER):
+    """{language: path} of the translations ``ABM_<language>.ts`` in `folder`."""
+    paths = glob.glob(os.path.join(folder, "ABM_*.ts"))
+    return {os.path.basename(path)[len("ABM_"):-len(".ts")]: path for path in sorted(paths)}
+
+
+def install():
+    """Let FreeCAD load the workbench's translations (now, and when its language changes)."""
+    import FreeCADGui
+
+    FreeCADGui.addLanguagePath(FOLDER)
+    FreeCADGui.updateLocale()
+
+
 def main(path=TEMPLATE):
-    """Write the template to `path`; 0."""
+    """Write the template to `path` and bring the translations beside it up to date; 0."""
     os.makedirs(os.path.dirname(path), exist_ok=True)
+    found = messages()
     with open(path, "w", encoding="utf-8") as handle:
-        handle.write(template(messages()))
+        handle.write(template(found))
     print(path)
+    for language, translation in translations_of(os.path.dirname(path)).items():
+        kept = read_translations(translation)
+        with open(translation, "w", encoding="utf-8") as handle:
+            handle.write(template(found, kept, language))
+        missing = sum(len(texts) for texts in found.values()) - sum(
+            (context, text) in kept for context, texts in found.items() for text in texts)
+        print(f"{translation}: {missing} texts to translate" if missing else translation)
     return 0
 
 

@@ -17,11 +17,16 @@ registered by InitGui.py with ``FreeCADGui.addPreferencePage``):
   Python processes, each with its own FreeCAD).
 """
 
+import os
+
 import FreeCAD
 
 from ..jobs import BY_NAME
 from .i18n import noop, translate
 
+#: The icons' folder: FreeCAD shows the page's group with ``preferences-abm.svg`` from it.
+ICONS = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "resources",
+                     "icons")
 #: FreeCAD parameter group of the workbench.
 GROUP = "User parameter:BaseApp/Preferences/Mod/ABM"
 #: Defaults of a new engagement: (create_engagement keyword, parameter name, label, unit, value, step);

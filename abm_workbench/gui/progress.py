@@ -38,7 +38,9 @@ class ProgressDialog:
     at the next CL point."""
 
     def __init__(self, text):
-        self.dialog = QtGui.QProgressDialog(text, "Cancel", 0, 1, FreeCADGui.getMainWindow())
+        from .i18n import translate
+
+        self.dialog = QtGui.QProgressDialog(text, translate("Cancel"), 0, 1, FreeCADGui.getMainWindow())
         self.dialog.setObjectName("ABM_Progress")
         self.dialog.setWindowTitle("ABM")
         self.dialog.setWindowModality(QtCore.Qt.WindowModal)

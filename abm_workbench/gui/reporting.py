@@ -1,8 +1,12 @@
 """Errors in the GUI's words, and a recompute that fails like a command: shared by the commands and the task panel.
 
 Messages go to the report view (``FreeCAD.Console.PrintError``) as ``ABM: <plain words>``: a bad
-parameter in its label's words (``jobs.label_words``), FreeCAD's own exceptions by their text.
+parameter in its label's words (``jobs.label_words``), FreeCAD's own exceptions by their text; a
+message of the engine or a reader that names a command-line option (``--tool-table FILE``) names
+what the GUI has for it instead (:data:`OPTION_WORDS`, :func:`gui_words`).
 """
+
+import re
 
 import FreeCAD
 
@@ -18,19 +22,60 @@ class CommandError(Exception):
     """A command cannot do what was asked (the message says why)."""
 
 
+#: Command-line options that messages of the engine and the readers name, as the GUI names them.
+OPTION_WORDS = {
+    "tool-table": "the toolpath's ToolTable property",
+    "operation": "the toolpath's Operation property",
+    "helix": "the helix angle β",
+    "stock-model": "the engagement's StockModel property",
+    "cam-job": "a toolpath linked to the CAM Job",
+    "machine": "a machine file (not read by the GUI yet)",
+    "offsets": "work offsets (not read by the GUI yet)",
+    "walls": "the wall model",
+    "y-window": "the y window",
+    "forces": "Cutting forces",
+    "cl": "the CL points",
+}
+#: Whole phrases of the command line's messages, as the GUI says them.
+PHRASES = (("give the tool table (--tool-table FILE: ", "set the toolpath's ToolTable property ("),
+           ("choose one with --operation N", "choose one in the toolpath's Operation property"))
+_OPTION = re.compile(r"--([a-z][a-z-]*)(?: [A-Z]+\b)?")
+
+
+def gui_words(text):
+    """`text` with the command-line options it names (``--tool-table FILE``) put as the GUI names them."""
+    for phrase, words in PHRASES:
+        text = text.replace(phrase, words)
+
+    def word(match):
+        name = match.group(1)
+        return OPTION_WORDS.get(name, name.replace("-", " "))
+    return _OPTION.sub(word, text)
+
+
 def message_of(error):
     """The text of `error` in the GUI's words: a ParameterError by its parameter's label, FreeCAD's own
-    exceptions by their dict's "sErrMsg", others as they say it."""
+    exceptions by their dict's "sErrMsg", others as they say it; command-line options as the GUI names
+    them (:func:`gui_words`)."""
     if isinstance(error, ParameterError):
-        return label_words(error)
+        return gui_words(label_words(error))
     if error.args and isinstance(error.args[0], dict) and "sErrMsg" in error.args[0]:
-        return error.args[0]["sErrMsg"]
-    return str(error)
+        return gui_words(error.args[0]["sErrMsg"])
+    return gui_words(str(error))
 
 
-def report_error(error):
-    """Print `error` to the report view in the GUI's words (message_of)."""
-    FreeCAD.Console.PrintError(f"{PROG}: {message_of(error)}\n")
+def report_error(error, parent=None):
+    """Print `error` to the report view in the GUI's words (message_of); with a `parent` widget, also say
+    it in a message box (``ABM_Error``)."""
+    message = message_of(error)
+    FreeCAD.Console.PrintError(f"{PROG}: {message}\n")
+    if parent is not None:
+        from PySide import QtGui
+
+        box = QtGui.QMessageBox(QtGui.QMessageBox.Warning, "ABM", message, QtGui.QMessageBox.Ok, parent)
+        box.setObjectName("ABM_Error")
+        box.exec_()
+        box.deleteLater()
 
 
 def recompute_checked(doc, objects):

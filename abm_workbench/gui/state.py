@@ -4,10 +4,10 @@ The dock and the task panel listen (:func:`listen`) when they are imported, whic
 does on activation (``commands.register``); the view providers and the task panel tell
 (:func:`tell`). Events: ``"edit"`` (obj: open the engagement's task panel), ``"show"`` (obj: show
 it in the dock), ``"refresh"`` (obj: its results or colours changed), ``"forget"`` (doc: the
-document is closing).
+document is closing), ``"gone"`` (objects were deleted, or taken back by undo or redo).
 """
 
-_LISTENERS = {"edit": [], "show": [], "refresh": [], "forget": []}
+_LISTENERS = {"edit": [], "show": [], "refresh": [], "forget": [], "gone": []}
 
 
 def listen(event, handler):

@@ -38,12 +38,17 @@ button box). The panel reads and writes the fields by their text only, through Q
 Scripts and tests set a field as if typed with :meth:`EngagementPanel.set_number` and read it with
 :meth:`EngagementPanel.number`.
 
+The panel is in sections that fold (:class:`Section`): tool, cut, the angles φ (side by side),
+stock model (wall model and y window; folded while they are the defaults) and cutting forces
+(folded while off; the coefficients three a row). The section of a field marked as wrong unfolds.
+All unfolded, the panel fits a screen 1000 pixels high beside OK and Cancel. The mouse wheel
+changes a field or a choice only once it has the focus, so the wheel scrolls the panel over them.
 The panel fits FreeCAD's combo view: rows too long for a label and a field side by side wrap
 the field under its label, and the text wraps.
 """
 
 import shiboken2
-from PySide import QtGui
+from PySide import QtCore, QtGui
 
 import FreeCADGui
 
@@ -77,6 +82,17 @@ FORCE_FIELDS = tuple((prop, f"{prop} ({'N/mm²' if prop.endswith('c') else 'N/mm
                      for prop in COEFFICIENT_PROPERTIES.values()) + (
     ("ImmersionStart", noop("Immersion from"), "deg", 5.0),
     ("ImmersionEnd", noop("Immersion to"), "deg", 5.0))
+#: Sections of the panel, top to bottom: (name, title, number fields); the stock model's section also holds the
+#: wall model and y window, the forces' the Forces check box, the material and the coefficients.
+SECTIONS = (
+    ("tool", noop("Tool"), ("Diameter", "Flutes", "FluteLength", "CornerRadius", "HelixAngle")),
+    ("cut", noop("Cut"), ("FeedPerTooth", "SpindleSpeed", "Inclination")),
+    ("angles", noop("Tool rotation angles φ"), ("PhiStart", "PhiEnd", "PhiStep")),
+    ("stock", noop("Stock model"), ("YWindowMin", "YWindowMax")),
+    ("forces", noop("Cutting forces"), ()),
+)
+#: property -> (label, unit, step) of each number field.
+FIELD_OF = {name: (label, unit, step) for name, label, unit, step in FIELDS + FORCE_FIELDS}
 #: property -> declared unit of every number field.
 UNITS = {name: unit for name, _, unit, _ in FIELDS + FORCE_FIELDS}
 #: property -> the job model's Parameter of a field (its label, range and check); the y window has none.
@@ -111,33 +127,49 @@ class EngagementPanel:
         self.form = QtGui.QWidget()
         self.form.setObjectName("ABM_EngagementPanel")
         self.form.setWindowTitle(translate("Engagement: tool and cut"))
-        layout = QtGui.QFormLayout(self.form)
-        layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
-        layout.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
+        layout = QtGui.QVBoxLayout(self.form)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.setSpacing(2)
         self.source = QtGui.QLabel(f"{translate('Stock')}: {_label(obj.Stock)}<br>"
                                    f"{translate('Toolpath')}: {_label(obj.Toolpath)}")
         self.source.setWordWrap(True)
-        layout.addRow(self.source)
-        self.message = QtGui.QLabel()  # at the top: seen whatever the panel is scrolled to
+        layout.addWidget(self.source)
+        self.message = _Note()  # at the top: seen whatever the panel is scrolled to
         self.message.setObjectName("ABM_Message")
         self.message.setWordWrap(True)
         self.message.setStyleSheet("color: #b00000;")
-        layout.addRow(self.message)
-        self.fixed = QtGui.QLabel()
+        layout.addWidget(self.message)
+        self.fixed = _Note()
         self.fixed.setObjectName("ABM_Fixed")
         self.fixed.setWordWrap(True)
-        layout.addRow(self.fixed)
+        layout.addWidget(self.fixed)
         self.names = []  # of the fields, in order: self.field(name) finds each
-        for name, label, unit, step in FIELDS:
-            widget = _spin_box(unit, step, PARAMETER_OF.get(name), self.form)
-            widget.setObjectName(f"ABM_{name}")
-            widget.setToolTip(obj.getDocumentationOfProperty(name))
-            self.names.append(name)
-            if name == "YWindowMin":
-                layout.addRow(translate("Wall model"), self._combo("WallModel", WALL_CHOICES))
-                layout.addRow(translate("y window"), self._combo("YWindow", Y_WINDOWS))
-            layout.addRow(translate(label), widget)
-        self._force_fields(layout)
+        self.sections = {}  # section name -> Section
+        self.section_of = {}  # field name -> section name
+        for section, title, names in SECTIONS:
+            box = Section(section, translate(title), self.form)
+            self.sections[section] = box
+            layout.addWidget(box)
+            if section == "stock":
+                box.rows.addRow(translate("Wall model"), self._combo("WallModel", WALL_CHOICES))
+                box.rows.addRow(translate("y window"), self._combo("YWindow", Y_WINDOWS))
+            if section == "forces":
+                self._force_fields(box)
+            for name in names:
+                label, unit, step = FIELD_OF[name]
+                widget = _spin_box(unit, step, PARAMETER_OF.get(name), self.form)
+                widget.setObjectName(f"ABM_{name}")
+                widget.setToolTip(_tip(obj, name))
+                self.names.append(name)
+                if section == "angles":
+                    box.grid(label, widget)
+                else:
+                    box.rows.addRow(translate(label), widget)
+            for name in self.names:
+                self.section_of.setdefault(name, section)
+        layout.addStretch(1)
+        self.sections["stock"].fold(obj.WallModel == "stock" and obj.YWindow == "auto")
+        self.sections["forces"].fold(not obj.Forces)
         wrappers.let_go_stale(self.form)  # before any lookup: the fields may sit where deleted widgets were
         for name in UNITS:
             _put(self.field(name), _starting_text(obj, name))
@@ -145,29 +177,42 @@ class EngagementPanel:
         self.hints = self._hints()
         self.check()
 
-    def _force_fields(self, layout):
-        """The Forces check box beside the Material combo, then the coefficients and the immersion."""
+    def _force_fields(self, box):
+        """The Forces check box beside the Material combo, then the coefficients (three a row, each label above
+        its field, the unit under the name: narrow enough for the combo view) and the immersion, into the section `box`."""
         obj = self.obj
         forces = QtGui.QCheckBox(translate("Cutting forces"))
         forces.setObjectName("ABM_Forces")
         forces.setChecked(bool(obj.Forces))
-        forces.setToolTip(obj.getDocumentationOfProperty("Forces"))
+        forces.setToolTip(_tip(obj, "Forces"))
         forces.toggled.connect(self.check)
         self.names.append("Forces")
-        layout.addRow(forces, self._combo("Material", MATERIAL_CHOICES))
-        for name, label, unit, step in FORCE_FIELDS:
+        box.rows.addRow(forces, self._combo("Material", MATERIAL_CHOICES))
+        grid = QtGui.QGridLayout()
+        grid.setContentsMargins(0, 0, 0, 0)
+        grid.setVerticalSpacing(0)
+        for index, (name, label, unit, step) in enumerate(FORCE_FIELDS[:6]):
             widget = _spin_box(unit, step, PARAMETER_OF.get(name), self.form)
             widget.setObjectName(f"ABM_{name}")
-            widget.setToolTip(obj.getDocumentationOfProperty(name))
+            widget.setToolTip(_tip(obj, name))
             self.names.append(name)
-            layout.addRow(label, widget)
+            row, column = 2 * (index // 3), index % 3
+            grid.addWidget(QtGui.QLabel(label.replace(" (", "\n(")), row, column)  # the unit under the name
+            grid.addWidget(widget, row + 1, column)
+        box.rows.addRow(grid)
+        for name, label, unit, step in FORCE_FIELDS[6:]:
+            widget = _spin_box(unit, step, PARAMETER_OF.get(name), self.form)
+            widget.setObjectName(f"ABM_{name}")
+            widget.setToolTip(_tip(obj, name))
+            self.names.append(name)
+            box.rows.addRow(translate(label), widget)
 
     def _combo(self, name, choices):
-        combo = QtGui.QComboBox()
+        combo = Combo()
         combo.setObjectName(f"ABM_{name}")
         combo.addItems(list(choices))
         combo.setCurrentIndex(list(choices).index(getattr(self.obj, name)))
-        combo.setToolTip(self.obj.getDocumentationOfProperty(name))
+        combo.setToolTip(_tip(self.obj, name))
         combo.currentIndexChanged.connect(self.check)
         self.names.append(name)
         return combo
@@ -320,6 +365,10 @@ class EngagementPanel:
         message, field = self.problem(values)
         for name in self.names:
             self.field(name).setStyleSheet(INVALID_STYLE if name == field else "")
+        if field in self.section_of:  # the marked field in view
+            self.sections[self.section_of[field]].fold(False)
+        if values["Forces"]:
+            self.sections["forces"].fold(False)
         self.message.setText(message or "")
         ok = self.ok_button()
         if ok is not None:
@@ -429,6 +478,121 @@ def _label(obj):
     return obj.Label if obj is not None else "(none)"
 
 
+def _tip(obj, name):
+    """The tooltip of field `name`: its property's documentation, in the GUI's words (no command-line options)."""
+    from .reporting import gui_words
+
+    return gui_words(obj.getDocumentationOfProperty(name))
+
+
+class Section(QtGui.QWidget):
+    """A titled part of the panel that folds: a header button (an arrow and the title) over its rows
+    (``rows``, a QFormLayout; ``grid`` puts fields side by side, each label above its field).
+
+    The header is the arrow button (``header``, its text the title, not drawn) beside the title as a label
+    that wraps and folds the section when clicked too: a long title never makes the panel wider than the
+    combo view (a button's text cannot wrap, and the narrow combo view then clips the fields' right edge)."""
+
+    def __init__(self, name, title, parent):
+        super().__init__(parent)
+        self.setObjectName(f"ABM_Section_{name}")
+        layout = QtGui.QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.setSpacing(0)
+        self.header = QtGui.QToolButton()
+        self.header.setObjectName(f"ABM_SectionHeader_{name}")
+        self.header.setText(title)
+        self.header.setToolTip(title)
+        self.header.setToolButtonStyle(QtCore.Qt.ToolButtonIconOnly)
+        self.header.setAutoRaise(True)
+        self.header.setCheckable(True)
+        self.header.setChecked(True)
+        self.header.setStyleSheet("QToolButton { border: none; }")
+        self.header.toggled.connect(self._toggled)
+        self.title = _Title(f"<b>{title}</b>", self.header)
+        self.title.setObjectName(f"ABM_SectionTitle_{name}")
+        row = QtGui.QHBoxLayout()
+        row.setContentsMargins(0, 0, 0, 0)
+        row.setSpacing(2)
+        row.addWidget(self.header)
+        row.addWidget(self.title, 1)
+        layout.addLayout(row)
+        self.body = QtGui.QWidget()
+        self.rows = QtGui.QFormLayout(self.body)
+        self.rows.setContentsMargins(12, 0, 0, 4)
+        self.rows.setVerticalSpacing(2)
+        self.rows.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
+        self.rows.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
+        self._grid = None
+        layout.addWidget(self.body)
+        self._toggled(True)
+
+    def grid(self, label, widget):
+        """Put `widget` beside the fields before it, its `label` above it."""
+        if self._grid is None:
+            self._grid = QtGui.QGridLayout()
+            self._grid.setContentsMargins(0, 0, 0, 0)
+            self._grid.setVerticalSpacing(0)
+            self.rows.addRow(self._grid)
+        column = self._grid.columnCount() if self._grid.count() else 0
+        self._grid.addWidget(QtGui.QLabel(translate(label)), 0, column)
+        self._grid.addWidget(widget, 1, column)
+
+    def fold(self, folded):
+        """Fold the section (only its header shown) or unfold it."""
+        self.header.setChecked(not folded)
+
+    def folded(self):
+        return not self.header.isChecked()
+
+    def _toggled(self, shown):
+        self.header.setArrowType(QtCore.Qt.DownArrow if shown else QtCore.Qt.RightArrow)
+        self.body.setVisible(shown)
+
+
+class _Note(QtGui.QLabel):
+    """A label shown only while it has text: the empty message and note take no room above the fields
+    (all sections unfolded, the panel then fits a 1000-pixel screen with its labels wrapped)."""
+
+    def __init__(self):
+        super().__init__()
+        self.setVisible(False)
+
+    def setText(self, text):  # noqa: N802 (Qt's name)
+        super().setText(text)
+        self.setVisible(bool(text))
+
+
+class _Title(QtGui.QLabel):
+    """A section's title: wraps, and a click on it folds or unfolds the section as its arrow `button` does."""
+
+    def __init__(self, text, button):
+        super().__init__(text)
+        self.button = button
+        self.setWordWrap(True)
+        self.setSizePolicy(QtGui.QSizePolicy.Expanding, QtGui.QSizePolicy.Preferred)
+
+    def mousePressEvent(self, event):  # noqa: N802 (Qt's name)
+        if event.button() == QtCore.Qt.LeftButton:
+            self.button.toggle()
+        event.accept()
+
+
+class Combo(QtGui.QComboBox):
+    """A combo box that the mouse wheel changes only once it has the focus (clicked or tabbed to): a wheel
+    turned over it while the panel scrolls goes on scrolling the panel."""
+
+    def __init__(self, *args):
+        super().__init__(*args)
+        self.setFocusPolicy(QtCore.Qt.StrongFocus)
+
+    def wheelEvent(self, event):  # noqa: N802 (Qt's name)
+        if self.hasFocus():
+            super().wheelEvent(event)
+        else:
+            event.ignore()
+
+
 def _property_value(obj, name):
     value = getattr(obj, name)
     return float(getattr(value, "Value", value))
@@ -487,6 +651,14 @@ class NumberField(QtGui.QAbstractSpinBox):
     def __init__(self, unit, step, parameter, parent):
         super().__init__(parent)
         self.unit, self.step, self.parameter = unit, step, parameter
+        self.setFocusPolicy(QtCore.Qt.StrongFocus)
+
+    def wheelEvent(self, event):  # noqa: N802 (Qt's name)
+        """The wheel steps the field only once it has the focus; otherwise the panel scrolls on."""
+        if self.hasFocus():
+            super().wheelEvent(event)
+        else:
+            event.ignore()
 
     def stepped(self, steps):
         """The number `steps` steps on (to 9 decimals: 0.11, not 0.11000000000000001), or None: no number

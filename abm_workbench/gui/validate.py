@@ -23,9 +23,10 @@ import time
 import numpy as np
 
 from ..errors import InputError, ParameterError
+from .cancel import Cancelled as _WorkCancelled  # not .worker: this module runs without Qt too
 
 
-class Cancelled(Exception):
+class Cancelled(_WorkCancelled):
     """The user cancelled the validation; nothing was written."""
 
 
@@ -61,6 +62,13 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
     None: the preference "Validation workers".
     InputError with the command line's message for bad input.
     """
+    return prepare(obj, cls, folder, workers)(progress)
+
+
+def prepare(obj, cls, folder, workers=None):
+    """The validation of :func:`validate_engagement` in two halves: this one reads the document object `obj`
+    (its inputs, on the GUI thread), and returns the other, ``run(progress=None)`` -> the report's path,
+    which touches no document object (the worker thread runs it, gui.worker)."""
     from ..features.engagement import force_model_of
     from ..jobs.run import pass_forces_of, validate_without_corner, validation as checked_validation
     from ..report.html import ReportJob, write_report
@@ -82,31 +90,36 @@ def validate_engagement(obj, cls, folder, progress=None, workers=None):
                                                                             tool, settings, model))
     if sweep is not None:
         sweep = (sweep[0], np.asarray(sweep[1])[index])
-    try:
-        validation, helix = checked_validation(solid, stock.model, tool, pass_, settings, progress=progress,
-                                               workers=validation_workers() if workers is None else workers,
-                                               sweep=sweep)
-    except NoEngagementError:
-        raise InputError(f"{hints.source}: the tool never touches the stock at CL points "
-                         f"{_cl_list(chosen)}") from None
-    forces = None if model is None else pass_forces_of(stock.model, tool, pass_, settings, model,
-                                                         validation.engagement, in_process=sweep)
-    subset = len(chosen) < len(toolpath)
-    run = "ABM against booleans" if helix is None else (
-        f"Helical edges (β = {tool.helix:g}°), flute 1 of {tool.flutes}, ABM against booleans")
-    title = f"{run}: {obj.Label} ({os.path.basename(stock.source)} / {os.path.basename(hints.source)})"
-    description = (f"CL points {_cl_list(chosen)} of the pass, numbered 0..{len(chosen) - 1} here."
-                   if subset else "")
-    walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
-    job = ReportJob(title, description, stock.source, hints.source, pass_, tool, settings,
-                    parameters.describe(lambda parameter: parameter.prop), walls, stock.y_window, stock_seconds,
-                    stock_model="in-process: the stock minus what earlier cutting moves of the program removed"
-                    if sweep is not None else "initial: the stock as given" + (f" ({model_note})" if model_note else ""))
-    shown = [(i, f"pass CL {cl}") for i, cl in enumerate(chosen)][:6]
-    os.makedirs(os.path.dirname(os.path.abspath(folder)), exist_ok=True)
-    with staged(folder, folder=True) as temporary:
-        page = write_report(temporary, validation, job, shown, forces)
-    return os.path.join(os.path.abspath(folder), os.path.basename(page))
+    label, workers = obj.Label, validation_workers() if workers is None else workers
+
+    def run(progress=None):
+        try:
+            validation, helix = checked_validation(solid, stock.model, tool, pass_, settings, progress=progress,
+                                                   workers=workers, sweep=sweep)
+        except NoEngagementError:
+            raise InputError(f"{hints.source}: the tool never touches the stock at CL points "
+                             f"{_cl_list(chosen)}") from None
+        forces = None if model is None else pass_forces_of(stock.model, tool, pass_, settings, model,
+                                                             validation.engagement, in_process=sweep)
+        subset = len(chosen) < len(toolpath)
+        what = "ABM against booleans" if helix is None else (
+            f"Helical edges (β = {tool.helix:g}°), flute 1 of {tool.flutes}, ABM against booleans")
+        title = f"{what}: {label} ({os.path.basename(stock.source)} / {os.path.basename(hints.source)})"
+        description = (f"CL points {_cl_list(chosen)} of the pass, numbered 0..{len(chosen) - 1} here."
+                       if subset else "")
+        walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
+        job = ReportJob(title, description, stock.source, hints.source, pass_, tool, settings,
+                        parameters.describe(lambda parameter: parameter.prop), walls, stock.y_window, stock_seconds,
+                        stock_model="in-process: the stock minus what earlier cutting moves of the program removed"
+                        if sweep is not None else
+                        "initial: the stock as given" + (f" ({model_note})" if model_note else ""))
+        shown = [(i, f"pass CL {cl}") for i, cl in enumerate(chosen)][:6]
+        os.makedirs(os.path.dirname(os.path.abspath(folder)), exist_ok=True)
+        with staged(folder, folder=True) as temporary:
+            page = write_report(temporary, validation, job, shown, forces)
+        return os.path.join(os.path.abspath(folder), os.path.basename(page))
+
+    return run
 
 
 def _cl_list(cls):

@@ -256,11 +256,21 @@ class EngagementViewProvider(ViewProvider):
             self.overlay.addChild(line)
         marker, where, dot = coin.SoBaseColor(), coin.SoCoordinate3(), coin.SoPointSet()
         marker.rgb.setValue(*HIGHLIGHT_POINT_COLOUR)
-        toolpath = self.Object.Toolpath
-        centre = toolpath.Proxy.load(toolpath)[0].cl[cl] if toolpath is not None else lep.mean(axis=0)
+        centre = self.cl_point(cl, lep)
         where.point.setValue(*map(float, centre))
         for node in (marker, where, dot):
             self.overlay.addChild(node)
+
+    def cl_point(self, cl, lep):
+        """The CL point `cl` (3,) mm in part coordinates, from the toolpath; when its file cannot be read (a
+        document opened without its input files), the middle of the chosen CL point's LEP (k, 3)."""
+        from ..errors import InputError
+
+        toolpath = self.Object.Toolpath
+        try:
+            return toolpath.Proxy.load(toolpath)[0].cl[cl]
+        except (InputError, AttributeError, IndexError):
+            return lep.mean(axis=0)
 
 
 #: Highlight of the chosen CL point: colour, line width and point size (px).
@@ -383,9 +393,18 @@ class _Observer:
 
     def slotUndoDocument(self, doc):
         self._restyle(doc)
+        state.tell("gone")
 
     def slotRedoDocument(self, doc):
         self._restyle(doc)
+        state.tell("gone")
+
+    def slotDeletedObject(self, obj):
+        """An engagement deleted (or taken back by undo): the dock lets it go once it is gone."""
+        if kind(obj) == "ABM::Engagement":
+            from PySide import QtCore
+
+            QtCore.QTimer.singleShot(0, lambda: state.tell("gone"))
 
     @staticmethod
     def _restyle(doc):

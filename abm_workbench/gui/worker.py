@@ -1,77 +1,122 @@
-"""The engine off the GUI thread during a recompute: a worker thread, progress and Cancel.
+"""Long work off the GUI thread: a worker thread, progress and Cancel.
 
-FreeCAD's document is not thread-safe, so an engagement's recompute stays on the GUI thread;
-only its pure-numpy engine calls (``features.engagement.engine_call``: flute 1's engagement
-and the forces) run in a worker thread (:func:`run`), while the GUI thread waits in an event
-loop of its own and stays drawn. For the first SILENT_MS the wait shows only a wait cursor and
-holds user input back (Qt delivers it afterwards); a longer one shows the modal progress
-dialog ``ABM_Engine`` (CL points done of all, from the engine's own ``progress(done, total)``
-after each chunk of CL points) with Cancel. Cancel stops the engine at its next chunk (the
-callback raises in the worker) and fails the recompute with :class:`Cancelled`, an
-InputError: the task panel says so and stays open, its Cancel then goes back as after any
-failed OK. An engine call without steps (the forces) cannot stop half-way: Cancel stops the
-wait at once and the call's result is thrown away when it ends.
+FreeCAD's document is not thread-safe, so recomputes and everything that touches document objects
+stay on the GUI thread; the long pure calls they make run in a worker thread (:func:`work`), while
+the GUI thread waits in an event loop of its own and stays drawn:
 
-:func:`install` puts :func:`run` in place of the plain call (InitGui does it through
+- the engagement's engine calls (``features.engagement.engine_call``: flute 1's engagement, the
+  in-process engine and the forces);
+- reading and recognising a stock (``features.stock.recognise_call``);
+- not yet the in-process stock's OpenCASCADE booleans (``features.inprocess_stock.boolean_call`` is
+  their hook, but in a worker thread they crashed FreeCAD: they run on the GUI thread, as before);
+- validation (``gui.validate``: the engine and the boolean reference, the report written);
+- reading a toolpath file to ask which operation to compute (``gui.commands``).
+
+For the first SILENT_MS the wait shows only a wait cursor and holds user input back (Qt delivers
+it afterwards); a longer one shows a modal progress dialog (``ABM_Engine``; validation its own
+``ABM_Progress``) with the steps done of all, from the call's own ``progress(done, total)`` when it
+takes one, and **Cancel**. Cancel ends the wait at once (within POLL_MS): the call is asked to stop
+(its next ``progress`` raises in the worker), its result is thrown away whenever it ends, and the
+caller gets :class:`Cancelled` (an InputError: a recompute fails with ``recompute cancelled:
+nothing computed``). A call without steps (the forces, one boolean) cannot stop half-way: it ends on
+its own in the background, its result unused; a call that ends within GRACE_MS of Cancel is waited
+for, so what it started (validation's worker processes) is ended before the caller goes on.
+
+:func:`install` puts :func:`run` in place of the plain calls (InitGui does it through
 ``view_providers.install_observer``).
 """
 
 import inspect
 import threading
+import time
 
 from PySide import QtCore, QtGui
 
-from ..errors import InputError
+from .cancel import Cancelled  # also worker.Cancelled, as callers name it
+from .i18n import noop
 
 #: Milliseconds a wait stays silent (wait cursor, user input held back) before the progress dialog shows.
 SILENT_MS = 400
 #: Milliseconds between two looks at the worker's progress.
 POLL_MS = 50
+#: Milliseconds a cancelled call is waited for (the GUI drawn) before it is left to end in the background.
+GRACE_MS = 3000
+#: The engine's words (the default of :func:`work`).
+ENGINE_TEXT = noop("Computing the engagement…")
+CANCELLED = "recompute cancelled: nothing computed"
 #: Worker threads given up by Cancel that still run (kept alive until they end).
 _ABANDONED = set()
 
 
-class Cancelled(InputError):
-    """The engine was stopped by Cancel: the recompute made nothing."""
-
-
 def install():
-    """Run the engagements' engine calls through :func:`run` (the GUI's worker thread)."""
-    from ..features import engagement
+    """Run the engagements' engine calls, the stocks' recognition and the in-process stock's booleans
+    through worker threads."""
+    from ..features import engagement, inprocess_stock, stock
 
     engagement.engine_call = run
+    stock.recognise_call = lambda function, *args, **keywords: work(
+        function, *args, text=noop("Reading and recognising the stock…"), **keywords)
+    # The in-process stock's booleans stay on the GUI thread: in a worker thread they crashed FreeCAD (the
+    # GUI test of the dock and the in-process stock); inprocess_stock.boolean_call is the place for it.
+    del inprocess_stock
 
 
 def run(function, *args):
-    """function(*args) in a worker thread, the GUI kept drawn meanwhile (see the module docstring);
-    its value, or its exception raised here; Cancelled when the user cancels."""
+    """The engine's function(*args) in a worker thread (:func:`work` with the engine's words)."""
+    return work(function, *args)
+
+
+def work(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED, sink=None, **keywords):
+    """function(*args, **keywords) in a worker thread, the GUI kept drawn meanwhile (see the module
+    docstring); its value, or its exception raised here; when the user cancels, `cancelled` if it is an
+    exception, else Cancelled(`cancelled`).
+
+    text: the progress dialog's words (translated). sink: a progress(done, total) callback of the GUI
+    thread with a ``dialog`` (QProgressDialog) it shows at once (gui.progress.ProgressDialog): it gets
+    every step of the call, in order, and raising from it cancels; None: the worker's own dialog after
+    SILENT_MS.
+    """
     if QtGui.QApplication.instance() is None or threading.current_thread() is not threading.main_thread():
-        return function(*args)  # no GUI, or not its thread: nothing to keep drawn
-    job = _Job(function, args)
-    thread, loop, silent = _Thread(job), QtCore.QEventLoop(), QtCore.QTimer()
+        return function(*args, **keywords)  # no GUI, or not its thread: nothing to keep drawn
+    job = _Job(function, args, keywords, cancelled)
+    thread, loop = _Thread(job), QtCore.QEventLoop()
     thread.finished.connect(loop.quit)
-    silent.setSingleShot(True)
-    silent.timeout.connect(loop.quit)
     thread.start()
-    silent.start(SILENT_MS)
-    loop.exec_(QtCore.QEventLoop.ExcludeUserInputEvents)
-    silent.stop()
-    if thread.isRunning():
-        _wait_with_dialog(job, thread, loop)
+    if sink is None:
+        silent = QtCore.QTimer()
+        silent.setSingleShot(True)
+        silent.timeout.connect(loop.quit)
+        silent.start(SILENT_MS)
+        QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        try:
+            loop.exec_(QtCore.QEventLoop.ExcludeUserInputEvents)
+        finally:
+            QtGui.QApplication.restoreOverrideCursor()
+        silent.stop()
+        if thread.isRunning():
+            _wait_with_dialog(job, thread, loop, text)
+    else:
+        _wait_with_sink(job, thread, loop, sink)
+    if thread.isRunning() and job.cancel.is_set():  # give it a moment to stop and clean up
+        grace = QtCore.QTimer()
+        grace.setSingleShot(True)
+        grace.timeout.connect(loop.quit)
+        grace.start(GRACE_MS)
+        loop.exec_(QtCore.QEventLoop.ExcludeUserInputEvents)
+        grace.stop()
     if thread.isRunning():  # cancelled during a call without steps: let it end on its own
         _ABANDONED.add(thread)
         thread.finished.connect(lambda: _ABANDONED.discard(thread))
     return job.outcome()
 
 
-def _wait_with_dialog(job, thread, loop):
+def _wait_with_dialog(job, thread, loop, text):
     """Wait for `thread` in `loop` with the progress dialog; Cancel asks `job` to stop and ends the wait."""
     import FreeCADGui
 
     from .i18n import translate
 
-    dialog = QtGui.QProgressDialog(translate("Computing the engagement…"), translate("Cancel"), 0, 0,
-                                   FreeCADGui.getMainWindow())
+    dialog = QtGui.QProgressDialog(translate(text), translate("Cancel"), 0, 0, FreeCADGui.getMainWindow())
     dialog.setObjectName("ABM_Engine")
     dialog.setWindowTitle("ABM")
     dialog.setWindowModality(QtCore.Qt.ApplicationModal)
@@ -87,7 +132,7 @@ def _wait_with_dialog(job, thread, loop):
             dialog.setValue(done)
 
     def cancel():
-        job.cancel.set()
+        job.stop()
         loop.quit()
 
     timer.timeout.connect(look)
@@ -101,31 +146,94 @@ def _wait_with_dialog(job, thread, loop):
     dialog.deleteLater()
 
 
-class _Job:
-    """function(*args) run once, with the engine's progress callback when it takes one."""
+def _wait_with_sink(job, thread, loop, sink):
+    """Wait for `thread` in `loop`, handing each step of `job` to `sink` on this thread; Cancel on its
+    dialog, or `sink` raising, stops `job` and ends the wait."""
+    timer = QtCore.QTimer()
 
-    def __init__(self, function, args):
-        self.function, self.args = function, args
-        self.done = (0, 0)  # (CL points done, all), written by the worker
+    def cancel():
+        job.stop()
+        loop.quit()
+
+    def look():
+        for done, total in job.take_steps():
+            try:
+                sink(done, total)
+            except Exception as error:  # noqa: BLE001 (the sink's way to cancel, e.g. validate.Cancelled)
+                job.stop(error)
+                loop.quit()
+                return
+
+    timer.timeout.connect(look)
+    dialog = getattr(sink, "dialog", None)
+    if dialog is not None:
+        dialog.canceled.connect(cancel)
+    timer.start(POLL_MS)
+    loop.exec_()
+    timer.stop()
+    if not job.cancel.is_set():
+        look()  # the steps of the last moments
+
+
+class _Job:
+    """function(*args, **keywords) run once, with the progress callback when it takes one."""
+
+    def __init__(self, function, args, keywords, cancelled):
+        self.function, self.args, self.keywords, self.cancelled = function, args, keywords, cancelled
+        self.done = (0, 0)  # (steps done, all), written by the worker
+        self.steps = []  # every (done, all) not yet handed to a sink
+        self.lock = threading.Lock()
         self.cancel = threading.Event()
+        self.reason = None  # the exception a sink cancelled with
         self.value, self.error = None, None
+        self.seconds = None
+
+    def stop(self, reason=None):
+        if not self.cancel.is_set():
+            self.reason = reason
+            self.cancel.set()
 
     def progress(self, done, total):
         self.done = (done, total)
+        with self.lock:
+            self.steps.append((done, total))
         if self.cancel.is_set():
-            raise Cancelled("recompute cancelled: nothing computed")
+            raise self.cancelled_error()
+
+    def cancelled_error(self):
+        """The exception a cancelled call ends with: `cancelled` itself when it is one, else Cancelled(it)."""
+        return self.cancelled if isinstance(self.cancelled, BaseException) else Cancelled(self.cancelled)
+
+    def take_steps(self):
+        with self.lock:
+            steps, self.steps = self.steps, []
+        return steps
+
+    def _takes_progress(self):
+        if "progress" in self.keywords:
+            return False
+        try:
+            return "progress" in inspect.signature(self.function).parameters
+        except (TypeError, ValueError):
+            return False
 
     def __call__(self):
+        started = time.perf_counter()
         try:
-            steps = "progress" in inspect.signature(self.function).parameters
-            self.value = self.function(*self.args, progress=self.progress) if steps else self.function(*self.args)
+            if self._takes_progress():
+                self.value = self.function(*self.args, progress=self.progress, **self.keywords)
+            else:
+                self.value = self.function(*self.args, **self.keywords)
         except BaseException as error:  # noqa: BLE001 (handed to the GUI thread, raised there)
             self.error = error
+        self.seconds = time.perf_counter() - started
 
     def outcome(self):
-        """The value; the worker's exception; Cancelled once cancelled."""
+        """The value; the worker's exception; Cancelled (or the sink's reason) once cancelled."""
         if self.cancel.is_set():
-            raise Cancelled("recompute cancelled: nothing computed")
+            if self.reason is not None:
+                raise self.reason
+            raise self.cancelled_error()
         if self.error is not None:
             raise self.error
         return self.value

@@ -42,9 +42,9 @@ QtCore.QTimer.singleShot(1500, run)
 """
 
 
-def run_macro(body, folder):
+def run_macro(body, folder, screen="1280x1024"):
     """The verdict (dict) of `body` (Python, sets keys of `verdict`) run inside the FreeCAD GUI, with HOME
-    `folder`/home and the macro and its verdict in `folder`."""
+    `folder`/home and the macro and its verdict in `folder`, on an X screen of `screen` pixels ("WxH")."""
     if shutil.which("xvfb-run") is None or shutil.which("freecad") is None:
         pytest.fail("the GUI tier needs xvfb-run and freecad (make deps installs them)")
     out, macro = folder / "verdict.json", folder / "macro.py"
@@ -52,7 +52,7 @@ def run_macro(body, folder):
     home = folder / "home"
     home.mkdir(exist_ok=True)
     env = dict(os.environ, HOME=str(home), QTWEBENGINE_DISABLE_SANDBOX="1")
-    process = subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "freecad", str(macro)],
+    process = subprocess.Popen(["xvfb-run", "-a", "-s", f"-screen 0 {screen}x24", "freecad", str(macro)],
                                env=env, cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                start_new_session=True)
     try:

@@ -290,7 +290,9 @@ def test_panel_opens_where_deleted_widgets_left_their_wrappers(tmp_path, run_gui
     # (the CI failure: after an OK, the next setEdit opened no panel): the panel lets the stale wrappers
     # go, opens, checks typed text and applies it
     verdict = run_body(tmp_path, run_gui, STALE_BODY)
-    assert verdict["stale"] == 2 * 12  # 12 fields of lengths and angles and their line edits
+    # 13 fields of lengths and angles (diameter, flute length, corner radius, helix angle, feed per tooth,
+    # inclination, φ start, end and step, y window from and to, immersion from and to) and their line edits
+    assert verdict["stale"] == 2 * 13
     assert verdict["field"] == ["NumberField", "QLineEdit"]  # the panel's own field found, not a button box
     assert verdict["letters"] == ["Tool diameter: “1x2” is not a length: type a number, with a unit if you like "
                                   "(12 mm, 0.5 in).", False]

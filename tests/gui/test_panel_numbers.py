@@ -293,5 +293,6 @@ def test_fuzz_typed_strings_are_read_in_the_declared_unit_or_refused(tmp_path, r
     verdict = run_body(tmp_path, run_gui, FUZZ_BODY.replace("{examples}", str(FUZZ_EXAMPLES)))
     accepted, refused, fields, names = verdict["fuzz"]
     assert accepted > 10 and refused > 10 and len(fields) > 10, verdict["fuzz"]
-    assert len(names) == 18  # all but the y window (a JSON stock has none)
+    assert len(names) == 19 and "CornerRadius" in names and "YWindowMin" not in names, names  # all 21 number
+    # fields but the y window's two (a JSON stock has none)
     assert clean("\n".join(verdict["report"])), verdict["report"]
