@@ -71,6 +71,8 @@ _SAMPLE_EVERY = 4
 _SEED_EVERY = 16
 #: Spans remembered per line as solved for it (_Solved).
 _SOLVED = 4
+#: Spheres per KD query of _sphere_chains (bounds the memory of the pairs it finds).
+_SPHERE_BLOCK = 1024
 
 
 def _float_array(name, value, shape, copy=True):
@@ -815,14 +817,21 @@ def _sphere_chains(centre, radius, before, pieces, among=None):
     from scipy.spatial import cKDTree
 
     reach = float(radius[live].max() + pieces.ball_bound.max())
-    near = cKDTree(centre[live]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
-    i, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
-    keep = near["v"] <= radius[live][i] + pieces.ball_bound[ball]
     chains = pieces.chain_first.size
-    pair = _distinct(i[keep] * chains + pieces.ball_chain[ball[keep]], live.size * chains)
-    i, k = live[pair // chains], pair % chains
-    keep = pieces.chain_move[k] <= before[i]
-    return i[keep], k[keep]
+    found = []
+    # The spheres in blocks: the (sphere, ball) pairs within reach grow with the earlier moves
+    # stacked near the lines (every z level above a deep one), the block's memory with them.
+    for begin in range(0, live.size, _SPHERE_BLOCK):
+        mine = live[begin:begin + _SPHERE_BLOCK]
+        near = cKDTree(centre[mine]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
+        i, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
+        keep = near["v"] <= radius[mine][i] + pieces.ball_bound[ball]
+        del near
+        pair = _distinct(i[keep] * chains + pieces.ball_chain[ball[keep]], mine.size * chains)
+        i, k = mine[pair // chains], pair % chains
+        keep = pieces.chain_move[k] <= before[i]
+        found.append((i[keep], k[keep]))
+    return np.concatenate([f[0] for f in found]), np.concatenate([f[1] for f in found])
 
 
 def _distinct(keys, bound):

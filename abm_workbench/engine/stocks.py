@@ -13,6 +13,7 @@ import dataclasses
 
 import numpy as np
 
+from . import inprocess_pass
 from .engagement import edge_lines, empty_results, engage, finished_engagement, inside_intervals
 from .inprocess import inprocess_intervals, removal_intervals, subtract
 from .inprocess_arc import arc_removal_intervals
@@ -100,6 +101,8 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
     """
     if tool.corner_radius > 0.0:
         return _corner_in_process(stock, tool, toolpath, settings, pieces, program_index)
+    if inprocess_pass.shared(stock, tool, toolpath):
+        return _engage_shared(stock, tool, toolpath, settings, pieces, program_index)
     initial = engage_stock(stock, tool, toolpath, settings)
     m, p = initial.shape
     program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
@@ -129,6 +132,38 @@ def engage_in_process(stock, tool, toolpath, settings, pieces, program_index):
     for name, values in per_cl.items():
         values[touched[lost]] = getattr(in_process, name)[lost]
     return dataclasses.replace(initial, **per_cl), initial.length, changed
+
+
+def _engage_shared(stock, tool, toolpath, settings, pieces, program_index):
+    """engage_in_process where the stock's edge lines are solved once (inprocess_pass): the same
+    Engagement, initial length and changed, bit for bit."""
+    m, p = len(toolpath), settings.phi.size
+    program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
+    if program_index.shape != (m,):
+        raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
+    solve = inprocess_pass.shared_solve(stock, tool, toolpath, settings)
+    out, _, _, inside, base, direction = solve
+    length = out["length"].copy()  # the Engagement's own is overwritten below where changed
+    line = np.flatnonzero(length.reshape(-1) > 0.0)
+    rows, enter, leave = removal_intervals(pieces, program_index, line, out["lep_l"].reshape(-1)[line],
+                                           out["uep_l"].reshape(-1)[line], base.reshape(-1, 3),
+                                           np.repeat(direction, p, axis=0), p)
+    changed = np.zeros(m, dtype=bool)
+    if rows.size:
+        remaining = subtract(inside, rows, enter, leave)
+        changed = (remaining.length != inside.length).reshape(-1, p).any(axis=1)
+    lost = np.flatnonzero(changed)
+    initial = inprocess_pass.stock_engagement(solve, stock, tool, toolpath, settings, np.flatnonzero(~changed))
+    if lost.size == 0:
+        return initial, length, changed
+    lines = (base[lost].reshape(-1, 3), np.repeat(direction[lost], p, axis=0))
+    in_process = engagement_from_intervals(inprocess_pass.cl_rows(remaining, lost, p), toolpath.rows(lost), tool,
+                                           settings, *lines)
+    per_cl = {field.name: getattr(initial, field.name) for field in dataclasses.fields(initial)
+              if field.name not in ("phi", "h")}
+    for name, values in per_cl.items():
+        values[lost] = getattr(in_process, name)
+    return dataclasses.replace(initial, **per_cl), length, changed
 
 
 def in_process_lengths(stock, tool, toolpath, phi_deg, pieces, program_index):
