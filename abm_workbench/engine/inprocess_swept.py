@@ -321,10 +321,20 @@ def _newton_entry(origin, direction, base, axis, radius, height, corner, start, 
     walking from l = start (outside) in the direction `sign` (+1 up, −1 down); NaN where it misses.
 
     Newton's method on the gauge along the line, convex: its tangent lies below it, so every step stays
-    short of the boundary, and a point with the gauge positive and not falling ahead proves a miss."""
+    short of the boundary, and a point with the gauge positive and not falling ahead proves a miss.
+    A line across the axis (direction·W = 0 as computed) or along it is solved in closed form instead
+    (_square_entry): Newton's method converges only linearly where such a line grazes a flat face (an
+    end edge in the bottom plane of an earlier position of the same tool)."""
     l = np.array(start, dtype=float)
     found = np.full(l.shape, np.nan)
-    live = np.arange(l.size)
+    uw = row_dot(direction, axis)
+    across = direction - uw[:, None] * axis
+    square = (uw == 0.0) | ~np.any(across, axis=1)
+    if square.any():
+        rows = np.flatnonzero(square)
+        found[rows] = _square_entry(origin[rows], direction[rows], base[rows], axis[rows], radius[rows], height[rows],
+                                    corner[rows], l[rows], sign, uw[rows] == 0.0)
+    live = np.flatnonzero(~square)
     for _ in range(NEWTON_MAX):
         if live.size == 0:
             break
@@ -341,6 +351,45 @@ def _newton_entry(origin, direction, base, axis, radius, height, corner, start, 
         found[live[done & ~miss]] = l[live[done & ~miss]]
         live = live[~(done | miss)]
     found[live] = l[live]
+    return found
+
+
+def _square_entry(origin, direction, base, axis, radius, height, corner, start, sign, flat):
+    """_newton_entry for lines across the axis (flat (K,) True: direction·W = 0) or along it (False).
+
+    Across: the height a is constant along the line, and the tool's section there is a disc: of radius
+    R − r + t, t = √(r² − (r − a)₊²), where (r − a)₊ ≤ r and a ≤ H (a corner: dist(q, K) ≤ r); of radius R
+    where 0 ≤ a ≤ H (a flat end). The line enters it at a root of |b0 + l·u|² = ρ². Along: |b| is constant,
+    and the line is inside where a lies between a_low and H, a_low = r − √(r² − (|b| − (R − r))₊²) (0 for a
+    flat end, where |b| ≤ R). The rules of the gauge, so the same points are inside."""
+    q = origin - base
+    a = row_dot(q, axis)
+    b = q - a[:, None] * axis
+    bb = row_dot(b, b)
+    bend = corner > 0.0
+    rim = radius - corner
+    with np.errstate(invalid="ignore", divide="ignore"):
+        low = np.maximum(corner - a, 0.0)
+        reach = np.where(bend, rim + np.sqrt(np.maximum(corner * corner - low * low, 0.0)), radius)
+        level = np.where(bend, low <= corner, a >= 0.0) & (a <= height)
+        # Across: the roots of uu·l² + 2·bu·l + bb − ρ² = 0.
+        uu, bu = row_dot(direction, direction), row_dot(b, direction)
+        first, second = _quadratic(uu, bu, bb - reach * reach)
+        near, far = np.fmin(first, second), np.fmax(first, second)
+        # Along: the heights where the line is inside; a = a0 + l·uw.
+        nb = np.sqrt(bb)
+        out = np.maximum(nb - rim, 0.0)
+        bottom = np.where(bend, corner - np.sqrt(corner * corner - out * out), 0.0)
+        fits = np.where(bend, out <= corner, nb <= radius) & (bottom <= height)
+        uw = row_dot(direction, axis)
+        ends = np.stack([(bottom - a) / uw, (height - a) / uw])
+    enter = np.where(flat, near, np.min(ends, axis=0))
+    leave = np.where(flat, far, np.max(ends, axis=0))
+    hit = np.where(flat, level & ~np.isnan(near), fits)
+    if sign > 0.0:
+        found = np.where(hit & (leave >= start), np.maximum(enter, start), np.nan)
+    else:
+        found = np.where(hit & (enter <= start), np.minimum(leave, start), np.nan)
     return found
 
 
