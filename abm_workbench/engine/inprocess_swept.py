@@ -208,13 +208,14 @@ def _quadratic(a, b, c):
     return np.where(a != 0.0, first, linear), np.where(a != 0.0, second, np.nan)
 
 
-def monotone_root(func, x_neg, x_pos, f_neg, f_pos, tol, accept=0.0, max_steps=200):
+def monotone_root(func, x_neg, x_pos, f_neg, f_pos, tol, accept=0.0, max_steps=200, bracket=False):
     """(n,) a root of each monotone function in its bracket: func(rows, x) gives the values (len(rows),) of
     the functions `rows` (indices 0 … n − 1) at x; f ≤ 0 at x_neg and f > 0 at x_pos (n,), in either
     order. The Illinois method (the secant through the bracket's ends, halving the value of an end kept
     twice running), with a bisection step whenever four steps leave the bracket wider than half what it
     was, until the bracket is within tol (n,) or a value is within accept (n,) of 0 (that point is the
-    root: a function flat to rounding there has no better one); otherwise the bracket's middle."""
+    root: a function flat to rounding there has no better one); otherwise the bracket's middle. With
+    `bracket`, (root, x_neg, x_pos, f_neg, f_pos): the last bracket too (x_neg the root where a value was 0)."""
     x_neg, x_pos, f_neg, f_pos = (np.array(v, dtype=float) for v in (x_neg, x_pos, f_neg, f_pos))
     tol = np.broadcast_to(np.asarray(tol, dtype=float), x_neg.shape)
     accept = np.broadcast_to(np.asarray(accept, dtype=float), x_neg.shape)
@@ -245,6 +246,8 @@ def monotone_root(func, x_neg, x_pos, f_neg, f_pos, tol, accept=0.0, max_steps=2
         exact = np.abs(fx) <= accept[live]
         root[live] = np.where(exact, x, 0.5 * (x_neg[live] + x_pos[live]))
         live = live[~exact & (np.abs(x_pos[live] - x_neg[live]) > tol[live])]
+    if bracket:
+        return root, x_neg, x_pos, f_neg, f_pos
     return root
 
 
@@ -432,9 +435,18 @@ def line_swept_interval(origin, direction, c0, c1, axis, radius, height, corner)
         enter[fixed] = first + np.minimum(shift, 0.0)
         leave[fixed] = last + np.maximum(shift, 0.0)
     if general.size:
-        found = _through_shadow(q[general], u[general], m[general], cross[general], cross_len[general], w[general],
-                                big[general], h[general], r[general])
-        (l_in, s_in), (l_out, s_out) = found
+        # A move across the axis (three-axis moves at one height): the shadow is the tool's profile.
+        level = row_dot(m[general], w[general]) == 0.0
+        l_in, s_in, l_out, s_out = (np.full(general.size, np.nan) for _ in range(4))
+        for rows, solve in ((np.flatnonzero(level), _profile_crossings), (np.flatnonzero(~level), None)):
+            if rows.size == 0:
+                continue
+            at = general[rows]
+            if solve is None:
+                found = _through_shadow(q[at], u[at], m[at], cross[at], cross_len[at], w[at], big[at], h[at], r[at])
+            else:
+                found = solve(q[at], u[at], m[at], w[at], big[at], h[at], r[at])
+            (l_in[rows], s_in[rows]), (l_out[rows], s_out[rows]) = found
         base = (o[general], u[general])
         tool = (w[general], big[general], h[general], r[general])
         for l_val, s_val, start, sign, target in ((l_in, s_in, low_l[general], 1.0, enter),
@@ -462,41 +474,105 @@ def _through_shadow(q, u, m, cross, cross_len, axis, radius, height, corner):
     u_across = u - (row_dot(u, m) / mm)[:, None] * m
     speed = np.sqrt(row_dot(u_across, u_across))
     mu = u_across / speed[:, None]
-    tool = (axis, radius, height, corner)
-
-    def signed(theta):
-        n = np.cos(theta)[:, None] * nu + np.sin(theta)[:, None] * mu
-        point = support_points(n, *tool)
-        return row_dot(point - q, nu), point
-
     k = q.shape[0]
-    top, top_point = signed(np.zeros(k))
-    bottom, bottom_point = signed(np.full(k, np.pi))
-    hit = (top >= 0.0) & (bottom <= 0.0)
+    top, top_point = _shadow_signed(np.zeros(k), q, nu, mu, axis, radius, height, corner)
+    bottom, bottom_point = _shadow_signed(np.full(k, np.pi), q, nu, mu, axis, radius, height, corner)
+    hit = np.flatnonzero((top >= 0.0) & (bottom <= 0.0))
+    # Entry on the half-turn π … 2π (the distance rises), exit on π … 0 (it falls): both halves at once, rows
+    # hit[i] and then hit[i] again. Keep (angle, value, point) where the distance is ≤ 0 (neg) and > 0 (pos).
+    two = np.r_[hit, hit]
+    n = hit.size
+    q2, u2, m2, mm2, nu2, mu2, speed2 = (v[two] for v in (q, u, m, mm, nu, mu, speed))
+    tool = tuple(v[two] for v in (axis, radius, height, corner))
+    neg, pos = np.full(2 * n, np.pi), np.r_[np.full(n, 2.0 * np.pi), np.zeros(n)]
+
+    def signed(rows, theta):
+        return _shadow_signed(theta, q2[rows], nu2[rows], mu2[rows], *(v[rows] for v in tool))[0]
+
+    # The Illinois method down to the bisection's last bracket (SHADOW_STEPS halvings of π), then the support
+    # points at its ends (where a distance was 0, that angle and the last one above).
+    _, neg, pos, f_neg, f_pos = monotone_root(signed, neg, pos, bottom[two], top[two], np.pi * 0.5 ** SHADOW_STEPS,
+                                              bracket=True)
+    f_neg, p_neg = _shadow_signed(neg, q2, nu2, mu2, *tool)
+    f_pos, p_pos = _shadow_signed(pos, q2, nu2, mu2, *tool)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(f_pos > f_neg, f_pos / np.where(f_pos > f_neg, f_pos - f_neg, 1.0), 0.0)
+    y = p_pos + np.clip(t, 0.0, 1.0)[:, None] * (p_neg - p_pos)
+    l = row_dot(y - q2, mu2) / speed2
+    s = row_dot(q2 + l[:, None] * u2 - y, m2) / mm2
     out = []
-    # Exit on the half-turn 0 … π (the distance falls), entry on π … 2π (it rises).
-    for start, end, f_start, f_end, p_start, p_end in ((np.full(k, np.pi), np.full(k, 2.0 * np.pi), bottom, top,
-                                                        bottom_point, top_point),
-                                                       (np.full(k, np.pi), np.zeros(k), bottom, top, bottom_point,
-                                                        top_point)):
-        # Keep (angle, value, point) at the side where the distance is ≤ 0 (neg) and > 0 (pos).
-        neg, pos = start.copy(), end.copy()
-        f_neg, f_pos = f_start.copy(), f_end.copy()
-        p_neg, p_pos = p_start.copy(), p_end.copy()
-        for _ in range(SHADOW_STEPS):
-            mid = 0.5 * (neg + pos)
-            f_mid, p_mid = signed(mid)
-            up = f_mid > 0.0
-            pos = np.where(up, mid, pos)
-            f_pos = np.where(up, f_mid, f_pos)
-            p_pos = np.where(up[:, None], p_mid, p_pos)
-            neg = np.where(up, neg, mid)
-            f_neg = np.where(up, f_neg, f_mid)
-            p_neg = np.where(up[:, None], p_neg, p_mid)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = np.where(f_pos > f_neg, f_pos / np.where(f_pos > f_neg, f_pos - f_neg, 1.0), 0.0)
-        y = p_pos + np.clip(t, 0.0, 1.0)[:, None] * (p_neg - p_pos)
-        l = row_dot(y - q, mu) / speed
-        s = row_dot(q + l[:, None] * u - y, m) / mm
-        out.append((np.where(hit, l, np.nan), np.where(hit, s, np.nan)))
+    for half in (slice(0, n), slice(n, 2 * n)):
+        l_half, s_half = np.full(k, np.nan), np.full(k, np.nan)
+        l_half[hit], s_half[hit] = l[half], s[half]
+        out.append((l_half, s_half))
     return out[0], out[1]
+
+
+def _profile_crossings(q, u, m, axis, radius, height, corner):
+    """_through_shadow for moves across the axis (m·W = 0): seen along m the tool is its meridian profile,
+    {0 ≤ a ≤ H, |y| ≤ ρ(a)} in the heights a along W and y along e = W × m/|m|, the box |y| ≤ R, 0 ≤ a ≤ H
+    less, in each corner {a < r, ±y > R − r}, what lies outside the circle of radius r about (r, ±(R − r)).
+    The line's projection enters the box (slabs), and where that point lies in a corner outside its circle,
+    the circle (its first root, in closed form at a constant height or along the axis; the line leaves the
+    corner inside the circle, so where rounding loses a touching root, there). Likewise where it leaves. The tool's position at a point x of the prism's boundary
+    is x·m/|m|² (its part along m)."""
+    mm = row_dot(m, m)
+    e = np.cross(axis, m)
+    e /= np.sqrt(row_dot(e, e))[:, None]
+    a0, ua, y0, ue = row_dot(q, axis), row_dot(u, axis), row_dot(q, e), row_dot(u, e)
+    rim = radius - corner
+    da0 = a0 - corner
+    k = q.shape[0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lo, hi = np.full(k, -np.inf), np.full(k, np.inf)
+        miss = np.zeros(k, dtype=bool)
+        for start, rate, low, high in ((a0, ua, 0.0, height), (y0, ue, -radius, radius)):
+            still = rate == 0.0
+            miss |= still & ((start < low) | (start > high))
+            one, two = (low - start) / rate, (high - start) / rate
+            lo = np.where(still, lo, np.maximum(lo, np.minimum(one, two)))
+            hi = np.where(still, hi, np.minimum(hi, np.maximum(one, two)))
+        miss |= lo > hi
+        ends = []
+        for end, forward in ((lo, 1.0), (hi, -1.0)):
+            end = end.copy()
+            for side in (1.0, -1.0):
+                a, y = a0 + end * ua, side * (y0 + end * ue)
+                out = (a < corner) & (y > rim) & ((a - corner) ** 2 + (y - rim) ** 2 > corner * corner) & ~miss
+                if not out.any():
+                    continue
+                first, second = _quadratic(ua * ua + ue * ue, ua * da0 + side * ue * (side * y0 - rim),
+                                           da0 * da0 + (side * y0 - rim) ** 2 - corner * corner)
+                near = forward * np.fmin(forward * first, forward * second)
+                far = forward * np.fmax(forward * first, forward * second)
+                # A projection at a constant height (an end edge) or along the axis, without the quadratic's
+                # cancellation where it touches the circle: ±y = R − r + √(r² − (a − r)²), a = r − √(r² − (±y − R + r)²).
+                level, upright = ua == 0.0, ue == 0.0
+                reach = side * (rim + np.sqrt(np.maximum(corner * corner - da0 * da0, 0.0))) - y0
+                y_side = side * y0 - rim
+                lift = corner - np.sqrt(np.maximum(corner * corner - y_side * y_side, 0.0)) - a0
+                near = np.where(level, reach / ue, np.where(upright, lift / ua, near))
+                far = np.where(level | upright, near, far)
+                # Where the line leaves the corner, walking from this end: a = r or ±y = R − r.
+                leave_a = np.where(forward * ua > 0.0, (corner - a0) / ua, np.inf * forward)
+                leave_y = np.where(forward * side * ue < 0.0, (side * rim - y0) / ue, np.inf * forward)
+                leave = forward * np.fmin(forward * leave_a, forward * leave_y)
+                root = forward * np.fmin(np.fmax(forward * near, forward * end), forward * leave)
+                root = np.where(np.isnan(near) | (forward * (far - end) < 0.0), leave, root)
+                end = np.where(out, root, end)
+            ends.append(end)
+        l_in, l_out = ends
+        miss |= ~(l_in <= l_out)
+    out = []
+    for l in (l_in, l_out):
+        s = row_dot(q + l[:, None] * u, m) / mm
+        out.append((np.where(miss, np.nan, l), np.where(miss, np.nan, s)))
+    return out[0], out[1]
+
+
+def _shadow_signed(theta, q, nu, mu, axis, radius, height, corner):
+    """(signed distance (K,), point (K, 3)): the support point σ(n) of each tool for n = cos θ·ν + sin θ·μ,
+    and its distance from the line through q along ν (_through_shadow)."""
+    n = np.cos(theta)[:, None] * nu + np.sin(theta)[:, None] * mu
+    point = support_points(n, axis, radius, height, corner)
+    return row_dot(point - q, nu), point
