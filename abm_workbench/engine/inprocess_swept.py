@@ -160,18 +160,58 @@ def swept_gauge(x, c0, move, axis, radius, height, corner):
     bent = np.flatnonzero(~flat)
     if bent.size:
         s[bent] = _corner_position(q[bent], move[bent], axis[bent], radius[bent], height[bent], corner[bent])
-    value, pieces, grads = tool_gauge(q - s[:, None] * move, axis, radius, height, corner)
-    v = _subgradient(pieces, grads, move, s)
     qs = q - s[:, None] * move
-    a = row_dot(qs, axis)
-    b = qs - a[:, None] * axis
-    nb = np.sqrt(row_dot(b, b))
+    if flat.any():
+        value, pieces, grads = tool_gauge(qs, axis, radius, height, corner)
+        v = _subgradient(pieces, grads, move, s)
+        a = row_dot(qs, axis)
+        b = qs - a[:, None] * axis
+        nb = np.sqrt(row_dot(b, b))
+    else:
+        value, v, a, b, nb = _corner_gauge(qs, move, s, axis, radius, height, corner)
     rim = radius - corner
     with np.errstate(divide="ignore", invalid="ignore"):
         scale = np.where(nb > rim, rim / np.where(nb > 0.0, nb, 1.0), 1.0)
     foot = c0 + s[:, None] * move + np.where(flat, a, np.maximum(a, corner))[:, None] * axis
     foot = foot + np.where(flat, 0.0, scale)[:, None] * b
     return value, v, s, foot
+
+
+def _corner_gauge(q, move, s, axis, radius, height, corner):
+    """(g, v, a, b, |b|) for tools with a corner: tool_gauge and _subgradient with their two pieces, dist − r
+    and a − H (the same numbers, without the flat end's third piece)."""
+    a = row_dot(q, axis)
+    b = q - a[:, None] * axis
+    nb = np.sqrt(row_dot(b, b))
+    rim = radius - corner
+    positive = nb > 0.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        da = np.maximum(corner - a, 0.0)
+        shrink = np.where(positive, np.maximum(1.0 - rim / np.where(positive, nb, 1.0), 0.0), 0.0)
+        db = shrink[:, None] * b
+        dist = np.sqrt(da * da + row_dot(db, db))
+        tor_grad = np.where(dist[:, None] > 0.0, (db - da[:, None] * axis) / np.where(dist > 0.0, dist, 1.0)[:, None],
+                            0.0)
+    tor, top = dist - corner, a - height
+    value = np.maximum(tor, top)
+    # The active pieces (within ACTIVE of the largest) and their rates along the move.
+    tor_on, top_on = tor >= value - ACTIVE, top >= value - ACTIVE
+    r_tor, r_top = row_dot(tor_grad, move), row_dot(axis, move)
+    both = tor_on & top_on
+    # _subgradient's low and high: the smaller and larger rate of the active pieces (ties: the first, dist − r).
+    top_low = both & (r_top < r_tor) | ~tor_on
+    top_high = both & (r_top > r_tor) | ~tor_on
+    r_low, r_high = np.where(top_low, r_top, r_tor), np.where(top_high, r_top, r_tor)
+    g_low = np.where(top_low[:, None], axis, tor_grad)
+    g_high = np.where(top_high[:, None], axis, tor_grad)
+    inner = (s > 0.0) & (s < 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mix = np.where(r_high > r_low, r_high / (r_high - r_low), 1.0)
+    mix = np.clip(mix, 0.0, 1.0)
+    crossing = inner & (r_low < 0.0) & (r_high > 0.0)
+    v = np.where(crossing[:, None], mix[:, None] * g_low + (1.0 - mix)[:, None] * g_high,
+                 np.where((s >= 1.0)[:, None] | (inner & (np.abs(r_high) < np.abs(r_low)))[:, None], g_high, g_low))
+    return value, v, a, b, nb
 
 
 def _flat_position(q, move, axis, radius, height):
@@ -255,7 +295,8 @@ def _corner_position(q, move, axis, radius, height, corner):
     """(K,) the s in [0, 1] minimising max(dist(q − s·move, K) − r, a − H) for tools with a corner.
 
     In the numbers of each row (a and |b|² are linear and quadratic in s): first the s minimising the
-    distance (convex in s; its rate is monotone, its root found by monotone_root); where the top piece
+    distance (convex in s; its rate is monotone, its root found by monotone_root, or where |b| is least for
+    a move across the axis); where the top piece
     a − H is the larger there, the minimum of the two is where they meet on the side where a − H falls
     (or at that end of the move): the difference dist − r − (a − H) is convex, and Newton's method
     from that end reaches its root without passing it."""
@@ -280,11 +321,17 @@ def _corner_position(q, move, axis, radius, height, corner):
         return dist - corner[rows], rate, a - height[rows]
 
     k = q.shape[0]
+    if not da.any():
+        return _level_position(bb, bd, pp, rim)
     every = np.arange(k)
     zero, one = np.zeros(k), np.ones(k)
     rate0, rate1 = pieces(every, zero)[1], pieces(every, one)[1]
     s = np.where(rate0 >= 0.0, 0.0, 1.0)
-    inner = np.flatnonzero((rate0 < 0.0) & (rate1 > 0.0))
+    inner = (rate0 < 0.0) & (rate1 > 0.0)
+    # A move across the axis (a − r constant): the rate is shrink·(s·|b'|² − b0·b'), zero where |b| is least.
+    level = inner & (da == 0.0)
+    s[level] = np.clip(bd[level] / pp[level], 0.0, 1.0)
+    inner = np.flatnonzero(inner & ~level)
     if inner.size:
         # The rate's size, for a rate that is zero to rounding over a stretch (a move along a face).
         scale = (np.abs(a0) + corner + np.abs(da)) * np.abs(da) + pp + np.abs(bd)
@@ -316,6 +363,23 @@ def _corner_position(q, move, axis, radius, height, corner):
             live = live[(np.abs(step) > 1e-16) & (gap > 0.0)]
         at[reach] = np.clip(x, 0.0, 1.0)
         s[climb] = at
+    return s
+
+
+def _level_position(bb, bd, pp, rim):
+    """_corner_position for moves across the axis (every row): a is constant, so the rate of dist² is
+    shrink·(s·|b'|² − b0·b') (the same numbers as there), and the top piece never decides."""
+    def rate(s):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            nb = np.sqrt(np.maximum(bb - s * (2.0 * bd - s * pp), 0.0))
+            shrink = np.where(nb > 0.0, np.maximum(1.0 - rim / np.where(nb > 0.0, nb, 1.0), 0.0),
+                              np.where(rim > 0.0, 0.0, 1.0))
+        return shrink * (s * pp - bd)
+
+    rate0, rate1 = rate(0.0), rate(1.0)
+    s = np.where(rate0 >= 0.0, 0.0, 1.0)
+    inner = (rate0 < 0.0) & (rate1 > 0.0)
+    s[inner] = np.clip(bd[inner] / pp[inner], 0.0, 1.0)
     return s
 
 
