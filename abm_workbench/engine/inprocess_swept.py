@@ -136,9 +136,9 @@ def _subgradient(pieces, grads, m, s):
     return v
 
 
-def swept_gauge(x, c0, move, axis, radius, height, corner):
+def swept_gauge(x, c0, move, axis, radius, height, corner, value_only=False):
     """(G (K,), v (K, 3), s (K,), foot (K, 3)) of points x (K, 3) and the tools (axis, radius, height,
-    corner) moved from c0 by `move` (all (K, 3) or (K,)).
+    corner) moved from c0 by `move` (all (K, 3) or (K,)); with value_only, G alone (the same numbers).
 
     G(x) = min over s in [0, 1] of g(x − c0 − s·move), the convex, 1-Lipschitz gauge of the swept solid
     (≤ 0 inside); v a subgradient of G at x (|v| ≤ 1); s the minimising position; foot = c0 + s·move +
@@ -161,6 +161,18 @@ def swept_gauge(x, c0, move, axis, radius, height, corner):
     if bent.size:
         s[bent] = _corner_position(q[bent], move[bent], axis[bent], radius[bent], height[bent], corner[bent])
     qs = q - s[:, None] * move
+    if value_only and not flat.any():
+        a = row_dot(qs, axis)
+        b = qs - a[:, None] * axis
+        nb = np.sqrt(row_dot(b, b))
+        rim = radius - corner
+        with np.errstate(divide="ignore", invalid="ignore"):
+            da = np.maximum(corner - a, 0.0)
+            shrink = np.where(nb > 0.0, np.maximum(1.0 - rim / np.where(nb > 0.0, nb, 1.0), 0.0), 0.0)
+            db = shrink[:, None] * b
+        return np.maximum(np.sqrt(da * da + row_dot(db, db)) - corner, a - height)
+    if value_only:
+        return tool_gauge(qs, axis, radius, height, corner)[0]
     if flat.any():
         value, pieces, grads = tool_gauge(qs, axis, radius, height, corner)
         v = _subgradient(pieces, grads, move, s)
