@@ -18,12 +18,14 @@ corner in the in-process stock").
   line enters and leaves the prism T ⊕ ℝ·m: seen along m, where the line crosses the boundary of the
   convex shadow of T, whose point with outward normal n (n ⊥ m) is σ(n) seen along m. With n turning
   in the plane across m from the line's normal ν to −ν, the signed distance (σ(n) − o)·ν of that
-  point from the line falls monotonically, so each crossing is one root on a half-turn: bisection in
-  the angle of n, finished by the chord between the last two support points (exact on the shadow's
-  flat edges). The crossing gives the position s* of the tool there; where s* lies outside [0, 1]
-  the extreme is where the line enters (leaves) the tool standing at the nearer end of the move,
-  found by Newton's method on the convex gauge along the line, started outside the tool, whose steps
-  never pass the boundary (:func:`line_swept_interval`).
+  point from the line falls monotonically, so each crossing is one root on a half-turn: the Illinois
+  method on the angle of n, finished by the chord between the support points at its last bracket's
+  ends (exact on the shadow's flat edges); for a move across the axis the shadow is the tool's
+  profile, crossed in closed form (:func:`_profile_crossings`). The crossing gives the position s* of
+  the tool there; where s* lies outside [0, 1] the extreme is where the line enters (leaves) the tool
+  standing at the nearer end of the move, found by Newton's method on the convex gauge along the line,
+  started outside the tool, whose steps never pass the boundary, or in closed form for a line across
+  or along the axis (:func:`_square_entry`) (:func:`line_swept_interval`).
 
 Shapes: K rows, each a point or a line and one piece; (K, 3) vectors and (K,) numbers. Lengths in mm.
 """
@@ -32,8 +34,8 @@ import numpy as np
 
 from .swept import row_dot
 
-#: Bisection steps on the angle of the shadow's normal (rad): π/2^42 ≈ 7e-13, so the chord between
-#: the last two support points lies within (the shadow's size)·7e-13 mm of its boundary.
+#: The shadow's crossing is bracketed in the angle of its normal to π/2^42 ≈ 7e-13 rad, so the chord between
+#: the support points at the bracket's ends lies within (the shadow's size)·7e-13 mm of its boundary.
 SHADOW_STEPS = 42
 #: Newton's method on a convex gauge along a line stops when a step is below this (mm).
 NEWTON_STEP = 1e-13
@@ -590,8 +592,8 @@ def _profile_crossings(q, u, m, axis, radius, height, corner):
     less, in each corner {a < r, ±y > R − r}, what lies outside the circle of radius r about (r, ±(R − r)).
     The line's projection enters the box (slabs), and where that point lies in a corner outside its circle,
     the circle (its first root, in closed form at a constant height or along the axis; the line leaves the
-    corner inside the circle, so where rounding loses a touching root, there). Likewise where it leaves. The tool's position at a point x of the prism's boundary
-    is x·m/|m|² (its part along m)."""
+    corner inside the circle, so where rounding loses a touching root, there). Likewise where it leaves.
+    The tool's position at a point x of the prism's boundary is x·m/|m|² (its part along m)."""
     mm = row_dot(m, m)
     e = np.cross(axis, m)
     e /= np.sqrt(row_dot(e, e))[:, None]
@@ -622,7 +624,8 @@ def _profile_crossings(q, u, m, axis, radius, height, corner):
                 near = forward * np.fmin(forward * first, forward * second)
                 far = forward * np.fmax(forward * first, forward * second)
                 # A projection at a constant height (an end edge) or along the axis, without the quadratic's
-                # cancellation where it touches the circle: ±y = R − r + √(r² − (a − r)²), a = r − √(r² − (±y − R + r)²).
+                # cancellation where it touches the circle:
+                # ±y = R − r + √(r² − (a − r)²), a = r − √(r² − (±y − R + r)²).
                 level, upright = ua == 0.0, ue == 0.0
                 reach = side * (rim + np.sqrt(np.maximum(corner * corner - da0 * da0, 0.0))) - y0
                 y_side = side * y0 - rim
