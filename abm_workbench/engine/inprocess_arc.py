@@ -81,6 +81,11 @@ class _Arcs:
         slope = r * (np.cos(psi) * row_dot(v, self.d[pair]) + np.sin(psi) * row_dot(v, self.w[pair]))
         return value, slope, foot, s
 
+    def value(self, pair, psi):
+        """(n,) F at ψ (n,) of arcs `pair` (n,): evaluate's first number alone."""
+        return swept_gauge(self.point(pair, psi), self.c0[pair], self.move[pair], self.axis[pair], self.big[pair],
+                           self.height[pair], self.corner[pair], value_only=True)
+
     def foot_bound(self, pair, a, b, foot, s):
         """(n,) an upper bound of F over [a, b] (n,) from the tool standing at position s (n,) with its foot
         (n, 3) (inprocess_swept.swept_gauge): sinusoids' largest values."""
@@ -184,7 +189,7 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
     one = {key: np.concatenate([part[key] for part in single]) for key in single[0]}
     if one["pair"].size:
         def value(rows, x):
-            return arcs.evaluate(one["pair"][rows], x)[0]
+            return arcs.value(one["pair"][rows], x)
 
         enters = one["fa"] > 0.0
         root = monotone_root(value, np.where(enters, one["b"], one["a"]), np.where(enters, one["a"], one["b"]),
