@@ -9,6 +9,7 @@ import math
 import os
 
 from ...errors import InputError
+from .. import check_input_file
 from ..cl.lexer import split_lines
 from .blocks import blocks_of_text
 from .interpreter import Interpreter
@@ -41,6 +42,7 @@ def load_tools(path):
     """{tool number: ToolSpec} of a tool table: a FreeCAD document's tool controllers (a file whose name ends
     in .FCStd or that is a zip), else a LinuxCNC tool table."""
     name = os.fspath(path)
+    check_input_file(name, "tool table")
     try:
         with open(name, "rb") as file:
             zipped = file.read(4) == _ZIP
