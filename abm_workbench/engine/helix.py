@@ -21,7 +21,7 @@ import numpy as np
 from .engagement import SURFACES, _table1_case, finished_engagement
 from .helix_roots import SineLines
 from .helix_walls import WallModels, wall_crossings
-from .model import CutSettings, Staircase, Tool, Toolpath
+from .model import CutSettings, Staircase, Tool, Toolpath, check_arguments
 from .tolerances import LENGTH_EPS
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE, _IMMERSION = (SURFACES.index(name) for name in (
@@ -158,6 +158,7 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     `progress(done, total)` (CL points) after each chunk.
     Returns a FluteEngagement.
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
     window = _immersion_window(immersion)
     phi = settings.phi
     m, p, z = len(toolpath), phi.size, tool.flutes

@@ -16,7 +16,7 @@ import numpy as np
 from .engagement import edge_lines, engage, inside_intervals
 from .inprocess import inprocess_intervals, removal_intervals, subtract
 from .interval_engagement import engagement_from_intervals
-from .model import Staircase
+from .model import Staircase, check_arguments
 from .profile import end_lengths, profile_engagement
 from .terraced import engage_terraced, terraced_intervals
 from .terraced_model import TerracedStock
@@ -29,6 +29,7 @@ def engage_stock(stock, tool, toolpath, settings, *, progress=None):
     edge's engaged length (profile.end_lengths)."""
     if not isinstance(stock, (Staircase, TerracedStock)):
         raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
+    check_arguments(tool=tool, toolpath=toolpath, settings=settings)
     if tool.corner_radius > 0.0:
         return profile_engagement(stock, tool, toolpath, settings, progress=progress)
     if isinstance(stock, Staircase):

@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from .engagement import SURFACES, edge_lines, empty_results, finished_engagement
-from .model import CutSettings, Staircase, Tool, Toolpath
+from .model import CutSettings, Staircase, Tool, Toolpath, check_arguments
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = (SURFACES.index(name) for name in (
     "none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side"))
@@ -171,6 +171,7 @@ def zmap_engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutS
     gives; `case` is always 'none' (no Table 1 from a grid), the UEP surface is classified from
     the grid (docs/ZMAP.md). A helical tool is refused (ValueError).
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
     if tool.helix != 0.0:
         raise ValueError(f"the Z-map samples a straight edge; the tool has a helix angle of {tool.helix:g} deg")
     if tool.corner_radius != 0.0:
