@@ -405,4 +405,8 @@ def program_moves(program, chosen, tool):
             rows = start + np.flatnonzero(cut)
         start += lines.size
     columns = [np.concatenate(column) for column in zip(*parts)]
-    return ProgramMoves(*columns), rows, notes
+    try:
+        return ProgramMoves(*columns), rows, notes
+    except ValueError as error:  # a cutting move the sweep cannot take (its axis turned right round)
+        raise InputError(f"{program.source}: the in-process stock cannot sweep the program: {error}; the stock "
+                         "model initial (the stock as given) can") from None

@@ -149,7 +149,8 @@ def _nothing(folder):
         (_write("toolpath.csv", "x,y,z,theta_a,theta_b\n10,0,0,0,10\n20,0,zero,0,10\n"), [],
          "toolpath.csv:3: column 'z': 'zero' is not a number"),
         (_write("toolpath.csv", "x,y,z,i,j,k\n10,0,0,0,0,1\n20,0,0,0,0,-1\n"), [],
-         "toolpath.csv:3: operation 1: tool axis (0, 0, -1), written in the file's frame"),
+         "toolpath.csv: the in-process stock cannot sweep the program: row 1 (line 3): the tool axis turns by 180° "
+         "in one cutting move"),
         (_nothing, ["--stock", "missing.json"], "missing.json: cannot read: No such file or directory"),
         (_nothing, ["--phi-range", "a:b"], "--phi-range: expected START:END in degrees such as 0:180, got 'a:b'"),
         (_nothing, ["--phi-range", "0:90:180"], "--phi-range: expected START:END"),
