@@ -135,7 +135,7 @@ def reference_results(engagement, first_cl=0, forces=None):
         power = None if power is None else power.tolist()
     e = {name: getattr(engagement, name).tolist() for name in (
         "phi", "h", "lep_l", "uep_l", "length", "pieces", "uep_surface", "uep_section", "uep_wall", "case", "segment",
-        "area", "lep_xyz", "uep_xyz", "lep_surface", "lep_section", "lep_wall")}
+        "area", "lep_xyz", "uep_xyz", "lep_surface", "lep_section", "lep_wall", "end_length")}
     lines = [",".join(names)]
     for i in range(m):
         for j in range(p):
@@ -146,7 +146,7 @@ def reference_results(engagement, first_cl=0, forces=None):
                    CASES[e["case"][i][j]], segment_letter(segment) if segment >= 0 else "", number_text(e["h"][i][j]),
                    number_text(e["area"][i][j]), *map(number_text, e["lep_xyz"][i][j]),
                    *map(number_text, e["uep_xyz"][i][j]), SURFACES[e["lep_surface"][i][j]],
-                   str(e["lep_section"][i][j]), str(e["lep_wall"][i][j])]
+                   str(e["lep_section"][i][j]), str(e["lep_wall"][i][j]), number_text(e["end_length"][i][j])]
             if forces is not None:
                 row += [*map(number_text, xyz[i][j]), number_text(torque[i][j])]
                 row += [] if power is None else [number_text(power[i][j])]
