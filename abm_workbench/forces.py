@@ -46,7 +46,8 @@ import numpy as np
 
 from .engine import flute_engagement
 from .engine.intervals import EdgeIntervals
-from .engine.model import WrongArgument, check_arguments, finite_number
+from .engine.arguments import WrongArgument, check_arguments
+from .engine.model import finite_number
 from .engine.profile import as_terraced, corner_top, profile_intervals
 from .engine.stocks import engage_stock
 

@@ -25,7 +25,7 @@ import os
 import numpy as np
 
 from .engine import Engagement, engage
-from .engine.model import check_arguments
+from .engine.arguments import check_arguments
 from .errors import InputError, ParameterError
 from .limits import usable_cores
 

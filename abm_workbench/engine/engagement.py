@@ -18,7 +18,8 @@ from functools import reduce
 import numpy as np
 
 from .allocator import keep_freed_memory
-from .model import CutSettings, Staircase, Tool, Toolpath, check_arguments
+from .arguments import check_arguments
+from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
 from .rows import row_any, row_count, row_sum
 from .intervals import EdgeIntervals

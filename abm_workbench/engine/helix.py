@@ -21,7 +21,8 @@ import numpy as np
 from .engagement import SURFACES, _table1_case, finished_engagement
 from .helix_roots import SineLines
 from .helix_walls import WallModels, wall_crossings
-from .model import CutSettings, Staircase, Tool, Toolpath, check_arguments
+from .arguments import check_arguments
+from .model import CutSettings, Staircase, Tool, Toolpath
 from .tolerances import LENGTH_EPS
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE, _IMMERSION = (SURFACES.index(name) for name in (

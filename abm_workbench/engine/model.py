@@ -21,10 +21,6 @@ class NotANumber(TypeError, ValueError):
     naming the argument, and a ValueError as every bad input value of the engine is."""
 
 
-class WrongArgument(TypeError):
-    """An argument of an engine function that is not of its kind (a str for the Tool, ...)."""
-
-
 def finite_number(name, value, *, positive=False, largest=None):
     """A finite real number as float, at most `largest` in size if given; NotANumber (a TypeError and a
     ValueError) naming `name` for anything that is not a real number (str, bytes, None, a sequence,
@@ -47,22 +43,6 @@ def finite_number(name, value, *, positive=False, largest=None):
 #: Largest tool size (mm) computed: the readers' bound on every number; far beyond any tool, and where
 #: the engine's polynomials in the tool's radius still hold their precision (a 1e300 mm tool overflows).
 MAX_TOOL_SIZE = 1e12
-
-
-def check_arguments(**arguments):
-    """WrongArgument (a TypeError) naming the first argument that is not of its kind, by its name: stock
-    (Staircase or TerracedStock), tool (Tool), toolpath (Toolpath), settings (CutSettings); other names
-    are not checked. For the engine's entry functions, whose arguments are otherwise read attribute by
-    attribute (an AttributeError far from the cause)."""
-    from .terraced_model import TerracedStock
-
-    kinds = {"stock": (Staircase, TerracedStock), "tool": (Tool,), "toolpath": (Toolpath,),
-             "settings": (CutSettings,)}
-    for name, value in arguments.items():
-        kind = kinds.get(name)
-        if kind is not None and not isinstance(value, kind):
-            expected = " or ".join(k.__name__ for k in kind)
-            raise WrongArgument(f"{name} must be a {expected}, got {type(value).__name__}")
 
 
 def _array(name, value, shape):

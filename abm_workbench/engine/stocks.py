@@ -16,7 +16,8 @@ import numpy as np
 from .engagement import edge_lines, engage, inside_intervals
 from .inprocess import inprocess_intervals, removal_intervals, subtract
 from .interval_engagement import engagement_from_intervals
-from .model import Staircase, check_arguments
+from .arguments import check_arguments
+from .model import Staircase
 from .profile import end_lengths, profile_engagement
 from .terraced import engage_terraced, terraced_intervals
 from .terraced_model import TerracedStock

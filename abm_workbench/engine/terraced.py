@@ -44,7 +44,7 @@ import numpy as np
 from .engagement import SURFACES, edge_lines
 from .interval_engagement import engagement_from_intervals
 from .intervals import EdgeIntervals
-from .model import check_arguments
+from .arguments import check_arguments
 from .polynomials import horner, real_roots_unit
 from .terraced_pieces import bernstein_to_power, slab_pieces
 from .tolerances import LENGTH_EPS, PARALLEL_EPS

@@ -25,7 +25,8 @@ import math
 import numpy as np
 
 from .engagement import SURFACES, edge_lines, empty_results, finished_engagement
-from .model import CutSettings, Staircase, Tool, Toolpath, check_arguments
+from .arguments import check_arguments
+from .model import CutSettings, Staircase, Tool, Toolpath
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = (SURFACES.index(name) for name in (
     "none", "top", "straight_wall", "curved_wall", "flute_end", "stock_side"))

@@ -17,7 +17,8 @@ import pytest
 
 from abm_workbench import cli
 from abm_workbench.engine import CutSettings, Tool, Toolpath, engage, flute_engagement
-from abm_workbench.engine.model import NotANumber, WrongArgument
+from abm_workbench.engine.arguments import WrongArgument
+from abm_workbench.engine.model import NotANumber
 from abm_workbench.errors import InputError
 from abm_workbench.formats import check_output_path, read_bytes, read_text
 from abm_workbench.formats.cl import read_program
