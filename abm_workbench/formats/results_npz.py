@@ -274,7 +274,8 @@ def _member_array(name, archive, member, size):
         if dtype.hasobject or dtype.itemsize == 0 or dtype.kind not in "biufU":
             raise InputError(f"{where}: holds {dtype} values, which are not read (no pickled objects)")
         if not (isinstance(shape, tuple) and all(isinstance(n, int) and n >= 0 for n in shape) and len(shape) <= 1):
-            raise InputError(f"{where}: shape {shape!r}; a results array is 1-D or a scalar")
+            raise InputError(f"{name}: not a results archive: array {member.filename[:-len('.npy')]!r}: shape "
+                             f"{shape!r}; a results array is 1-D or a scalar")
         count = math.prod(shape)
         body = member.file_size - data.tell()
         if count * dtype.itemsize != body:

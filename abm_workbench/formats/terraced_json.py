@@ -141,10 +141,11 @@ def _loop_points(loop):
                                                                                  endpoint=False)))
         else:
             n, degree = len(curve.control), curve.degree
-            t = np.linspace(curve.knots[degree], curve.knots[n], _AREA_SAMPLES, endpoint=False)
-            weights = np.ones(n) if curve.weights is None else curve.weights
-            numerator = BSpline(curve.knots, curve.control * weights[:, None], degree)(t)
-            points.append(numerator / BSpline(curve.knots, weights, degree)(t)[:, None])
+            knots = np.array(curve.knots, dtype=float)  # writable copies: scipy's evaluation refuses read-only arrays
+            t = np.linspace(knots[degree], knots[n], _AREA_SAMPLES, endpoint=False)
+            weights = np.ones(n) if curve.weights is None else np.array(curve.weights, dtype=float)
+            numerator = BSpline(knots, curve.control * weights[:, None], degree)(t)
+            points.append(numerator / BSpline(knots, weights, degree)(t)[:, None])
     return np.concatenate(points)
 
 
