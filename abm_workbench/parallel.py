@@ -268,12 +268,20 @@ class _ProcessPool:
     def __init__(self, workers, jobs):
         import concurrent.futures  # here: a run in this process needs none of it
 
+        from .worker_processes import held_signals
+
         self.in_flight = workers * IN_FLIGHT_PER_WORKER
         self.futures = concurrent.futures
         self.executor = concurrent.futures.ProcessPoolExecutor(workers, initializer=_set_jobs,
                                                                initargs=(os.getpid(), jobs))
         try:
-            self.executor.submit(int)  # the first task starts every worker now, not halfway through the pass
+            # The first task forks every worker now, not halfway through the pass. Stop signals are held
+            # meanwhile: one arriving during a fork would run the command line's handler inside fork's own
+            # callbacks (logging's lock release), where its exception is printed and lost, and the run would
+            # go on; held, it is delivered when the block ends, here. The workers let them through once they
+            # ignore SIGINT and SIGHUP (worker_processes.die_with_parent).
+            with held_signals():
+                self.executor.submit(int)
         except BaseException as error:
             self._kill()
             if isinstance(error, OSError):

@@ -44,7 +44,8 @@ def die_with_parent(parent):
     """In a worker process: be killed (SIGKILL) when the process that started it ends, however it ends
     (Linux's PR_SET_PDEATHSIG through ctypes; elsewhere nothing), and end now if `parent` (its pid) already
     has; SIGINT and SIGHUP ignored (Ctrl-C on a terminal reaches the whole process group: the parent ends
-    the workers), SIGTERM left to end it."""
+    the workers), SIGTERM left to end it; then the signals held while the parent started it
+    (:func:`held_signals`) let through."""
     try:
         import ctypes
 
@@ -57,6 +58,8 @@ def die_with_parent(parent):
             signal.signal(getattr(signal, name), handler)
     if os.getppid() != parent:
         os._exit(1)
+    if hasattr(signal, "pthread_sigmask"):  # the signals held while the parent started it (held_signals)
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, HELD)
 
 
 class WorkerError(RuntimeError):
@@ -167,8 +170,6 @@ def _serve(connection, initializer, initargs, parent):
     held back since the spawn let through, the initializer run, then tasks answered until None or the
     pipe's end."""
     die_with_parent(parent)
-    if hasattr(signal, "pthread_sigmask"):
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, HELD)
     failure = None
     try:
         initializer(*initargs)

@@ -198,6 +198,31 @@ def test_a_limit_on_processes_is_one_error_not_a_hang(case, forks):
     assert snapshot(case) == before
 
 
+#: A child that sends itself `signal` right after each fork of a worker, in fork's own callbacks (as a
+#: SIGTERM to the process group does when it comes while the workers start).
+SIGNAL_AT_FORK = """
+import os, signal, sys
+stop = int(sys.argv[1])
+os.register_at_fork(after_in_parent=lambda: os.kill(os.getpid(), stop))
+sys.argv = ["abm"] + sys.argv[2:]
+from abm_workbench.cli import main
+sys.exit(main())
+"""
+
+
+@pytest.mark.parametrize("stop", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_while_the_workers_are_forked_stops_the_run(tmp_path, stop):
+    """Its handler ran inside fork's callbacks, where the exception it raised was printed ('Exception ignored
+    in: <function _releaseLock>') and lost: the run went on, with every stop signal ignored, to status 0."""
+    copy_inputs(str(tmp_path), INPUTS)
+    argv = [sys.executable, "-c", SIGNAL_AT_FORK, str(int(stop)), *_big_engage("made/R.csv", "--workers", "2")]
+    done = subprocess.run(argv, cwd=tmp_path, env=environment(), capture_output=True, text=True, timeout=300)
+    words = "interrupted" if stop == signal.SIGINT else f"stopped by {stop.name}"
+    assert done.returncode == 128 + stop and "Traceback" not in done.stderr, done.stderr
+    assert done.stderr.splitlines()[-1] == f"abm: {words}", done.stderr
+    assert sorted(os.listdir(tmp_path)) == sorted(INPUTS)
+
+
 # Signals.
 
 @pytest.mark.parametrize("seed", range(3))
