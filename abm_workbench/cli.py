@@ -457,14 +457,13 @@ _INPUT_FILES = {"stock": "stock", "toolpath": "toolpath", "job": "job", "tool_ta
                 "machine": "machine", "offsets": "work offsets", "file": "toolpath"}
 #: Options of numbers that are no job parameter (those are checked by their declarations).
 _NUMBERS = ("tolerance", "step", "grid", "edge_step", "sweep_tolerance", "max_force", "max_area", "min_feed")
-#: Options of CL point lists: digits, commas, dashes (ranges) and blanks only.
-_CL_LISTS = {"cl": re.compile(r"[0-9,\s]*"), "check": re.compile(r"[0-9,\-\s]*")}
 
 
 def _check_inputs(args):
     """Before anything is read: every input file given that exists is a regular file (not a folder, FIFO,
     socket or device, whose reading would block or never end), every number option finite and at most
-    formats.MAX_MAGNITUDE in size, every CL list in ASCII digits; empty file names refused.
+    formats.MAX_MAGNITUDE in size; empty file names refused (the CL lists are checked as they are read,
+    jobs.checked).
     InputError / ParameterError otherwise."""
     from .formats import MAX_MAGNITUDE, check_input_file
 
@@ -481,10 +480,6 @@ def _check_inputs(args):
             raise ParameterError(name, f"must be a finite number, got {value!r}")
         if value is not None and not abs(value) <= MAX_MAGNITUDE:
             raise ParameterError(name, f"must be at most {MAX_MAGNITUDE:g} in size, got {value:g}")
-    for name, allowed in _CL_LISTS.items():
-        text = getattr(args, name, None)
-        if text is not None and not allowed.fullmatch(text):
-            raise ParameterError(name, f"expected CL indices in digits 0-9 such as 0,27,80-100, got {text!r}")
     for name in ("out", "report", "fcstd", "plot"):
         text = getattr(args, name, None)
         if text is not None and not text.strip():

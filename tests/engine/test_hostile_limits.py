@@ -76,12 +76,18 @@ def test_pairs_outside_the_grammar_are_refused(model, capsys, option, text):
     assert err[0].endswith(f"got {text!r}")
 
 
-@pytest.mark.parametrize("option, text", [("--cl", "1_2"), ("--cl", "١"), ("--check", "0-1_0"), ("--check", "٣")])
-def test_cl_lists_outside_the_grammar_are_refused(model, capsys, option, text):
+@pytest.mark.parametrize("option, text, words", [
+    ("--cl", "1_2", "expected CL indices such as 0,22,40, got '1_2'"),
+    ("--cl", "١", "expected CL indices such as 0,22,40, got '١'"),
+    ("--check", "0-1_0", "item 1 '0-1_0' is not a CL index or a range A-B (such as 0,27,80-100)"),
+    ("--check", "2,٣", "item 2 '٣' is not a CL index or a range A-B (such as 0,27,80-100)"),
+])
+def test_cl_lists_outside_the_grammar_are_refused(model, capsys, option, text, words):
+    """int() reads '1_2' as 12 and '٣' as 3."""
     status, err = run(["validate", "--stock", "stock.json", "--toolpath", "toolpath.csv", "--job", "job.json",
                        "--report", "rep", option, text], capsys)
-    assert status == 2 and err == [f"abm: error: {option}: expected CL indices in digits 0-9 such as 0,27,80-100, "
-                                   f"got {text!r}"]
+    assert status == 2 and err == [f"abm: error: {option}: {words}"]
+    assert not os.path.exists("rep")
 
 
 @pytest.mark.parametrize("option", ["--tolerance", "--step", "--sweep-tolerance", "--grid"])
