@@ -24,6 +24,9 @@ however long the pass.
 This module only parses arguments and prints: the options of the cutting parameters come from
 their declarations (``jobs.parameters``), the runs from ``jobs.run``, shared with the GUI and imported
 only by the command that runs (``--help`` and a usage error import none of the run machinery).
+Every number of the options follows the files' grammar (formats.NUMBER), every input must be a regular
+file, and every run's work and memory are estimated before it starts and refused above the limits of
+abm_workbench.limits (``--allow-large`` confirms a large run; memory is never overrun).
 Errors in the input print ``abm: error: <message>`` on stderr and exit with status 2,
 leaving no output behind (an existing one is replaced only on success); a failure to write
 exits with 1, an interrupt (Ctrl-C) with 130, under the same rule. Missing output folders are
@@ -31,7 +34,9 @@ made before the results are streamed into them, and removed again when the comma
 """
 
 import argparse
-import contextlib
+import math
+import os
+import re
 import signal
 import sys
 import threading
@@ -63,17 +68,39 @@ def main(argv=None):
     """Run the command line with `argv` (default sys.argv[1:]); return the exit status.
 
     SIGTERM and SIGHUP stop a run as Ctrl-C does (the same clean-up: no temporary file, staging
-    folder or newly made folder left), exit status 128 + the signal's number. numpy's
-    floating-point warnings are not printed.
+    folder or newly made folder left), exit status 128 + the signal's number; from the first of
+    them on, SIGINT, SIGTERM and SIGHUP are ignored until the clean-up is done, so a second signal
+    cannot cut it short. numpy's floating-point warnings are not printed.
     """
+    previous = {}
+    try:
+        _stopping_signals(previous)
+        return _main(argv)
+    except KeyboardInterrupt as interrupt:
+        _ignore_stops()
+        # On a terminal, end the line a progress bar (or the ^C echo) may have left open.
+        stop = interrupt.args[0] if isinstance(interrupt, _Stopped) else signal.SIGINT
+        words = "interrupted" if stop == signal.SIGINT else f"stopped by {signal.Signals(stop).name}"
+        print(("\n" if sys.stderr.isatty() else "") + f"{PROG}: {words}", file=sys.stderr)
+        return 128 + stop
+    finally:
+        for number, handler in previous.items():
+            signal.signal(number, handler)
+
+
+def _main(argv):
+    """main without the signals: parse `argv`, run the command, print its error; the exit status."""
     parser = _build_parser()
     try:
         args = parser.parse_args(argv)
     except SystemExit as exit_:  # usage errors (2) and --help (0)
         return exit_.code
-    with _stopping_signals(), np.errstate(all="ignore"), warnings.catch_warnings():
+    from .limits import allowing_large
+
+    with np.errstate(all="ignore"), warnings.catch_warnings(), allowing_large(getattr(args, "allow_large", False)):
         warnings.simplefilter("ignore", RuntimeWarning)
         try:
+            _check_inputs(args)
             return args.run(args)
         except ParameterError as error:
             print(f"{PROG}: error: {option_words(error)}", file=sys.stderr)
@@ -81,41 +108,75 @@ def main(argv=None):
         except InputError as error:
             print(f"{PROG}: error: {error}", file=sys.stderr)
             return 2
+        except MemoryError as error:
+            print(f"{PROG}: error: out of memory{f' ({error})' if str(error) else ''}; the run was larger than "
+                  "this machine can hold", file=sys.stderr)
+            return 1
         except (OSError, ChunkError) as error:
             print(f"{PROG}: error: {error}", file=sys.stderr)
             return 1
-        except KeyboardInterrupt as interrupt:
-            # On a terminal, end the line a progress bar (or the ^C echo) may have left open.
-            stop = interrupt.args[0] if isinstance(interrupt, _Stopped) else signal.SIGINT
-            words = "interrupted" if stop == signal.SIGINT else f"stopped by {signal.Signals(stop).name}"
-            print(("\n" if sys.stderr.isatty() else "") + f"{PROG}: {words}", file=sys.stderr)
-            return 128 + stop
+
+
+#: The signals that stop a run.
+_STOPS = tuple(getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name))
 
 
 class _Stopped(KeyboardInterrupt):
-    """SIGTERM or SIGHUP received (args[0] the signal's number): unwound like Ctrl-C."""
+    """SIGINT, SIGTERM or SIGHUP received (args[0] the signal's number): unwound like Ctrl-C."""
 
 
-@contextlib.contextmanager
-def _stopping_signals():
-    """While the block runs (in the main thread), SIGTERM and SIGHUP raise _Stopped; after the
-    first, both are ignored so that the clean-up runs to its end. The old handlers come back after."""
+def _stopping_signals(previous):
+    """In the main thread: SIGINT, SIGTERM and SIGHUP raise _Stopped, and the first of them makes all
+    three ignored so that the clean-up runs to its end. Each handler replaced goes into dict `previous`
+    ({signal: handler}, before the new one is set), for main to put back; in another thread nothing."""
     if threading.current_thread() is not threading.main_thread():
-        yield
         return
-    stops = (signal.SIGTERM, signal.SIGHUP)
 
     def stop(number, frame):
-        for each in stops:
-            signal.signal(each, signal.SIG_IGN)
+        _ignore_stops()
         raise _Stopped(number)
 
-    previous = {number: signal.signal(number, stop) for number in stops}
-    try:
-        yield
-    finally:
-        for number, handler in previous.items():
-            signal.signal(number, handler)
+    for number in _STOPS:
+        previous[number] = signal.getsignal(number)
+        signal.signal(number, stop)
+
+
+def _ignore_stops():
+    """Ignore SIGINT, SIGTERM and SIGHUP from now on (in the main thread; elsewhere nothing)."""
+    if threading.current_thread() is threading.main_thread():
+        for number in _STOPS:
+            signal.signal(number, signal.SIG_IGN)
+
+
+#: An option's whole number: ASCII digits and an optional sign, as the files' integers.
+_WHOLE = re.compile(r"[+-]?[0-9]+")
+
+
+#: nan and the infinities as Python writes them: read, so that the option's own check says "must be a
+#: finite number" in one line.
+_NOT_FINITE = re.compile(r"[+-]?(?:nan|inf|infinity)", re.IGNORECASE)
+
+
+def _float(text):
+    """An option's number in the readers' one grammar (formats.NUMBER: ASCII digits, sign, point,
+    exponent; no '1_2', no other scripts' digits); ValueError otherwise, which argparse words as
+    "invalid float value". nan and inf are read, and refused by each option's check (_check_inputs,
+    the parameters' declarations)."""
+    from .formats import NUMBER
+
+    if not (re.fullmatch(NUMBER, text.strip()) or _NOT_FINITE.fullmatch(text.strip())):
+        raise ValueError(text)
+    return float(text)
+
+
+def _int(text):
+    """An option's whole number (ASCII digits, optional sign; at most 18 digits); ValueError otherwise."""
+    if not _WHOLE.fullmatch(text.strip()) or len(text.strip().lstrip("+-")) > 18:
+        raise ValueError(text)
+    return int(text)
+
+
+_float.__name__, _int.__name__ = "float", "int"  # argparse's words: "invalid float value: '1_2'"
 
 
 def _build_parser():
@@ -141,19 +202,20 @@ def _build_parser():
     method.add_argument("--method", choices=METHODS, default="abm",
                         help="abm: the analytical boundary method (default); zmap: the discrete Z-map baseline "
                              "(height grid updated CL point by CL point, edge sampled; docs/ZMAP.md)")
-    method.add_argument("--grid", type=float, metavar="MM",
+    method.add_argument("--grid", type=_float, metavar="MM",
                         help="Z-map cell size (mm), default 0.2; --method zmap only")
-    method.add_argument("--edge-step", type=float, metavar="MM",
+    method.add_argument("--edge-step", type=_float, metavar="MM",
                         help="Z-map sampling step along the cutting edge (mm), default the grid size; "
                              "--method zmap only")
     _force_arguments(engage_parser)
     parallel = engage_parser.add_argument_group("parallel runs (--method abm; docs/SCALING.md)")
-    parallel.add_argument("--workers", type=int, default=1, metavar="N",
+    parallel.add_argument("--workers", type=_int, default=1, metavar="N",
                           help="local processes computing chunks of CL points: 1 (default) this process only, "
                                "0 all cores; the results are the same bytes")
     parallel.add_argument("--scheduler", metavar="tcp://HOST:PORT",
                           help="run the chunks on the Dask cluster behind this scheduler (its workers must be able "
                                "to import abm_workbench) instead of local processes")
+    _size_arguments(engage_parser)
     engage_parser.set_defaults(run=_run_engage)
 
     validate_parser = commands.add_parser(
@@ -176,21 +238,22 @@ def _build_parser():
         "CL points checked by the boolean (default all; those of --cl always; the engine computes all)")
     checking.add_argument("--check", metavar="I,J,A-B",
                           help="check these CL points (0-based; A-B a range, both ends included)")
-    checking.add_argument("--check-every", type=int, metavar="N",
+    checking.add_argument("--check-every", type=_int, metavar="N",
                           help="check every N-th CL point from 0 (with --check: both)")
     helical = validate_parser.add_argument_group("helical edges (docs/HELIX.md)")
-    helical.add_argument("--helix", type=float, default=0.0, metavar="DEG",
+    helical.add_argument("--helix", type=_float, default=0.0, metavar="DEG",
                          help="helix angle β (deg), default 0: straight edges; otherwise every checked flute's "
                               "helix against booleans of the exact helices; the report shows the first checked "
                               "flute, flutes.csv all of them per instant")
-    helical.add_argument("--flute", type=int, metavar="K", help="check only flute K (1..Z), default all; with --helix")
-    validate_parser.add_argument("--workers", type=int, default=1, metavar="N",
+    helical.add_argument("--flute", type=_int, metavar="K", help="check only flute K (1..Z), default all; with --helix")
+    validate_parser.add_argument("--workers", type=_int, default=1, metavar="N",
                                  help="processes computing the boolean reference: 1 (default) this process only, 0 "
                                       "all cores (each its own FreeCAD); the results are identical")
     validate_parser.add_argument("--scheduler", metavar="tcp://HOST:PORT",
                                  help="compute the boolean reference on the Dask cluster behind this scheduler (each "
                                       "Dask worker its own FreeCAD; they must be able to import abm_workbench)")
     _force_arguments(validate_parser, helix=False)
+    _size_arguments(validate_parser)
     validate_parser.set_defaults(run=_run_validate)
 
     schedule_parser = commands.add_parser(
@@ -204,15 +267,16 @@ def _build_parser():
     _input_arguments(schedule_parser)
     _force_arguments(schedule_parser, always=True)
     limits = schedule_parser.add_argument_group("limit (one of)").add_mutually_exclusive_group(required=True)
-    limits.add_argument("--max-force", type=float, metavar="N", help="peak resultant force on the tool (N)")
-    limits.add_argument("--max-area", type=float, metavar="MM2",
+    limits.add_argument("--max-force", type=_float, metavar="N", help="peak resultant force on the tool (N)")
+    limits.add_argument("--max-area", type=_float, metavar="MM2",
                         help="peak total cut area of the cutting flutes (mm²)")
-    schedule_parser.add_argument("--min-feed", type=float, metavar="MM",
+    schedule_parser.add_argument("--min-feed", type=_float, metavar="MM",
                                  help="lowest feed per tooth allowed (mm), default a tenth of the programmed feed; "
                                       "CL points that cannot meet the limit at or above it get it, with a warning")
     outputs = schedule_parser.add_argument_group("outputs")
     outputs.add_argument("--out", required=True, metavar="P.apt|P.cls|P.csv", help="re-scheduled toolpath")
     outputs.add_argument("--report", metavar="DIR", help="also write an HTML report (index.html, schedule.csv)")
+    _size_arguments(schedule_parser)
     schedule_parser.set_defaults(run=_run_schedule)
 
     toolpath_parser = commands.add_parser(
@@ -229,6 +293,7 @@ def _build_parser():
                                  help="part (default): MSYS / CSYS / ROTABL applied; file: as written, in mm")
     _arc_arguments(toolpath_parser)
     _program_arguments(toolpath_parser, "--job")
+    _size_arguments(toolpath_parser)
     toolpath_parser.set_defaults(run=_run_toolpath)
     return parser
 
@@ -239,14 +304,14 @@ def _run_toolpath(args):
     from .jobs import run as runs
     from .formats.cl.summary import summary_lines, write_toolpath_csv
 
-    if args.out:
+    if args.out is not None:
         runs.check_outputs([args.out], [args.file])
     tolerance, step = _arc_options(args)
     program = read_program(args.file, tolerance=tolerance, step=step, options=_read_options(args))
     for warning in program.warnings:
         print(f"{PROG}: warning: {warning}", file=sys.stderr)
     print("\n".join(summary_lines(program, args.frame)))
-    if args.out:
+    if args.out is not None:
         with runs.output_folders([args.out]):
             write_toolpath_csv(program, args.out, args.frame)
         print(f"{PROG}: wrote {args.out}")
@@ -280,7 +345,7 @@ def _parameter_option(group, name, extra=""):
     parameter = BY_NAME[name]
     unit = {"deg": "DEG", "mm": "MM", "": "N"}.get(parameter.unit, parameter.unit.replace("²", "2").upper())
     text = f"{parameter.help} ({parameter.unit})" if parameter.unit else parameter.help
-    group.add_argument(parameter.option, dest=name, type=int if parameter.whole else float, metavar=unit,
+    group.add_argument(parameter.option, dest=name, type=_int if parameter.whole else _float, metavar=unit,
                        help=", ".join(filter(None, [text, extra])))
 
 
@@ -294,13 +359,13 @@ def _input_arguments(parser):
                        help="CL points: a CL file as CAM systems write it (APT, NX CLSF, CATIA, Creo NCL, "
                             "SOLIDWORKS CAM, Mastercam, PowerMill; any name, read by its content) or a toolpath CSV "
                             "(x,y,z,theta_a,theta_b or x,y,z,i,j,k; + optional xc,yc,zc; docs/CL_FILES.md)")
-    files.add_argument("--operation", type=int, metavar="N",
+    files.add_argument("--operation", type=_int, metavar="N",
                        help="the toolpath file's operation N (1-based; the toolpath command lists them); default "
                             "its one milling operation")
     files.add_argument("--stock-model", choices=("in-process", "initial"),
                        help="in-process: the stock minus what the program's earlier cutting moves removed (default "
                             "where available: straight flutes, ABM); initial: the stock as given")
-    files.add_argument("--sweep-tolerance", type=float, default=0.05, metavar="MM",
+    files.add_argument("--sweep-tolerance", type=_float, default=0.05, metavar="MM",
                        help="sub-step of five-axis moves at the tool's rim for the in-process stock (mm), default 0.05")
     _arc_arguments(files)
     _program_arguments(files)
@@ -335,11 +400,20 @@ def _input_arguments(parser):
 
 
 
+def _size_arguments(parser):
+    """--allow-large: run even where the run's estimated work is above what runs without confirmation."""
+    parser.add_argument("--allow-large", action="store_true",
+                        help="run even when the estimated work (CL points x angles, interpolated arc points, swept "
+                             "pieces of the in-process stock, boolean checks) or output size is above what runs "
+                             "without confirmation; memory beyond what this process may use is refused all the same "
+                             "(docs/USAGE.md, \"Limits\")")
+
+
 def _arc_arguments(group):
     """--tolerance and --step: how a CL file's arcs and curves become CL points."""
-    group.add_argument("--tolerance", type=float, default=TOLERANCE, metavar="MM",
+    group.add_argument("--tolerance", type=_float, default=TOLERANCE, metavar="MM",
                        help=f"chordal tolerance of interpolated arcs and curves (mm), default {TOLERANCE:g}")
-    group.add_argument("--step", type=float, default=STEP, metavar="MM",
+    group.add_argument("--step", type=_float, default=STEP, metavar="MM",
                        help=f"largest distance between the CL points along arcs and curves (mm), default {STEP:g}, "
                             "about a tooth's feed")
 
@@ -370,12 +444,56 @@ def _read_options(args):
 
 
 def _arc_options(args):
-    """(tolerance, step) mm of the parsed arguments; ParameterError unless each is a positive number."""
+    """(tolerance, step) mm of the parsed arguments; ParameterError unless each is a number of mm from
+    formats.cl.arcs.MIN_TOLERANCE (a nanometre) up."""
+    from .formats.cl.arcs import MIN_TOLERANCE
+
     for name in ("tolerance", "step"):
         value = getattr(args, name)
-        if not (np.isfinite(value) and value > 0.0):
-            raise ParameterError(name, f"must be a positive number of mm, got {value:g}")
+        if not (np.isfinite(value) and value >= MIN_TOLERANCE):
+            raise ParameterError(name, f"must be at least {MIN_TOLERANCE:g} mm, got {value:g}")
     return args.tolerance, args.step
+
+
+#: File options and what each names, for the errors.
+_INPUT_FILES = {"stock": "stock", "toolpath": "toolpath", "job": "job", "tool_table": "tool table",
+                "machine": "machine", "offsets": "work offsets", "file": "toolpath"}
+#: Options of numbers that are no job parameter (those are checked by their declarations).
+_NUMBERS = ("tolerance", "step", "grid", "edge_step", "sweep_tolerance", "max_force", "max_area", "min_feed")
+
+
+def _check_inputs(args):
+    """Before anything is read: every input file given that exists is a regular file (not a folder, FIFO,
+    socket or device, whose reading would block or never end), every number option finite and at most
+    formats.MAX_MAGNITUDE in size; empty file names refused (the CL lists are checked as they are read,
+    jobs.checked).
+    InputError / ParameterError otherwise."""
+    from .formats import MAX_MAGNITUDE, check_input_file
+
+    for name, what in _INPUT_FILES.items():
+        path = getattr(args, name, None)
+        if path is not None:
+            if not path.strip():
+                raise ParameterError(name, f"is empty; give the {what} file")
+            if os.path.lexists(path):  # a missing file is its reader's to name, with the kinds it reads
+                check_input_file(path, what)
+    for name in _NUMBERS:
+        value = getattr(args, name, None)
+        if value is not None and not math.isfinite(value):
+            raise ParameterError(name, f"must be a finite number, got {value!r}")
+        if value is not None and not abs(value) <= MAX_MAGNITUDE:
+            raise ParameterError(name, f"must be at most {MAX_MAGNITUDE:g} in size, got {value:g}")
+    for name in ("out", "report", "fcstd", "plot"):
+        text = getattr(args, name, None)
+        if text is not None and not text.strip():
+            raise ParameterError(name, "is empty; give a file name" if name != "report" else "is empty; give a folder")
+    workers = getattr(args, "workers", None)
+    if isinstance(workers, int) and workers > 1:
+        from .limits import usable_cores
+
+        if workers > usable_cores():
+            _warn(f"--workers {workers}: this process may run on {usable_cores()} cores; {usable_cores()} worker "
+                  "processes are started")
 
 
 def _job(args):
@@ -413,7 +531,10 @@ def _pair(text, field, expected):
     try:
         if len(parts) != 2:
             raise ValueError
-        return float(parts[0]), float(parts[1])
+        pair = _float(parts[0]), _float(parts[1])
+        if not all(map(math.isfinite, pair)):
+            raise ValueError
+        return pair
     except ValueError:
         raise ParameterError(field, f"expected {expected}, got {text!r}") from None
 

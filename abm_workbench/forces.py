@@ -46,6 +46,7 @@ import numpy as np
 
 from .engine import flute_engagement
 from .engine.intervals import EdgeIntervals
+from .engine.arguments import WrongArgument, check_arguments
 from .engine.model import finite_number
 from .engine.profile import as_terraced, corner_top, profile_intervals
 from .engine.stocks import engage_stock
@@ -514,6 +515,10 @@ def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL
     m·p edges at them (flute_runs), for any straight-fluted tool; a flat-end tool takes their lengths.
     Returns Forces.
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
+    if not isinstance(coefficients, Coefficients):
+        raise WrongArgument(f"coefficients must be Coefficients (forces.material(name), or your own), got "
+                            f"{type(coefficients).__name__}")
     if tool.helix != 0.0 and (lengths_at is not None or runs_at is not None):
         raise ValueError("lengths_at and runs_at are for straight flutes only")
     if lengths_at is not None and runs_at is not None:

@@ -18,13 +18,16 @@ processes (``0``: one per core); ``scheduler="tcp://host:port"`` on the Dask clu
 scheduler (its workers must be able to import ``abm_workbench``).
 """
 
+import contextlib
 import dataclasses
 import os
 
 import numpy as np
 
 from .engine import Engagement, engage
-from .errors import InputError
+from .engine.arguments import check_arguments
+from .errors import InputError, ParameterError
+from .limits import usable_cores
 
 #: Instants per chunk (CL points × angles): the engine's default chunk, about 3 MiB of results.
 CHUNK_INSTANTS = 1 << 15
@@ -50,10 +53,12 @@ class ChunkError(RuntimeError):
 
 
 def worker_count(workers):
-    """Number of local processes for `workers` (int ≥ 0; 0 = one per core); ValueError otherwise."""
+    """Number of local processes for `workers` (int ≥ 0; 0 = one per core), at most one per core this
+    process may run on (more would only share the cores: the results are the same, no sooner); ValueError
+    for anything but a whole number ≥ 0."""
     if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 0:
         raise ValueError(f"workers must be a whole number >= 0 (0 = all cores), got {workers!r}")
-    return int(workers) or len(os.sched_getaffinity(0))
+    return min(int(workers), usable_cores()) or usable_cores()
 
 
 def cl_ranges(m, p, chunk_instants=None):
@@ -86,6 +91,7 @@ def engage_parallel(stock, tool, toolpath, settings, *, workers=1, scheduler=Non
     Identical (bit for bit, NaNs in the same places) to ``engine.engage`` of the whole pass.
     progress(done, total): CL points done, called as chunks complete.
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
     return engage_jobs([(stock, tool, toolpath, settings)], workers=workers, scheduler=scheduler,
                        chunk_instants=chunk_instants, progress=progress)[0]
 
@@ -243,8 +249,12 @@ class _InlinePool:
 _JOBS = None  # the jobs of a local worker process, set once by _ProcessPool's initializer
 
 
-def _set_jobs(jobs):
+def _set_jobs(parent, jobs):
+    """A local worker's start: it dies with its parent (worker_processes.die_with_parent) and keeps the jobs."""
+    from .worker_processes import die_with_parent
+
     global _JOBS
+    die_with_parent(parent)
     _JOBS = jobs
 
 
@@ -258,16 +268,47 @@ class _ProcessPool:
     def __init__(self, workers, jobs):
         import concurrent.futures  # here: a run in this process needs none of it
 
+        from .worker_processes import held_signals
+
         self.in_flight = workers * IN_FLIGHT_PER_WORKER
         self.futures = concurrent.futures
-        self.executor = concurrent.futures.ProcessPoolExecutor(workers, initializer=_set_jobs, initargs=(jobs,))
+        self.executor = concurrent.futures.ProcessPoolExecutor(workers, initializer=_set_jobs,
+                                                               initargs=(os.getpid(), jobs))
+        try:
+            # The first task forks every worker now, not halfway through the pass. Stop signals are held
+            # meanwhile: one arriving during a fork would run the command line's handler inside fork's own
+            # callbacks (logging's lock release), where its exception is printed and lost, and the run would
+            # go on; held, it is delivered when the block ends, here. The workers let them through once they
+            # ignore SIGINT and SIGHUP (worker_processes.die_with_parent).
+            with held_signals():
+                self.executor.submit(int)
+        except BaseException as error:
+            self._kill()
+            if isinstance(error, OSError):
+                raise ParameterError("workers", f"could not start {workers} worker processes ({error.strerror or error}"
+                                                "; a limit on processes?)") from None
+            raise
 
     def __enter__(self):
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, kind, error, trace):
+        if kind is not None and not issubclass(kind, Exception):  # stopped (Ctrl-C, SIGTERM): no waiting
+            self._kill()
         self.executor.shutdown(wait=True, cancel_futures=True)
         return False
+
+    def _kill(self):
+        """Kill and reap the workers started, and let the executor go without waiting for them."""
+        processes = list((getattr(self.executor, "_processes", None) or {}).values())
+        for process in processes:
+            with contextlib.suppress(OSError, AttributeError, ValueError):
+                process.kill()
+        for process in processes:
+            with contextlib.suppress(OSError, AttributeError, ValueError, AssertionError):
+                process.join()
+        with contextlib.suppress(Exception):
+            self.executor.shutdown(wait=False, cancel_futures=True)
 
     def submit(self, task, j, start, stop):
         return self.executor.submit(_run_local, task, j, start, stop)

@@ -20,11 +20,13 @@ KeyboardInterrupt, the command line's SIGTERM / SIGHUP, a progress callback that
   worker still starting has SIGTERM held) and reaped; after the last result they are told to end
   and given STOP_WAIT seconds before being killed;
 - a worker holds only its own end of its pipe, so if the parent dies without any clean-up (SIGKILL)
-  the worker reads the end of the pipe after its current task and ends too.
+  the worker reads the end of the pipe after its current task and ends too; on Linux it is killed at
+  once (:func:`die_with_parent`: PR_SET_PDEATHSIG), even in the middle of a task.
 """
 
 import contextlib
 import multiprocessing.connection
+import os
 import signal
 from multiprocessing import resource_tracker
 
@@ -32,6 +34,32 @@ from multiprocessing import resource_tracker
 HELD = tuple(getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name))
 #: Seconds the workers get to end by themselves after the last task, before they are killed.
 STOP_WAIT = 5.0
+
+
+#: prctl's option that sends a signal when the parent ends (linux/prctl.h).
+_PR_SET_PDEATHSIG = 1
+
+
+def die_with_parent(parent):
+    """In a worker process: be killed (SIGKILL) when the process that started it ends, however it ends
+    (Linux's PR_SET_PDEATHSIG through ctypes; elsewhere nothing), and end now if `parent` (its pid) already
+    has; SIGINT and SIGHUP ignored (Ctrl-C on a terminal reaches the whole process group: the parent ends
+    the workers), SIGTERM left to end it; then the signals held while the parent started it
+    (:func:`held_signals`) let through."""
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(_PR_SET_PDEATHSIG, int(signal.SIGKILL), 0, 0, 0)
+    except (OSError, AttributeError, TypeError):
+        pass
+    for name, handler in (("SIGINT", signal.SIG_IGN), ("SIGHUP", signal.SIG_IGN), ("SIGTERM", signal.SIG_DFL)):
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), handler)
+    if os.getppid() != parent:
+        os._exit(1)
+    if hasattr(signal, "pthread_sigmask"):  # the signals held while the parent started it (held_signals)
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, HELD)
 
 
 class WorkerError(RuntimeError):
@@ -72,8 +100,8 @@ class WorkerProcesses:
             try:
                 for _ in range(self.count):
                     ours, theirs = context.Pipe()
-                    process = context.Process(target=_serve, args=(theirs, self.initializer, self.initargs),
-                                              daemon=True)
+                    process = context.Process(target=_serve, args=(theirs, self.initializer, self.initargs,
+                                                                   os.getpid()), daemon=True)
                     self.connections.append(ours)
                     try:
                         process.start()
@@ -137,14 +165,11 @@ class WorkerProcesses:
             connection.close()
 
 
-def _serve(connection, initializer, initargs):
-    """A worker's life: SIGINT and SIGHUP ignored (the parent ends the worker), the signals held back
-    since the spawn let through, the initializer run, then tasks answered until None or the pipe's end."""
-    for name in ("SIGINT", "SIGHUP"):
-        if hasattr(signal, name):
-            signal.signal(getattr(signal, name), signal.SIG_IGN)
-    if hasattr(signal, "pthread_sigmask"):
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, HELD)
+def _serve(connection, initializer, initargs, parent):
+    """A worker's life: SIGINT and SIGHUP ignored and killed with its parent (die_with_parent), the signals
+    held back since the spawn let through, the initializer run, then tasks answered until None or the
+    pipe's end."""
+    die_with_parent(parent)
     failure = None
     try:
         initializer(*initargs)

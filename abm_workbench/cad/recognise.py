@@ -103,7 +103,8 @@ def load_solid(path, name=None):
     "Solid2", … in the file's order. Without it, the file's one solid (or one top-level object
     holding solids); a document already open is used as it is and left open. InputError naming the file when it is missing, unreadable, empty, when
     `name` matches nothing, or when several solids are there and none is chosen: the message
-    lists the names and says "choose one with --solid NAME".
+    lists the names and says "choose one with --solid NAME", and when the shape's points are not all
+    finite numbers (a STEP point of NAN: every box and recognition of it would fail far from the cause).
     """
     path = os.fspath(path)
     kind = _SUFFIXES.get(os.path.splitext(path)[1].lower())
@@ -112,7 +113,7 @@ def load_solid(path, name=None):
     if not os.path.isfile(path):
         raise InputError(f"{path}: no such file")
     if kind == "FCStd":
-        return _load_document_solid(path, name)
+        return _finite(_load_document_solid(path, name), path, kind)
     shape = _read_in_child(path, kind)
     if shape.isNull() or not shape.Faces:
         raise InputError(f"{path}: the {kind} file holds no shape")
@@ -121,11 +122,21 @@ def load_solid(path, name=None):
     if name is None:
         if len(solids) > 1:
             raise InputError(f"{path}: several solids ({', '.join(names)}); choose one with --solid NAME")
-        return shape
+        return _finite(shape, path, kind)
     if name not in names:
         listed = ", ".join(names) or "none"
         raise InputError(f"{path}: no solid named {name!r} in the {kind} file (its solids: {listed})")
-    return solids[names.index(name)]
+    return _finite(solids[names.index(name)], path, kind)
+
+
+def _finite(shape, path, kind):
+    """`shape` itself when its vertices are finite numbers; InputError naming the file otherwise."""
+    points = np.array([tuple(vertex.Point) for vertex in shape.Vertexes], dtype=float).reshape(-1, 3)
+    bad = ~np.isfinite(points).all(axis=1)
+    if bad.any():
+        raise InputError(f"{path}: damaged {kind}: {np.count_nonzero(bad)} of the shape's {len(points)} vertices are "
+                         "not finite numbers (NaN or infinite coordinates)")
+    return shape
 
 
 #: Longest a child process may take to read a STEP or BREP file (s) before it is taken as damaged.

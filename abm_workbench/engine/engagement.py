@@ -18,6 +18,7 @@ from functools import reduce
 import numpy as np
 
 from .allocator import keep_freed_memory
+from .arguments import check_arguments
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
 from .rows import row_any, row_count, row_sum
@@ -183,6 +184,7 @@ def engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutSettin
     Freed memory is kept for reuse, process-wide (allocator.keep_freed_memory). Returns an
     Engagement. A helical tool (tool.helix ≠ 0) is refused: use helix.flute_engagement.
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
     if tool.helix != 0.0:
         raise ValueError(f"engage is for straight edges; the tool has a helix angle of {tool.helix} deg: "
                          "use flute_engagement")

@@ -21,6 +21,7 @@ import numpy as np
 from .engagement import SURFACES, _table1_case, finished_engagement
 from .helix_roots import SineLines
 from .helix_walls import WallModels, wall_crossings
+from .arguments import check_arguments
 from .model import CutSettings, Staircase, Tool, Toolpath
 from .tolerances import LENGTH_EPS
 
@@ -158,6 +159,7 @@ def flute_engagement(stock: Staircase, tool: Tool, toolpath: Toolpath, settings:
     `progress(done, total)` (CL points) after each chunk.
     Returns a FluteEngagement.
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
     window = _immersion_window(immersion)
     phi = settings.phi
     m, p, z = len(toolpath), phi.size, tool.flutes

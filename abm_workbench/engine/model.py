@@ -16,25 +16,44 @@ from .tolerances import WALL_CHECK_SAMPLES
 from .walls import SplineTable, SplineWall, Wall
 
 
-def finite_number(name, value, *, positive=False):
-    """A finite real number as float; ValueError naming `name` otherwise."""
+class NotANumber(TypeError, ValueError):
+    """A value that is not a real number where one is needed (a str, None, a list, ...): a TypeError
+    naming the argument, and a ValueError as every bad input value of the engine is."""
+
+
+def finite_number(name, value, *, positive=False, largest=None):
+    """A finite real number as float, at most `largest` in size if given; NotANumber (a TypeError and a
+    ValueError) naming `name` for anything that is not a real number (str, bytes, None, a sequence,
+    complex), ValueError for NaN, infinities, booleans and values out of range."""
+    if isinstance(value, (str, bytes, complex)) or value is None:
+        raise NotANumber(f"{name} must be a number, got {type(value).__name__} {value!r}")
     try:
         number = float(value)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, got {value!r}") from None
+        raise NotANumber(f"{name} must be a number, got {type(value).__name__} {value!r}") from None
     if isinstance(value, bool) or not np.isfinite(number):
         raise ValueError(f"{name} must be a finite number, got {value!r}")
     if positive and number <= 0.0:
         raise ValueError(f"{name} must be positive, got {value!r}")
+    if largest is not None and abs(number) > largest:
+        raise ValueError(f"{name} must be at most {largest:g} in size, got {number:g}")
     return number
 
 
+#: Largest tool size (mm) computed: the readers' bound on every number; far beyond any tool, and where
+#: the engine's polynomials in the tool's radius still hold their precision (a 1e300 mm tool overflows).
+MAX_TOOL_SIZE = 1e12
+
+
 def _array(name, value, shape):
-    """A finite float array of the given shape (None in `shape` matches any length)."""
+    """A finite float array of the given shape (None in `shape` matches any length); NotANumber for
+    anything that is not numbers (a str, None, a dict)."""
+    if isinstance(value, (str, bytes, dict)) or value is None:
+        raise NotANumber(f"{name} must be an array of numbers, got {type(value).__name__}")
     try:
         array = np.array(value, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an array of numbers") from None
+        raise NotANumber(f"{name} must be an array of numbers") from None
     if array.ndim != len(shape) or any(s is not None and s != a for s, a in zip(shape, array.shape)):
         expected = "(" + ", ".join("n" if s is None else str(s) for s in shape) + ")"
         raise ValueError(f"{name} must have shape {expected}, got {array.shape}")
@@ -46,6 +65,8 @@ def _array(name, value, shape):
     return array
 
 
+#: Most flutes of a tool (the job parameters' bound).
+MAX_FLUTES = 1000
 #: Largest helix angle |β| of a flat-end mill (deg): steeper edges are not end mills, and the
 #: helical engine's time and memory per CL point grow without bound as |β| nears 90°.
 MAX_HELIX = 60.0
@@ -65,9 +86,11 @@ class Tool:
     corner_radius: float = 0.0
 
     def __post_init__(self):
-        object.__setattr__(self, "diameter", finite_number("diameter", self.diameter, positive=True))
-        object.__setattr__(self, "flute_length", finite_number("flute_length", self.flute_length, positive=True))
-        flutes = finite_number("flutes", self.flutes, positive=True)
+        object.__setattr__(self, "diameter", finite_number("diameter", self.diameter, positive=True,
+                                                          largest=MAX_TOOL_SIZE))
+        object.__setattr__(self, "flute_length", finite_number("flute_length", self.flute_length, positive=True,
+                                                              largest=MAX_TOOL_SIZE))
+        flutes = finite_number("flutes", self.flutes, positive=True, largest=MAX_FLUTES)
         if flutes != int(flutes):
             raise ValueError(f"flutes must be a whole number, got {self.flutes!r}")
         object.__setattr__(self, "flutes", int(flutes))

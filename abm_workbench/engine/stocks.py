@@ -18,6 +18,7 @@ from .engagement import edge_lines, empty_results, engage, finished_engagement, 
 from .inprocess import inprocess_intervals, removal_intervals, subtract
 from .inprocess_arc import arc_removal_intervals
 from .interval_engagement import engagement_from_intervals
+from .arguments import check_arguments
 from .model import Staircase
 from .profile import (_chunk_results, as_terraced, corner_top, end_lengths, profile_engagement, profile_intervals,
                       radial_directions)
@@ -32,6 +33,7 @@ def engage_stock(stock, tool, toolpath, settings, *, progress=None):
     edge's engaged length (profile.end_lengths)."""
     if not isinstance(stock, (Staircase, TerracedStock)):
         raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
+    check_arguments(tool=tool, toolpath=toolpath, settings=settings)
     if tool.corner_radius > 0.0:
         return profile_engagement(stock, tool, toolpath, settings, progress=progress)
     if isinstance(stock, Staircase):

@@ -44,6 +44,7 @@ import numpy as np
 from .engagement import SURFACES, edge_lines
 from .interval_engagement import engagement_from_intervals
 from .intervals import EdgeIntervals
+from .arguments import check_arguments
 from .polynomials import horner, real_roots_unit
 from .terraced_pieces import bernstein_to_power, slab_pieces
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
@@ -249,6 +250,7 @@ def engage_terraced(stock, tool, toolpath, settings, *, chunk_instants=1 << 15, 
     after each chunk, if given. Returns an Engagement with the LEP labels filled (see
     interval_engagement.engagement_from_intervals and this module's labels). A helical tool is refused.
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
     if tool.helix != 0.0:
         raise ValueError(f"engage_terraced is for straight edges; the tool has a helix angle of {tool.helix} deg")
     pieces = slab_pieces(stock)

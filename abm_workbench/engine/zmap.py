@@ -25,6 +25,7 @@ import math
 import numpy as np
 
 from .engagement import SURFACES, edge_lines, empty_results, finished_engagement
+from .arguments import check_arguments
 from .model import CutSettings, Staircase, Tool, Toolpath
 
 _NONE, _TOP, _STRAIGHT, _CURVED, _FLUTE_END, _SIDE = (SURFACES.index(name) for name in (
@@ -171,6 +172,7 @@ def zmap_engage(stock: Staircase, tool: Tool, toolpath: Toolpath, settings: CutS
     gives; `case` is always 'none' (no Table 1 from a grid), the UEP surface is classified from
     the grid (docs/ZMAP.md). A helical tool is refused (ValueError).
     """
+    check_arguments(stock=stock, tool=tool, toolpath=toolpath, settings=settings)
     if tool.helix != 0.0:
         raise ValueError(f"the Z-map samples a straight edge; the tool has a helix angle of {tool.helix:g} deg")
     if tool.corner_radius != 0.0:

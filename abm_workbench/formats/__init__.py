@@ -22,6 +22,7 @@ import math
 import os
 import re
 import secrets
+import stat
 
 from ..errors import InputError
 
@@ -31,6 +32,9 @@ NUMBER = r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?"
 _NUMBER = re.compile(NUMBER)
 #: Largest magnitude of a number read (1e12: mm, degrees, feeds and counts are all far below).
 MAX_MAGNITUDE = 1e12
+#: Largest magnitude of an angle read (degrees): a table or rotary axis turned by thousands of turns
+#: (1e12° passes MAX_MAGNITUDE but is no machine's angle).
+MAX_ANGLE = 1e6
 #: Deepest nesting of JSON arrays and objects read.
 MAX_JSON_DEPTH = 64
 #: Most digits of a JSON integer kept as an int (longer ones are read as float, then refused as too large).
@@ -64,8 +68,9 @@ STAGING_EXTRA = 18
 
 
 def check_output_path(path):
-    """InputError unless `path` can name an output file: not empty, not an existing folder, not
-    ending in a folder separator, and a name short enough for its staged hidden twin (at most
+    """InputError unless `path` can name an output file: not empty, not an existing folder, link or
+    special file (a FIFO, socket or device: replacing it would break it), not ending in a folder
+    separator, and a name short enough for its staged hidden twin (at most
     the folder's NAME_MAX − :data:`STAGING_EXTRA` bytes, 237 on most file systems). Meant to run
     before any computation, so that a bad --out fails at once."""
     text = os.fspath(path)
@@ -73,6 +78,12 @@ def check_output_path(path):
         raise InputError("an output path is empty; give a file name")
     if text.endswith(os.sep) or os.path.isdir(text):
         raise InputError(f"{text}: is a folder; give a file name for the output")
+    if os.path.islink(text):
+        raise InputError(f"{text}: is a symbolic link (to {os.readlink(text)}); it would be replaced by the "
+                         "output: give the file's own path")
+    if os.path.lexists(text) and not stat.S_ISREG(os.lstat(text).st_mode):
+        raise InputError(f"{text}: is {_kind(os.lstat(text).st_mode)}, not a file; it would be replaced by "
+                         "the output: give a file name")
     folder, name = os.path.split(os.path.abspath(text))
     while not os.path.isdir(folder):
         folder = os.path.dirname(folder)
@@ -120,13 +131,65 @@ def _new_temporary(path):
             continue
 
 
-def read_text(path):
-    """Text of a UTF-8 file (a leading byte-order mark dropped); InputError if unreadable."""
+#: Memory a text file takes to read, in bytes per byte of the file: the text, its lines and their
+#: fields or records as Python objects (a CL file's CL points about 8×, the text reader's lines more).
+TEXT_MEMORY_FACTOR = 16
+
+
+def check_input_file(path, what="input"):
+    """InputError unless `path` names a regular file (not a folder, FIFO, socket or device such as
+    /dev/zero, whose reading would block or never end), naming the file. Links are followed."""
+    name = os.fspath(path)
     try:
-        with open(path, encoding="utf-8-sig") as file:
-            return file.read()
+        mode = os.stat(name).st_mode
     except OSError as error:
-        raise InputError(f"{os.fspath(path)}: cannot read: {error.strerror or error}") from None
+        raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+    if not stat.S_ISREG(mode):
+        raise InputError(f"{name}: is {_kind(mode)}, not a file; give the {what} file itself")
+
+
+def _kind(mode):
+    """What a file of `mode` (not a regular file) is, in words."""
+    for test, words in ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+                        (stat.S_ISSOCK, "a socket"), (stat.S_ISCHR, "a character device"),
+                        (stat.S_ISBLK, "a block device")):
+        if test(mode):
+            return words
+    return "a special file"
+
+
+def read_bytes(path, factor=TEXT_MEMORY_FACTOR):
+    """The bytes of the regular file `path`; InputError naming it when it cannot be read, is no regular
+    file (:func:`check_input_file`; opened without blocking, so a FIFO never hangs the reader) or is
+    too large to read: `factor` × its size above the memory this process may use (limits)."""
+    from ..limits import check_memory
+
+    name = os.fspath(path)
+    try:
+        descriptor = os.open(name, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
+    except OSError as error:
+        raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+    try:
+        status = os.fstat(descriptor)
+        if not stat.S_ISREG(status.st_mode):
+            raise InputError(f"{name}: is {_kind(status.st_mode)}, not a file; give the input file itself")
+        check_memory(factor * status.st_size, name, f"reading its {status.st_size:,} bytes")
+        file = open(descriptor, "rb", closefd=False)
+        try:
+            return file.read()
+        except OSError as error:
+            raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+        finally:
+            file.close()
+    finally:
+        os.close(descriptor)
+
+
+def read_text(path):
+    """Text of a UTF-8 file (a leading byte-order mark dropped); InputError if unreadable (read_bytes)."""
+    data = read_bytes(path)
+    try:
+        return data.decode("utf-8-sig")
     except UnicodeDecodeError as error:
         raise InputError(f"{os.fspath(path)}: not UTF-8 text ({error.reason} at byte {error.start})") from None
 

@@ -174,36 +174,58 @@ def _lines(fields, shape, buffer):
     return buffer.translate(None, b"\0")
 
 
+#: Longest field and line of a results CSV read (characters): numbers and labels are far shorter.
+MAX_FIELD, MAX_LINE = 100, 10000
+#: Most digits of an integer field (an int64 holds 18).
+_INTEGER_DIGITS = 18
+
+
 def read_results(path):
     """Columns of a results or summary CSV written here, as a dict name -> (rows,) array.
 
     uep_surface, case and segment are str arrays; cl, pieces, uep_section and uep_wall int
     arrays; every other column float (NaN for an empty field). InputError naming the file
-    and line for a malformed file.
+    and line for a malformed file, a line longer than MAX_LINE, a field longer than MAX_FIELD
+    or an integer of more than 18 digits; memory stays a few times the file's size.
     """
     name = os.fspath(path)
     lines = read_text(path).splitlines()
     if not lines:
         raise InputError(f"{name}: empty file; expected a results header {','.join(RESULT_COLUMNS[:3])},...")
-    header = lines[0].split(",")
-    rows = [line.split(",") for line in lines[1:]]
-    for number, row in enumerate(rows, start=2):
+    header = _split(lines[0], name, 1)
+    if len(set(header)) != len(header):
+        raise InputError(f"{name}:1: a column named twice in the header")
+    columns = [[] for _ in header]
+    for number, line in enumerate(lines[1:], start=2):
+        row = _split(line, name, number)
         if len(row) != len(header):
             raise InputError(f"{name}:{number}: expected {len(header)} fields, got {len(row)}")
-    table = np.array(rows, dtype=str).reshape(len(rows), len(header))
-    return {column: _parse(column, table[:, c], name) for c, column in enumerate(header)}
+        for column, field in zip(columns, row):
+            column.append(field)
+    return {column: _parse(column, fields, name) for column, fields in zip(header, columns)}
 
 
-def _parse(column, text, name):
-    """One column's text (rows,) as str, int or float array (see read_results)."""
+def _split(line, name, number):
+    """The comma-separated fields of `line` (line `number` of file `name`), each at most MAX_FIELD long."""
+    if len(line) > MAX_LINE:
+        raise InputError(f"{name}:{number}: a line of {len(line):,} characters; at most {MAX_LINE:,} are read")
+    fields = line.split(",")
+    longest = max(map(len, fields))
+    if longest > MAX_FIELD:
+        raise InputError(f"{name}:{number}: a field of {longest:,} characters; at most {MAX_FIELD} are read")
+    return fields
+
+
+def _parse(column, fields, name):
+    """One column's fields (list of str, rows) as str, int or float array (see read_results)."""
     if column in TEXT_COLUMNS:
-        return text
+        return np.array(fields, dtype=str)
     if column not in INT_COLUMNS:
         return np.array([parse_number(field, f"{name}:{row}: column {column!r}") if field else np.nan
-                         for row, field in enumerate(text.tolist(), start=2)], dtype=float)
+                         for row, field in enumerate(fields, start=2)], dtype=float)
     values = []
-    for row, field in enumerate(text.tolist(), start=2):
-        if not _INTEGER.fullmatch(field):
+    for row, field in enumerate(fields, start=2):
+        if not _INTEGER.fullmatch(field) or len(field.lstrip("-")) > _INTEGER_DIGITS:
             raise InputError(f"{name}:{row}: column {column!r}: {field!r} is not a valid int")
         values.append(int(field))
-    return np.array(values, dtype=int)
+    return np.array(values, dtype=np.int64)

@@ -22,6 +22,7 @@ unknown columns, wrong dtypes or lengths, codes without a label, numbers too lar
 """
 
 import io
+import math
 import os
 import tempfile
 import zipfile
@@ -30,7 +31,7 @@ import zlib
 import numpy as np
 
 from ..errors import InputError
-from . import MAX_MAGNITUDE
+from . import MAX_MAGNITUDE, check_input_file
 from .overlapped import consume_overlapped
 from .stored_zip import StoredZip
 from .results_columns import (ADDED_COLUMNS, FORCE_COLUMNS, FORCE_SUMMARY_COLUMNS, INPROCESS_COLUMNS,
@@ -210,24 +211,80 @@ def read_tables(path):
     return tuple(tables)
 
 
+#: Most members an archive may hold (the columns of results, summary and labels are far fewer).
+MAX_MEMBERS = 256
+#: Longest .npy header read (numpy writes them padded to 64 bytes or a few more).
+_MAX_HEADER = 4096
+
+
 def _arrays(name):
-    """Every member of the npz file `name` as a dict key -> array; InputError when it is not one."""
+    """Every member of the npz file `name` as a dict key -> array; InputError when it is not one.
+
+    The archive is read as write_chunks writes it, never more than the file holds: members stored
+    uncompressed (a compressed member could expand a small file to any size), .npy headers of plain
+    dtypes (no objects, no pickles) whose shape's bytes are exactly the member's, at most
+    :data:`MAX_MEMBERS` members; anything else is refused naming the file and the member."""
+    check_input_file(name, "results archive")
     try:
         with open(name, "rb") as handle:
             magic = handle.read(4)
+            size = os.fstat(handle.fileno()).st_size
     except OSError as error:
         raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
     if magic != _ZIP:
         raise InputError(f"{name}: not a results archive (an .npz file is a zip file, and this is not one)")
     try:
-        with np.load(name, allow_pickle=False) as archive:
-            return {key: archive[key] for key in archive.files}
+        with zipfile.ZipFile(name) as archive:
+            members = archive.infolist()
+            if len(members) > MAX_MEMBERS:
+                raise InputError(f"{name}: not a results archive: {len(members):,} members (at most {MAX_MEMBERS})")
+            return {_member_key(name, member): _member_array(name, archive, member, size) for member in members}
     except OSError as error:
         raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
-    # numpy raises NotImplementedError for a zip member stored with a compression it does not read
-    except (ValueError, EOFError, KeyError, NotImplementedError, zipfile.BadZipFile, zlib.error) as error:
-        what = "holds pickled objects, which are not read" if "pickle" in str(error) else f"damaged ({error})"
-        raise InputError(f"{name}: not a results archive: {what}") from None
+    except (ValueError, EOFError, KeyError, NotImplementedError, RuntimeError, zipfile.BadZipFile,
+            zlib.error) as error:
+        if isinstance(error, InputError):
+            raise
+        raise InputError(f"{name}: not a results archive: damaged ({error})") from None
+
+
+def _member_key(name, member):
+    """The key of a member 'key.npy'; InputError for any other name."""
+    if not member.filename.endswith(".npy") or member.is_dir():
+        raise InputError(f"{name}: not a results archive: member {member.filename!r} is not an .npy array")
+    return member.filename[:-len(".npy")]
+
+
+def _member_array(name, archive, member, size):
+    """The array of one stored member, its header and size checked first (see _arrays)."""
+    where = f"{name}: not a results archive: member {member.filename!r}"
+    if member.compress_type != zipfile.ZIP_STORED:
+        raise InputError(f"{where} is compressed; the archives written here store their arrays uncompressed")
+    if not 0 <= member.file_size <= size:
+        raise InputError(f"{where} claims {member.file_size:,} bytes in a file of {size:,}")
+    with archive.open(member) as data:
+        try:
+            version = np.lib.format.read_magic(data)
+            reader = {(1, 0): np.lib.format.read_array_header_1_0, (2, 0): np.lib.format.read_array_header_2_0}
+            if version not in reader:
+                raise ValueError(f"npy version {version}")
+            shape, fortran, dtype = reader[version](data, max_header_size=_MAX_HEADER)
+        except Exception as error:  # numpy's header parser raises ValueError, SyntaxError, TokenError, ...
+            raise InputError(f"{where}: not an .npy header ({type(error).__name__}: {error})") from None
+        if dtype.hasobject or dtype.itemsize == 0 or dtype.kind not in "biufU":
+            raise InputError(f"{where}: holds {dtype} values, which are not read (no pickled objects)")
+        if not (isinstance(shape, tuple) and all(isinstance(n, int) and n >= 0 for n in shape) and len(shape) <= 1):
+            raise InputError(f"{name}: not a results archive: array {member.filename[:-len('.npy')]!r}: shape "
+                             f"{shape!r}; a results array is 1-D or a scalar")
+        count = math.prod(shape)
+        body = member.file_size - data.tell()
+        if count * dtype.itemsize != body:
+            raise InputError(f"{where}: shape {shape} of {dtype} needs {count * dtype.itemsize:,} bytes; the member "
+                             f"holds {body:,}")
+        values = np.empty(count, dtype=dtype)
+        if body and data.readinto(memoryview(values.view(np.uint8))) != body:
+            raise InputError(f"{where}: cut short")
+    return values.reshape(shape)
 
 
 def _column(name, key, values, rows, labels):

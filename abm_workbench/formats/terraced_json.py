@@ -112,12 +112,64 @@ def load_terraced(path):
                 loops.append(Loop(tuple(curves)))
             except ValueError as error:
                 raise InputError(f"{where}.loops[{i}]: {error}") from None
+            _check_area(loops[-1], f"{where}.loops[{i}]")
+        _check_distinct(loops, where)
         try:
             slabs.append(Slab(bottom, z_top, tuple(loops)))
         except ValueError as error:
             raise InputError(f"{where}: {error}") from None
         bottom = z_top
     return TerracedStock(tuple(slabs))
+
+
+#: Points along each arc and spline of a loop for its area.
+_AREA_SAMPLES = 64
+#: A loop whose area is below this fraction of its bounding box's encloses no material.
+_THIN = 1e-9
+
+
+def _loop_points(loop):
+    """(k, 2) points around `loop` (mm), in order: lines' ends, arcs and splines sampled."""
+    from scipy.interpolate import BSpline
+
+    points = []
+    for curve in loop.curves:
+        if isinstance(curve, PlanLine):
+            points.append(curve.start[None, :])
+        elif isinstance(curve, PlanArc):
+            points.append(curve.at(curve.start_angle + curve.sweep * np.linspace(0.0, 1.0, _AREA_SAMPLES,
+                                                                                 endpoint=False)))
+        else:
+            n, degree = len(curve.control), curve.degree
+            knots = np.array(curve.knots, dtype=float)  # writable copies: scipy's evaluation refuses read-only arrays
+            t = np.linspace(knots[degree], knots[n], _AREA_SAMPLES, endpoint=False)
+            weights = np.ones(n) if curve.weights is None else np.array(curve.weights, dtype=float)
+            numerator = BSpline(knots, curve.control * weights[:, None], degree)(t)
+            points.append(numerator / BSpline(knots, weights, degree)(t)[:, None])
+    return np.concatenate(points)
+
+
+def _check_area(loop, where):
+    """InputError unless `loop` encloses some area (a loop that goes out and back along the same path
+    encloses none: a region of zero area, which no solid has)."""
+    points = _loop_points(loop)
+    x, y = points[:, 0] - points[:, 0].mean(), points[:, 1] - points[:, 1].mean()
+    area = 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+    box = float(np.ptp(points[:, 0])) * float(np.ptp(points[:, 1]))
+    if not area > _THIN * max(box, np.ptp(points, axis=0).max() ** 2):
+        raise InputError(f"{where}: encloses no area ({area:.3g} mm²): a loop must bound a region")
+
+
+def _check_distinct(loops, where):
+    """InputError when two loops of a slab are the same contour: by the even-odd rule they cancel, and
+    leave a region of zero area between them."""
+    seen = {}
+    for i, loop in enumerate(loops):
+        key = tuple(sorted(tuple(np.round(_loop_points(loop), 9).ravel())))
+        if key in seen:
+            raise InputError(f"{where}.loops[{i}]: the same contour as loops[{seen[key]}]; by the even-odd rule "
+                             "the two cancel and bound no region")
+        seen[key] = i
 
 
 def _curve_json(curve):

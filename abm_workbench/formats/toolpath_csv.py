@@ -53,6 +53,8 @@ _FEEDS = ("feed_per_tooth", "feed_mm_min")
 OPERATION_NUMBERS = ("operation", "diameter", "corner_radius", "flute_length", "feed_rate", "line")
 OPERATION_TEXTS = ("name", "tool", "feed_unit")
 _MAY_BE_EMPTY = ("diameter", "corner_radius", "flute_length", "feed_rate")
+#: Columns of whole numbers, and the least each may be.
+_WHOLE_COLUMNS = {"operation": 1, "line": 0}
 _EXAMPLE = "x,y,z,theta_a,theta_b"
 #: Longest field and line read (characters): far beyond any number, operation name or row.
 MAX_FIELD, MAX_LINE = 1000, 64000
@@ -90,6 +92,12 @@ def load_table(path):
     found = _columnwise(header, [line for _, line in lines[1:]])
     if found is None:
         found = _line_by_line(name, header, lines[1:])
+    for column, low in _WHOLE_COLUMNS.items():
+        values = found[0].get(column)
+        bad = None if values is None else np.flatnonzero((values != np.round(values)) | (values < low))
+        if bad is not None and bad.size:
+            raise InputError(f"{name}:{numbers[bad[0]]}: column {column!r}: {values[bad[0]]:g} is not a whole number "
+                             f"of at least {low}")
     return Table(name, header, numbers, *found)
 
 

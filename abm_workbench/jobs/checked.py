@@ -6,9 +6,14 @@ and/or every N-th CL point from 0; the CL points shown in detail (`--cl`) are al
 Without either option every CL point is checked.
 """
 
+import re
+
 import numpy as np
 
 from ..errors import ParameterError
+
+#: A CL index as the lists write it: ASCII digits only (int() would also take '1_0' and other scripts' digits).
+INDEX = re.compile(r"[0-9]+")
 
 
 def parse_cl_list(text, m, field):
@@ -20,8 +25,10 @@ def parse_cl_list(text, m, field):
         raise ParameterError(field, "is empty: give CL indices such as 0,27,80-100")
     indices = set()
     for position, item in enumerate(items, start=1):
-        first, dash, last = item.partition("-")
+        first, dash, last = (part.strip() for part in item.partition("-"))
         try:
+            if not (INDEX.fullmatch(first) and (INDEX.fullmatch(last) or not dash)):
+                raise ValueError(item)
             low = int(first)
             high = int(last) if dash else low
         except ValueError:

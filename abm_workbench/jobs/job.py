@@ -207,10 +207,15 @@ def load_job_stock(prepared: Prepared):
 
 
 def cl_indices(text, m, field="cl"):
-    """Sorted distinct CL indices from '0,22,40'; ParameterError(field) unless each is an integer in 0..m−1."""
+    """Sorted distinct CL indices from '0,22,40'; ParameterError(field) unless each is an integer (ASCII digits)
+    in 0..m−1."""
+    from .checked import INDEX
+
     indices = set()
     for part in text.split(","):
         try:
+            if not INDEX.fullmatch(part.strip()):
+                raise ValueError(part)
             index = int(part)
         except ValueError:
             raise ParameterError(field, f"expected CL indices such as 0,22,40, got {text!r}") from None

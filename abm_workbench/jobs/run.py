@@ -11,6 +11,7 @@ Lengths in mm, angles in degrees, forces in N.
 
 import contextlib
 import dataclasses
+import math
 import os
 import re
 import time
@@ -102,9 +103,136 @@ def in_process_sweep(prepared, method="abm", warn=None):
     if curved:
         notes.append(f"the in-process stock sweeps the program's {curved} arcs and curves as the chords between "
                      f"their CL points, each within {job.tolerance:g} mm of the arc (at most {job.step:g} mm long)")
+    check_sweep(moves, job.sweep_tolerance, job.toolpath)
     for note in notes if warn is not None else ():
         warn(f"{job.toolpath}: {note}")
     return (swept_pieces(moves, job.sweep_tolerance), rows), ""
+
+
+#: Bytes of memory per constant-axis piece, span and bounding ball of the in-process stock's sweep
+#: (its arrays and the temporaries that make them; engine.inprocess.SweptPieces).
+PIECE_BYTES, SPAN_BYTES, BALL_BYTES = 400, 400, 160
+
+
+def sweep_size(moves, tolerance):
+    """(pieces, spans, balls) that engine.inprocess.swept_pieces(moves, tolerance) makes of the cutting
+    moves of `moves` (a ProgramMoves), counted as it counts them but in floats, so that no count can
+    overflow: pieces and spans exactly, balls (each chain's height in slices as tall as its radius) as an
+    upper bound."""
+    from ..engine.inprocess import _CHAIN, _SPAN_PIECES  # the engine's own constants, so the counts follow it
+
+    j = np.flatnonzero(moves.cutting[1:]) + 1
+    if not j.size:
+        return 0.0, 0.0, 0.0
+    radius, height = moves.radius[j], moves.flute_length[j]
+    rho = np.hypot(radius, height)
+    turn = np.arccos(np.clip(np.einsum("ij,ij->i", moves.axis[j - 1], moves.axis[j]), -1.0, 1.0))
+    length = np.linalg.norm(moves.cl[j] - moves.cl[j - 1], axis=1)
+    with np.errstate(all="ignore"):
+        steps = np.ceil(turn * rho / tolerance)
+        spans = np.maximum(np.maximum(np.ceil(length / rho), np.ceil(steps / _SPAN_PIECES)), 1.0)
+        pieces = spans * np.maximum(np.ceil(steps / spans), 1.0)
+        # A chain starts where a run of consecutive moves of one tool starts, after every _CHAIN spans of
+        # the run and after every radius of its path: at most runs + Σ spans / _CHAIN + Σ length / radius.
+        slices = np.maximum(np.ceil(height / radius), 1.0)
+        runs = 1 + np.flatnonzero((np.diff(j) > 1) | (np.diff(radius) != 0) | (np.diff(height) != 0)).size
+        balls = (spans / _CHAIN + length / radius) * slices
+        balls = np.append(balls, runs * slices.max())
+    return float(pieces.sum()), float(spans.sum()), float(balls.sum())
+
+
+def check_sweep(moves, tolerance, toolpath):
+    """TooLarge (naming the toolpath and what makes the sweep large) unless the in-process stock's sweep
+    of `moves` at `tolerance` mm is within limits.LARGE_PIECES pieces and the memory available."""
+    from ..limits import LARGE_PIECES, check_large, check_memory, count_text
+
+    pieces, spans, balls = sweep_size(moves, tolerance)
+    remedy = ("give a larger --sweep-tolerance or --stock-model initial (the stock as given)" if pieces > 2 * spans
+              else "give --stock-model initial (the stock as given)")
+    why = f"{toolpath}: the in-process stock"
+    check_large(toolpath, "the in-process stock would sweep the program's cutting moves into {} pieces and bounding "
+                "balls", pieces + balls, LARGE_PIECES, remedy)
+    check_memory(PIECE_BYTES * pieces + SPAN_BYTES * spans + BALL_BYTES * balls, why,
+                 f"its sweep ({count_text(pieces)} pieces, {count_text(balls)} bounding balls)", remedy)
+
+
+#: Bytes of memory per instant (CL point × angle): the engine's temporaries while it computes a chunk
+#: (measured: about 1.5 KiB); an Engagement's arrays kept for a whole pass; a whole pass drawn (its
+#: Engagement, and with forces its Forces, and the figure's arrays: measured about 450 B); a validation's
+#: arrays per instant besides the Engagement; the forces of a whole pass (every flute, schedule).
+ENGINE_BYTES, RESULT_BYTES, PLOT_BYTES, VALIDATION_BYTES, FORCE_BYTES = 2048, 160, 500, 400, 600
+#: Bytes written per instant: a results CSV row (with its share of the summary), an archive's columns.
+CSV_BYTES, NPZ_BYTES = 200, 150
+
+
+def check_run_size(job, prepared, *, command="engage", workers=1, whole=False, out=None, boolean=None):
+    """Before any file is written: TooLarge when the run's instants (CL points × angles) are above
+    limits.LARGE_INSTANTS, its estimated memory above what this process may use, or its results `out`
+    above the free space of their file system; with `boolean` (CL points the boolean reference checks,
+    None: all) when the boolean reference's instants are above limits.LARGE_BOOLEAN_INSTANTS.
+    workers: processes computing chunks at once; whole: the pass is also kept whole (a plot, validate,
+    schedule)."""
+    from ..limits import (BASE_MEMORY, LARGE_BOOLEAN_INSTANTS, LARGE_INSTANTS, check_disk, check_large, check_memory,
+                          count_text)
+
+    m, p = len(prepared.toolpath), prepared.settings.phi.size
+    instants = m * p
+    why = f"{job.toolpath}: {count_text(m)} CL points x {count_text(p)} angles"
+    remedy = "give a larger --phi-step or a shorter --phi-range"
+    check_large(job.toolpath, f"{count_text(m)} CL points x {count_text(p)} angles = {{}} instants", instants,
+                LARGE_INSTANTS, remedy)
+    chunk = max(p, CHUNK_INSTANTS)
+    per_instant = (RESULT_BYTES + (PLOT_BYTES if command == "engage" else VALIDATION_BYTES if command == "validate"
+                                   else FORCE_BYTES)) if whole else 0
+    if command == "schedule":
+        per_instant = FORCE_BYTES * prepared.tool.flutes
+    needed = (BASE_MEMORY + max(1, workers) * chunk * (ENGINE_BYTES + IN_FLIGHT_CHUNKS * CSV_BYTES)
+              + per_instant * instants)
+    check_memory(needed, why, f"the {command} run", remedy)
+    if out is not None:
+        check_disk((NPZ_BYTES if os.fspath(out).lower().endswith(".npz") else CSV_BYTES) * instants, out, why)
+    if boolean is not None or command == "validate":
+        checked = m if boolean is None else len(boolean)
+        flutes = prepared.tool.flutes if prepared.tool.helix else 1
+        check_large(f"{job.toolpath}: the boolean reference", f"would check {count_text(checked)} CL points x "
+                    f"{count_text(p)} angles{f' x {flutes} flutes' if flutes > 1 else ''} = {{}} instants",
+                    checked * p * flutes, LARGE_BOOLEAN_INSTANTS,
+                    "check fewer CL points (--check, --check-every) or give a larger --phi-step")
+
+
+def check_zmap_size(staircase, tool, m, p, method):
+    """Before the Z-map baseline runs on `staircase` with `tool`, m CL points and p angles: ParameterError
+    naming --grid when its cells are more than engine.zmap.MAX_CELLS or their memory above what this
+    process may use, naming --edge-step (--grid when the edge step is the grid's default) when a CL
+    point's edge samples are more than engine.zmap.MAX_SAMPLES; TooLarge when the run's edge samples (CL
+    points x angles x points along the edge) are above limits.LARGE_ZMAP_SAMPLES."""
+    from ..engine.zmap import MAX_CELLS, MAX_SAMPLES
+    from ..limits import LARGE_ZMAP_SAMPLES, check_large, check_memory
+
+    grid, edge_step = zmap_cells(method)
+    cells = (max(1.0, math.ceil((staircase.x_max - staircase.x_min) / grid - 1e-9))
+             * max(1.0, math.ceil((staircase.y_max - staircase.y_min) / grid - 1e-9)))
+    if cells > MAX_CELLS:
+        raise ParameterError("grid", f"{grid:g} mm gives the stock {cells:,.0f} Z-map cells, more than the Z-map "
+                                     f"holds ({MAX_CELLS:,}): give a larger --grid")
+    check_memory(ZMAP_CELL_BYTES * cells, "--grid", f"the Z-map's {cells:,.0f} cells", "give a larger --grid")
+    field, option = ("edge_step", "--edge-step") if method.edge_step is not None else ("grid", "--grid")
+    default = "" if method.edge_step is not None else " (the edge step is the grid's unless --edge-step is given)"
+    along = max(1, math.ceil(tool.flute_length / edge_step - 1e-9)) + 1  # as engine.zmap.zmap_engage samples
+    if p * along > MAX_SAMPLES:
+        raise ParameterError(field, f"an edge step of {edge_step:g} mm samples the {tool.flute_length:g} mm flute at "
+                                    f"{along:,} points{default}, {p:,} angles x {along:,} = {p * along:,} per CL "
+                                    f"point, more than the Z-map takes ({MAX_SAMPLES:,}): give a larger {option} "
+                                    "or --phi-step")
+    check_large(option, f"the Z-map would sample {{}} edge points ({m:,} CL points x {p:,} angles x {along:,} along "
+                f"the edge){default}", float(m) * p * along, LARGE_ZMAP_SAMPLES,
+                f"give a larger {option} or --phi-step")
+
+
+#: Bytes of memory per Z-map cell (its heights, sections and the temporaries of an update).
+ZMAP_CELL_BYTES = 48
+#: Chunks of results a worker may have in flight (computing, or waiting to be written in order).
+IN_FLIGHT_CHUNKS = 4
 
 
 def check_model(stock, method="abm", helix=0.0):
@@ -219,6 +347,11 @@ def _inputs(job):
     return [job.stock, job.toolpath] + ([job.job_file] if job.job_file else [])
 
 
+#: The files a report folder (validate, schedule) holds: an older report of only these is replaced.
+REPORT_FILES = frozenset({"index.html", "comparison.csv", "segments.csv", "surfaces.csv", "depth.csv", "flutes.csv",
+                          "forces.png", "schedule.csv", "schedule.png"})
+
+
 def check_report_outputs(job, report, fcstd=None):
     """The report folder and FCStd can be written, replace nothing but an older report, hold no input."""
     inputs = _inputs(job)
@@ -229,6 +362,12 @@ def check_report_outputs(job, report, fcstd=None):
     if os.path.isdir(folder) and os.listdir(folder) and not os.path.isfile(os.path.join(folder, "index.html")):
         raise InputError(f"{report}: folder holds files but no report (index.html); it would be replaced "
                          "as a whole: choose a new or empty folder")
+    foreign = sorted(set(os.listdir(folder)) - REPORT_FILES) if os.path.isdir(folder) else []
+    if foreign:
+        more = f" and {len(foreign) - 1} more" if foreign[1:] else ""
+        raise InputError(f"{report}: folder holds {foreign[0]!r}{more}, which no report writes; an older report "
+                         "there is replaced as a whole, which would delete it: choose a new or empty folder, or move "
+                         "it away")
     inside = [path for path in inputs + ([fcstd] if fcstd else [])
               if os.path.realpath(path).startswith(folder + os.sep)]
     if inside:
@@ -241,14 +380,14 @@ def check_report_outputs(job, report, fcstd=None):
 def output_folders(outputs):
     """Make the missing folders of `outputs`; remove the ones made (if empty) when the block fails."""
     made = []
-    for path in outputs:
-        folder, missing = os.path.dirname(os.path.abspath(path)), []
-        while not os.path.exists(folder):
-            folder, missing = os.path.dirname(folder), missing + [folder]
-        for folder in reversed(missing):
-            os.mkdir(folder)
-            made.append(folder)
     try:
+        for path in outputs:
+            folder, missing = os.path.dirname(os.path.abspath(path)), []
+            while not os.path.exists(folder):
+                folder, missing = os.path.dirname(folder), missing + [folder]
+            for folder in reversed(missing):
+                os.mkdir(folder)
+                made.append(folder)
         yield
     except BaseException:
         for folder in reversed(made):
@@ -410,12 +549,16 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     if plot and prepared.force_model is not None:
         outputs.append(os.path.splitext(plot)[0] + ".forces.png")
     check_outputs(outputs, _inputs(job))
+    check_run_size(job, prepared, workers=worker_count(method.workers) if method.name == "abm" and not method.scheduler
+                   else 1, whole=bool(plot), out=out)
     if method.name != "abm" and tool.corner_radius:
         raise ParameterError("method", f"the Z-map baseline samples a flat-end mill's edge; this {tool.kind} mill "
                                        f"(corner radius {tool.corner_radius:g} mm) is computed by the ABM engine only")
     prepared, stock, _ = load_job_stock(prepared)
     toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     check_model(stock, method.name, tool.helix)
+    if method.name != "abm":
+        check_zmap_size(stock.model, tool, len(toolpath), settings.phi.size, method)
     in_process, model_note = in_process_sweep(prepared, method.name, warn)
 
     started = time.perf_counter()
@@ -508,6 +651,7 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
     if checking is not None and (tool.helix or flutes):
         raise ParameterError("check", "is not available with helical edges (--helix, --flute) yet")
     check_report_outputs(job, report, fcstd)
+    check_run_size(job, prepared, command="validate", whole=True, boolean=checking)
     prepared, stock, stock_seconds = load_job_stock(prepared)
     toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     in_process, model_note = _validated_sweep(job, prepared, flutes, warn)
@@ -515,7 +659,13 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
         warn(f"{job.toolpath}: {model_note}; validating against the stock as given")
     check_model(stock, helix=tool.helix)
     started = time.perf_counter()
-    solid = stock.solid()
+    try:
+        solid = stock.solid()
+    except InputError:
+        raise
+    except Exception as error:  # OpenCASCADE's errors, or a stock the solid builders do not take
+        raise InputError(f"{job.stock}: the boolean reference cannot build the stock's solid "
+                         f"({type(error).__name__}: {error})") from None
     stock_seconds += time.perf_counter() - started
 
     try:
@@ -542,9 +692,8 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
     views = None if in_process is None else _stock_views(
         solid, in_process, tool, toolpath, [cl for cl, _ in shown if checked.in_process.changed[cl]])
 
-    for path in [report] + ([fcstd] if fcstd else []):
-        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with staged(report, folder=True) as folder, (staged(fcstd) if fcstd else contextlib.nullcontext()) as document:
+    with output_folders([report] + ([fcstd] if fcstd else [])), staged(report, folder=True) as folder, \
+            (staged(fcstd) if fcstd else contextlib.nullcontext()) as document:
         page = write_report(folder, checked, report_job, shown, forces, views)
         if helix is not None:
             write_flutes_csv(os.path.join(folder, "flutes.csv"), helix)
@@ -670,6 +819,7 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     if report:
         check_report_outputs(job, report)
     check_outputs([out] + ([report] if report else []), _inputs(job), files=[out])
+    check_run_size(job, prepared, command="schedule", whole=True)
     prepared, stock, _ = load_job_stock(prepared)
     toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     check_model(stock, helix=tool.helix)
@@ -695,9 +845,8 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
              f"feed from the minimum feed up; they get the minimum feed: {shown}{more}")
     comment = (f"re-scheduled by abm schedule: peak {kind} <= {limit:g} {unit}, feed per tooth "
                f"{plan.feed.min():.6g}..{plan.feed.max():.6g} mm (programmed {plan.programmed.max():.6g} mm)")
-    for path in [out] + ([report] if report else []):
-        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with (staged(report, folder=True) if report else contextlib.nullcontext()) as folder:
+    with output_folders([out] + ([report] if report else [])), \
+            (staged(report, folder=True) if report else contextlib.nullcontext()) as folder:
         if folder:
             from ..report.forces import write_schedule_report
             title = prepared.description or f"{os.path.basename(job.stock)} / {os.path.basename(job.toolpath)}"

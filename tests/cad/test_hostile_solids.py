@@ -89,3 +89,17 @@ def test_a_script_without_a_main_guard_reads_solids(tmp_path):
                           env={**os.environ, "PYTHONPATH": ROOT})
     assert done.returncode == 0, done.stderr
     assert int(done.stdout) == len(Part.read(os.path.join(MODEL, "stock.step")).Faces)
+
+
+def test_a_step_point_of_nan_is_named_not_a_crash(tmp_path):
+    """A CARTESIAN_POINT of NAN: OpenCASCADE reads a shape whose vertices are all NaN, and the stock's
+    frame then raised FloatingPointError ('invalid bounding box') from FreeCAD's BoundBox (issue #29)."""
+    import re
+
+    text = open(os.path.join(MODEL, "stock.step"), encoding="latin-1").read()
+    path = tmp_path / "stock.step"
+    path.write_text(re.sub(r"CARTESIAN_POINT\('',\(([-0-9.E+]+),", "CARTESIAN_POINT('',(NAN,", text, count=1),
+                    encoding="latin-1")
+    with pytest.raises(InputError, match=rf"^{path}: damaged STEP: [0-9]+ of the shape's [0-9]+ vertices are not "
+                                         "finite numbers"):
+        recognise.load_solid(path)

@@ -203,9 +203,10 @@ def test_cli_zmap_end_to_end(case, capsys):
     (["--grid", "0.2"], "--grid: applies to the Z-map method"),
     (["--method", "abm", "--edge-step", "0.1"], "--edge-step: applies to the Z-map method"),
     (["--method", "zmap", "--grid", "0"], "--grid: must be a positive"),
-    (["--method", "zmap", "--grid", "nan"], "--grid: must be a positive"),
+    (["--method", "zmap", "--grid", "nan"], "--grid: must be a finite number, got nan"),
     (["--method", "zmap", "--edge-step", "-0.1"], "--edge-step: must be a positive"),
-    (["--method", "zmap", "--grid", "0.00001"], "--method: the Z-map method: grid"),
+    (["--method", "zmap", "--grid", "0.00001"], "--grid: 1e-05 mm gives the stock 39,000,000,000,000 Z-map cells, "
+                                                "more than the Z-map holds (50,000,000)"),
     (["--method", "fast"], "invalid choice"),
     (["--method", "zmap", "--grid", "x"], "invalid float value"),
 ])

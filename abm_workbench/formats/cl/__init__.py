@@ -18,6 +18,7 @@ import os
 from dataclasses import replace
 
 from ...errors import InputError
+from .arcs import MIN_TOLERANCE, interpolation_budget
 from .sniff import read_file
 
 #: Default chordal tolerance (mm) of interpolated arcs and curves.
@@ -32,10 +33,17 @@ def read_program(path, tolerance=TOLERANCE, step=STEP, options=None):
     formats.gcode.options.ReadOptions (the CAM Job's name, tool table, machine, work offsets) or None.
     InputError naming the file (and line) for anything unreadable."""
     name = os.fspath(path)
-    if not tolerance > 0.0:
-        raise InputError(f"{name}: the chordal tolerance must be positive, got {tolerance:g} mm")
-    if not step > 0.0:
-        raise InputError(f"{name}: the step along arcs and curves must be positive, got {step:g} mm")
+    if not tolerance >= MIN_TOLERANCE:
+        raise InputError(f"{name}: the chordal tolerance must be at least {MIN_TOLERANCE:g} mm, got {tolerance:g} mm")
+    if not step >= MIN_TOLERANCE:
+        raise InputError(f"{name}: the step along arcs and curves must be at least {MIN_TOLERANCE:g} mm, got "
+                         f"{step:g} mm")
+    with interpolation_budget():
+        return _read_program(name, tolerance, step, options)
+
+
+def _read_program(name, tolerance, step, options):
+    """read_program of a file whose tolerance and step are checked."""
     kind, text, encoding = read_file(name)
     if options is not None:
         options.check(kind, name)

@@ -13,14 +13,64 @@ mm apart along the arc and each chord within `tolerance` mm of it (its sagitta);
 with the arc's tangent there, the direction of the tool's motion.
 """
 
+import contextlib
+import contextvars
 import math
 
 import numpy as np
+
+from ...limits import LARGE_INTERPOLATION, check_large, check_memory, count_text
 
 #: Largest angle (rad) between two interpolated points, however coarse the tolerance.
 MAX_STEP = math.pi / 4
 #: Start and end points of an arc closer than this (mm, in the circle's plane) make a full turn.
 SAME_POINT = 1e-6
+#: Smallest chordal tolerance and step (mm) of arcs and curves: a nanometre, far below what CL files
+#: are written to.
+MIN_TOLERANCE = 1e-6
+#: Memory an interpolated CL point takes in a program being read (bytes).
+POINT_BYTES = 512
+
+_SPENT = contextvars.ContextVar("abm_interpolated", default=None)
+
+
+@contextlib.contextmanager
+def interpolation_budget():
+    """Within the block (reading one program), the arcs and curves interpolated share one budget of CL
+    points (:func:`spend`)."""
+    token = _SPENT.set([0])
+    try:
+        yield
+    finally:
+        _SPENT.reset(token)
+
+
+def afford(count):
+    """spend's check of `count` more interpolated CL points, without taking them (for a loop that will
+    take them piece by piece, such as a helix of many turns)."""
+    _check(count, "at least ")
+
+
+def spend(count):
+    """Take `count` interpolated CL points from the program's budget before they are made: TooLarge (a
+    ValueError, which the readers give the record's line) when the program's arcs and curves together
+    would make more than limits.LARGE_INTERPOLATION of them and large runs are not allowed, or more
+    than the memory this process may use."""
+    total = _check(count)
+    spent = _SPENT.get()
+    if spent is not None:
+        spent[0] = total
+
+
+def _check(count, words=""):
+    """The program's interpolated CL points with `count` more; TooLarge as spend says."""
+    spent = _SPENT.get()
+    total = count + (spent[0] if spent is not None else 0)
+    remedy = "give a coarser --tolerance or --step"
+    check_large("interpolating it", f"{words}{count_text(count)} CL points (the program's arcs and curves so far: "
+                "{})", total, LARGE_INTERPOLATION, remedy)
+    check_memory(total * POINT_BYTES, "interpolating it", f"{count_text(total)} CL points", remedy)
+    return total
 
 
 def arc_points(start, end, centre, axis, tolerance, step=math.inf):
@@ -51,7 +101,8 @@ def arc_points(start, end, centre, axis, tolerance, step=math.inf):
         sweep = 2.0 * math.pi
     radius = max(radius_a, radius_b)
     length = math.hypot(sweep * radius, height_b - height_a)
-    count = max(1, math.ceil(sweep / step_angle(radius, tolerance)), math.ceil(length / step - 1e-9))
+    count = max(1, math.ceil(sweep / step_angle(radius, tolerance)), math.ceil(min(length / step - 1e-9, 1e300)))
+    spend(count)
     t = np.arange(1, count + 1) / count
     angle = sweep * t
     radii = radius_a + (radius_b - radius_a) * t
@@ -69,4 +120,6 @@ def step_angle(radius, tolerance):
     """The largest angle (rad) whose chord on a circle of `radius` mm has sagitta <= `tolerance` mm."""
     if tolerance >= radius:
         return MAX_STEP
+    if tolerance < 1e-6 * radius:  # 1 − t/r would round away: the same angle as 4·asin(√(t / 2r))
+        return 4.0 * math.asin(math.sqrt(0.5 * tolerance / radius))
     return min(MAX_STEP, 2.0 * math.acos(1.0 - tolerance / radius))

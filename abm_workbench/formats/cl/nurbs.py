@@ -29,6 +29,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .arcs import spend
+
 #: Highest degree read.
 MAX_DEGREE = 9
 
@@ -128,6 +130,10 @@ def bspline_points(layout, tolerance, step=math.inf):
     counts = np.maximum(1, np.ceil(length * np.sqrt(bound / (8.0 * tolerance))))
     if np.isfinite(step):
         counts = np.maximum(counts, np.ceil(polygon / step - 1e-9))
+    total = float(counts.sum())
+    if not math.isfinite(total):
+        raise ValueError("the curve bends too sharply to be interpolated (its second derivative is not finite)")
+    spend(total)
     counts = counts.astype(int)
     first = np.repeat(np.cumsum(counts) - counts, counts)
     index = np.arange(int(counts.sum())) - first + 1

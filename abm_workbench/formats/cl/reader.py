@@ -33,7 +33,7 @@ import re
 import numpy as np
 
 from ...errors import InputError
-from .. import MAX_MAGNITUDE, NUMBER
+from .. import MAX_ANGLE, MAX_MAGNITUDE, NUMBER
 from . import units as unit_words
 from .arcs import arc_points
 from .frames import IDENTITY, compose, csys_frame, msys_frame, table_frame
@@ -758,6 +758,8 @@ class _Reader:
         angle = -angle if "CLW" in words else angle
         if "INCR" in words:
             angle += self.table_angles.get(axis, 0.0)
+        if not abs(angle) <= MAX_ANGLE:
+            raise self.error(record, f"the table's angle {angle:g}° is beyond ±{MAX_ANGLE:g}°")
         self.table_angles[axis] = angle
         turned = [f"{self.table_angles[a]:g} {a}" for a in ("AAXIS", "BAXIS", "CAXIS")
                   if self.table_angles.get(a, 0.0) % 360.0]

@@ -16,6 +16,7 @@ import os
 import re
 
 from ...errors import InputError
+from .. import read_bytes
 from .lexer import BARE_WORDS
 
 _PROBE = 65536
@@ -31,11 +32,7 @@ def read_file(path):
     encoding None), encoding the one the text was read with; InputError for unreadable, binary or
     unknown content, naming the file."""
     name = os.fspath(path)
-    try:
-        with open(name, "rb") as file:
-            data = file.read()
-    except OSError as error:
-        raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
+    data = read_bytes(name)
     if data.startswith(_ZIP) or name.lower().endswith(".fcstd"):
         if not data.startswith(_ZIP):
             raise InputError(f"{name}: not a FreeCAD document (an FCStd is a zip file)")

@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from ..cl.arcs import SAME_POINT, arc_points
+from ..cl.arcs import SAME_POINT, afford, arc_points
 
 #: (u, v, w) coordinate indices of each plane.
 PLANES = {17: (0, 1, 2), 18: (2, 0, 1), 19: (1, 2, 0)}
@@ -89,6 +89,7 @@ def arc_moves(start, end, centre, plane, clockwise, turns, tolerance, step):
     start, end, centre = (np.asarray(p, dtype=float) for p in (start, end, centre))
     if turns == 1:
         return arc_points(start, end, centre, w, tolerance, step)
+    afford(8 * (turns - 1))  # a full turn is at least 8 CL points (arcs.MAX_STEP)
     radial_end = (end - centre) - ((end - centre) @ w) * w
     reference = (start - centre) - ((start - centre) @ w) * w
     last = math.atan2(np.cross(reference, radial_end) @ w, reference @ radial_end) % (2.0 * math.pi)

@@ -24,6 +24,7 @@ import re
 import numpy as np
 
 from ...errors import InputError
+from .. import MAX_ANGLE
 from ..cl.tools import ToolSpec
 from ..cl.units import MM_PER_INCH, surface_speed_rpm
 from . import circles
@@ -291,6 +292,9 @@ class Interpreter:
                                                             f"{' '.join(self.machine.rotary)})")
             value = values[letter].value
             angles[letter] = value if self.absolute or machine_frame else angles[letter] + value
+            if not abs(angles[letter]) <= MAX_ANGLE:
+                raise self.error(line, values[letter].text, f"the {letter} axis at {angles[letter]:g}° is beyond "
+                                                            f"±{MAX_ANGLE:g}°")
         return position, angles
 
     def pose(self, angles, line):

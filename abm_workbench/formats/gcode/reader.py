@@ -9,6 +9,7 @@ import math
 import os
 
 from ...errors import InputError
+from .. import check_input_file
 from ..cl.lexer import split_lines
 from ..cl.units import MM_PER_INCH
 from .blocks import blocks_of_text
@@ -56,6 +57,7 @@ def load_tools(path, scale=1.0):
     file whose name ends in .FCStd or that is a zip; in mm), else a LinuxCNC tool table (in the machine's
     units: its lengths times `scale`, the machine's unit in mm)."""
     name = os.fspath(path)
+    check_input_file(name, "tool table")
     try:
         with open(name, "rb") as file:
             zipped = file.read(4) == _ZIP
