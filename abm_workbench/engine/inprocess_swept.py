@@ -121,21 +121,26 @@ def _subgradient(pieces, grads, m, s):
     top = pieces.max(axis=1)
     active = pieces >= (top - ACTIVE)[:, None]
     rate = np.einsum("kij,kj->ki", grads, m)
-    inner = (s > 0.0) & (s < 1.0)
     # The active piece whose rate is smallest and the one whose rate is largest.
     low = np.argmin(np.where(active, rate, np.inf), axis=1)
     high = np.argmax(np.where(active, rate, -np.inf), axis=1)
     k = np.arange(pieces.shape[0])
-    r_low, r_high = rate[k, low], rate[k, high]
-    g_low, g_high = grads[k, low], grads[k, high]
+    return _blended(rate[k, low], rate[k, high], grads[k, low], grads[k, high], s)
+
+
+def _blended(r_low, r_high, g_low, g_high, s):
+    """(K, 3) the subgradient of two active pieces' gradients g_low, g_high (K, 3) whose rates along the move
+    are r_low ≤ r_high (K,), at the minimising position s (K,): where the rates change sign inside (0, 1),
+    their convex combination of rate 0; else at s = 0 the smaller (rate ≤ 0), at s = 1 the larger
+    (rate ≥ 0), inside the one nearer 0."""
+    inner = (s > 0.0) & (s < 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         mix = np.where(r_high > r_low, r_high / (r_high - r_low), 1.0)
     mix = np.clip(mix, 0.0, 1.0)
     crossing = inner & (r_low < 0.0) & (r_high > 0.0)
-    v = np.where(crossing[:, None], mix[:, None] * g_low + (1.0 - mix)[:, None] * g_high,
-                 np.where((s >= 1.0)[:, None] | (inner & (np.abs(r_high) < np.abs(r_low)))[:, None], g_high, g_low))
-    # At s = 0 the rate must be ≤ 0: the smallest; at s = 1 ≥ 0: the largest; inside, the one nearer 0.
-    return v
+    return np.where(crossing[:, None], mix[:, None] * g_low + (1.0 - mix)[:, None] * g_high,
+                    np.where((s >= 1.0)[:, None] | (inner & (np.abs(r_high) < np.abs(r_low)))[:, None], g_high,
+                             g_low))
 
 
 def swept_gauge(x, c0, move, axis, radius, height, corner, value_only=False):
@@ -218,14 +223,7 @@ def _corner_gauge(q, move, s, axis, radius, height, corner):
     r_low, r_high = np.where(top_low, r_top, r_tor), np.where(top_high, r_top, r_tor)
     g_low = np.where(top_low[:, None], axis, tor_grad)
     g_high = np.where(top_high[:, None], axis, tor_grad)
-    inner = (s > 0.0) & (s < 1.0)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        mix = np.where(r_high > r_low, r_high / (r_high - r_low), 1.0)
-    mix = np.clip(mix, 0.0, 1.0)
-    crossing = inner & (r_low < 0.0) & (r_high > 0.0)
-    v = np.where(crossing[:, None], mix[:, None] * g_low + (1.0 - mix)[:, None] * g_high,
-                 np.where((s >= 1.0)[:, None] | (inner & (np.abs(r_high) < np.abs(r_low)))[:, None], g_high, g_low))
-    return value, v, a, b, nb
+    return value, _blended(r_low, r_high, g_low, g_high, s), a, b, nb
 
 
 def _flat_position(q, move, axis, radius, height):
