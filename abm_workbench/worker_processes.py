@@ -22,12 +22,21 @@ KeyboardInterrupt, the command line's SIGTERM / SIGHUP, a progress callback that
 - a worker holds only its own end of its pipe, so if the parent dies without any clean-up (SIGKILL)
   the worker reads the end of the pipe after its current task and ends too; on Linux it is killed at
   once (:func:`die_with_parent`: PR_SET_PDEATHSIG), even in the middle of a task.
+
+:class:`ChildTask` is one task in one spawned process that the caller looks at without waiting (the
+GUI's event loop polls it): its progress steps, then its value or error; :meth:`ChildTask.stop` kills it
+at once. :func:`call_with_shapes` runs there a function of Part.Shape arguments and value, the shapes
+passing through OpenCASCADE's binary BREP files (exact: the doubles as they are).
 """
 
 import contextlib
+import inspect
 import multiprocessing.connection
 import os
+import pickle
 import signal
+import threading
+from dataclasses import dataclass
 from multiprocessing import resource_tracker
 
 #: Signals held back while workers are started or stopped.
@@ -193,3 +202,151 @@ def _serve(connection, initializer, initargs, parent):
             connection.send(answer)
         except Exception as error:  # an answer that does not pickle: said in words
             connection.send((False, RuntimeError(f"{type(error).__name__}: {error}")))
+
+
+class ChildTask:
+    """function(*arguments) in one spawned process (with progress=, a callback, when it takes one), looked
+    at without waiting: :meth:`messages` gives what it said since the last look. function: module-level,
+    arguments: picklable and small (they pass through the spawn's pipe: put big data in files).
+
+    The process ignores SIGINT and SIGHUP and, on Linux, is killed when its parent dies; :meth:`stop`
+    kills it (SIGKILL: a boolean cannot be interrupted halfway) and reaps it.
+    """
+
+    def __init__(self, function, arguments=()):
+        self.function, self.arguments = function, tuple(arguments)
+        self.process = self.connection = None
+        self.ended = False
+
+    def start(self):
+        from .cad.recognise import spawn_context
+
+        context = spawn_context()
+        resource_tracker.ensure_running()  # first: starting it lets SIGINT and SIGTERM through again
+        with held_signals():
+            ours, theirs = context.Pipe(duplex=False)
+            self.connection = ours
+            self.process = context.Process(target=_run_child,
+                                           args=(theirs, os.getpid(), self.function, self.arguments), daemon=True)
+            try:
+                self.process.start()
+            finally:
+                theirs.close()
+        return self
+
+    def messages(self):
+        """What the task said since the last look, without waiting: ("progress", done, total) steps, then
+        ("value", value) or ("error", exception) once, as it ended (WorkerError when the process ended
+        without answering)."""
+        said = []
+        if self.ended:
+            return said
+        try:
+            while self.connection.poll():
+                message = self.connection.recv()
+                said.append(message)
+                if message[0] != "progress":  # its last word (the process may still be ending: stop reaps it)
+                    self.ended = True
+                    break
+        except (EOFError, OSError):
+            self.process.join(timeout=1.0)
+            self.ended = True
+            said.append(("error", WorkerError(f"the worker process ended without answering "
+                                              f"(exit code {self.process.exitcode})")))
+        return said
+
+    def stop(self, wait=True):
+        """Kill the process if it still runs, and reap it (wait False: a thread of its own waits for it,
+        so a caller that must not block, the GUI thread, does not wait for the kernel to free a big
+        process's memory); close the pipe."""
+        self.ended = True
+        if self.process is None or self.connection.closed:
+            return
+        with held_signals():
+            if self.process.exitcode is None:
+                self.process.kill()
+            self.connection.close()
+        if wait:
+            self.process.join()
+        else:
+            threading.Thread(target=self.process.join, name="abm-reaper", daemon=True).start()
+
+
+def _run_child(connection, parent, function, arguments):
+    """A ChildTask's process (started by the process `parent`, its pid): killed with its parent
+    (:func:`die_with_parent`), its progress steps and then its value or error sent over `connection`."""
+    die_with_parent(parent)
+
+    def progress(done, total):
+        connection.send(("progress", int(done), int(total)))
+
+    try:
+        takes = "progress" in inspect.signature(function).parameters
+    except (TypeError, ValueError):
+        takes = False
+    try:
+        answer = ("value", function(*arguments, progress=progress) if takes else function(*arguments))
+    except Exception as error:
+        answer = ("error", error)
+    try:
+        connection.send(answer)
+    except Exception as error:  # an answer that does not pickle: said in words
+        connection.send(("error", RuntimeError(f"{type(error).__name__}: {error}")))
+    connection.close()
+
+
+@dataclass(frozen=True)
+class ShapeFile:
+    """A Part.Shape passed to or from a worker process as a binary BREP file (Shape.exportBinary)."""
+
+    path: str
+
+    @classmethod
+    def written(cls, shape, path):
+        shape.exportBinary(path)
+        return cls(path)
+
+    def read(self):
+        from .cad.freecad_env import Part
+
+        shape = Part.Shape()
+        shape.importBinary(self.path)
+        return shape
+
+
+def write_arguments(folder, arguments):
+    """Write `arguments` into `folder` for :func:`call_with_shapes`: each Part.Shape as a ShapeFile, the
+    rest pickled."""
+    from .cad.freecad_env import Part
+
+    passed = [ShapeFile.written(value, os.path.join(folder, f"argument_{i}.brep"))
+              if isinstance(value, Part.Shape) else value for i, value in enumerate(arguments)]
+    with open(os.path.join(folder, "arguments.pickle"), "wb") as handle:
+        pickle.dump(passed, handle, protocol=pickle.HIGHEST_PROTOCOL)
+
+
+def call_with_shapes(function, folder, progress=None):
+    """In a worker process: function(*arguments, progress=progress) with the arguments write_arguments put
+    in `folder` (the shapes read back); a Part.Shape value, or each Part.Shape of a tuple value, comes back
+    as a ShapeFile in `folder` (:func:`shapes_read` reads them)."""
+    from .cad.freecad_env import Part
+
+    with open(os.path.join(folder, "arguments.pickle"), "rb") as handle:
+        arguments = [value.read() if isinstance(value, ShapeFile) else value for value in pickle.load(handle)]
+    try:
+        takes = "progress" in inspect.signature(function).parameters
+    except (TypeError, ValueError):
+        takes = False
+    value = function(*arguments, progress=progress) if takes else function(*arguments)
+
+    def passed(item, i):
+        return ShapeFile.written(item, os.path.join(folder, f"value_{i}.brep")) if isinstance(item, Part.Shape) else item
+
+    return tuple(passed(item, i) for i, item in enumerate(value)) if isinstance(value, tuple) else passed(value, 0)
+
+
+def shapes_read(value):
+    """A value of :func:`call_with_shapes` with its ShapeFiles (itself, or in a tuple) read as Part.Shape."""
+    if isinstance(value, tuple):
+        return tuple(item.read() if isinstance(item, ShapeFile) else item for item in value)
+    return value.read() if isinstance(value, ShapeFile) else value

@@ -7,10 +7,11 @@ Then the GUI's longest stall (the longest gap between two ticks of a 10 ms timer
 while long work runs: a recompute with forces (measured before the in-process stock exists: a
 recompute of the engagement recomputes that too), a validation of two CL points (and, apart, the
 seconds of its half on the GUI thread, ``validate.prepare``), and the in-process stock at a CL
-point (its OpenCASCADE booleans, still on the GUI thread, "Show in-process stock");
+point ("Show in-process stock": its OpenCASCADE booleans in a worker process);
 and how soon Cancel answers: a validation of every CL point cancelled after 1.5 s by a click on its
 progress dialog's Cancel, the seconds from the click until the dialog is gone and the GUI thread
-ticks again, and until the command has returned.
+ticks again, and until the command has returned; the same for the in-process stock moved to the next
+CL point (its progress dialog ``ABM_Engine``), which must then stay at its CL point.
 
     /usr/bin/python3 benchmarks/gui_latency.py [--root CHECKOUT ...] [--repeat N]
 
@@ -160,12 +161,10 @@ def run():
                                                                                 report, False))
         out["inprocess"] = stall(lambda: inprocess_view.show_at(engagement, cl))
         out["inprocess_compute"] = inprocess_view.stock_of(engagement).ComputeTime
-        clicked = {{}}
-
-        def cancel_soon():
-            dialog = window.findChild(QtWidgets.QProgressDialog, "ABM_Progress")
+        def cancel_soon(name, clicked):
+            dialog = window.findChild(QtWidgets.QProgressDialog, name)
             if dialog is None or not dialog.isVisible():
-                QtCore.QTimer.singleShot(50, cancel_soon)
+                QtCore.QTimer.singleShot(50, lambda: cancel_soon(name, clicked))
                 return
             def gone():
                 if dialog.isVisible():
@@ -177,12 +176,24 @@ def run():
             click(button)
             QtCore.QTimer.singleShot(0, gone)
 
-        QtCore.QTimer.singleShot(1500, cancel_soon)
+        clicked = {{}}
+        QtCore.QTimer.singleShot(1500, lambda: cancel_soon("ABM_Progress", clicked))
         started = time.perf_counter()
         commands.ValidateEngagement().execute(engagement, "all", report + "_cancelled", False)
         returned = time.perf_counter()
         out["cancel"] = [clicked.get("gone", returned) - clicked["at"], returned - clicked["at"],
                          os.path.exists(report + "_cancelled")]
+        clicked = {{}}
+        QtCore.QTimer.singleShot(1500, lambda: cancel_soon("ABM_Engine", clicked))
+        del ticks[:]
+        started = time.perf_counter()
+        inprocess_view.show_at(engagement, cl + 1)
+        returned = time.perf_counter()
+        inside = [started] + [t for t in ticks if started <= t <= returned] + [returned]
+        kept = inprocess_view.stock_of(engagement)
+        out["inprocess_cancel"] = [clicked.get("gone", returned) - clicked["at"], returned - clicked["at"],
+                                   kept.CLPoint == cl and kept.State == ["Up-to-date"],
+                                   max(b - a for a, b in zip(inside, inside[1:]))]
         heart.stop()
         out["ok"] = True
     except Exception:
@@ -246,14 +257,17 @@ def main(argv=None):
         print(f"| {root} | " + " | ".join(f"{value:.3g}" for value in values) + " |")
     print()
     print("| checkout | longest GUI stall: in-process stock (s) | validation of 2 CL points (s) | forces recompute (s) "
-          "| Cancel: dialog gone (s) | Cancel: command returned (s) |")
-    print("|---|---|---|---|---|---|")
+          "| Cancel: dialog gone (s) | Cancel: command returned (s) | in-process Cancel: dialog gone, returned (s) |")
+    print("|---|---|---|---|---|---|---|")
     for root in roots:
         figures = stalls[root]
         (a, a_s), (b, b_s), (c, c_s) = figures["inprocess"], figures["validation"], figures["forces_stall"]
         gone, returned, written = figures["cancel"]
+        in_gone, in_returned, in_kept, in_stall = figures.get("inprocess_cancel", (float("nan"),) * 2 + (True, 0.0))
         print(f"| {root} | {a:.3f} (of {a_s:.1f} s) | {b:.3f} (of {b_s:.1f} s) | {c:.3f} (of {c_s:.1f} s) | "
-              f"{gone:.3f} | {returned:.3f}{' (a report written!)' if written else ''} |")
+              f"{gone:.3f} | {returned:.3f}{' (a report written!)' if written else ''} | "
+              f"{in_gone:.3f}, {in_returned:.3f}{'' if in_kept else ' (the stock not kept!)'} "
+              f"(stall {in_stall:.3f}) |")
         print(f"  {root}: validation's GUI-thread half (prepare) {figures['validation_prepare']:.3f} s; "
               f"the in-process stock's own ComputeTime {figures['inprocess_compute']:.1f} s")
     if len(rows) > 1:

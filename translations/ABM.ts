@@ -299,6 +299,10 @@
         <source>Reading and recognising the stock…</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Computing the in-process stock…</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ABM_ComputeEngagement</name>

@@ -299,6 +299,10 @@
         <source>Reading and recognising the stock…</source>
         <translation>Rohteil wird gelesen und erkannt…</translation>
     </message>
+    <message>
+        <source>Computing the in-process stock…</source>
+        <translation>Zwischenrohteil wird berechnet…</translation>
+    </message>
 </context>
 <context>
     <name>ABM_ComputeEngagement</name>

@@ -21,14 +21,16 @@ constant-axis piece of a move an exact solid. Five-axis moves are cut into sub-s
 apart than SweepTolerance at the tool's rim: the engagement's 0.05 mm makes hundreds of pieces
 near a CL point of a five-axis program, minutes of booleans, so the view takes 0.5 mm by default
 (the cut surfaces then show facets of at most that size between sub-steps). The program's swept
-pieces stay on the proxy while the engagement's inputs and the tolerance are unchanged.
+pieces stay on the proxy while the engagement's inputs and the tolerance are unchanged, and so does the
+last shape computed: a recompute back at its CL point (the GUI's Cancel puts the object back there)
+takes it again without booleans.
 """
 
 import time
 
 import numpy as np
 
-from ..cad.inprocess_boolean import inprocess_solid
+from ..cad.inprocess_boolean import cut_and_removed, hulls_near
 from ..engine.inprocess import swept_pieces
 from ..errors import InputError
 from ..jobs.inputs import program_moves
@@ -42,9 +44,10 @@ def _call(function, *args):
     return function(*args)
 
 
-#: boolean_call(function, *args) -> function(*args): how execute runs the OpenCASCADE booleans (seconds
-#: to minutes near a dense five-axis program). Headless, a plain call; the GUI puts a worker thread with
-#: progress and Cancel here (``gui.worker.install``).
+#: boolean_call(function, stock_shape, hulls) -> function(stock_shape, hulls), the cut stock and the volume
+#: it lost: how execute runs the OpenCASCADE booleans (seconds to minutes near a dense five-axis program;
+#: function takes a progress(done, total) keyword too). Headless, a plain call; the GUI runs it in a
+#: worker process, with progress and Cancel (``gui.worker.install``: ``gui.worker.in_process``).
 boolean_call = _call
 
 
@@ -77,6 +80,7 @@ class InProcessStockFeature(FeatureProxy):
 
     def _reset(self):
         self._sweep = None  # (key, (ProgramMoves, SweptPieces, (m,) program rows of the operation))
+        self._last = None  # (key, Shape, RemovedVolume, ComputeTime) of the last shape computed
 
     def sweep(self, obj):
         """(ProgramMoves of the whole program in part coordinates, their SweptPieces, (m,) program rows of
@@ -105,11 +109,17 @@ class InProcessStockFeature(FeatureProxy):
         stock_shape = obj.Engagement.Stock.Shape
         started = time.perf_counter()
         near = obj.Reach.Value + tool_sphere(moves, row) if obj.Reach.Value > 0.0 else None
-        shape = boolean_call(inprocess_solid, stock_shape, (moves, pieces), row, near)
+        key = (self._sweep[0], row, near, stock_shape.hashCode())
+        if self._last is not None and self._last[0] == key:  # back at the shape last computed (e.g. after Cancel)
+            shape, removed, seconds = self._last[1:]
+        else:
+            shape, removed = boolean_call(cut_and_removed, stock_shape, hulls_near((moves, pieces), row, near))
+            seconds = time.perf_counter() - started
+            self._last = (key, shape, removed, seconds)
         obj.Shape = shape
         obj.ProgramRow = row
-        obj.RemovedVolume = stock_shape.Volume - shape.Volume
-        obj.ComputeTime = time.perf_counter() - started
+        obj.RemovedVolume = removed
+        obj.ComputeTime = seconds
 
 
 def tool_sphere(moves, row):

@@ -3,10 +3,13 @@
 :func:`show_at` makes (or reuses) the in-process stock object of an engagement
 (:mod:`abm_workbench.features.inprocess_stock`), sets it to a CL point and recomputes it, saying
 "computing" in the status bar and on the object's label while the booleans run; the engagement's
-stock is hidden so the cut stock shows. While that object exists, choosing another CL point in
-the dock recomputes it once the slider has rested for :data:`SETTLE_MS` (:class:`Follower`), so
-dragging the slider does not run the booleans at every step; its FollowDock off, only the command
-moves it (the booleans can take minutes near a dense five-axis program).
+stock is hidden so the cut stock shows. The booleans run in a worker process (``gui.worker.in_process``):
+the GUI stays drawn, a progress dialog (``ABM_Engine``) shows the hull solids built, the fuse and the cut,
+and its Cancel kills the process at once; the object then stays as it was (a new one is removed). While
+that object exists, choosing another CL point in the dock recomputes it once the slider has rested for
+:data:`SETTLE_MS` (:class:`Follower`), so dragging the slider does not run the booleans at every step
+(nor while they run); its FollowDock off, only the command moves it (the booleans can take minutes near
+a dense five-axis program).
 """
 
 from PySide import QtCore
@@ -14,8 +17,8 @@ from PySide import QtCore
 import FreeCADGui
 
 from . import dock, view_providers
-from .progress import busy
 from .reporting import CommandError, recompute_checked, report_error
+from .worker import CANCELLED
 
 #: Milliseconds the dock's CL point must stay unchanged before the stock is recomputed.
 SETTLE_MS = 400
@@ -23,6 +26,8 @@ SETTLE_MS = 400
 LABEL = "In-process stock"
 #: Colour of the in-process stock (RGB 0..1): the stock's grey would hide the cuts.
 COLOUR = (0.85, 0.65, 0.35)
+#: True while show_at recomputes (the GUI's event loop runs meanwhile: the Follower waits for it).
+computing = False
 
 
 def stock_of(engagement):
@@ -42,26 +47,51 @@ def show_at(engagement, cl):
 
     if engagement.Proxy.result(engagement) is None:
         raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+    global computing
     doc = engagement.Document
     obj = stock_of(engagement)
-    if obj is None:
+    new = obj is None
+    if new:
         obj = create_inprocess_stock(doc, engagement, cl)
         view_providers.ViewProvider(obj.ViewObject)  # a Python feature without a view proxy is not drawn
         obj.ViewObject.ShapeColor = COLOUR
+    before = obj.CLPoint
     obj.CLPoint = int(cl)
     obj.Label = f"{LABEL} (computing CL {cl}…)"
-    with busy(f"Computing the in-process stock of {engagement.Label} at CL {cl}…"):
-        try:
-            recompute_checked(doc, (obj,))
-        finally:
+    status = FreeCADGui.getMainWindow().statusBar()
+    status.showMessage(f"Computing the in-process stock of {engagement.Label} at CL {cl}…")
+    computing, removed = True, False
+    try:
+        recompute_checked(doc, (obj,))
+    except CommandError:
+        if CANCELLED not in obj.getStatusString():
+            raise
+        removed = _cancelled(obj, new, before)
+        status.showMessage(f"In-process stock at CL {cl}: cancelled", 10000)
+        return None
+    finally:
+        computing = False
+        if not removed:
             obj.Label = f"{LABEL} at CL {obj.CLPoint}"
     if engagement.Stock is not None and engagement.Stock.ViewObject is not None:
         engagement.Stock.ViewObject.Visibility = False
     obj.ViewObject.Visibility = True
-    FreeCADGui.getMainWindow().statusBar().showMessage(
+    status.showMessage(
         f"In-process stock at CL {obj.CLPoint} (program row {obj.ProgramRow}): {obj.RemovedVolume:.1f} mm³ removed "
         f"by earlier moves near it, in {obj.ComputeTime:.1f} s", 10000)
     return obj
+
+
+def _cancelled(obj, new, before):
+    """After Cancel: a new in-process stock object removed, an earlier one back at CL point `before` with the
+    shape it had (the proxy keeps it: its recompute runs no booleans); True when the object was removed."""
+    if new:
+        obj.Document.removeObject(obj.Name)
+        return True
+    obj.CLPoint = before
+    if obj.recompute():
+        obj.purgeTouched()
+    return False
 
 
 class Follower(QtCore.QObject):
@@ -84,6 +114,9 @@ class Follower(QtCore.QObject):
                 return
             obj = stock_of(engagement)
             cl = self.dock.spin.value()
+            if computing:  # the booleans of an earlier CL point still run: look again once they are done
+                self.timer.start()
+                return
             if obj is not None and obj.FollowDock and (obj.CLPoint != cl or "Touched" in obj.State):
                 show_at(engagement, cl)
         except Exception as error:  # noqa: BLE001 (reported; the GUI goes on)

@@ -7,8 +7,10 @@ the GUI thread waits in an event loop of its own and stays drawn:
 - the engagement's engine calls (``features.engagement.engine_call``: flute 1's engagement, the
   in-process engine and the forces);
 - reading and recognising a stock (``features.stock.recognise_call``);
-- not yet the in-process stock's OpenCASCADE booleans (``features.inprocess_stock.boolean_call`` is
-  their hook, but in a worker thread they crashed FreeCAD: they run on the GUI thread, as before);
+- the in-process stock's OpenCASCADE booleans (``features.inprocess_stock.boolean_call``), not in a thread
+  (there they crashed FreeCAD) but in a worker **process** of their own (:func:`in_process`): the stock
+  goes to it as a binary BREP file, the swept pieces near the CL point as numpy arrays, the cut stock
+  comes back as a BREP file read on the GUI thread; Cancel kills the process;
 - validation (``gui.validate``: the engine and the boolean reference, the report written);
 - reading a toolpath file to ask which operation to compute (``gui.commands``).
 
@@ -49,16 +51,15 @@ _ABANDONED = set()
 
 
 def install():
-    """Run the engagements' engine calls, the stocks' recognition and the in-process stock's booleans
-    through worker threads."""
+    """Run the engagements' engine calls and the stocks' recognition in worker threads, the in-process
+    stock's booleans in a worker process."""
     from ..features import engagement, inprocess_stock, stock
 
     engagement.engine_call = run
     stock.recognise_call = lambda function, *args, **keywords: work(
         function, *args, text=noop("Reading and recognising the stock…"), **keywords)
-    # The in-process stock's booleans stay on the GUI thread: in a worker thread they crashed FreeCAD (the
-    # GUI test of the dock and the in-process stock); inprocess_stock.boolean_call is the place for it.
-    del inprocess_stock
+    inprocess_stock.boolean_call = lambda function, *args: in_process(
+        function, *args, text=noop("Computing the in-process stock…"))
 
 
 def run(function, *args):
@@ -79,7 +80,28 @@ def work(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED, sink=None, **ke
     if QtGui.QApplication.instance() is None or threading.current_thread() is not threading.main_thread():
         return function(*args, **keywords)  # no GUI, or not its thread: nothing to keep drawn
     job = _Job(function, args, keywords, cancelled)
-    thread, loop = _Thread(job), QtCore.QEventLoop()
+    return _wait(job, _Thread(job), text, sink)
+
+
+def in_process(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED):
+    """function(*args) in a worker process of its own (``worker_processes.ChildTask``), waited for as
+    :func:`work` waits for a thread: the GUI drawn, the progress dialog after SILENT_MS with the steps
+    of the call's own progress(done, total), Cancel killing the process at once. function: module-level;
+    args: Part.Shape (passed as binary BREP files) and picklable values; a Part.Shape value (or in a
+    tuple value) is read back here. Without a GUI, or off its thread, a plain call."""
+    if QtGui.QApplication.instance() is None or threading.current_thread() is not threading.main_thread():
+        return function(*args)
+    job = _ProcessJob(function, args, cancelled)
+    try:
+        return _wait(job, _Process(job), text, None)
+    finally:
+        job.close()
+
+
+def _wait(job, thread, text, sink):
+    """Start `thread` (a _Thread or _Process running `job`) and wait for it as :func:`work` says; the
+    job's outcome."""
+    loop = QtCore.QEventLoop()
     thread.finished.connect(loop.quit)
     thread.start()
     if sink is None:
@@ -248,3 +270,94 @@ class _Thread(QtCore.QThread):
 
     def run(self):
         self.job()
+
+
+class _ProcessJob(_Job):
+    """function(*args) in a worker process: _Job's steps, Cancel and outcome, the call's inputs written
+    into a folder of its own (worker_processes.write_arguments), its Part.Shape value read back."""
+
+    def __init__(self, function, args, cancelled):
+        import shutil
+        import tempfile
+
+        from .. import worker_processes
+
+        super().__init__(function, args, {}, cancelled)
+        self.folder = tempfile.mkdtemp(prefix="abm-worker-")
+        self.running = False
+        try:
+            worker_processes.write_arguments(self.folder, args)
+        except BaseException:
+            shutil.rmtree(self.folder, ignore_errors=True)
+            raise
+        self.task = worker_processes.ChildTask(worker_processes.call_with_shapes, (function, self.folder))
+
+    def start(self):
+        self.running = True
+        self.started = time.perf_counter()
+        try:
+            self.task.start()
+        except BaseException as error:  # noqa: BLE001 (handed to the caller by outcome)
+            self.error, self.running = error, False
+
+    def look(self):
+        """Take what the process said; True once it has ended."""
+        for message in self.task.messages():
+            if message[0] == "progress":
+                self.done = message[1:]
+                with self.lock:
+                    self.steps.append(self.done)
+            elif message[0] == "value":
+                self.value = message[1]
+            else:
+                self.error = message[1]
+        if self.task.ended:
+            self.running = False
+            self.seconds = time.perf_counter() - self.started
+        return not self.running
+
+    def stop(self, reason=None):
+        super().stop(reason)
+        self.task.stop(wait=False)
+        self.running = False
+
+    def outcome(self):
+        from ..worker_processes import shapes_read
+
+        return shapes_read(super().outcome())
+
+    def close(self):
+        """Kill the process if it still runs (reaped by a thread of its own); remove the folder."""
+        import shutil
+
+        self.task.stop(wait=False)
+        shutil.rmtree(self.folder, ignore_errors=True)
+
+
+class _Process(QtCore.QObject):
+    """A _ProcessJob looked at every POLL_MS by a timer of the GUI thread, with what :func:`_wait` uses of a
+    QThread: start, isRunning and the finished signal."""
+
+    finished = QtCore.Signal()
+
+    def __init__(self, job):
+        super().__init__()
+        self.job = job
+        self.timer = QtCore.QTimer(self)
+        self.timer.setInterval(POLL_MS // 2)
+        self.timer.timeout.connect(self._look)
+
+    def start(self):
+        self.job.start()
+        if self.job.running:
+            self.timer.start()
+        else:
+            QtCore.QTimer.singleShot(0, self.finished.emit)
+
+    def isRunning(self):  # noqa: N802 (QThread's name)
+        return self.job.running
+
+    def _look(self):
+        if self.job.look():
+            self.timer.stop()
+            self.finished.emit()

@@ -9,6 +9,7 @@ import os
 
 from tests.cad.test_inprocess_feature import XS, write_two_passes
 from tests.conftest import ROOT
+from tests.gui.events import EVENTS
 
 STOCK = os.path.join(ROOT, "resources", "models", "model_test_1", "stock.json")
 
@@ -111,3 +112,137 @@ def test_dock_and_in_process_stock(tmp_path, run_gui):
     assert verdict["followed"] == [chosen - 1, f"In-process stock at CL {chosen - 1}"]
     assert verdict["stayed"] == [chosen - 1, chosen - 2, False]
     assert png.stat().st_size > 10000
+
+
+RESPONSIVE = """
+import time
+import numpy as np
+import shiboken2
+from PySide2 import QtCore, QtGui, QtWidgets
+from abm_workbench.cad.inprocess_boolean import cut_by_hulls, hulls_near
+from abm_workbench.features import create_engagement, create_stock, create_toolpath
+from abm_workbench.gui import commands, inprocess_view, view_providers
+window = FreeCADGui.getMainWindow()
+{events}
+FreeCADGui.activateWorkbench("ABMWorkbench")
+doc = FreeCAD.newDocument("Responsive")
+stock = create_stock(doc, {stock!r})
+toolpath = create_toolpath(doc, {program!r})
+engagement = create_engagement(doc, stock, toolpath, flutes=2, feed_per_tooth=0.1, phi_step=10.0)
+for obj in (stock, toolpath, engagement):
+    view_providers.attach(obj)
+doc.recompute()
+settle()
+shown = commands.InspectEngagement.show(engagement, 0)
+settle()
+chosen = {chosen}
+shown.spin.setFocus()
+key(shown.spin, QtCore.Qt.Key_A, "", QtCore.Qt.ControlModifier)  # the CL point typed into the spin box
+for char in str(chosen):
+    key(shown.spin, ord(char), char)
+key(shown.spin, QtCore.Qt.Key_Return)
+settle()
+menu = [m for m in window.menuBar().findChildren(QtWidgets.QMenu) if m.title() == "ABM"][0]
+action = [a for a in menu.actions() if a.text() == "Show in-process stock"][0]
+report = window.findChild(QtWidgets.QDockWidget, "Report view").widget()
+start = len(report.toPlainText())
+
+ticks = []
+heart = QtCore.QTimer()
+heart.timeout.connect(lambda: ticks.append(time.perf_counter()))
+heart.start(10)
+
+def during(act, cancel):
+    # act() with the GUI thread's ticks counted; with cancel, Cancel of the progress dialog clicked once it
+    # shows a step of the booleans: (longest gap between ticks, seconds, Cancel to return, steps seen)
+    seen = {{"steps": [], "clicked": None}}
+    def watch():
+        dialogs = [d for d in window.findChildren(QtWidgets.QProgressDialog)
+                   if d.objectName() == "ABM_Engine" and shiboken2.isValid(d) and d.isVisible()]
+        if dialogs and seen["clicked"] is None:
+            seen["steps"].append([dialogs[0].value(), dialogs[0].maximum()])
+            if cancel and dialogs[0].value() > 0:
+                seen["clicked"] = time.perf_counter()
+                press(dialogs[0].findChild(QtWidgets.QPushButton))
+                return
+        if not seen.get("over"):
+            QtCore.QTimer.singleShot(20, watch)
+    QtCore.QTimer.singleShot(20, watch)
+    del ticks[:]
+    started = time.perf_counter()
+    act()
+    ended = time.perf_counter()
+    seen["over"] = True
+    inside = [started] + [t for t in ticks if started <= t <= ended] + [ended]
+    gaps = max(b - a for a, b in zip(inside, inside[1:]))
+    return [gaps, ended - started, None if seen["clicked"] is None else ended - seen["clicked"], seen["steps"]]
+
+def made():
+    return [o for o in doc.Objects if o.Name.startswith("InProcessStock")]
+
+# Cancel while a new in-process stock is computed: nothing is left
+verdict["cancel_new"] = during(action.trigger, True) + [len(made())]
+settle()
+# the whole computation, the GUI ticking meanwhile
+verdict["computed"] = during(action.trigger, False)
+settle()
+obj = made()[0]
+moves, pieces, rows = obj.Proxy.sweep(obj)
+reference = cut_by_hulls(stock.Shape, hulls_near((moves, pieces), int(rows[chosen]), None))  # here, on this thread
+verdict["shape"] = [obj.CLPoint, obj.ProgramRow, int(rows[chosen]), obj.Shape.isValid(), obj.Shape.Volume,
+                    reference.Volume, obj.RemovedVolume, stock.Shape.Volume - reference.Volume,
+                    len(obj.Shape.Faces), len(reference.Faces), obj.State]
+# the slider moves on, the stock follows: Cancel leaves it at its CL point, with its shape, not recomputed
+volume, seconds = obj.Shape.Volume, obj.ComputeTime
+def follow():
+    # the key, then the event loop run until the Follower's timer has fired and its show_at returned
+    shown.slider.setFocus()
+    key(shown.slider, QtCore.Qt.Key_Left)
+    pressed = time.perf_counter()
+    while time.perf_counter() < pressed + 60 and (time.perf_counter() < pressed + 2 * inprocess_view.SETTLE_MS / 1000
+                                                  or shown.in_process_follower.timer.isActive()):
+        QtWidgets.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 20)
+verdict["cancel_follow"] = during(follow, True) + [obj.CLPoint, obj.Shape.Volume == volume, obj.State,
+                                                   obj.Label, obj.ComputeTime == seconds]
+doc.recompute()
+settle()
+verdict["after"] = [obj.CLPoint, obj.Shape.Volume == volume, obj.State, obj.ComputeTime == seconds]
+heart.stop()
+import multiprocessing
+verdict["children"] = len(multiprocessing.active_children())
+FreeCADGui.updateGui()
+verdict["report"] = report.toPlainText()[start:]
+"""
+
+
+def test_in_process_stock_keeps_the_gui_responsive_and_cancels(tmp_path, run_gui):
+    """The in-process stock's booleans run in a worker process: the GUI thread's 10 ms timer keeps ticking
+    (no gap over 1 s; the booleans and the process's start take seconds), the progress dialog shows the
+    hull solids built, Cancel clicked on it returns within 0.5 s and leaves nothing (a new object removed,
+    an earlier one at its CL point with its shape, not recomputed again); the shape computed equals the
+    same booleans run on the GUI thread."""
+    mods = tmp_path / "home" / ".local" / "share" / "FreeCAD" / "Mod"
+    mods.mkdir(parents=True)
+    (mods / "ABM").symlink_to(ROOT, target_is_directory=True)
+    program = tmp_path / "two_passes.apt"
+    write_two_passes(program)
+    chosen = len(XS) + 3  # the second pass, beside what the first removed
+    verdict = run_gui(RESPONSIVE.format(stock=STOCK, program=str(program), chosen=chosen, events=EVENTS))
+    gap, seconds, answered, steps, left = verdict["cancel_new"]
+    assert answered is not None and answered < 0.5 and left == 0, verdict["cancel_new"]
+    assert gap < 1.0, verdict["cancel_new"]
+    gap, seconds, answered, steps = verdict["computed"]
+    assert answered is None and gap < 1.0 and seconds > 2 * gap, verdict["computed"]
+    assert steps and steps[-1][1] > 2 and any(value > 0 for value, _ in steps), steps  # hulls, fuse, cut
+    cl, row, reference_row, valid, volume, reference, removed, reference_removed, faces, reference_faces, state = \
+        verdict["shape"]
+    assert cl == chosen and row == reference_row and valid and "Invalid" not in state
+    assert volume == reference and removed == reference_removed and faces == reference_faces, verdict["shape"]
+    assert removed > 0.0
+    gap, seconds, answered, steps, cl, same, state, label, kept = verdict["cancel_follow"]
+    assert answered is not None and answered < 0.5 and gap < 1.0, verdict["cancel_follow"]
+    assert cl == chosen and same and label == f"In-process stock at CL {chosen}", verdict["cancel_follow"]
+    assert state == ["Up-to-date"] and kept, verdict["cancel_follow"]  # its shape, no booleans run again
+    assert verdict["after"] == [chosen, True, ["Up-to-date"], True], verdict["after"]
+    assert verdict["children"] == 0
+    assert "Traceback" not in verdict["report"], verdict["report"]
