@@ -122,14 +122,20 @@ def test_validate_writes_report_and_fcstd(case, capsys):
 
 
 def test_validate_a_json_stock_replaces_an_older_report(case, capsys):
+    """An older report (only files a report writes) is replaced; a folder holding anything else is refused
+    before any work, and the user's file is kept."""
     (case / "report").mkdir()
     (case / "report" / "index.html").write_text("old")
-    (case / "report" / "stale.csv").write_text("old")
+    (case / "report" / "surfaces.csv").write_text("old")
     status, out, err = run(VALIDATE[:2] + ["stock.json"] + VALIDATE[3:] + ["--phi-step", "30"], capsys)
     assert status == 0, err
     assert "x 7 angles" in out and "step 30° [--phi-step]" in out
-    assert "stale.csv" not in os.listdir(case / "report")
+    assert (case / "report" / "surfaces.csv").read_text() != "old"
     assert "quintic walls (JSON)" in (case / "report" / "index.html").read_text()
+    (case / "report" / "notes.txt").write_text("mine")
+    status, out, err = run(VALIDATE[:2] + ["stock.json"] + VALIDATE[3:] + ["--phi-step", "30"], capsys)
+    assert status == 2 and "folder holds 'notes.txt', which no report writes" in err
+    assert (case / "report" / "notes.txt").read_text() == "mine"
 
 
 def test_interrupted_validate_leaves_nothing(case, capsys, monkeypatch):

@@ -42,9 +42,10 @@ QtCore.QTimer.singleShot(1500, run)
 """
 
 
-def run_macro(body, folder, screen="1280x1024"):
+def run_macro(body, folder, screen="1280x1024", timeout=GUI_TIMEOUT):
     """The verdict (dict) of `body` (Python, sets keys of `verdict`) run inside the FreeCAD GUI, with HOME
-    `folder`/home and the macro and its verdict in `folder`, on an X screen of `screen` pixels ("WxH")."""
+    `folder`/home and the macro and its verdict in `folder`, on an X screen of `screen` pixels ("WxH"),
+    failing after `timeout` seconds."""
     if shutil.which("xvfb-run") is None or shutil.which("freecad") is None:
         pytest.fail("the GUI tier needs xvfb-run and freecad (make deps installs them)")
     out, macro = folder / "verdict.json", folder / "macro.py"
@@ -56,10 +57,10 @@ def run_macro(body, folder, screen="1280x1024"):
                                env=env, cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                start_new_session=True)
     try:
-        process.wait(timeout=GUI_TIMEOUT)
+        process.wait(timeout=timeout)
     except subprocess.TimeoutExpired:
         os.killpg(process.pid, signal.SIGKILL)  # xvfb-run, Xvfb and FreeCAD: nothing left running
-        pytest.fail(f"the FreeCAD GUI did not finish in {GUI_TIMEOUT} s")
+        pytest.fail(f"the FreeCAD GUI did not finish in {timeout} s")
     assert out.exists(), "the FreeCAD GUI ended without running the macro"
     verdict = json.loads(out.read_text())
     assert verdict["ok"], f"{verdict.get('error')}\nverdict so far: {str(verdict)[:4000]}"
@@ -68,5 +69,6 @@ def run_macro(body, folder, screen="1280x1024"):
 
 @pytest.fixture
 def run_gui(tmp_path):
-    """run_gui(body) -> dict: run `body` (Python, sets keys of `verdict`) inside the FreeCAD GUI."""
-    return lambda body: run_macro(body, tmp_path)
+    """run_gui(body, timeout=GUI_TIMEOUT) -> dict: run `body` (Python, sets keys of `verdict`) inside the
+    FreeCAD GUI."""
+    return lambda body, timeout=GUI_TIMEOUT: run_macro(body, tmp_path, timeout=timeout)
