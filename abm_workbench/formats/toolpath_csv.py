@@ -75,30 +75,43 @@ class Table:
 def load_table(path):
     """The :class:`Table` of a toolpath CSV; InputError naming the file and line.
 
-    The rows are read column by column where they only hold numbers (:func:`_columnwise`); any other
-    block (text columns, quotes, a bad field, an oversized value) is read line by line, which names the
-    bad line.
+    The text is read in blocks of about :data:`BLOCK_CHARS` characters (whole lines), so that the
+    working memory stays a few times the file's size whatever its length. Each block is read
+    column by column where it can be (:func:`_columnwise`); any other block (quotes, a bad field, an
+    oversized value) is read line by line, which names the bad line.
     """
     name = os.fspath(path)
-    lines = _data_lines(read_text(path))
-    if not lines:
+    blocks = (block for block in _data_blocks(read_text(path)) if block[1])
+    first = next(blocks, None)
+    if first is None:
         raise InputError(f"{name}: empty file; expected a header such as {_EXAMPLE!r}")
-    header_line, header_text = lines[0]
+    header_line, header_text = first[0][0], first[1][0]
     header = [field.strip().lower() for field in _fields(header_text, f"{name}:{header_line}")]
     _columns(header, f"{name}:{header_line}")
-    if len(lines) == 1:
+    pieces, numbers = [], []
+    shared = {column: {} for column in header if column in OPERATION_TEXTS}
+    for block_numbers, block_lines in itertools.chain([(first[0][1:], first[1][1:])], blocks):
+        if not block_lines:
+            continue  # the header's block held only the header
+        found = _columnwise(header, block_lines)
+        if found is None:
+            found = _line_by_line(name, header, list(zip(block_numbers, block_lines)))
+        for column, seen in shared.items():  # one str object per distinct text
+            found[1][column] = [seen.setdefault(text, text) for text in found[1][column]]
+        pieces.append(found)
+        numbers.append(block_numbers)
+    if not pieces:
         raise InputError(f"{name}: no CL points: the file has a header but no rows")
-    numbers = np.array([number for number, _ in lines[1:]], dtype=int)
-    found = _columnwise(header, [line for _, line in lines[1:]])
-    if found is None:
-        found = _line_by_line(name, header, lines[1:])
+    numeric = {column: np.concatenate([found[0][column] for found in pieces]) for column in pieces[0][0]}
+    texts = {column: list(itertools.chain.from_iterable(found[1][column] for found in pieces)) for column in shared}
+    numbers = np.concatenate(numbers)
     for column, low in _WHOLE_COLUMNS.items():
-        values = found[0].get(column)
+        values = numeric.get(column)
         bad = None if values is None else np.flatnonzero((values != np.round(values)) | (values < low))
         if bad is not None and bad.size:
             raise InputError(f"{name}:{numbers[bad[0]]}: column {column!r}: {values[bad[0]]:g} is not a whole number "
                              f"of at least {low}")
-    return Table(name, header, numbers, *found)
+    return Table(name, header, numbers, numeric, texts)
 
 
 def load_toolpath(path, operation=None):
@@ -164,10 +177,22 @@ def _describe(table, number):
     return f"{number:g}: {name}, {tool}{size}, {rows.size} CL points"
 
 
-def _data_lines(text):
-    """(line number, line) of every line of `text` that is not blank or a # comment."""
-    return [(number, line) for number, line in enumerate(text.splitlines(), start=1)
-            if line.strip() and not line.strip().startswith("#")]
+#: About how many characters of the file one block holds (a block ends at the end of a line).
+BLOCK_CHARS = 1 << 20
+
+
+def _data_blocks(text):
+    """(line numbers (k,) int, lines: list of k str) of the lines of `text` that are not blank or a #
+    comment, block by block, each block about BLOCK_CHARS characters of whole lines (numbered as
+    str.splitlines numbers them)."""
+    start, first_number = 0, 1
+    while start < len(text):
+        end = text.find("\n", start + BLOCK_CHARS)
+        end = len(text) if end < 0 else end + 1
+        lines = text[start:end].splitlines()
+        kept = [k for k, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")]
+        yield np.array(kept, dtype=int) + first_number, [lines[k] for k in kept]
+        start, first_number = end, first_number + len(lines)
 
 
 def _fields(line, where):
@@ -200,41 +225,48 @@ def _line_by_line(name, header, lines):
     return {column: table[:, k] for k, column in enumerate(numeric)}, texts
 
 
-#: A block the column-wise reader takes holds only these characters: those of numbers, blanks (spaces,
-#: tabs), commas and newlines. On them Python's float() takes exactly the NUMBER grammar (blanks around a
-#: number dropped, as parse_number does; no words such as nan, no '_', no other scripts' digits), and
-#: csv splits a line at every comma, as str.split does.
+#: The numeric fields of a block the column-wise reader takes hold only these characters: those of numbers,
+#: blanks (spaces, tabs) and the commas and newlines joining them. On them Python's float() takes exactly the
+#: NUMBER grammar (blanks around a number dropped, as parse_number does; no words such as nan, no '_', no
+#: other scripts' digits).
 _NUMERIC_BLOCK = re.compile(r"[0-9.eE+\- \t,\n]*")
 
 
 def _columnwise(header, lines):
-    """({numeric column: (n,) float}, {}) of the data `lines` (n str) read column by column: one match of
-    the whole block's characters, one split, every number converted in one pass; None when the
-    block has a text column or another character, a line without one field per column, a field that is
-    not a number (or, in a column that may be empty, nothing), or a line, field or number over its limit
-    (the line-by-line reader then names the line)."""
+    """({numeric column: (n,) float}, {text column: list of n str}) of the data `lines` (n str) read column
+    by column: one split of the whole block, one match of its numeric fields' characters, every number
+    converted in one pass; None when the block has a quote or NUL (which csv reads its own way), a line
+    without one field per column, a field that is not a number where one is due (or, in a column that may
+    be empty, nothing), or a line, field or number over its limit (the line-by-line reader then names the
+    line)."""
     width = len(header)
-    if any(column in OPERATION_TEXTS for column in header):
-        return None
     block = "\n".join(lines)
-    if (not _NUMERIC_BLOCK.fullmatch(block) or max(map(len, lines)) > MAX_LINE
+    if ('"' in block or "\0" in block or max(map(len, lines)) > MAX_LINE
             or set(map(str.count, lines, itertools.repeat(","))) != {width - 1}):
         return None
     fields = block.replace("\n", ",").split(",")
     if max(map(len, fields)) > MAX_FIELD:
         return None
-    may_be_empty = [k for k, column in enumerate(header) if column in _MAY_BE_EMPTY]
+    texts = {column: [field.strip() for field in fields[k::width]]
+             for k, column in enumerate(header) if column in OPERATION_TEXTS}
+    numeric = [column for column in header if column not in OPERATION_TEXTS]
+    if texts:
+        fields = list(itertools.chain.from_iterable(
+            zip(*(fields[k::width] for k, column in enumerate(header) if column not in OPERATION_TEXTS))))
+    if not _NUMERIC_BLOCK.fullmatch(",".join(fields)):
+        return None
+    may_be_empty = [k for k, column in enumerate(numeric) if column in _MAY_BE_EMPTY]
     for k in may_be_empty:
-        fields[k::width] = [field if field.strip() else "nan" for field in fields[k::width]]
+        fields[k::len(numeric)] = [field if field.strip() else "nan" for field in fields[k::len(numeric)]]
     try:
-        table = np.array(list(map(float, fields)), dtype=float).reshape(len(lines), width)
+        table = np.array(list(map(float, fields)), dtype=float).reshape(len(lines), len(numeric))
     except ValueError:
         return None
     small = np.abs(table) <= MAX_MAGNITUDE
     small[:, may_be_empty] |= np.isnan(table[:, may_be_empty])
     if not small.all():
         return None
-    return {column: table[:, k] for k, column in enumerate(header)}, {}
+    return {column: table[:, k] for k, column in enumerate(numeric)}, texts
 
 
 def _columns(header, where):

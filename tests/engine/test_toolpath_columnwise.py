@@ -9,9 +9,14 @@ from hypothesis import strategies as st
 
 from abm_workbench.errors import InputError
 from abm_workbench.formats import toolpath_csv
-from abm_workbench.formats.toolpath_csv import _columnwise, _data_lines, _line_by_line, load_table
+from abm_workbench.formats.toolpath_csv import _columnwise, _data_blocks, _line_by_line, load_table
 
 HEADER = ["x", "y", "z", "i", "j", "k"]
+
+
+def _data_lines(text):
+    """(line number, line) of every data line of `text`, over all its blocks."""
+    return [(int(number), line) for numbers, lines in _data_blocks(text) for number, line in zip(numbers, lines)]
 
 
 def number_texts():
@@ -100,3 +105,82 @@ def test_rows_of_the_wrong_shape_or_size_are_named(tmp_path, line, message):
     assert _columnwise(HEADER, ["1,2,3,0,0,1", line]) is None
     with pytest.raises(InputError, match=f"^{path}:3: {message}"):
         load_table(path)
+
+
+@st.composite
+def program_tables(draw):
+    """The text of a toolpath command's CSV: text columns among the numbers, comments, blank lines."""
+    header = ["operation", "name", "tool", "diameter", "x", "y", "z", "i", "j", "k", "feed_rate", "feed_unit", "line"]
+    lines = [",".join(header)]
+    for _ in range(draw(st.integers(1, 25))):
+        lines.extend(draw(st.lists(st.sampled_from(["", "# a comment"]), max_size=1)))
+        name = draw(st.sampled_from(["Pocket 1", " Contour", "Adaptive-2 ", "", "ÄÖ roughing"]))
+        tool = draw(st.sampled_from(["flat", "ball", "bull", ""]))
+        numbers = draw(st.lists(number_texts(), min_size=6, max_size=6))
+        feed, unit = draw(st.sampled_from([("", ""), ("1200", "MMPM"), (" 0.1", "MMPR")]))
+        diameter = draw(st.sampled_from(["", "6", " 12.5"]))
+        lines.append(",".join([str(draw(st.integers(1, 3))), name, tool, diameter, *numbers, feed, unit,
+                               str(draw(st.integers(0, 10**6)))]))
+    return header, "\n".join(lines) + "\n"
+
+
+@given(program_tables())
+def test_text_columns_are_read_column_by_column_as_line_by_line(case):
+    header, text = case
+    lines = _data_lines(text)[1:]
+    found = _columnwise(header, [line for _, line in lines])
+    assert found is not None
+    numbers, texts = _line_by_line("t.csv", header, lines)
+    assert list(found[0]) == list(numbers) and found[1] == texts
+    for column, values in numbers.items():
+        assert found[0][column].tobytes() == values.tobytes(), column
+
+
+def _rows(count, bad=None):
+    """A toolpath CSV's text of `count` rows with comments now and then; row `bad` (0-based) has a word."""
+    lines = ["# written by a test", "x,y,z,i,j,k"]
+    for n in range(count):
+        if n % 97 == 0:
+            lines.append("# level")
+        y = "here" if n == bad else f"{n * 0.1:.3f}"
+        lines.append(f"{n % 80},{y},-{n % 7}.5,0,0,1")
+    return "\n".join(lines) + "\n"
+
+
+def test_blocks_give_the_whole_files_table_and_line_numbers(tmp_path, monkeypatch):
+    path = tmp_path / "t.csv"
+    path.write_text(_rows(5000))
+    whole = load_table(path)
+    monkeypatch.setattr(toolpath_csv, "BLOCK_CHARS", 1000)
+    blocks = load_table(path)
+    assert sum(1 for _ in _data_blocks(path.read_text())) > 50
+    assert blocks.lines.tobytes() == whole.lines.tobytes() and whole.lines[-1] == len(path.read_text().splitlines())
+    for column in HEADER:
+        assert blocks.numbers[column].tobytes() == whole.numbers[column].tobytes(), column
+
+
+def test_a_bad_row_in_a_later_block_is_named_by_its_line(tmp_path, monkeypatch):
+    monkeypatch.setattr(toolpath_csv, "BLOCK_CHARS", 1000)
+    path = tmp_path / "t.csv"
+    path.write_text(_rows(3000, bad=2500))
+    line = 1 + path.read_text().splitlines().index("20,here,-1.5,0,0,1")
+    with pytest.raises(InputError, match=f"^{path}:{line}: column 'y': .*not a number"):
+        load_table(path)
+
+
+def test_a_long_file_is_read_in_a_few_times_its_size(tmp_path, monkeypatch):
+    """The reader's working memory stays a small multiple of the file (the whole text in one list of fields
+    took some 40 times the file's size)."""
+    import tracemalloc
+    monkeypatch.setattr(toolpath_csv, "BLOCK_CHARS", 1 << 16)
+    path = tmp_path / "t.csv"
+    path.write_text(_rows(100_000))
+    size = path.stat().st_size
+    tracemalloc.start()
+    try:
+        table = load_table(path)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert len(table.lines) == 100_000
+    assert peak < 12 * size, f"peak {peak / size:.1f} x the file's {size:,} bytes"
