@@ -45,6 +45,10 @@ POLL_MS = 50
 GRACE_MS = 3000
 #: The engine's words (the default of :func:`work`).
 ENGINE_TEXT = noop("Computing the engagement…")
+#: The line under the dialog's words once steps are done: the engine's steps are CL points.
+ENGINE_STEPS = noop("{done} of {total} CL points, about {left} left")
+#: The in-process stock's boolean steps: each swept solid, their fuse, the cut.
+BOOLEAN_STEPS = noop("{done} of {total} steps, about {left} left")
 CANCELLED = "recompute cancelled: nothing computed"
 #: Worker threads given up by Cancel that still run (kept alive until they end).
 _ABANDONED = set()
@@ -67,12 +71,12 @@ def run(function, *args):
     return work(function, *args)
 
 
-def work(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED, sink=None, **keywords):
+def work(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED, sink=None, steps=ENGINE_STEPS, **keywords):
     """function(*args, **keywords) in a worker thread, the GUI kept drawn meanwhile (see the module
     docstring); its value, or its exception raised here; when the user cancels, `cancelled` if it is an
     exception, else Cancelled(`cancelled`).
 
-    text: the progress dialog's words (translated). sink: a progress(done, total) callback of the GUI
+    text: the progress dialog's words (translated); steps: the line under them (:func:`steps_left`). sink: a progress(done, total) callback of the GUI
     thread with a ``dialog`` (QProgressDialog) it shows at once (gui.progress.ProgressDialog): it gets
     every step of the call, in order, and raising from it cancels; None: the worker's own dialog after
     SILENT_MS.
@@ -80,10 +84,10 @@ def work(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED, sink=None, **ke
     if QtGui.QApplication.instance() is None or threading.current_thread() is not threading.main_thread():
         return function(*args, **keywords)  # no GUI, or not its thread: nothing to keep drawn
     job = _Job(function, args, keywords, cancelled)
-    return _wait(job, _Thread(job), text, sink)
+    return _wait(job, _Thread(job), (text, steps), sink)
 
 
-def in_process(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED):
+def in_process(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED, steps=BOOLEAN_STEPS):
     """function(*args) in a worker process of its own (``worker_processes.ChildTask``), waited for as
     :func:`work` waits for a thread: the GUI drawn, the progress dialog after SILENT_MS with the steps
     of the call's own progress(done, total), Cancel killing the process at once. function: module-level;
@@ -93,14 +97,14 @@ def in_process(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED):
         return function(*args)
     job = _ProcessJob(function, args, cancelled)
     try:
-        return _wait(job, _Process(job), text, None)
+        return _wait(job, _Process(job), (text, steps), None)
     finally:
         job.close()
 
 
-def _wait(job, thread, text, sink):
-    """Start `thread` (a _Thread or _Process running `job`) and wait for it as :func:`work` says; the
-    job's outcome."""
+def _wait(job, thread, words, sink):
+    """Start `thread` (a _Thread or _Process running `job`) and wait for it as :func:`work` says (`words`:
+    its text and steps); the job's outcome."""
     loop = QtCore.QEventLoop()
     thread.finished.connect(loop.quit)
     thread.start()
@@ -116,7 +120,7 @@ def _wait(job, thread, text, sink):
             QtGui.QApplication.restoreOverrideCursor()
         silent.stop()
         if thread.isRunning():
-            _wait_with_dialog(job, thread, loop, text)
+            _wait_with_dialog(job, thread, loop, *words)
     else:
         _wait_with_sink(job, thread, loop, sink)
     if thread.isRunning() and job.cancel.is_set():  # give it a moment to stop and clean up
@@ -132,8 +136,9 @@ def _wait(job, thread, text, sink):
     return job.outcome()
 
 
-def _wait_with_dialog(job, thread, loop, text):
-    """Wait for `thread` in `loop` with the progress dialog; Cancel asks `job` to stop and ends the wait."""
+def _wait_with_dialog(job, thread, loop, text, steps):
+    """Wait for `thread` in `loop` with the progress dialog (`text`, and `steps` under it once steps are
+    done: :func:`steps_left`); Cancel asks `job` to stop and ends the wait."""
     import FreeCADGui
 
     from .i18n import translate
@@ -146,12 +151,15 @@ def _wait_with_dialog(job, thread, loop, text):
     dialog.setAutoClose(False)
     dialog.setAutoReset(False)
     timer = QtCore.QTimer()
+    started = time.perf_counter()
 
     def look():
         done, total = job.done
         if total:
             dialog.setMaximum(total)
             dialog.setValue(done)
+            line = steps_left(steps, done, total, time.perf_counter() - started)
+            dialog.setLabelText(f"{translate(text)}\n{line}" if line else translate(text))
 
     def cancel():
         job.stop()
@@ -166,6 +174,20 @@ def _wait_with_dialog(job, thread, loop, text):
     dialog.reset()
     dialog.setParent(None)
     dialog.deleteLater()
+
+
+def steps_left(steps, done, total, elapsed):
+    """The progress dialog's line under its text: `steps` (a text with {done}, {total} and {left}) in the
+    user's language with `done` of `total` steps and the time left estimated from `elapsed` (s) at the
+    pace so far; empty before the first step."""
+    from .i18n import translate
+
+    if done <= 0:
+        return ""
+    minutes, seconds = divmod(round(elapsed / done * (total - done)), 60)
+    left = (translate("{minutes} min {seconds} s", minutes=minutes, seconds=seconds) if minutes
+            else translate("{seconds} s", seconds=seconds))
+    return translate(steps, done=f"{done:,}", total=f"{total:,}", left=left)
 
 
 def _wait_with_sink(job, thread, loop, sink):

@@ -5,6 +5,7 @@ its engine in a worker thread whose progress dialog's Cancel stops it, the GUI d
 """
 
 import os
+import re
 
 import pytest
 
@@ -90,7 +91,7 @@ verdict["restored"] = engagement.State
 # ---- a long recompute: the engine in a worker thread, progress shown, Cancel stops it ----------------
 before = fingerprint()
 start = len(report.toPlainText())
-seen = {{"ticks": 0, "progress": [], "cancelled_at": None}}
+seen = {{"ticks": 0, "progress": [], "cancelled_at": None, "label": ""}}
 def watch():
     # runs from the GUI thread's event loop while the recompute waits for the worker
     seen["ticks"] += 1
@@ -98,6 +99,7 @@ def watch():
                if d.objectName() == "ABM_Engine" and shiboken2.isValid(d) and d.isVisible()]
     if dialogs and seen["cancelled_at"] is None:
         seen["progress"].append([dialogs[0].value(), dialogs[0].maximum()])
+        seen["label"] = dialogs[0].labelText()
         if len(seen["progress"]) >= 3 and dialogs[0].value() > 0:
             seen["cancelled_at"] = time.perf_counter()
             press(dialogs[0].findChild(QtWidgets.QPushButton))
@@ -115,6 +117,7 @@ verdict["worker"] = [seen["cancelled_at"] is not None, seen["progress"][:1], see
                      task_panel.shown() is panel, panel.message.text(), engagement.State]
 click("Cancel")
 settle()
+verdict["label"] = seen["label"]
 verdict["after_cancel"] = [before, fingerprint(), task_panel.shown() is None]
 verdict["report_worker"] = report_since(start)
 """
@@ -152,6 +155,10 @@ def test_mesh_plain_errors_and_a_cancellable_worker(verdict):
     assert last[0][1] == 53 and 0 < last[0][0] < 53, verdict["worker"]
     assert after_cancel < 1.0, verdict["worker"]
     assert stays and "cancelled" in message and "Invalid" in state, verdict["worker"]
+    # the dialog says how many CL points are done and estimates the time left
+    estimate = re.fullmatch(r"Computing the engagement…\n(\d+) of 53 CL points, about (\d+ min )?\d+ s left",
+                            verdict["label"])
+    assert estimate and int(estimate.group(1)) == last[0][0], verdict["label"]
     # the panel's Cancel then gives back the object as it was, with no undo step
     before, after, closed = verdict["after_cancel"]
     assert after == before and closed
