@@ -18,11 +18,13 @@ For the first SILENT_MS the wait shows only a wait cursor and holds user input b
 it afterwards); a longer one shows a modal progress dialog (``ABM_Engine``; validation its own
 ``ABM_Progress``) with the steps done of all, from the call's own ``progress(done, total)`` when it
 takes one, and **Cancel**. Cancel ends the wait at once (within POLL_MS): the call is asked to stop
-(its next ``progress`` raises in the worker), its result is thrown away whenever it ends, and the
-caller gets :class:`Cancelled` (an InputError: a recompute fails with ``recompute cancelled:
-nothing computed``). A call without steps (the forces, one boolean) cannot stop half-way: it ends on
-its own in the background, its result unused; a call that ends within GRACE_MS of Cancel is waited
-for, so what it started (validation's worker processes) is ended before the caller goes on.
+(its next ``progress`` raises in the worker; worker processes it waits for, validation's, are killed
+within ``worker_processes.STOP_POLL`` seconds, not after their current CL point:
+``worker_processes.stop_when``), its result is thrown away whenever it ends, and the caller gets
+:class:`Cancelled` (an InputError: a recompute fails with ``recompute cancelled: nothing computed``).
+A call without steps (the forces, one boolean) cannot stop half-way: it ends on its own in the
+background, its result unused; a call that ends within GRACE_MS of Cancel is waited for, so what it
+started (validation's worker processes) is ended before the caller goes on.
 
 :func:`install` puts :func:`run` in place of the plain calls (InitGui does it through
 ``view_providers.install_observer``).
@@ -240,15 +242,21 @@ class _Job:
             return False
 
     def __call__(self):
+        from ..worker_processes import stop_when
+
         started = time.perf_counter()
         try:
-            if self._takes_progress():
-                self.value = self.function(*self.args, progress=self.progress, **self.keywords)
-            else:
-                self.value = self.function(*self.args, **self.keywords)
+            with stop_when(self.cancel):  # Cancel ends the worker processes the call waits for at once
+                self._call()
         except BaseException as error:  # noqa: BLE001 (handed to the GUI thread, raised there)
             self.error = error
         self.seconds = time.perf_counter() - started
+
+    def _call(self):
+        if self._takes_progress():
+            self.value = self.function(*self.args, progress=self.progress, **self.keywords)
+        else:
+            self.value = self.function(*self.args, **self.keywords)
 
     def outcome(self):
         """The value; the worker's exception; Cancelled (or the sink's reason) once cancelled."""
