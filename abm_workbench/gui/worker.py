@@ -269,11 +269,23 @@ class _Job:
         return self.value
 
 
+#: The worker threads' object name, and so their name in the OS (ps, /proc/*/task/*/comm; 15 characters at most).
+THREAD_NAME = "abm-worker"
+
+
 class _Thread(QtCore.QThread):
-    """A QThread running a _Job."""
+    """A QThread running a _Job, named THREAD_NAME before it starts.
+
+    The name is not cosmetic: a QThread without one is named after its class as it starts, in the new
+    thread, through its metaObject(), which PySide2 (5.15) answers by looking up the Python object in its
+    table of wrappers without holding the GIL, while the GUI thread may be changing that table: FreeCAD
+    crashed there once (SIGSEGV in BindingManager::retrieveWrapper under QThreadPrivate::start). With an
+    object name, Qt names the thread from it and never asks.
+    """
 
     def __init__(self, job):
         super().__init__()
+        self.setObjectName(THREAD_NAME)
         self.job = job
 
     def run(self):

@@ -72,6 +72,7 @@ class Watched(ProgressDialog):
         drawn.append([done, total])
         if self.cancel:
             at_cancel.append(len(children()))
+            verdict["pressed_at"] = time.monotonic()
             press(self.dialog.findChild(QtGui.QPushButton))
             pressed.set()
         super().__call__(done, total)
@@ -92,7 +93,8 @@ try:
     verdict["cancelled"] = False
 except Cancelled:
     verdict["cancelled"] = True
-verdict["cancel_seconds"] = round(time.monotonic() - started, 2)  # told, not checked: the whole cancelled run
+returned = time.monotonic()  # told, not checked: the whole cancelled run, and from the click to the command's return
+verdict["cancel_seconds"] = [round(returned - started, 2), round(returned - verdict.pop("pressed_at", returned), 3)]
 verdict["cancel_calls"], verdict["workers_at_cancel"] = len(drawn), list(at_cancel)
 verdict["reported_in_cancelled_run"] = list(reported)  # told, not checked: 1 step, or 2 if two CL points ended together
 verdict["left_after_cancel"] = len(children())
