@@ -269,27 +269,46 @@ class _Job:
         return self.value
 
 
-#: The worker threads' object name, and so their name in the OS (ps, /proc/*/task/*/comm; 15 characters at most).
+#: The worker threads' name (threading.Thread.name).
 THREAD_NAME = "abm-worker"
+#: Milliseconds between two looks, from the GUI thread, at whether a worker thread has ended.
+THREAD_POLL_MS = 10
 
 
-class _Thread(QtCore.QThread):
-    """A QThread running a _Job, named THREAD_NAME before it starts.
+class _Thread(QtCore.QObject):
+    """A _Job in a Python thread (threading.Thread, named THREAD_NAME), with what :func:`_wait` uses of a
+    QThread: start, isRunning and the finished signal, emitted on the GUI thread by a timer that looks
+    every THREAD_POLL_MS whether the thread has ended.
 
-    The name is not cosmetic: a QThread without one is named after its class as it starts, in the new
-    thread, through its metaObject(), which PySide2 (5.15) answers by looking up the Python object in its
-    table of wrappers without holding the GIL, while the GUI thread may be changing that table: FreeCAD
-    crashed there once (SIGSEGV in BindingManager::retrieveWrapper under QThreadPrivate::start). With an
-    object name, Qt names the thread from it and never asks.
+    Not a QThread: Qt calls a QThread's metaObject() from the new thread itself, as it starts (to name the
+    thread) and as it ends (to queue its finished signal to the GUI thread), and PySide2 (5.15) answers
+    that by looking the Python object up in its table of wrappers without holding the GIL, while the GUI
+    thread may be changing that table: FreeCAD crashed there (SIGSEGV in BindingManager::retrieveWrapper
+    under QThreadPrivate::start). The Python thread touches no Qt object, nor do the jobs (numpy,
+    OpenCASCADE, files; the report's figures drawn with matplotlib's Agg canvas).
     """
+
+    finished = QtCore.Signal()
 
     def __init__(self, job):
         super().__init__()
-        self.setObjectName(THREAD_NAME)
         self.job = job
+        self.thread = threading.Thread(target=job, name=THREAD_NAME, daemon=True)
+        self.timer = QtCore.QTimer(self)
+        self.timer.setInterval(THREAD_POLL_MS)
+        self.timer.timeout.connect(self._look)
 
-    def run(self):
-        self.job()
+    def start(self):
+        self.thread.start()
+        self.timer.start()
+
+    def isRunning(self):  # noqa: N802 (QThread's name)
+        return self.thread.is_alive()
+
+    def _look(self):
+        if not self.thread.is_alive():
+            self.timer.stop()
+            self.finished.emit()
 
 
 class _ProcessJob(_Job):
