@@ -19,6 +19,10 @@ KeyboardInterrupt, the command line's SIGTERM / SIGHUP, a progress callback that
 - on an error the workers are killed (SIGKILL: a boolean cannot be interrupted halfway, and a
   worker still starting has SIGTERM held) and reaped; after the last result they are told to end
   and given STOP_WAIT seconds before being killed;
+- a thread that another thread must be able to stop at once (the GUI's Cancel) runs the block inside
+  :func:`stop_when` (a threading.Event): waiting for answers, :meth:`WorkerProcesses.map_unordered` looks
+  at the event every STOP_POLL seconds and raises :class:`Stopped` once it is set, so the workers are
+  killed then, not after the next task ends;
 - a worker holds only its own end of its pipe, so if the parent dies without any clean-up (SIGKILL)
   the worker reads the end of the pipe after its current task and ends too; on Linux it is killed at
   once (:func:`die_with_parent`: PR_SET_PDEATHSIG), even in the middle of a task.
@@ -43,6 +47,10 @@ from multiprocessing import resource_tracker
 HELD = tuple(getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name))
 #: Seconds the workers get to end by themselves after the last task, before they are killed.
 STOP_WAIT = 5.0
+#: Seconds between two looks at the thread's stop event (stop_when) while waiting for the workers' answers.
+STOP_POLL = 0.05
+
+_stops = threading.local()  # .event: the stop event of stop_when's block in this thread (or none)
 
 
 #: prctl's option that sends a signal when the parent ends (linux/prctl.h).
@@ -73,6 +81,24 @@ def die_with_parent(parent):
 
 class WorkerError(RuntimeError):
     """A worker process ended without answering its task (it crashed or was killed)."""
+
+
+class Stopped(Exception):
+    """The stop event of :func:`stop_when` was set while workers computed: their tasks are given up."""
+
+
+@contextlib.contextmanager
+def stop_when(event):
+    """Within the block, in this thread: :meth:`WorkerProcesses.map_unordered` looks at `event` (a
+    threading.Event that another thread sets) at least every STOP_POLL seconds while it waits for answers,
+    and raises :class:`Stopped` once it is set (leaving the ``with`` block of the workers then kills them).
+    Blocks nest: the innermost event counts."""
+    previous = getattr(_stops, "event", None)
+    _stops.event = event
+    try:
+        yield
+    finally:
+        _stops.event = previous
 
 
 @contextlib.contextmanager
@@ -130,9 +156,12 @@ class WorkerProcesses:
     def map_unordered(self, function, arguments):
         """Yield (index, function(*arguments[index])) for every index, run in the workers, in the order
         they finish. function: module-level (picklable), arguments: a sequence of tuples. An error raised
-        by a task is raised here; a worker that ends without answering raises WorkerError."""
+        by a task is raised here; a worker that ends without answering raises WorkerError; the stop event of
+        :func:`stop_when`, once set, raises Stopped within STOP_POLL seconds."""
         waiting = list(range(len(arguments)))[::-1]
         busy = {}
+        stop = getattr(_stops, "event", None)
+        timeout = None if stop is None else STOP_POLL
 
         def hand_out(connection):
             if waiting:
@@ -143,7 +172,9 @@ class WorkerProcesses:
         for connection in self.connections:
             hand_out(connection)
         while busy:
-            for connection in multiprocessing.connection.wait(list(busy)):
+            if stop is not None and stop.is_set():
+                raise Stopped(f"stopped with {len(busy) + len(waiting)} of {len(arguments)} tasks unanswered")
+            for connection in multiprocessing.connection.wait(list(busy), timeout=timeout):
                 index = busy.pop(connection)
                 try:
                     succeeded, value = connection.recv()

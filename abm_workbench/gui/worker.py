@@ -18,11 +18,13 @@ For the first SILENT_MS the wait shows only a wait cursor and holds user input b
 it afterwards); a longer one shows a modal progress dialog (``ABM_Engine``; validation its own
 ``ABM_Progress``) with the steps done of all, from the call's own ``progress(done, total)`` when it
 takes one, and **Cancel**. Cancel ends the wait at once (within POLL_MS): the call is asked to stop
-(its next ``progress`` raises in the worker), its result is thrown away whenever it ends, and the
-caller gets :class:`Cancelled` (an InputError: a recompute fails with ``recompute cancelled:
-nothing computed``). A call without steps (the forces, one boolean) cannot stop half-way: it ends on
-its own in the background, its result unused; a call that ends within GRACE_MS of Cancel is waited
-for, so what it started (validation's worker processes) is ended before the caller goes on.
+(its next ``progress`` raises in the worker; worker processes it waits for, validation's, are killed
+within ``worker_processes.STOP_POLL`` seconds, not after their current CL point:
+``worker_processes.stop_when``), its result is thrown away whenever it ends, and the caller gets
+:class:`Cancelled` (an InputError: a recompute fails with ``recompute cancelled: nothing computed``).
+A call without steps (the forces, one boolean) cannot stop half-way: it ends on its own in the
+background, its result unused; a call that ends within GRACE_MS of Cancel is waited for, so what it
+started (validation's worker processes) is ended before the caller goes on.
 
 :func:`install` puts :func:`run` in place of the plain calls (InitGui does it through
 ``view_providers.install_observer``).
@@ -262,15 +264,21 @@ class _Job:
             return False
 
     def __call__(self):
+        from ..worker_processes import stop_when
+
         started = time.perf_counter()
         try:
-            if self._takes_progress():
-                self.value = self.function(*self.args, progress=self.progress, **self.keywords)
-            else:
-                self.value = self.function(*self.args, **self.keywords)
+            with stop_when(self.cancel):  # Cancel ends the worker processes the call waits for at once
+                self._call()
         except BaseException as error:  # noqa: BLE001 (handed to the GUI thread, raised there)
             self.error = error
         self.seconds = time.perf_counter() - started
+
+    def _call(self):
+        if self._takes_progress():
+            self.value = self.function(*self.args, progress=self.progress, **self.keywords)
+        else:
+            self.value = self.function(*self.args, **self.keywords)
 
     def outcome(self):
         """The value; the worker's exception; Cancelled (or the sink's reason) once cancelled."""
@@ -283,15 +291,46 @@ class _Job:
         return self.value
 
 
-class _Thread(QtCore.QThread):
-    """A QThread running a _Job."""
+#: The worker threads' name (threading.Thread.name).
+THREAD_NAME = "abm-worker"
+#: Milliseconds between two looks, from the GUI thread, at whether a worker thread has ended.
+THREAD_POLL_MS = 10
+
+
+class _Thread(QtCore.QObject):
+    """A _Job in a Python thread (threading.Thread, named THREAD_NAME), with what :func:`_wait` uses of a
+    QThread: start, isRunning and the finished signal, emitted on the GUI thread by a timer that looks
+    every THREAD_POLL_MS whether the thread has ended.
+
+    Not a QThread: Qt calls a QThread's metaObject() from the new thread itself, as it starts (to name the
+    thread) and as it ends (to queue its finished signal to the GUI thread), and PySide2 (5.15) answers
+    that by looking the Python object up in its table of wrappers without holding the GIL, while the GUI
+    thread may be changing that table: FreeCAD crashed there (SIGSEGV in BindingManager::retrieveWrapper
+    under QThreadPrivate::start). The Python thread touches no Qt object, nor do the jobs (numpy,
+    OpenCASCADE, files; the report's figures drawn with matplotlib's Agg canvas).
+    """
+
+    finished = QtCore.Signal()
 
     def __init__(self, job):
         super().__init__()
         self.job = job
+        self.thread = threading.Thread(target=job, name=THREAD_NAME, daemon=True)
+        self.timer = QtCore.QTimer(self)
+        self.timer.setInterval(THREAD_POLL_MS)
+        self.timer.timeout.connect(self._look)
 
-    def run(self):
-        self.job()
+    def start(self):
+        self.thread.start()
+        self.timer.start()
+
+    def isRunning(self):  # noqa: N802 (QThread's name)
+        return self.thread.is_alive()
+
+    def _look(self):
+        if not self.thread.is_alive():
+            self.timer.stop()
+            self.finished.emit()
 
 
 class _ProcessJob(_Job):

@@ -130,3 +130,38 @@ def test_shapes_pass_to_a_child_and_back_exactly(tmp_path):
     there = value.read()
     assert there.isValid() and there.Volume == here.Volume and len(there.Faces) == len(here.Faces)
     assert there.Volume < stock.Volume
+
+
+def nap(seconds):
+    """`seconds` slept, then `seconds`."""
+    import time
+
+    time.sleep(seconds)
+    return seconds
+
+
+def test_a_stop_set_by_another_thread_kills_the_busy_workers_at_once():
+    import threading
+    import time
+
+    from abm_workbench.worker_processes import Stopped, stop_when
+
+    event = threading.Event()
+    with stop_when(event):  # not set: the answers as usual
+        with WorkerProcesses(2, abs, (0,)) as workers:
+            assert sorted(workers.map_unordered(nap, [(0,), (0.1,)])) == [(0, 0), (1, 0.1)]
+    answers, stopped = [], {}
+
+    def stop():
+        stopped["at"] = time.monotonic()
+        event.set()
+
+    with pytest.raises(Stopped, match="2 of 3 tasks unanswered"):
+        with stop_when(event):
+            with WorkerProcesses(2, abs, (0,)) as workers:
+                for answer in workers.map_unordered(nap, [(0,), (60,), (60,)]):
+                    answers.append(answer)
+                    threading.Timer(0.5, stop).start()  # the workers are busy with 60 s tasks by then
+    seconds = time.monotonic() - stopped["at"]
+    assert answers == [(0, 0)] and seconds < 2.0, seconds  # not the 60 s of the tasks
+    assert [process.exitcode for process in workers.processes] == [-9, -9]
