@@ -78,10 +78,10 @@ def work(function, *args, text=ENGINE_TEXT, cancelled=CANCELLED, sink=None, step
     docstring); its value, or its exception raised here; when the user cancels, `cancelled` if it is an
     exception, else Cancelled(`cancelled`).
 
-    text: the progress dialog's words (translated); steps: the line under them (:func:`steps_left`). sink: a progress(done, total) callback of the GUI
-    thread with a ``dialog`` (QProgressDialog) it shows at once (gui.progress.ProgressDialog): it gets
-    every step of the call, in order, and raising from it cancels; None: the worker's own dialog after
-    SILENT_MS.
+    text: the progress dialog's words (translated); steps: the line under them (:func:`steps_left`).
+    sink: a progress(done, total) callback of the GUI thread with a ``dialog`` (QProgressDialog) it shows
+    at once (gui.progress.ProgressDialog): it gets every step of the call, in order, and raising from it
+    cancels; None: the worker's own dialog after SILENT_MS.
     """
     if QtGui.QApplication.instance() is None or threading.current_thread() is not threading.main_thread():
         return function(*args, **keywords)  # no GUI, or not its thread: nothing to keep drawn
