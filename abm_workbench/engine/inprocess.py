@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .engagement import SURFACES
+from .inprocess_balls import BallParts
 from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
 from .intervals import EdgeIntervals
@@ -178,12 +179,14 @@ class SweptPieces:
     chain_axis (C, 3), chain_radius, chain_height (C,): one constant-axis hull from the first
     span's start to the last one's end; chain_slack (C,): the pieces' bottom centres lie
     within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|);
+    chain_rise (C,) (≤ chain_slack): those bottom centres lie within that, along the chain's axis,
+    of the axial range of its path (0 for a run of moves in one plane across a constant axis);
     chain_rigid (C,) bool: slack and lean put every piece within _RIGID of the chain's hull, which
     is then the union of its pieces (a straight run with a constant axis) and is solved whole;
     chain_last (C,): its last move.
     Balls: each chain's height cut in slices about as tall as its radius, each in a bounding
-    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: cKDTree
-    over the balls' centres.
+    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); ball_parts: the
+    balls in parts with a KD tree each (inprocess_balls.BallParts).
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
     corner, span_corner, chain_corner: (P,), (S,), (C,) the tool's corner radius (mm; None: 0, flat-end
@@ -218,12 +221,13 @@ class SweptPieces:
     chain_height: np.ndarray
     chain_slack: np.ndarray
     chain_lean: np.ndarray
+    chain_rise: np.ndarray
     chain_rigid: np.ndarray
     chain_last: np.ndarray
     ball_chain: np.ndarray
     ball_centre: np.ndarray
     ball_bound: np.ndarray
-    tree: object  # scipy.spatial.cKDTree
+    ball_parts: BallParts
     tolerance: float
     corner: np.ndarray = None
     span_corner: np.ndarray = None
@@ -328,11 +332,9 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     first = np.cumsum(count) - count
     s_corner = corner[span_of]
     chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner, s_corner)
-    from scipy.spatial import cKDTree  # here: scipy.spatial takes a while to import
-
-    tree = cKDTree(chains[-2] if chains[-2].size else np.zeros((0, 3)))
+    balls = BallParts(chains[-2], chains[-1], chains[2][chains[-3]])
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
-                       s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, tree,
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, balls,
                        tolerance, corner[move], s_corner, s_corner[chains[0]])
 
 
@@ -343,7 +345,8 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span,
     (P,): the pieces and their span. A chain breaks where the moves stop following each other
     or the tool changes (radius, height or corner radius), and after _CHAIN spans or a path as long as the tool's radius. Its
     axis w is the mean of its spans' axes; its slack the largest distance of a piece's ends
-    from its path, its lean the largest |w_p − w| of a piece's axis w_p (see _apart).
+    from its path, its lean the largest |w_p − w| of a piece's axis w_p, its rise the largest
+    distance along w of a piece's end beyond the axial range of its path (see _apart).
     """
     n = span_move.size
     step = np.linalg.norm(s1 - s0, axis=1)
@@ -371,6 +374,11 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span,
     piece_first = np.flatnonzero(np.r_[True, piece_chain[1:] != piece_chain[:-1]]) if n else np.zeros(0, np.intp)
     slack = np.maximum.reduceat(off, piece_first) if n else np.zeros(0)
     lean = np.maximum.reduceat(np.linalg.norm(axis - chain_axis[piece_chain], axis=1), piece_first) if n else np.zeros(0)
+    w = chain_axis[piece_chain]
+    a0, a1, da = row_dot(c0 - start, w), row_dot(c1 - start, w), row_dot(d, w)
+    beyond = np.maximum(np.maximum(np.minimum(da, 0.0) - np.minimum(a0, a1), np.maximum(a0, a1) - np.maximum(da, 0.0)),
+                        0.0)
+    rise = np.minimum(np.maximum.reduceat(beyond, piece_first), slack) if n else np.zeros(0)
     r, h = radius[first], height[first]
     rigid = slack + lean * np.hypot(r, h) <= _RIGID
     slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
@@ -381,15 +389,17 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span,
     # point (c0 + c1)/2 + a_mid·w; the pieces lie within slack + lean·√(r² + H²) of the hull.
     grown = 0.5 * np.linalg.norm(ch1 - ch0, axis=1) + slack + lean * np.hypot(r, h)
     ball_bound = grown[ball_chain] + np.hypot(r[ball_chain], 0.5 * tall)
-    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, rigid, span_move[last],
+    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, rise, rigid, span_move[last],
             ball_chain, ball_centre, ball_bound)
 
 
-def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False):
+def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False, rise=None):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
-    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm. Both
-    by more than _CLEAR, so that rounding never drops a pair the closed form would count.
+    it lies wholly below or above the hull's axial range ± slack (± rise (K,) instead, if given:
+    a bound, no larger than slack, of how far the volume reaches beyond that range along the
+    axis). All (K, 3) or (K,), mm. Both by more than _CLEAR, so that rounding never drops a
+    pair the closed form would count.
 
     lean (K,): the volume is made of pieces whose bottom centres lie within slack of the
     hull's path and whose axes w_p differ from its axis w by at most lean (|w_p − w|). A point
@@ -405,7 +415,8 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False):
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (row_dot(v, axis) for v in (qa, qb, d))
-    axial = across = np.broadcast_to(slack + _CLEAR, aa.shape)
+    across = np.broadcast_to(slack + _CLEAR, aa.shape)
+    axial = across if rise is None else rise + _CLEAR
     if lean is not None:
         axial = axial + lean * radius
         level = 1.0 - 0.5 * lean * lean
@@ -814,20 +825,14 @@ def _sphere_chains(centre, radius, before, pieces, among=None):
     live = np.flatnonzero(radius > -np.inf) if among is None else among[radius[among] > -np.inf]
     if live.size == 0:
         return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
-    from scipy.spatial import cKDTree
-
-    reach = float(radius[live].max() + pieces.ball_bound.max())
     chains = pieces.chain_first.size
     found = []
-    # The spheres in blocks: the (sphere, ball) pairs within reach grow with the earlier moves
+    # The spheres in blocks: the (sphere, ball) pairs that meet grow with the earlier moves
     # stacked near the lines (every z level above a deep one), the block's memory with them.
     for begin in range(0, live.size, _SPHERE_BLOCK):
         mine = live[begin:begin + _SPHERE_BLOCK]
-        near = cKDTree(centre[mine]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
-        i, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
-        keep = near["v"] <= radius[mine][i] + pieces.ball_bound[ball]
-        del near
-        pair = _distinct(i[keep] * chains + pieces.ball_chain[ball[keep]], mine.size * chains)
+        i, ball = pieces.ball_parts.meeting(centre[mine], radius[mine], int(before[mine].max()))
+        pair = _distinct(i * chains + pieces.ball_chain[ball], mine.size * chains)
         i, k = mine[pair // chains], pair % chains
         keep = pieces.chain_move[k] <= before[i]
         found.append((i[keep], k[keep]))
@@ -873,7 +878,7 @@ def _near_groups(g, k, capsules, pieces):
     is not surely apart from the chain."""
     a, b, thick = capsules
     keep = ~_apart(_rows(a, g), _rows(b, g), *pieces.hulls("chain", k), pieces.chain_slack[k] + thick[g],
-                   pieces.chain_lean[k])
+                   pieces.chain_lean[k], rise=pieces.chain_rise[k] + thick[g])
     return g[keep], k[keep]
 
 
@@ -967,7 +972,7 @@ def _chains_near(seg, chain, envelope, origins, directions, pieces):
     seg, chain = seg[open_], chain[open_]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, *pieces.hulls("chain", chain), pieces.chain_slack[chain], pieces.chain_lean[chain],
-                   touch=True)
+                   touch=True, rise=pieces.chain_rise[chain])
     return seg[keep], chain[keep]
 
 
