@@ -259,6 +259,20 @@ class SweptPieces:
         return tuple(_rows(getattr(self, prefix + name), index) for name in ("c0", "c1", "axis", "radius", "height"))
 
 
+def _run_starts(key):
+    """(start, count): where each run of equal values of key (K,) starts, and its length (both
+    (R,) intp; empty for K = 0). Without np.r_, whose per-call cost is several times that of
+    the comparison on the arrays met here."""
+    new = np.empty(key.size, dtype=bool)
+    new[:1] = True
+    np.not_equal(key[1:], key[:-1], out=new[1:])
+    start = new.nonzero()[0]
+    count = np.empty_like(start)
+    count[:-1] = start[1:] - start[:-1]
+    count[-1:] = key.size - start[-1:]
+    return start, count
+
+
 def _rows(table, index):
     """The rows index (K,) of table (N, …): np.take, which gathers rows of an (N, 3) array about
     three times faster than table[index]."""
@@ -702,8 +716,7 @@ class _Solved:
             return
         order = np.argsort(seg, kind="stable")
         seg, span = seg[order], span[order]
-        head = np.flatnonzero(np.r_[True, seg[1:] != seg[:-1]])
-        count = np.diff(np.r_[head, seg.size])
+        head, count = _run_starts(seg)
         filled = (self.span[:, seg[head]] >= 0).sum(axis=0)
         place = np.arange(seg.size) - np.repeat(head, count) + np.repeat(filled, count)
         ok = place < _SOLVED
@@ -1042,13 +1055,17 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     inside = _deep_inside(_rows(a, at), _rows(b, at), c0, c1, axis, radius, h, slack, pieces.corners("span", span))
     out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
-    seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
+    span = span[~inside]
+    seg, piece = _span_pieces(seg[~inside], span, pieces)
+    # A span of one piece that does not turn is that piece's own hull, tested just now with the
+    # same ends (only envelopes closed by `inside` changed since): not tested again.
+    tested = np.repeat((pieces.span_count[span] == 1) & (pieces.span_turn[span] == 0.0), pieces.span_count[span])
     # First, per segment, the pair whose piece reaches lowest along its line and the one
     # reaching highest (per run of the segment's pairs, without sorting); they usually leave
     # few pairs near. Those are ranked once by how low and how high their pieces reach; each
     # later round solves the `take` first of each ranking among the pairs still open.
     lower, upper = _extent(_rows(origins, seg), _rows(directions, seg), *pieces.hulls("piece", piece))
-    open_ = _near_pieces(seg, piece, envelope, origins, directions, pieces)
+    open_ = _near_pieces(seg, piece, envelope, origins, directions, pieces, tested)
     chosen = np.flatnonzero(open_ & (_smallest(seg, np.where(open_, lower, np.inf), 1)
                                      | _smallest(seg, np.where(open_, -upper, np.inf), 1)))
     out.append(_solved(seg[chosen], piece[chosen], envelope, origins, directions, pieces))
@@ -1075,8 +1092,7 @@ class _Ranking:
     def __init__(self, owner, key):
         self.order = np.lexsort((key, owner))
         ranked = owner[self.order]
-        self.start = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
-        self.count = np.diff(np.r_[self.start, owner.size])
+        self.start, self.count = _run_starts(ranked)
 
     def first(self, open_, take):
         """(K,) bool: of each owner's rows with open_ (K,) True, the `take` first in the order."""
@@ -1088,11 +1104,12 @@ class _Ranking:
         return chosen
 
 
-def _near_pieces(seg, piece, envelope, origins, directions, pieces):
+def _near_pieces(seg, piece, envelope, origins, directions, pieces, tested=None):
     """(K,) bool: the pairs (seg, piece) (K,) whose segment's envelope is open and from which the
-    piece may remove more than LENGTH_EPS."""
+    piece may remove more than LENGTH_EPS; tested (K,) bool: pairs known to pass that test for
+    the present envelopes where open (not tested again)."""
     near = envelope[0, seg] < envelope[1, seg]
-    at = np.flatnonzero(near)
+    at = np.flatnonzero(near if tested is None else near & ~tested)
     seg, piece = seg[at], piece[at]
     a, b = _ends(seg, envelope, origins, directions)
     near[at] = ~_apart(a, b, *pieces.hulls("piece", piece), 0.0, touch=True)
@@ -1176,12 +1193,11 @@ def _smallest(owner, key, take):
     chosen = np.zeros(owner.size, dtype=bool)
     if owner.size == 0:
         return chosen
-    start = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
-    count = np.diff(np.r_[start, owner.size])
+    start, count = _run_starts(owner)
     left = np.array(key, dtype=float)  # a copy: chosen rows become NaN, which fmin passes over
     for _ in range(take):
         hit = np.flatnonzero(left == np.repeat(np.fmin.reduceat(left, start), count))
-        first = hit[np.r_[True, owner[hit[1:]] != owner[hit[:-1]]]] if hit.size else hit
+        first = hit[_run_starts(owner[hit])[0]]
         chosen[first] = True
         left[first] = np.nan
     return chosen
@@ -1214,12 +1230,11 @@ def _covered_from(start, seg, enter, leave):
     itself where none covers it): a sweep of each segment's intervals in order of enter."""
     order = np.lexsort((enter, seg))
     seg, enter, leave = seg[order], enter[order], leave[order]
-    head = np.flatnonzero(np.r_[True, seg[1:] != seg[:-1]])
+    head, count = _run_starts(seg)
     owners = seg[head]
     begin = start[owners]
     if head.size == seg.size:  # one interval per segment
         return owners, np.where(enter <= begin, np.maximum(begin, leave), begin)
-    count = np.diff(np.r_[head, seg.size])
     owner = np.repeat(np.arange(owners.size), count)
     rank = np.arange(seg.size) - np.repeat(head, count)
     # Row j: the j-th interval of each owner (a column); reach[j]: how far the intervals before
