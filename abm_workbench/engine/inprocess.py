@@ -185,7 +185,7 @@ class SweptPieces:
     is then the union of its pieces (a straight run with a constant axis) and is solved whole;
     chain_last (C,): its last move.
     Balls: each chain's height cut in slices about as tall as its radius, each in a bounding
-    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); ball_parts: the
+    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: the
     balls in parts with a KD tree each (inprocess_balls.BallParts).
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
@@ -227,7 +227,7 @@ class SweptPieces:
     ball_chain: np.ndarray
     ball_centre: np.ndarray
     ball_bound: np.ndarray
-    ball_parts: BallParts
+    tree: BallParts
     tolerance: float
     corner: np.ndarray = None
     span_corner: np.ndarray = None
@@ -844,7 +844,7 @@ def _sphere_chains(centre, radius, before, pieces, among=None):
     # stacked near the lines (every z level above a deep one), the block's memory with them.
     for begin in range(0, live.size, _SPHERE_BLOCK):
         mine = live[begin:begin + _SPHERE_BLOCK]
-        i, ball = pieces.ball_parts.meeting(centre[mine], radius[mine], int(before[mine].max()))
+        i, ball = pieces.tree.meeting(centre[mine], radius[mine], int(before[mine].max()))
         pair = _distinct(i * chains + pieces.ball_chain[ball], mine.size * chains)
         i, k = mine[pair // chains], pair % chains
         keep = pieces.chain_move[k] <= before[i]
