@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .engagement import SURFACES
+from .inprocess_balls import BallParts
 from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
 from .intervals import EdgeIntervals
@@ -178,12 +179,14 @@ class SweptPieces:
     chain_axis (C, 3), chain_radius, chain_height (C,): one constant-axis hull from the first
     span's start to the last one's end; chain_slack (C,): the pieces' bottom centres lie
     within that of its path, chain_lean (C,): their axes within that of its axis (|w_p − w|);
+    chain_rise (C,) (≤ chain_slack): those bottom centres lie within that, along the chain's axis,
+    of the axial range of its path (0 for a run of moves in one plane across a constant axis);
     chain_rigid (C,) bool: slack and lean put every piece within _RIGID of the chain's hull, which
     is then the union of its pieces (a straight run with a constant axis) and is solved whole;
     chain_last (C,): its last move.
     Balls: each chain's height cut in slices about as tall as its radius, each in a bounding
-    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: cKDTree
-    over the balls' centres.
+    sphere (ball_chain (B,) its chain, ball_centre (B, 3), ball_bound (B,)); tree: the
+    balls in parts with a KD tree each (inprocess_balls.BallParts).
     tolerance: the largest distance (mm) any point of the tool moves within one piece by the
     turning of its axis.
     corner, span_corner, chain_corner: (P,), (S,), (C,) the tool's corner radius (mm; None: 0, flat-end
@@ -218,12 +221,13 @@ class SweptPieces:
     chain_height: np.ndarray
     chain_slack: np.ndarray
     chain_lean: np.ndarray
+    chain_rise: np.ndarray
     chain_rigid: np.ndarray
     chain_last: np.ndarray
     ball_chain: np.ndarray
     ball_centre: np.ndarray
     ball_bound: np.ndarray
-    tree: object  # scipy.spatial.cKDTree
+    tree: BallParts
     tolerance: float
     corner: np.ndarray = None
     span_corner: np.ndarray = None
@@ -253,6 +257,20 @@ class SweptPieces:
         hulls of the pieces, spans or chains (level "piece", "span" or "chain") at index (K,)."""
         prefix = "" if level == "piece" else level + "_"
         return tuple(_rows(getattr(self, prefix + name), index) for name in ("c0", "c1", "axis", "radius", "height"))
+
+
+def _run_starts(key):
+    """(start, count): where each run of equal values of key (K,) starts, and its length (both
+    (R,) intp; empty for K = 0). Without np.r_, whose per-call cost is several times that of
+    the comparison on the arrays met here."""
+    new = np.empty(key.size, dtype=bool)
+    new[:1] = True
+    np.not_equal(key[1:], key[:-1], out=new[1:])
+    start = new.nonzero()[0]
+    count = np.empty_like(start)
+    count[:-1] = start[1:] - start[:-1]
+    count[-1:] = key.size - start[-1:]
+    return start, count
 
 
 def _rows(table, index):
@@ -328,11 +346,9 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     first = np.cumsum(count) - count
     s_corner = corner[span_of]
     chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner, s_corner)
-    from scipy.spatial import cKDTree  # here: scipy.spatial takes a while to import
-
-    tree = cKDTree(chains[-2] if chains[-2].size else np.zeros((0, 3)))
+    balls = BallParts(chains[-2], chains[-1], chains[2][chains[-3]])
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
-                       s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, tree,
+                       s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, balls,
                        tolerance, corner[move], s_corner, s_corner[chains[0]])
 
 
@@ -343,7 +359,8 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span,
     (P,): the pieces and their span. A chain breaks where the moves stop following each other
     or the tool changes (radius, height or corner radius), and after _CHAIN spans or a path as long as the tool's radius. Its
     axis w is the mean of its spans' axes; its slack the largest distance of a piece's ends
-    from its path, its lean the largest |w_p − w| of a piece's axis w_p (see _apart).
+    from its path, its lean the largest |w_p − w| of a piece's axis w_p, its rise the largest
+    distance along w of a piece's end beyond the axial range of its path (see _apart).
     """
     n = span_move.size
     step = np.linalg.norm(s1 - s0, axis=1)
@@ -371,6 +388,11 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span,
     piece_first = np.flatnonzero(np.r_[True, piece_chain[1:] != piece_chain[:-1]]) if n else np.zeros(0, np.intp)
     slack = np.maximum.reduceat(off, piece_first) if n else np.zeros(0)
     lean = np.maximum.reduceat(np.linalg.norm(axis - chain_axis[piece_chain], axis=1), piece_first) if n else np.zeros(0)
+    w = chain_axis[piece_chain]
+    a0, a1, da = row_dot(c0 - start, w), row_dot(c1 - start, w), row_dot(d, w)
+    beyond = np.maximum(np.maximum(np.minimum(da, 0.0) - np.minimum(a0, a1), np.maximum(a0, a1) - np.maximum(da, 0.0)),
+                        0.0)
+    rise = np.minimum(np.maximum.reduceat(beyond, piece_first), slack) if n else np.zeros(0)
     r, h = radius[first], height[first]
     rigid = slack + lean * np.hypot(r, h) <= _RIGID
     slices = np.maximum(np.ceil(h / r), 1).astype(np.intp)
@@ -381,15 +403,17 @@ def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span,
     # point (c0 + c1)/2 + a_mid·w; the pieces lie within slack + lean·√(r² + H²) of the hull.
     grown = 0.5 * np.linalg.norm(ch1 - ch0, axis=1) + slack + lean * np.hypot(r, h)
     ball_bound = grown[ball_chain] + np.hypot(r[ball_chain], 0.5 * tall)
-    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, rigid, span_move[last],
+    return (first, count, span_move[first], ch0, ch1, chain_axis, r, h, slack, lean, rise, rigid, span_move[last],
             ball_chain, ball_centre, ball_bound)
 
 
-def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False):
+def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False, rise=None):
     """(K,) bool: the segments a … b surely miss the hulls (c0, c1, axis, radius, height) grown by
     slack: seen along the axis the segment stays farther than radius + slack from the move, or
-    it lies wholly below or above the hull's axial range ± slack. All (K, 3) or (K,), mm. Both
-    by more than _CLEAR, so that rounding never drops a pair the closed form would count.
+    it lies wholly below or above the hull's axial range ± slack (± rise (K,) instead, if given:
+    a bound, no larger than slack, of how far the volume reaches beyond that range along the
+    axis). All (K, 3) or (K,), mm. Both by more than _CLEAR, so that rounding never drops a
+    pair the closed form would count.
 
     lean (K,): the volume is made of pieces whose bottom centres lie within slack of the
     hull's path and whose axes w_p differ from its axis w by at most lean (|w_p − w|). A point
@@ -405,7 +429,8 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False):
     """
     qa, qb, d = a - c0, b - c0, c1 - c0
     aa, ab, da = (row_dot(v, axis) for v in (qa, qb, d))
-    axial = across = np.broadcast_to(slack + _CLEAR, aa.shape)
+    across = np.broadcast_to(slack + _CLEAR, aa.shape)
+    axial = across if rise is None else rise + _CLEAR
     if lean is not None:
         axial = axial + lean * radius
         level = 1.0 - 0.5 * lean * lean
@@ -691,8 +716,7 @@ class _Solved:
             return
         order = np.argsort(seg, kind="stable")
         seg, span = seg[order], span[order]
-        head = np.flatnonzero(np.r_[True, seg[1:] != seg[:-1]])
-        count = np.diff(np.r_[head, seg.size])
+        head, count = _run_starts(seg)
         filled = (self.span[:, seg[head]] >= 0).sum(axis=0)
         place = np.arange(seg.size) - np.repeat(head, count) + np.repeat(filled, count)
         ok = place < _SOLVED
@@ -814,20 +838,14 @@ def _sphere_chains(centre, radius, before, pieces, among=None):
     live = np.flatnonzero(radius > -np.inf) if among is None else among[radius[among] > -np.inf]
     if live.size == 0:
         return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
-    from scipy.spatial import cKDTree
-
-    reach = float(radius[live].max() + pieces.ball_bound.max())
     chains = pieces.chain_first.size
     found = []
-    # The spheres in blocks: the (sphere, ball) pairs within reach grow with the earlier moves
+    # The spheres in blocks: the (sphere, ball) pairs that meet grow with the earlier moves
     # stacked near the lines (every z level above a deep one), the block's memory with them.
     for begin in range(0, live.size, _SPHERE_BLOCK):
         mine = live[begin:begin + _SPHERE_BLOCK]
-        near = cKDTree(centre[mine]).sparse_distance_matrix(pieces.tree, reach, output_type="ndarray")
-        i, ball = near["i"].astype(np.intp), near["j"].astype(np.intp)
-        keep = near["v"] <= radius[mine][i] + pieces.ball_bound[ball]
-        del near
-        pair = _distinct(i[keep] * chains + pieces.ball_chain[ball[keep]], mine.size * chains)
+        i, ball = pieces.tree.meeting(centre[mine], radius[mine], int(before[mine].max()))
+        pair = _distinct(i * chains + pieces.ball_chain[ball], mine.size * chains)
         i, k = mine[pair // chains], pair % chains
         keep = pieces.chain_move[k] <= before[i]
         found.append((i[keep], k[keep]))
@@ -873,7 +891,7 @@ def _near_groups(g, k, capsules, pieces):
     is not surely apart from the chain."""
     a, b, thick = capsules
     keep = ~_apart(_rows(a, g), _rows(b, g), *pieces.hulls("chain", k), pieces.chain_slack[k] + thick[g],
-                   pieces.chain_lean[k])
+                   pieces.chain_lean[k], rise=pieces.chain_rise[k] + thick[g])
     return g[keep], k[keep]
 
 
@@ -967,7 +985,7 @@ def _chains_near(seg, chain, envelope, origins, directions, pieces):
     seg, chain = seg[open_], chain[open_]
     a, b = _ends(seg, envelope, origins, directions)
     keep = ~_apart(a, b, *pieces.hulls("chain", chain), pieces.chain_slack[chain], pieces.chain_lean[chain],
-                   touch=True)
+                   touch=True, rise=pieces.chain_rise[chain])
     return seg[keep], chain[keep]
 
 
@@ -1037,13 +1055,17 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     inside = _deep_inside(_rows(a, at), _rows(b, at), c0, c1, axis, radius, h, slack, pieces.corners("span", span))
     out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
-    seg, piece = _span_pieces(seg[~inside], span[~inside], pieces)
+    span = span[~inside]
+    seg, piece = _span_pieces(seg[~inside], span, pieces)
+    # A span of one piece that does not turn is that piece's own hull, tested just now with the
+    # same ends (only envelopes closed by `inside` changed since): not tested again.
+    tested = np.repeat((pieces.span_count[span] == 1) & (pieces.span_turn[span] == 0.0), pieces.span_count[span])
     # First, per segment, the pair whose piece reaches lowest along its line and the one
     # reaching highest (per run of the segment's pairs, without sorting); they usually leave
     # few pairs near. Those are ranked once by how low and how high their pieces reach; each
     # later round solves the `take` first of each ranking among the pairs still open.
     lower, upper = _extent(_rows(origins, seg), _rows(directions, seg), *pieces.hulls("piece", piece))
-    open_ = _near_pieces(seg, piece, envelope, origins, directions, pieces)
+    open_ = _near_pieces(seg, piece, envelope, origins, directions, pieces, tested)
     chosen = np.flatnonzero(open_ & (_smallest(seg, np.where(open_, lower, np.inf), 1)
                                      | _smallest(seg, np.where(open_, -upper, np.inf), 1)))
     out.append(_solved(seg[chosen], piece[chosen], envelope, origins, directions, pieces))
@@ -1070,8 +1092,7 @@ class _Ranking:
     def __init__(self, owner, key):
         self.order = np.lexsort((key, owner))
         ranked = owner[self.order]
-        self.start = np.flatnonzero(np.r_[True, ranked[1:] != ranked[:-1]])
-        self.count = np.diff(np.r_[self.start, owner.size])
+        self.start, self.count = _run_starts(ranked)
 
     def first(self, open_, take):
         """(K,) bool: of each owner's rows with open_ (K,) True, the `take` first in the order."""
@@ -1083,11 +1104,12 @@ class _Ranking:
         return chosen
 
 
-def _near_pieces(seg, piece, envelope, origins, directions, pieces):
+def _near_pieces(seg, piece, envelope, origins, directions, pieces, tested=None):
     """(K,) bool: the pairs (seg, piece) (K,) whose segment's envelope is open and from which the
-    piece may remove more than LENGTH_EPS."""
+    piece may remove more than LENGTH_EPS; tested (K,) bool: pairs known to pass that test for
+    the present envelopes where open (not tested again)."""
     near = envelope[0, seg] < envelope[1, seg]
-    at = np.flatnonzero(near)
+    at = np.flatnonzero(near if tested is None else near & ~tested)
     seg, piece = seg[at], piece[at]
     a, b = _ends(seg, envelope, origins, directions)
     near[at] = ~_apart(a, b, *pieces.hulls("piece", piece), 0.0, touch=True)
@@ -1171,12 +1193,11 @@ def _smallest(owner, key, take):
     chosen = np.zeros(owner.size, dtype=bool)
     if owner.size == 0:
         return chosen
-    start = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
-    count = np.diff(np.r_[start, owner.size])
+    start, count = _run_starts(owner)
     left = np.array(key, dtype=float)  # a copy: chosen rows become NaN, which fmin passes over
     for _ in range(take):
         hit = np.flatnonzero(left == np.repeat(np.fmin.reduceat(left, start), count))
-        first = hit[np.r_[True, owner[hit[1:]] != owner[hit[:-1]]]] if hit.size else hit
+        first = hit[_run_starts(owner[hit])[0]]
         chosen[first] = True
         left[first] = np.nan
     return chosen
@@ -1209,12 +1230,11 @@ def _covered_from(start, seg, enter, leave):
     itself where none covers it): a sweep of each segment's intervals in order of enter."""
     order = np.lexsort((enter, seg))
     seg, enter, leave = seg[order], enter[order], leave[order]
-    head = np.flatnonzero(np.r_[True, seg[1:] != seg[:-1]])
+    head, count = _run_starts(seg)
     owners = seg[head]
     begin = start[owners]
     if head.size == seg.size:  # one interval per segment
         return owners, np.where(enter <= begin, np.maximum(begin, leave), begin)
-    count = np.diff(np.r_[head, seg.size])
     owner = np.repeat(np.arange(owners.size), count)
     rank = np.arange(seg.size) - np.repeat(head, count)
     # Row j: the j-th interval of each owner (a column); reach[j]: how far the intervals before

@@ -1,0 +1,80 @@
+"""The earlier moves' bounding balls in parts, for the query of which balls a sphere may meet.
+
+The in-process search (:mod:`.inprocess`) bounds each chain of earlier moves by balls and asks,
+for spheres around groups of edge-line segments, which balls they meet: centre distance at most
+the sum of the two radii. A KD tree answers "all centres within one distance"; over all balls
+of a program that distance has to be the largest sphere radius plus the largest ball radius, and
+a program's few long straight moves (a pocket's sides, a slot's leg) have balls three times the
+radius of the others: nine tenths of the pairs the tree gave were then dropped by the exact test
+(docs/BENCHMARKS.md, "The in-process search: balls in parts").
+
+Here the balls are put in parts, each with its own KD tree: by radius (classes 1.5 times apart),
+then by program order (runs of BLOCK balls). A query asks each part only within the largest
+sphere radius plus that part's largest ball radius, and skips the parts whose balls all belong to
+moves after the last one the spheres may meet. The pairs kept are those that meet exactly, the
+same set whatever the parts: every pair that meets lies within its part's distance. Lengths in mm.
+"""
+
+import numpy as np
+
+#: Balls per part at most (of one radius class, consecutive in program order).
+BLOCK = 512
+#: Ratio of the largest ball radius of a class to the smallest radius of all balls, class by class.
+CLASS_RATIO = 1.5
+#: Relative margin on a part's query distance, so that the KD tree's own rounding of the distance
+#: can never leave out a pair the exact test keeps.
+_MARGIN = 1e-9
+
+
+class BallParts:
+    """Balls (centre (B, 3), bound (B,) their radii, move (B,) the first program row of the moves
+    they bound, non-decreasing) in parts with a KD tree each (scipy.spatial.cKDTree)."""
+
+    def __init__(self, centre, bound, move):
+        from scipy.spatial import cKDTree  # here: scipy.spatial takes a while to import
+
+        centre = np.asarray(centre, dtype=float).reshape(-1, 3)
+        bound = np.asarray(bound, dtype=float).reshape(-1)
+        move = np.asarray(move).reshape(-1)
+        if bound.shape[0] != centre.shape[0] or move.shape[0] != centre.shape[0]:
+            raise ValueError("centre, bound and move must have one row per ball")
+        if (np.diff(move) < 0).any():
+            raise ValueError("the balls must come in program order (move non-decreasing)")
+        self.bound = bound
+        #: Per part: the balls (ascending indices), their largest radius, the first move, the tree.
+        self.parts = []
+        if bound.size == 0:
+            return
+        smallest = float(bound.min())
+        grade = np.floor(np.log(bound / smallest) / np.log(CLASS_RATIO)) if smallest > 0.0 else np.zeros(bound.size)
+        for value in np.unique(grade):
+            members = np.flatnonzero(grade == value)
+            for begin in range(0, members.size, BLOCK):
+                balls = members[begin:begin + BLOCK]
+                self.parts.append((balls, float(bound[balls].max()), move[balls[0]], cKDTree(centre[balls])))
+
+    def __len__(self):
+        return self.bound.size
+
+    def meeting(self, centre, radius, before):
+        """The pairs (sphere i (K,), ball (K,)) whose distance of centres is at most radius[i] plus
+        the ball's bound, among the balls of the parts whose first move is at most max(before):
+        spheres centre (n, 3), radius (n,), all finite; before: the last program row any of them may
+        meet. Order unspecified."""
+        found_i, found_ball = [np.zeros(0, dtype=np.intp)], [np.zeros(0, dtype=np.intp)]
+        if radius.size == 0 or not self.parts:
+            return found_i[0], found_ball[0]
+        from scipy.spatial import cKDTree
+
+        spheres = cKDTree(centre)
+        largest = float(radius.max())
+        for balls, bound, first, tree in self.parts:
+            if first > before:
+                continue
+            reach = (largest + bound) * (1.0 + _MARGIN)
+            near = spheres.sparse_distance_matrix(tree, reach, output_type="ndarray")
+            i, ball = near["i"].astype(np.intp), balls[near["j"]]
+            keep = near["v"] <= radius[i] + self.bound[ball]
+            found_i.append(i[keep])
+            found_ball.append(ball[keep])
+        return np.concatenate(found_i), np.concatenate(found_ball)
