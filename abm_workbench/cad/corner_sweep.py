@@ -1,0 +1,185 @@
+"""Exact OpenCASCADE solids for the volume a bull-nose or ball-end mill sweeps along a straight move.
+
+The tool of radius R, corner radius r (0 < r ≤ R) and cutting height H with its tip's centre at c and its
+unit axis w is the solid T of the points c + a·w + b (b ⊥ w) with 0 ≤ a ≤ H and |b| ≤ ρ(a), ρ(a) = R − r +
+√(r² − (r − a)²) below a = r and R above (profile_edges.tool_solid builds it). Moving c straight from c0
+to c1 = c0 + m with w fixed, it sweeps S = T ⊕ [0, 1]·m. docs/VALIDATION.md ("The in-process stock of a
+tool with a corner") proves the two constructions used here:
+
+* **Across or along the axis** (m·w = 0, or m ∥ w; any r): S = T(c0) ∪ T(c1) ∪ (Σ ⊕ [0, 1]·m), Σ a plane
+  section of T that every line parallel to m meeting T crosses: for a move across the axis, the axial
+  profile (the section by the plane through the axis perpendicular to m: two corner arcs, two sides, the
+  end edge and the top), extruded into circular cylinders and planes; for a move along it, the widest disc.
+* **Ball-end, any direction** (r = R ≤ H): T = K ∩ P with K the points within r of the axis segment
+  from height r to H + r and P the column of radius R from height −r to H; then S = (K ⊕ [0, 1]·m) ∩
+  (P ⊕ [0, 1]·m). The first is the parallelogram (axis segment ⊕ move) grown by r: a slab, four
+  cylinders, four spheres; the second the flat-end hull (inprocess_boolean.hull_parts).
+
+A bull-nose mill (r < R) on a move neither across nor along its axis (a ramp, a tilted or turning axis)
+has no such construction here: the hull's side through its torus's silhouette is the offset of an
+elliptic cylinder, which OpenCASCADE's offset algorithm only approximates (B-spline faces, 5e-5 mm seen);
+:func:`sweep_parts` refuses it (:class:`NotExactError`) rather than give an approximate reference.
+
+A swept volume is returned as a SweptParts: the volume is (the union of `union`) ∩ (the union of
+`column`, when given), so that a line or an arc is sectioned with each part alone, never a boolean of
+solids. Lengths in mm.
+"""
+
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+
+from ..engine import Tool
+from .freecad_env import FreeCAD, Part
+from .inprocess_boolean import FLAT_EPS, hull_parts
+from .profile_edges import segment_shape, tool_solid
+
+V = FreeCAD.Vector
+
+
+class NotExactError(ValueError):
+    """The swept volume of a move has no exact construction here (a bull-nose mill's ramp)."""
+
+
+@dataclass(frozen=True)
+class SweptParts:
+    """A swept volume as solids (Part.Shape): the union of `union`, cut to the union of `column` when
+    that is not None. kind: "still", "across", "along" or "ball" (the construction used)."""
+
+    union: list
+    column: Optional[list]
+    kind: str
+
+
+def move_kind(c0, c1, axis, radius, corner, height):
+    """"still", "across", "along" or "ball": the construction :func:`sweep_parts` uses for the move c0 → c1
+    ((3,) mm) of a tool with unit axis `axis`, or None when there is none (a bull-nose ramp, or a ball-end
+    mill shorter than its radius on a ramp). A component of the move below FLAT_EPS mm counts as zero."""
+    d = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
+    w = np.asarray(axis, dtype=float)
+    along = float(d @ w)
+    across = float(np.linalg.norm(d - along * w))
+    if abs(along) <= FLAT_EPS and across <= FLAT_EPS:
+        return "still"
+    if abs(along) <= FLAT_EPS:
+        return "across"
+    if across <= FLAT_EPS:
+        return "along"
+    if corner >= radius and height >= corner:
+        return "ball"
+    return None
+
+
+def not_exact(c0, c1, axis, radius, corner, height):
+    """Why the move c0 → c1 ((3,) mm) of the tool (unit axis, radius, corner radius, cutting height, mm) has
+    no exact swept solid here, in words naming the move (for one move_kind gives None)."""
+    m = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
+    angle = np.degrees(np.arccos(np.clip(float(m @ np.asarray(axis, dtype=float)) / np.linalg.norm(m), -1.0, 1.0)))
+    tool = "a bull-nose mill" if corner < radius else "a ball-end mill shorter than its radius"
+    return (f"the move from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis: the volume "
+            f"{tool} (R {radius:g} mm, corner radius {corner:g} mm, flute length {height:g} mm) sweeps along a "
+            "move neither across nor along its axis has no exact OpenCASCADE solid here")
+
+
+def frame_of(axis):
+    """(3, 3) a right-handed frame whose third column is the unit `axis` (3,)."""
+    w = np.asarray(axis, dtype=float)
+    w = w / np.linalg.norm(w)
+    helper = np.array([1.0, 0.0, 0.0]) if abs(w[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    u = np.cross(helper, w)
+    u /= np.linalg.norm(u)
+    return np.column_stack([u, np.cross(w, u), w])
+
+
+def placed_tool(c, axis, radius, corner, height):
+    """Part.Solid of the tool (radius, corner radius, cutting height, mm) with its tip's centre at c (3,)
+    and unit axis `axis` (3,): profile_edges.tool_solid."""
+    tool = Tool(2.0 * float(radius), 1, float(height), corner_radius=float(corner))
+    return tool_solid(tool, np.asarray(c, dtype=float), frame_of(axis))
+
+
+def axial_profile(c, axis, across, radius, corner, height):
+    """Part.Face: the tool's section by the plane through its axis (tip centre c, unit `axis`) containing
+    the unit direction `across` (⊥ axis): the end edge, the corner arcs (true arcs), the sides and the top
+    (mm). A ball has no end edge; a tool shorter than its corner radius ends within the arcs."""
+    c, w, e = (np.asarray(v, dtype=float) for v in (c, axis, across))
+    rim = radius - corner
+    psi_top = 0.5 * np.pi if height >= corner else float(np.arccos(1.0 - height / corner))
+    top_radius = rim + corner * np.sin(psi_top)
+
+    def arc(side):
+        """The corner arc on the `side` (±1) of the axis, from the end edge up (ψ 0 to psi_top)."""
+        centre = c + side * rim * e + corner * w
+        points = [centre + corner * (np.sin(psi) * side * e - np.cos(psi) * w) for psi in (0.0, 0.5 * psi_top, psi_top)]
+        return Part.Arc(*(V(*x) for x in points)).toShape()
+
+    top_right, top_left = c + top_radius * e + height * w, c - top_radius * e + height * w
+    edges = [segment_shape(c - rim * e, c + rim * e)] if rim > FLAT_EPS else []
+    edges.append(arc(1.0))
+    if height > corner:
+        edges.append(segment_shape(c + radius * e + corner * w, top_right))
+    edges.append(segment_shape(top_right, top_left))
+    if height > corner:
+        edges.append(segment_shape(top_left, c - radius * e + corner * w))
+    edges.append(arc(-1.0).reversed())
+    return Part.Face(Part.Wire(edges))
+
+
+def widest_disc(c, axis, radius, corner, height):
+    """Part.Face: the tool's widest section across its axis (tip centre c, unit `axis`): radius R at height
+    r, or, for a tool shorter than its corner radius, its top (mm)."""
+    c, w = (np.asarray(v, dtype=float) for v in (c, axis))
+    if height >= corner:
+        level, size = corner, radius
+    else:
+        level = height
+        size = radius - corner + np.sqrt(corner * corner - (corner - height) ** 2)
+    return Part.Face(Part.Wire(Part.makeCircle(float(size), V(*(c + level * w)), V(*w))))
+
+
+def _rounded_parallelogram(corner0, side, move, r):
+    """[Part.Shape]: the parallelogram corner0 + [0, 1]·side + [0, 1]·move ((3,) each, not parallel) grown
+    by r (mm): the slab of its points within r along its normal, the cylinders of radius r about its four
+    edges and the balls of radius r about its four corners; their union is exactly the grown set."""
+    p, a, b = (np.asarray(v, dtype=float) for v in (corner0, side, move))
+    normal = np.cross(a, b)
+    normal /= np.linalg.norm(normal)
+    corners = [p, p + a, p + a + b, p + b]
+    face = Part.Face(Part.makePolygon([V(*x) for x in corners + corners[:1]]))
+    face.translate(V(*(-r * normal)))
+    parts = [face.extrude(V(*(2.0 * r * normal)))]
+    for start, end in zip(corners, corners[1:] + corners[:1]):
+        edge = end - start
+        parts.append(Part.makeCylinder(r, float(np.linalg.norm(edge)), V(*start), V(*edge)))
+    parts += [Part.makeSphere(r, V(*x)) for x in corners]
+    return parts
+
+
+def sweep_parts(c0, c1, axis, radius, corner, height):
+    """SweptParts of the volume the tool (radius R, corner radius r with 0 < r ≤ R, cutting height H, mm;
+    tip centre c0 (3,), unit axis (3,)) sweeps moving straight to c1 with its axis fixed (module
+    docstring). NotExactError naming the move for a bull-nose mill's ramp."""
+    c0, c1, w = (np.asarray(v, dtype=float) for v in (c0, c1, axis))
+    kind = move_kind(c0, c1, w, radius, corner, height)
+    m = c1 - c0
+    if kind is None:
+        raise NotExactError(not_exact(c0, c1, w, radius, corner, height))
+    ends = [placed_tool(c0, w, radius, corner, height)]
+    if kind == "still":
+        return SweptParts(ends, None, kind)
+    ends.append(placed_tool(c1, w, radius, corner, height))
+    if kind == "across":
+        across = np.cross(w, m)
+        across /= np.linalg.norm(across)
+        return SweptParts(ends + [axial_profile(c0, w, across, radius, corner, height).extrude(V(*m))], None, kind)
+    if kind == "along":
+        return SweptParts(ends + [widest_disc(c0, w, radius, corner, height).extrude(V(*m))], None, kind)
+    reach = height + corner
+    grown = _rounded_parallelogram(c0 + corner * w, height * w, m, corner)
+    column = hull_parts(c0 - corner * w, c1 - corner * w, w, radius, reach)
+    return SweptParts(grown, column, kind)
+
+
+def _point(x):
+    return "(" + ", ".join(f"{v:.6g}" for v in x) + ")"
