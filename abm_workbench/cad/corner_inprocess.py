@@ -28,9 +28,9 @@ def check_sweepable(pieces, upto):
     for i in np.flatnonzero(np.asarray(pieces.move) < int(upto)):
         if pieces.corner[i] > 0.0 and move_kind(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i],
                                                 pieces.corner[i], pieces.height[i]) is None:
-            raise NotExactError(f"the in-process stock is not checked for program row {int(pieces.move[i])}: "
-                                f"{not_exact(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.corner[i], pieces.height[i])}; "
-                                "validate it against the stock as given (--stock-model initial)")
+            raise NotExactError(f"the in-process stock has no exact OpenCASCADE reference at program row "
+                                f"{int(pieces.move[i])}: " + not_exact(pieces.c0[i], pieces.c1[i], pieces.axis[i],
+                                                                     pieces.radius[i], pieces.corner[i], pieces.height[i]))
 
 
 def _intersected(first, second):
