@@ -29,7 +29,7 @@ def check_sweepable(pieces, upto):
         if pieces.corner[i] > 0.0 and move_kind(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i],
                                                 pieces.corner[i], pieces.height[i]) is None:
             raise NotExactError(f"the in-process stock has no exact OpenCASCADE reference at program row "
-                                f"{int(pieces.move[i])}: " + not_exact(pieces.c0[i], pieces.c1[i], pieces.axis[i],
+                                f"{int(pieces.move[i])}, the move ending there: " + not_exact(pieces.c0[i], pieces.c1[i], pieces.axis[i],
                                                                      pieces.radius[i], pieces.corner[i], pieces.height[i]))
 
 

@@ -72,12 +72,12 @@ def move_kind(c0, c1, axis, radius, corner, height):
 
 
 def not_exact(c0, c1, axis, radius, corner, height):
-    """Why the move c0 → c1 ((3,) mm) of the tool (unit axis, radius, corner radius, cutting height, mm) has
+    """Why the step (a move, or a sub-step of a move whose axis turns) c0 → c1 ((3,) mm) of the tool (unit axis, radius, corner radius, cutting height, mm) has
     no exact swept solid here, in words naming the move (for one move_kind gives None)."""
     m = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
     angle = np.degrees(np.arccos(np.clip(float(m @ np.asarray(axis, dtype=float)) / np.linalg.norm(m), -1.0, 1.0)))
     tool = "a bull-nose mill" if corner < radius else "a ball-end mill shorter than its radius"
-    return (f"the move from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis: the volume "
+    return (f"the step from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis: the volume "
             f"{tool} (R {radius:g} mm, corner radius {corner:g} mm, flute length {height:g} mm) sweeps along a "
             "move neither across nor along its axis has no exact OpenCASCADE solid here")
 

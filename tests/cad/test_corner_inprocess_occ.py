@@ -8,6 +8,8 @@ edges: on the staircase and the terraced stock, vertical, tilted and turning axe
 AGREE; a planted error in the earlier moves' swept solids shows; a bull-nose mill's ramp is refused in words.
 """
 
+import csv
+
 import numpy as np
 import pytest
 
@@ -224,7 +226,8 @@ def test_a_bull_nose_ramp_is_refused_in_words():
     moves, rows = program("staircase", "turning", 0.3 * RADIUS)
     tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=0.3 * RADIUS)
     path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
-    with pytest.raises(NotExactError, match=r"program row 1: the move from .* to the tool's axis: the volume a "
+    with pytest.raises(NotExactError, match=r"program row 1, the move ending there: the step from .* to the tool's "
+                                            r"axis: the volume a "
                                             r"bull-nose mill \(R 5 mm, corner radius 1.5 mm, flute length 12 mm\)"):
         validate(staircase_solid(stock), stock, tool, path, SETTINGS, sweep=(swept_pieces(moves, 0.01), rows))
 
@@ -277,9 +280,8 @@ def test_cli_validate_a_corner_tool_in_process(tmp_path, monkeypatch, capsys, co
     assert status == 0, err
     page = (tmp_path / "report" / "index.html").read_text(encoding="utf-8")
     assert "in-process: the stock minus the volumes swept" in page and "<h2>In-process stock</h2>" in page
-    rows = (tmp_path / "report" / "comparison.csv").read_text().splitlines()
-    names = rows[0].split(",")
-    table = np.array([[float(v) if v not in ("", "nan") else np.nan for v in line.split(",")] for line in rows[1:]
-                      if line])
-    initial, ref, abm = (table[:, names.index(name)] for name in ("l_initial", "l_ref", "l_abm"))
+    with open(tmp_path / "report" / "comparison.csv", newline="") as file:
+        table = list(csv.DictReader(file))
+    initial, ref, abm = (np.array([float(row[name]) if row[name] not in ("", "nan") else np.nan for row in table])
+                         for name in ("l_initial", "l_ref", "l_abm"))
     assert np.nanmax(np.abs(abm - ref)) <= AGREE and np.nanmax(initial - ref) > 0.5
