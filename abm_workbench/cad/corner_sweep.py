@@ -3,8 +3,8 @@
 The tool of radius R, corner radius r (0 < r ≤ R) and cutting height H with its tip's centre at c and its
 unit axis w is the solid T of the points c + a·w + b (b ⊥ w) with 0 ≤ a ≤ H and |b| ≤ ρ(a), ρ(a) = R − r +
 √(r² − (r − a)²) below a = r and R above (profile_edges.tool_solid builds it). Moving c straight from c0
-to c1 = c0 + m with w fixed, it sweeps S = T ⊕ [0, 1]·m. docs/VALIDATION.md ("The in-process stock of a
-tool with a corner") proves the two constructions used here:
+to c1 = c0 + m with w fixed, it sweeps S = T ⊕ [0, 1]·m. docs/VALIDATION.md ("Exact solids for a corner
+tool's swept volume") proves the constructions used here:
 
 * **Across or along the axis** (m·w = 0, or m ∥ w; any r): S = T(c0) ∪ T(c1) ∪ (Σ ⊕ [0, 1]·m), Σ a plane
   section of T that every line parallel to m meeting T crosses: for a move across the axis, the axial
@@ -14,11 +14,13 @@ tool with a corner") proves the two constructions used here:
   from height r to H + r and P the column of radius R from height −r to H; then S = (K ⊕ [0, 1]·m) ∩
   (P ⊕ [0, 1]·m). The first is the parallelogram (axis segment ⊕ move) grown by r: a slab, four
   cylinders, four spheres; the second the flat-end hull (inprocess_boolean.hull_parts).
+* **Bull-nose, any other direction** (r < R ≤ H): T is its corner part T₁ (heights 0 to r) and the
+  cylinder above, whose sweep is the flat-end hull; T₁ sweeps T₁(c0) ∪ T₁(c1) ∪ (Σ ⊕ [0, 1]·m) with Σ the
+  disc of radius R at height r and the crescent of the torus between it and the torus's silhouette seen
+  along m (:func:`silhouette_crescent`: the silhouette is an exact offset curve).
 
-A bull-nose mill (r < R) on a move neither across nor along its axis (a ramp, a tilted or turning axis)
-has no such construction here: the hull's side through its torus's silhouette is the offset of an
-elliptic cylinder, which OpenCASCADE's offset algorithm only approximates (B-spline faces, 5e-5 mm seen);
-:func:`sweep_parts` refuses it (:class:`NotExactError`) rather than give an approximate reference.
+A bull-nose move within RAMP_SLOPE of the plane across the axis, and a move neither across nor along the
+axis of a tool shorter than its corner radius, are refused (:class:`NotExactError`).
 
 A swept volume is returned as a SweptParts: the volume is (the union of `union`) ∩ (the union of
 `column`, when given), so that a line or an arc is sectioned with each part alone, never a boolean of
@@ -38,6 +40,15 @@ from .profile_edges import segment_shape, tool_solid
 V = FreeCAD.Vector
 
 
+#: A bull-nose mill's move must rise or fall at least this much per mm (the sine of its angle to the plane
+#: across the axis) for the "ramp" construction: the extrusion of a circle along a direction close to its
+#: plane is a nearly degenerate surface (its normal's length is that sine where the circle runs along the
+#: move), and OpenCASCADE's point classifier then misjudges points beside the solid (measured: 33 of 3000 points
+#: about a disc of radius 5 mm extruded along a move of slope 0.0083; 1 of 400 about a bull-nose ramp of slope
+#: 0.062; none about discs at 0.05 to 0.16 nor about bull-nose ramps at 0.1 to 1, docs/VALIDATION.md).
+RAMP_SLOPE = 0.1
+
+
 class NotExactError(ValueError):
     """The swept volume of a move has no exact construction here (a bull-nose mill's ramp)."""
 
@@ -53,9 +64,10 @@ class SweptParts:
 
 
 def move_kind(c0, c1, axis, radius, corner, height):
-    """"still", "across", "along" or "ball": the construction :func:`sweep_parts` uses for the move c0 → c1
-    ((3,) mm) of a tool with unit axis `axis`, or None when there is none (a bull-nose ramp, or a ball-end
-    mill shorter than its radius on a ramp). A component of the move below FLAT_EPS mm counts as zero."""
+    """"still", "across", "along", "ball" or "ramp": the construction :func:`sweep_parts` uses for the move
+    c0 → c1 ((3,) mm) of a tool with unit axis `axis`, or None when there is none (a tool whose flute length
+    is shorter than its corner radius, on a move neither across nor along its axis). A component of the move
+    below FLAT_EPS mm counts as zero."""
     d = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
     w = np.asarray(axis, dtype=float)
     along = float(d @ w)
@@ -66,9 +78,11 @@ def move_kind(c0, c1, axis, radius, corner, height):
         return "across"
     if across <= FLAT_EPS:
         return "along"
-    if corner >= radius and height >= corner:
+    if height < corner:
+        return None
+    if corner >= radius:
         return "ball"
-    return None
+    return "ramp" if abs(along) >= RAMP_SLOPE * float(np.linalg.norm(d)) else None
 
 
 def not_exact(c0, c1, axis, radius, corner, height):
@@ -76,10 +90,15 @@ def not_exact(c0, c1, axis, radius, corner, height):
     no exact swept solid here, in words naming the move (for one move_kind gives None)."""
     m = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
     angle = np.degrees(np.arccos(np.clip(float(m @ np.asarray(axis, dtype=float)) / np.linalg.norm(m), -1.0, 1.0)))
-    tool = "a bull-nose mill" if corner < radius else "a ball-end mill shorter than its radius"
-    return (f"the step from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis: the volume "
-            f"{tool} (R {radius:g} mm, corner radius {corner:g} mm, flute length {height:g} mm) sweeps along a "
-            "move neither across nor along its axis has no exact OpenCASCADE solid here")
+    if height < corner:
+        return (f"the step from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis: the volume "
+                f"a tool shorter than its corner radius (R {radius:g} mm, corner radius {corner:g} mm, flute length "
+                f"{height:g} mm) sweeps along a move neither across nor along its axis has no exact OpenCASCADE "
+                "solid here")
+    return (f"the step from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis, within "
+            f"{np.degrees(np.arcsin(RAMP_SLOPE)):.3g}° of the plane across it but not in it: OpenCASCADE's solid of "
+            f"the volume a bull-nose mill (R {radius:g} mm, corner radius {corner:g} mm) sweeps along it has nearly "
+            "degenerate faces its point classifier misjudges (cad.corner_sweep.RAMP_SLOPE)")
 
 
 def frame_of(axis):
@@ -175,10 +194,47 @@ def sweep_parts(c0, c1, axis, radius, corner, height):
         return SweptParts(ends + [axial_profile(c0, w, across, radius, corner, height).extrude(V(*m))], None, kind)
     if kind == "along":
         return SweptParts(ends + [widest_disc(c0, w, radius, corner, height).extrude(V(*m))], None, kind)
-    reach = height + corner
-    grown = _rounded_parallelogram(c0 + corner * w, height * w, m, corner)
-    column = hull_parts(c0 - corner * w, c1 - corner * w, w, radius, reach)
-    return SweptParts(grown, column, kind)
+    if kind == "ball":
+        grown = _rounded_parallelogram(c0 + corner * w, height * w, m, corner)
+        return SweptParts(grown, hull_parts(c0 - corner * w, c1 - corner * w, w, radius, height + corner), kind)
+    low = [placed_tool(c, w, radius, corner, corner) for c in (c0, c1)]
+    upper = hull_parts(c0 + corner * w, c1 + corner * w, w, radius, height - corner) if height > corner else []
+    disc = Part.Face(Part.Wire(Part.makeCircle(float(radius), V(*(c0 + corner * w)), V(*w)))).extrude(V(*m))
+    return SweptParts(low + upper + [disc, silhouette_crescent(c0, w, m, radius, corner).extrude(V(*m))], None, kind)
+
+
+def silhouette_crescent(c, axis, move, radius, corner):
+    """Part.Face: the part of a bull-nose corner's torus (tip centre c, unit axis w, radius R, corner radius
+    r < R, mm) between its silhouette seen along `move` m (neither across nor along w) and its widest circle
+    (radius R at height r), on the half of the tool where the radial direction e has e·m of the sign of m·w.
+    The silhouette is where the torus's normal n is ⊥ m: n = sin ψ·e − cos ψ·w with tan ψ = (m·w)/(e·m),
+    the point C(θ) + r·n, C the circle of the tube's centres (radius R − r at height r). n ⊥ m and ⊥ C'
+    make it the offset curve of C by r in the direction C' × m (an exact Geom_OffsetCurve). The face is the
+    corner's quarter torus over that half, split along the curve (OpenCASCADE computes the curve's
+    parameter curve on the torus within its 1e-7 mm tolerance; the 3D curve and the surface are exact)."""
+    c, w, m = (np.asarray(v, dtype=float) for v in (c, axis, move))
+    along = float(m @ w)
+    toward = np.sign(along) * (m - along * w)
+    toward /= np.linalg.norm(toward)
+    rim = radius - corner
+    circle = Part.Circle(V(*(c + corner * w)), V(*w), float(rim))
+    circle.XAxis = V(*toward)
+    unit = m / np.linalg.norm(m)
+    curves = [Part.OffsetCurve(circle, sign * corner, V(*unit)) for sign in (1.0, -1.0)]
+    # the branch through the lower, outer quarter of the tube: below the tube's centre at θ = 0
+    curve = min(curves, key=lambda curve: float(np.array(tuple(curve.value(0.0))) @ w))
+    edge = curve.toShape(-0.5 * np.pi, 0.5 * np.pi)
+    start = c + rim * toward
+    middle = c + rim * toward + corner * w + corner * np.sqrt(0.5) * (toward - w)
+    arc = Part.Arc(V(*start), V(*middle), V(*(c + radius * toward + corner * w))).toShape()
+    arc.rotate(V(*c), V(*w), -90.0)
+    quarter = arc.revolve(V(*c), V(*w), 180.0).Faces[0]
+    pieces = quarter.generalFuse([edge])[0].Faces
+    crescent = [face for face in pieces if len(face.Edges) == 2]
+    if len(pieces) != 2 or len(crescent) != 1 or not crescent[0].isValid():
+        raise NotExactError(f"OpenCASCADE did not split the corner's torus along its silhouette for the move "
+                            f"{_point(m)} mm (axis {_point(w)})")
+    return crescent[0]
 
 
 def _point(x):

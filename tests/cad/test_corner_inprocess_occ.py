@@ -15,10 +15,10 @@ import pytest
 
 from abm_workbench import cli
 from abm_workbench.cad import corner_sweep
+from abm_workbench.cad.boolean import _inside_intervals
 from abm_workbench.cad.corner_inprocess import corner_lengths_in_process
 from abm_workbench.cad.corner_sweep import NotExactError, SweptParts, sweep_parts
-from abm_workbench.cad.freecad_env import FreeCAD
-from abm_workbench.cad.inprocess_boolean import ProgramSweep
+from abm_workbench.cad.inprocess_boolean import BOX_SLACK, ProgramSweep
 from abm_workbench.cad.solids import staircase_solid
 from abm_workbench.engine import CutSettings, Tool, Toolpath
 from abm_workbench.engine.inprocess import ProgramMoves, swept_pieces
@@ -54,10 +54,32 @@ def sampled_sweep(points, c0, m, w, radius, corner, height, steps=2001):
     return best
 
 
-def occ_inside(swept: SweptParts, point):
-    v = FreeCAD.Vector(*point)
-    hit = any(solid.isInside(v, 1e-9, True) for solid in swept.union)
-    return hit and (swept.column is None or any(solid.isInside(v, 1e-9, True) for solid in swept.column))
+#: The direction of the short segments through the test points (none of the solids' axes or moves).
+PROBE = np.array([0.31, -0.52, 0.79]) / np.linalg.norm([0.31, -0.52, 0.79])
+
+
+def occ_inside(swept: SweptParts, points, half=0.5):
+    """(n,) bool: points (n, 3) in the swept volume by the solids, as the reference uses them: a segment of
+    2·half mm through each point sectioned with each solid whose box meets the segment's (one boolean per
+    solid), the point inside when its middle lies in a section. (OpenCASCADE's point classifier, which
+    decides a segment crossing no face, misjudges points beside thin oblique extrusions outside their box:
+    docs/VALIDATION.md; the reference, like this, never asks it there.)"""
+    base = np.asarray(points) - half * PROBE
+    ends = np.stack([base, base + 2.0 * half * PROBE])
+    low, high = ends.min(axis=0) - BOX_SLACK, ends.max(axis=0) + BOX_SLACK
+
+    def covered(solids):
+        hit = np.zeros(len(base), dtype=bool)
+        for solid in solids:
+            box = solid.BoundBox
+            meets = np.flatnonzero(((low <= [box.XMax, box.YMax, box.ZMax]) &
+                                    (high >= [box.XMin, box.YMin, box.ZMin])).all(axis=1))
+            for k, found in zip(meets, _inside_intervals(solid, base[meets], PROBE, 2.0 * half)):
+                hit[k] |= any(a <= half <= b for a, b in found)
+        return hit
+
+    inside = covered(swept.union)
+    return inside & covered(swept.column) if swept.column is not None else inside
 
 
 MOVES = {  # (unit axis, move) mm
@@ -66,6 +88,9 @@ MOVES = {  # (unit axis, move) mm
                        np.cross([0.3, -0.2, 1.0], [1.0, 0.0, 0.0]) / np.linalg.norm([0.3, -0.2, 1.0]) * 6.0),
     "along": (np.array([0.0, 0.0, 1.0]), np.array([0.0, 0.0, -4.0])),
     "ramp": (np.array([0.1, 0.2, 1.0]) / np.linalg.norm([0.1, 0.2, 1.0]), np.array([6.0, -2.0, 3.0])),
+    "falling ramp": (np.array([0.0, 0.0, 1.0]), np.array([4.0, 3.0, -0.6])),
+    "steep ramp": (np.array([0.0, 0.0, 1.0]), np.array([0.05, 0.0, -6.0])),
+    "flat ramp": (np.array([0.0, 0.0, 1.0]), np.array([6.0, 0.0, 0.3])),
 }
 
 
@@ -78,18 +103,18 @@ def membership_disagreements(swept, c0, w, m, radius, corner, height, count=300,
     gauge = sampled_sweep(points, c0, m, w, radius, corner, height)
     error = np.linalg.norm(m) / (2.0 * 2000)
     decided = (gauge < -1e-6) | (gauge > error + 1e-6)
-    wrong = sum(occ_inside(swept, p) != (g < 0.0) for p, g in zip(points[decided], gauge[decided]))
+    wrong = int((occ_inside(swept, points[decided]) != (gauge[decided] < 0.0)).sum())
     return wrong, int(decided.sum())
 
 
 @pytest.mark.parametrize("ratio", [0.1, 0.5, 1.0])
-@pytest.mark.parametrize("move", ["across", "across, tilted", "along", "ramp"])
+@pytest.mark.parametrize("move", list(MOVES))
 def test_the_swept_solids_hold_the_points_the_sampler_finds(move, ratio):
     w, m = MOVES[move]
     c0 = np.array([1.0, -2.0, 0.5])
     corner = ratio * RADIUS
-    if move == "ramp" and ratio < 1.0:
-        with pytest.raises(NotExactError, match="neither across nor along its axis"):
+    if move == "flat ramp" and ratio < 1.0:
+        with pytest.raises(NotExactError, match="within 5.74° of the plane across it but not in it"):
             sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE)
         return
     swept = sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE)
@@ -150,15 +175,18 @@ def staircase_passes():
 
 
 def program(stock_name, axes, corner):
-    """(ProgramMoves, rows of the second pass): the stock's two passes; axes "vertical", "tilted" (fixed,
-    the passes' moves across it and the plunges along it) or "turning" (the axis leaning more along each
-    pass; each move a ramp in sub-steps)."""
+    """(ProgramMoves, rows of the second pass): the stock's two passes; axes "vertical", "ramp" (vertical,
+    the moves after the plunge rising), "tilted" (fixed, the passes' moves across it and the plunges along
+    it) or "turning" (the axis leaning more along each pass; each move a ramp in sub-steps)."""
     passes = [np.array(p) for p in (staircase_passes() if stock_name == "staircase" else terraced_passes())]
     cl, axis, cutting = [], [], []
     for points in passes:
         n = len(points)
-        if axes == "vertical":
+        if axes in ("vertical", "ramp"):
             w = np.tile([0.0, 0.0, 1.0], (n, 1))
+            if axes == "ramp":  # each move across the stock rises 2.5 mm (0.11 to 0.12 mm per mm)
+                points = points.copy()
+                points[2:, 2] += 2.5 * np.arange(1, n - 1)
         elif axes == "tilted":
             w = np.tile(np.array([0.0, 0.3, 1.0]) / np.hypot(0.3, 1.0), (n, 1))
             # keep the moves across the axis: heights follow the tilt (z = z0 − 0.3 (y − y0) stays put, y fixed)
@@ -199,7 +227,8 @@ def assert_agree(engagement, reference, agree=AGREE):
 
 CASES = [(stock, "vertical", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.3, 0.5, 1.0)] + \
         [(stock, "tilted", ratio) for stock in ("staircase", "terraced") for ratio in (0.3, 1.0)] + \
-        [(stock, "turning", 1.0) for stock in ("staircase", "terraced")]
+        [(stock, "turning", 1.0) for stock in ("staircase", "terraced")] + \
+        [(stock, "ramp", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.5, 1.0)]
 
 
 @pytest.mark.parametrize("stock_name,axes,ratio", CASES)
@@ -221,14 +250,15 @@ def test_a_planted_error_in_the_earlier_moves_shows():
     assert worst > 1e-3
 
 
-def test_a_bull_nose_ramp_is_refused_in_words():
+def test_a_nearly_flat_bull_nose_ramp_is_refused_in_words():
+    """Axes turning along the pass: the sub-steps run within 5.7° of the plane across the axis."""
     stock = staircase()
     moves, rows = program("staircase", "turning", 0.3 * RADIUS)
     tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=0.3 * RADIUS)
     path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
-    with pytest.raises(NotExactError, match=r"program row 1, the move ending there: the step from .* to the tool's "
-                                            r"axis: the volume a "
-                                            r"bull-nose mill \(R 5 mm, corner radius 1.5 mm, flute length 12 mm\)"):
+    with pytest.raises(NotExactError, match=r"program row 2, the move ending there: the step from .* to the tool's "
+                                            r"axis, within 5.74° of the plane across it but not in it: .* a bull-nose "
+                                            r"mill \(R 5 mm, corner radius 1.5 mm\)"):
         validate(staircase_solid(stock), stock, tool, path, SETTINGS, sweep=(swept_pieces(moves, 0.01), rows))
 
 
