@@ -297,7 +297,8 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     engine's engage_in_process against cad.profile_boolean.flat_lengths_in_process, or for a tool with a
     corner cad.corner_inprocess.corner_lengths_in_process), or None for the stock as given; for a tool with a
     corner, ValueError (cad.corner_sweep.NotExactError), before any work, when an earlier move's swept
-    volume has no exact solid (a bull-nose mill's move neither across nor along its axis). progress(done,
+    volume has no trusted exact solid (a bull-nose mill's move within 5.74° of the plane across its axis but
+    not in it; any ramp of a tool shorter than its corner radius). progress(done,
     total) is called after each CL point of the reference. cls: the CL indices (0-based, distinct) the
     reference checks, None: all; elsewhere the reference's arrays are NaN (Comparison.checked) and the
     statistics leave those CL points out (ValueError, before any work, for a list that is empty, repeats
@@ -314,7 +315,8 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
 
     chosen = _checked_rows(cls, len(toolpath))
     if sweep is not None and tool.corner_radius > 0.0:
-        check_sweepable(sweep[0], int(np.max(np.asarray(sweep[1]) if chosen is None else np.asarray(sweep[1])[chosen])))
+        checked_rows = np.asarray(sweep[1]) if chosen is None else np.asarray(sweep[1])[chosen]
+        check_sweepable(sweep[0], int(np.max(checked_rows)))
     started = time.perf_counter()
     if sweep is None:
         engagement = engage_stock(staircase, tool, toolpath, settings)

@@ -8,8 +8,8 @@ its `union` solids and, for a ball's ramp, inside one of its `column` solids) is
 those of cad.inprocess_boolean's reference (its _near_tool): the same constant-axis sub-steps as the
 engine's swept_pieces. Lengths in mm, angles in degrees.
 
-Before any boolean, :func:`check_sweepable` refuses a program with a piece whose swept volume has no exact
-solid here (a bull-nose mill's move neither across nor along its axis), naming the move.
+Before any boolean, :func:`check_sweepable` refuses a program with a piece whose swept volume has no trusted
+exact solid here (corner_sweep.move_kind: a bull-nose mill's nearly flat ramp), naming the move.
 """
 
 import numpy as np
@@ -24,13 +24,14 @@ from .profile_edges import EdgeGeometry, edge_shapes, tool_frames
 
 def check_sweepable(pieces, upto):
     """NotExactError naming the first program row whose move (a piece of it, among the SweptPieces
-    `pieces` of moves ending before row `upto`) has no exact swept solid (corner_sweep.move_kind)."""
+    `pieces` of moves ending before row `upto`) has no trusted exact swept solid (corner_sweep.move_kind)."""
     for i in np.flatnonzero(np.asarray(pieces.move) < int(upto)):
         if pieces.corner[i] > 0.0 and move_kind(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i],
                                                 pieces.corner[i], pieces.height[i]) is None:
+            why = not_exact(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.corner[i],
+                            pieces.height[i])
             raise NotExactError(f"the in-process stock has no exact OpenCASCADE reference at program row "
-                                f"{int(pieces.move[i])}, the move ending there: " + not_exact(pieces.c0[i], pieces.c1[i], pieces.axis[i],
-                                                                     pieces.radius[i], pieces.corner[i], pieces.height[i]))
+                                f"{int(pieces.move[i])}, the move ending there: {why}")
 
 
 def _intersected(first, second):

@@ -87,8 +87,9 @@ def move_kind(c0, c1, axis, radius, corner, height):
 
 
 def not_exact(c0, c1, axis, radius, corner, height):
-    """Why the step (a move, or a sub-step of a move whose axis turns) c0 → c1 ((3,) mm) of the tool (unit axis, radius, corner radius, cutting height, mm) has
-    no exact swept solid here, in words naming the move (for one move_kind gives None)."""
+    """Why the step (a move, or a sub-step of a move whose axis turns) c0 → c1 ((3,) mm) of the tool (unit
+    axis, radius, corner radius, cutting height, mm) has no trusted exact swept solid here, in words naming
+    the move (for one move_kind gives None)."""
     m = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
     angle = np.degrees(np.arccos(np.clip(float(m @ np.asarray(axis, dtype=float)) / np.linalg.norm(m), -1.0, 1.0)))
     if height < corner:
@@ -179,7 +180,7 @@ def _rounded_parallelogram(corner0, side, move, r):
 def sweep_parts(c0, c1, axis, radius, corner, height):
     """SweptParts of the volume the tool (radius R, corner radius r with 0 < r ≤ R, cutting height H, mm;
     tip centre c0 (3,), unit axis (3,)) sweeps moving straight to c1 with its axis fixed (module
-    docstring). NotExactError naming the move for a bull-nose mill's ramp."""
+    docstring). NotExactError naming the move where move_kind gives None."""
     c0, c1, w = (np.asarray(v, dtype=float) for v in (c0, c1, axis))
     kind = move_kind(c0, c1, w, radius, corner, height)
     m = c1 - c0

@@ -240,12 +240,13 @@ def test_the_engine_agrees_with_the_in_process_reference(stock_name, axes, ratio
     assert (reference["corner_length"] > 0.0).any()
 
 
-def test_a_planted_error_in_the_earlier_moves_shows():
+@pytest.mark.parametrize("axes", ["vertical", "ramp"])
+def test_a_planted_error_in_the_earlier_moves_shows(axes):
     """Half the corner radius in the earlier moves' swept solids: the reference no longer agrees."""
     def planted(c0, c1, axis, radius, corner, height):
         return sweep_parts(c0, c1, axis, radius, 0.5 * corner, height)
 
-    engagement, _, _, reference = compare_run("staircase", "vertical", 0.5, planted)
+    engagement, _, _, reference = compare_run("staircase", axes, 0.5, planted)
     worst = np.nanmax(np.abs(engagement.length - reference["length"]))
     assert worst > 1e-3
 

@@ -81,16 +81,18 @@ def test_workers_give_the_same_corner_reference(solids):
         np.testing.assert_array_equal(one.reference[name], two.reference[name])
 
 
-def test_a_corner_tool_ramp_against_the_in_process_stock_is_refused(solids):
-    """A bull-nose mill's earlier move neither across nor along its axis has no exact swept solid: refused in
-    words naming the move, before any work (tests/cad/test_corner_inprocess_occ.py checks what is allowed)."""
+def test_a_nearly_flat_bull_nose_ramp_against_the_in_process_stock_is_refused(solids):
+    """A bull-nose mill's earlier move rising 0.03 mm per mm has no trusted swept solid: refused in words naming
+    the move, before any work (tests/cad/test_corner_inprocess_occ.py checks what is allowed)."""
     stock, solid = solids["staircase"]
     tool = Tool(10.0, 2, 12.0, corner_radius=2.0)
-    path = seeded_pass("staircase", "tilted", 1, n=3)
-    moves = ProgramMoves(path.cl, path.axes, np.array([False, True, True]), np.full(3, 5.0), np.full(3, 12.0),
+    cl = np.array([[20.0, 0.0, 5.0], [30.0, 0.0, 5.3], [40.0, 0.0, 5.6]])
+    path = Toolpath.from_axes(cl, np.tile([0.0, 0.0, 1.0], (3, 1)))
+    moves = ProgramMoves(cl, path.axes, np.array([False, True, True]), np.full(3, 5.0), np.full(3, 12.0),
                          np.arange(3) + 1, np.full(3, 2.0))
-    with pytest.raises(ValueError, match="no exact OpenCASCADE reference at program row 1, the move ending there: "
-                                         "the step from"):
+    with pytest.raises(ValueError, match=r"no exact OpenCASCADE reference at program row 1, the move ending there: "
+                                         r"the step from \(20, 0, 5\) to \(30, 0, 5.3\) mm runs at 88.2816° to the "
+                                         r"tool's axis, within 5.74° of the plane across it"):
         validate(solid, stock, tool, path, SETTINGS, sweep=(swept_pieces(moves), np.arange(3)))
 
 
