@@ -294,9 +294,11 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     mill's side lines (cad.boolean's reference, unchanged) and end edges; a bull-nose or ball-end mill's
     corner arcs (true circular arcs), side lines and end edges. sweep: (SweptPieces of the whole program,
     (m,) program row of each CL point), both in the pass's frame, to check against the in-process stock (the
-    engine's engage_in_process against cad.profile_boolean.flat_lengths_in_process), or None for the stock
-    as given; ValueError, before any work, with a sweep for a tool with a corner radius
-    (cad.profile_boolean.CORNER_IN_PROCESS). progress(done,
+    engine's engage_in_process against cad.profile_boolean.flat_lengths_in_process, or for a tool with a
+    corner cad.corner_inprocess.corner_lengths_in_process), or None for the stock as given; for a tool with a
+    corner, ValueError (cad.corner_sweep.NotExactError), before any work, when an earlier move's swept
+    volume has no trusted exact solid (a bull-nose mill's move within 5.74° of the plane across its axis but
+    not in it; any ramp of a tool shorter than its corner radius). progress(done,
     total) is called after each CL point of the reference. cls: the CL indices (0-based, distinct) the
     reference checks, None: all; elsewhere the reference's arrays are NaN (Comparison.checked) and the
     statistics leave those CL points out (ValueError, before any work, for a list that is empty, repeats
@@ -307,13 +309,14 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
     """
+    from .cad.corner_inprocess import check_sweepable, corner_lengths_in_process
     from .cad.inprocess_boolean import ProgramSweep
-    from .cad.profile_boolean import (CORNER_IN_PROCESS, flat_lengths_by_boolean, flat_lengths_in_process,
-                                      profile_lengths_by_boolean)
+    from .cad.profile_boolean import flat_lengths_by_boolean, flat_lengths_in_process, profile_lengths_by_boolean
 
-    if sweep is not None and tool.corner_radius > 0.0:
-        raise ValueError(CORNER_IN_PROCESS)
     chosen = _checked_rows(cls, len(toolpath))
+    if sweep is not None and tool.corner_radius > 0.0:
+        checked_rows = np.asarray(sweep[1]) if chosen is None else np.asarray(sweep[1])[chosen]
+        check_sweepable(sweep[0], int(np.max(checked_rows)))
     started = time.perf_counter()
     if sweep is None:
         engagement = engage_stock(staircase, tool, toolpath, settings)
@@ -330,7 +333,8 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
         extra = ()
     else:
         part_rows = np.asarray(rows) if chosen is None else np.asarray(rows)[chosen]
-        function, extra = flat_lengths_in_process, (ProgramSweep(pieces, part_rows, part),)
+        function = corner_lengths_in_process if tool.corner_radius > 0.0 else flat_lengths_in_process
+        extra = (ProgramSweep(pieces, part_rows, part),)
         workers = 1 if _repeats_cl_point(part) else workers
     reference = reference_by_workers(function, solid, tool, part, engagement.phi, extra, workers=workers,
                                      scheduler=scheduler, progress=progress)
@@ -472,7 +476,7 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
     point per task.
 
     reference: a module-level function of cad (profile_lengths_by_boolean, flat_lengths_by_boolean,
-    flat_lengths_in_process, flute_lengths_by_boolean).
+    flat_lengths_in_process, corner_lengths_in_process, flute_lengths_by_boolean).
     workers: 1 (or a pass of one CL point) runs it here; N > 1 in N spawned processes
     (worker_processes.WorkerProcesses); 0 one per core. scheduler: the address of a Dask scheduler
     ("tcp://host:port"), instead of local processes. progress(done, total) after each CL point. On

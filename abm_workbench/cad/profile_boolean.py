@@ -16,7 +16,7 @@ engaged length. Lengths in mm, φ in degrees.
 For a flat-end mill the peripheral edge is the side line alone, which cad.boolean already sections:
 :func:`flat_lengths_by_boolean` keeps that reference's arrays bit for bit and adds the end edge's;
 :func:`flat_lengths_in_process` does the same for cad.inprocess_boolean's reference against the in-process
-stock. The in-process stock of a tool with a corner has no reference here (:data:`CORNER_IN_PROCESS`).
+stock. A tool with a corner is checked against the in-process stock by cad.corner_inprocess.
 """
 
 import numpy as np
@@ -34,14 +34,6 @@ ON_EDGE_TOL = 1e-6
 #: from every edge: OpenCASCADE sections an arc with a trimmed B-spline wall many times faster than with the
 #: whole wall (measured 11.8 s against 1.9 s for 91 arcs at a CL point of model test 5).
 LOCAL_MARGIN = 1.0
-#: Why a tool with a corner radius is not checked against the in-process stock.
-CORNER_IN_PROCESS = (
-    "the in-process stock is not available for a tool with a corner radius in validate: OpenCASCADE has no exact "
-    "solid for the volume a rounded-corner tool sweeps along a move (the hull's side through the torus's "
-    "silhouette is no analytic surface), so there is no reference to check the engine's in-process results "
-    "against (engage and schedule compute them); validate it against the stock as given (--stock-model initial)")
-
-
 def _angles(phi_deg):
     phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     if phi.ndim != 1 or not np.isfinite(phi).all():
@@ -301,7 +293,7 @@ def flat_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, swee
     calls, bit for bit), plus end_length and end_pieces (m, p): the end edges inside the stock `shape` and in
     none of the volumes the earlier moves near the tool swept (end_sections_in_process). Flat-end mills."""
     if tool.corner_radius > 0.0:
-        raise ValueError(CORNER_IN_PROCESS)
+        raise ValueError("flat_lengths_in_process is for flat-end mills; use corner_inprocess.corner_lengths_in_process")
     phi = _angles(phi_deg)
     distinct, source = _distinct_angles(phi)
     base, direction = edge_lines(toolpath, tool, distinct)

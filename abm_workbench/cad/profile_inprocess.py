@@ -1,8 +1,8 @@
 """How much a validation against the stock as given leaves out for a tool with a corner: an estimate of the
 material earlier moves of the program removed from its cutting edges.
 
-The OpenCASCADE reference does not compute the in-process stock for a bull-nose or ball-end mill
-(cad.profile_boolean.CORNER_IN_PROCESS; the engine does, but validate checks it against the stock as given). For a report to say what checking the stock as given misses,
+Where validate checks a bull-nose or ball-end mill against the stock as given (asked for, or because an
+earlier move's swept volume has no exact solid: cad.corner_sweep), and for a report to say what that misses,
 :func:`removed_lengths` estimates, at chosen CL points, how much of each edge's length of cut in the stock as
 given (the exact intervals of cad.profile_boolean.edge_intervals) lies inside the tool at some earlier
 position of the program: every cutting move before the CL point is sampled at tool positions at most

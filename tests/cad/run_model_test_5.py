@@ -115,7 +115,6 @@ def main(argv=None):
     begun = time.perf_counter()
     args = arguments(argv)
     from abm_workbench.cad.annotate import write_annotated
-    from abm_workbench.cad.profile_boolean import CORNER_IN_PROCESS
     from abm_workbench.jobs.checked import checked_cls
     from abm_workbench.jobs.job import cl_indices
     from abm_workbench.report.html import ReportJob, report_cls, write_report
@@ -150,7 +149,7 @@ def main(argv=None):
         "depth": float(np.nanmax(depth)) if np.isfinite(depth).any() else np.nan,
     }
     engaged = int((checked & (comparison.l_ref > 0.0)).sum())
-    note = (f"initial: the stock as given. {CORNER_IN_PROCESS[0].upper()}{CORNER_IN_PROCESS[1:]}. The raster's "
+    note = ("initial: the stock as given. The raster's "
             f"passes overlap (stepover 8 mm, tool D {tool.diameter:g} mm): from the second pass on, the stock as "
             "given still holds material the earlier passes removed, so these lengths are those of each CL point "
             "met as if its pass came first; what both sides compute here is the same geometry, and it is that "

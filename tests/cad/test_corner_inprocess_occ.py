@@ -1,0 +1,318 @@
+"""validate against the in-process stock for bull-nose and ball-end mills (cad.corner_sweep, cad.corner_inprocess).
+
+The swept solids are checked on their own first: point membership against a brute-force sampler of the tool
+along the move (the tool's inside test written here from its definition), volumes against Cavalieri's and
+Steiner's formulas. Then the engine's in-process results (engage_in_process: length, LEP, UEP, end edge)
+against the OpenCASCADE reference at every CL point of a pass whose earlier passes removed material from its
+edges: on the staircase and the terraced stock, vertical, tilted and turning axes, r/R 0.1 to 1, within
+AGREE; a planted error in the earlier moves' swept solids shows; a bull-nose mill's ramp is refused in words.
+"""
+
+import csv
+
+import numpy as np
+import pytest
+
+from abm_workbench import cli
+from abm_workbench.cad import corner_sweep
+from abm_workbench.cad.boolean import _inside_intervals
+from abm_workbench.cad.corner_inprocess import corner_lengths_in_process
+from abm_workbench.cad.corner_sweep import NotExactError, SweptParts, sweep_parts
+from abm_workbench.cad.inprocess_boolean import BOX_SLACK, ProgramSweep
+from abm_workbench.cad.solids import staircase_solid
+from abm_workbench.engine import CutSettings, Tool, Toolpath
+from abm_workbench.engine.inprocess import ProgramMoves, swept_pieces
+from abm_workbench.engine.stocks import engage_in_process
+from abm_workbench.validation import validate
+from tests.engine.test_inprocess import staircase
+
+from .profile_cases import stocks
+
+AGREE = 1e-6  # mm: both sides are exact
+SETTINGS = CutSettings(0.1, phi_start=2.5, phi_end=357.5, phi_step=15.0)
+RADIUS, FLUTE = 5.0, 12.0
+
+
+# ---- the swept solids on their own ------------------------------------------------------------------
+
+def inside_tool(q, w, radius, corner, height):
+    """(n,) the tool's gauge at points q (n, 3) relative to its tip's centre (unit axis w): the largest of
+    the distance to the half-infinite cylinder {a ≥ r, |b| ≤ R − r} less r, and a − H; 1-Lipschitz, ≤ 0
+    exactly inside the tool."""
+    a = q @ w
+    b = np.linalg.norm(q - a[:, None] * w, axis=1)
+    gap = np.hypot(np.maximum(corner - a, 0.0), np.maximum(b - (radius - corner), 0.0))
+    return np.maximum(gap - corner, a - height)
+
+
+def sampled_sweep(points, c0, m, w, radius, corner, height, steps=2001):
+    """(n,) the least gauge over `steps` tool positions c0 + t·m, 0 ≤ t ≤ 1 (a test reference only): within
+    |m| / (2 (steps − 1)) above the least over the whole move."""
+    best = np.full(len(points), np.inf)
+    for t in np.linspace(0.0, 1.0, steps):
+        best = np.minimum(best, inside_tool(points - c0 - t * m, w, radius, corner, height))
+    return best
+
+
+#: The direction of the short segments through the test points (none of the solids' axes or moves).
+PROBE = np.array([0.31, -0.52, 0.79]) / np.linalg.norm([0.31, -0.52, 0.79])
+
+
+def occ_inside(swept: SweptParts, points, half=0.5):
+    """(n,) bool: points (n, 3) in the swept volume by the solids, as the reference uses them: a segment of
+    2·half mm through each point sectioned with each solid whose box meets the segment's (one boolean per
+    solid), the point inside when its middle lies in a section. (OpenCASCADE's point classifier, which
+    decides a segment crossing no face, misjudges points beside thin oblique extrusions outside their box:
+    docs/VALIDATION.md; the reference, like this, never asks it there.)"""
+    base = np.asarray(points) - half * PROBE
+    ends = np.stack([base, base + 2.0 * half * PROBE])
+    low, high = ends.min(axis=0) - BOX_SLACK, ends.max(axis=0) + BOX_SLACK
+
+    def covered(solids):
+        hit = np.zeros(len(base), dtype=bool)
+        for solid in solids:
+            box = solid.BoundBox
+            meets = np.flatnonzero(((low <= [box.XMax, box.YMax, box.ZMax]) &
+                                    (high >= [box.XMin, box.YMin, box.ZMin])).all(axis=1))
+            for k, found in zip(meets, _inside_intervals(solid, base[meets], PROBE, 2.0 * half)):
+                hit[k] |= any(a <= half <= b for a, b in found)
+        return hit
+
+    inside = covered(swept.union)
+    return inside & covered(swept.column) if swept.column is not None else inside
+
+
+MOVES = {  # (unit axis, move) mm
+    "across": (np.array([0.0, 0.0, 1.0]), np.array([7.0, 2.0, 0.0])),
+    "across, tilted": (np.array([0.3, -0.2, 1.0]) / np.linalg.norm([0.3, -0.2, 1.0]),
+                       np.cross([0.3, -0.2, 1.0], [1.0, 0.0, 0.0]) / np.linalg.norm([0.3, -0.2, 1.0]) * 6.0),
+    "along": (np.array([0.0, 0.0, 1.0]), np.array([0.0, 0.0, -4.0])),
+    "ramp": (np.array([0.1, 0.2, 1.0]) / np.linalg.norm([0.1, 0.2, 1.0]), np.array([6.0, -2.0, 3.0])),
+    "falling ramp": (np.array([0.0, 0.0, 1.0]), np.array([4.0, 3.0, -0.6])),
+    "steep ramp": (np.array([0.0, 0.0, 1.0]), np.array([0.05, 0.0, -6.0])),
+    "flat ramp": (np.array([0.0, 0.0, 1.0]), np.array([6.0, 0.0, 0.3])),
+}
+
+
+def membership_disagreements(swept, c0, w, m, radius, corner, height, count=300, seed=3):
+    """(disagreements, decided): random points about the swept volume classified by its solids and by the
+    sampler, those the sampler cannot decide (within its error, or within 1e-6 mm of the boundary) left out."""
+    rng = np.random.default_rng(seed)
+    ends = np.stack([c0, c0 + height * w, c0 + m, c0 + m + height * w])
+    points = rng.uniform(ends.min(axis=0) - radius - 1.0, ends.max(axis=0) + radius + 1.0, (count, 3))
+    gauge = sampled_sweep(points, c0, m, w, radius, corner, height)
+    error = np.linalg.norm(m) / (2.0 * 2000)
+    decided = (gauge < -1e-6) | (gauge > error + 1e-6)
+    wrong = int((occ_inside(swept, points[decided]) != (gauge[decided] < 0.0)).sum())
+    return wrong, int(decided.sum())
+
+
+@pytest.mark.parametrize("ratio", [0.1, 0.5, 1.0])
+@pytest.mark.parametrize("move", list(MOVES))
+def test_the_swept_solids_hold_the_points_the_sampler_finds(move, ratio):
+    w, m = MOVES[move]
+    c0 = np.array([1.0, -2.0, 0.5])
+    corner = ratio * RADIUS
+    if move == "flat ramp" and ratio < 1.0:
+        with pytest.raises(NotExactError, match="within 5.74° of the plane across it but not in it"):
+            sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE)
+        return
+    swept = sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE)
+    assert all(solid.isValid() for solid in swept.union + (swept.column or []))
+    wrong, decided = membership_disagreements(swept, c0, w, m, RADIUS, corner, FLUTE)
+    assert decided >= 250 and wrong == 0
+
+
+def test_a_planted_error_in_a_swept_solid_shows():
+    """The membership check fails on the swept solids of a tool with half the corner radius."""
+    w, m = MOVES["across"]
+    c0 = np.zeros(3)
+    planted = sweep_parts(c0, c0 + m, w, RADIUS, 0.25 * RADIUS, FLUTE)
+    wrong, _ = membership_disagreements(planted, c0, w, m, RADIUS, 0.5 * RADIUS, FLUTE, count=600)
+    assert wrong > 0
+
+
+def profile_area(radius, corner, height):
+    """The tool's axial section (mm²): the rectangle 2R × H less the two corners' r² − πr²/4 (H ≥ r)."""
+    return 2.0 * radius * height - 2.0 * (corner * corner - 0.25 * np.pi * corner * corner)
+
+
+@pytest.mark.parametrize("ratio", [0.3, 1.0])
+def test_swept_volumes_by_cavalieri_and_steiner(ratio):
+    """Across the axis: V = V(tool) + |m|·(axial section); along it: V(tool) + |m|·πR² (the volume a convex
+    body sweeps is its own plus the move's length times its shadow along the move). The ball's ramp: the
+    parallelogram P (area A, perimeter s) grown by r has V = 2rA + (π/2) r² s + (4/3)π r³ (Steiner)."""
+    corner = ratio * RADIUS
+    c0 = np.zeros(3)
+    tool = corner_sweep.placed_tool(c0, [0, 0, 1.0], RADIUS, corner, FLUTE).Volume
+    for move, shadow in (("across", profile_area(RADIUS, corner, FLUTE)), ("along", np.pi * RADIUS ** 2)):
+        w, m = MOVES[move]
+        parts = sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE).union
+        fused = parts[0].multiFuse(parts[1:])
+        np.testing.assert_allclose(fused.Volume, tool + np.linalg.norm(m) * shadow, rtol=1e-9)
+    if ratio == 1.0:
+        w, m = MOVES["ramp"]
+        grown = sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE).union
+        side = FLUTE * w
+        area, perimeter = np.linalg.norm(np.cross(side, m)), 2.0 * (FLUTE + np.linalg.norm(m))
+        want = 2 * corner * area + 0.5 * np.pi * corner ** 2 * perimeter + 4.0 / 3.0 * np.pi * corner ** 3
+        np.testing.assert_allclose(grown[0].multiFuse(grown[1:]).Volume, want, rtol=1e-9)
+
+
+# ---- the engine against the reference -----------------------------------------------------------------
+
+def terraced_passes():
+    """Two passes over the pocket of the terraced stock (profile_cases.pocket_stock): along x, then back
+    lower and beside it; each begins with a plunge along the axis."""
+    return [[(-20.0, -2.0, 12.0), (-20.0, -2.0, 3.0), (0.0, -2.0, 3.0), (20.0, -2.0, 3.0)],
+            [(20.0, 3.0, 12.0), (20.0, 3.0, 2.0), (0.0, 3.0, 2.0), (-20.0, 3.0, 2.0)]]
+
+
+def staircase_passes():
+    """Two passes over tests.engine.test_inprocess's staircase, as terraced_passes."""
+    return [[(8.0, -3.0, 14.0), (8.0, -3.0, 3.0), (30.0, -3.0, 3.0), (52.0, -3.0, 3.0)],
+            [(52.0, 4.0, 14.0), (52.0, 4.0, 2.0), (30.0, 4.0, 2.0), (8.0, 4.0, 2.0)]]
+
+
+def program(stock_name, axes, corner):
+    """(ProgramMoves, rows of the second pass): the stock's two passes; axes "vertical", "ramp" (vertical,
+    the moves after the plunge rising), "tilted" (fixed, the passes' moves across it and the plunges along
+    it) or "turning" (the axis leaning more along each pass; each move a ramp in sub-steps)."""
+    passes = [np.array(p) for p in (staircase_passes() if stock_name == "staircase" else terraced_passes())]
+    cl, axis, cutting = [], [], []
+    for points in passes:
+        n = len(points)
+        if axes in ("vertical", "ramp"):
+            w = np.tile([0.0, 0.0, 1.0], (n, 1))
+            if axes == "ramp":  # each move across the stock rises 2.5 mm (0.11 to 0.12 mm per mm)
+                points = points.copy()
+                points[2:, 2] += 2.5 * np.arange(1, n - 1)
+        elif axes == "tilted":
+            w = np.tile(np.array([0.0, 0.3, 1.0]) / np.hypot(0.3, 1.0), (n, 1))
+            # keep the moves across the axis: heights follow the tilt (z = z0 − 0.3 (y − y0) stays put, y fixed)
+            points = points.copy()
+            points[0] = points[1] + 10.0 * w[0]
+        else:
+            lean = np.linspace(0.0, 0.25, n)
+            w = np.column_stack([lean, -0.5 * lean, np.ones(n)])
+            w /= np.linalg.norm(w, axis=1)[:, None]
+        cl += list(points)
+        axis += list(w)
+        cutting += [False] + [True] * (n - 1)
+    n = len(cl)
+    moves = ProgramMoves(np.array(cl), np.array(axis), np.array(cutting), np.full(n, RADIUS), np.full(n, FLUTE),
+                         np.arange(n) + 1, np.full(n, corner))
+    return moves, np.arange(len(passes[0]), n)
+
+
+def compare_run(stock_name, axes, ratio, parts=sweep_parts):
+    """(engine Engagement, initial lengths, changed, reference dict) of the second pass."""
+    stock, solid = stocks()[stock_name] if stock_name == "terraced" else (staircase(), staircase_solid(staircase()))
+    moves, rows = program(stock_name, axes, ratio * RADIUS)
+    pieces = swept_pieces(moves, 0.01)
+    tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=ratio * RADIUS)
+    path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
+    engagement, initial, changed = engage_in_process(stock, tool, path, SETTINGS, pieces, rows)
+    reference = corner_lengths_in_process(solid, tool, path, engagement.phi, ProgramSweep(pieces, rows, path),
+                                          parts=parts)
+    return engagement, initial, changed, reference
+
+
+def assert_agree(engagement, reference, agree=AGREE):
+    for name in ("length", "lep_l", "uep_l", "end_length"):
+        got, want = getattr(engagement, name), reference[name]
+        np.testing.assert_array_equal(np.isnan(got), np.isnan(want), err_msg=name)
+        np.testing.assert_allclose(got, want, rtol=0, atol=agree, err_msg=name)
+
+
+CASES = [(stock, "vertical", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.3, 0.5, 1.0)] + \
+        [(stock, "tilted", ratio) for stock in ("staircase", "terraced") for ratio in (0.3, 1.0)] + \
+        [(stock, "turning", 1.0) for stock in ("staircase", "terraced")] + \
+        [(stock, "ramp", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.5, 1.0)]
+
+
+@pytest.mark.parametrize("stock_name,axes,ratio", CASES)
+def test_the_engine_agrees_with_the_in_process_reference(stock_name, axes, ratio):
+    engagement, initial, changed, reference = compare_run(stock_name, axes, ratio)
+    assert_agree(engagement, reference)
+    removed = initial - reference["length"]
+    assert changed.any() and removed.max() > 0.5 and reference["swept"].max() > 0  # earlier moves took material
+    assert (reference["corner_length"] > 0.0).any()
+
+
+@pytest.mark.parametrize("axes", ["vertical", "ramp"])
+def test_a_planted_error_in_the_earlier_moves_shows(axes):
+    """Half the corner radius in the earlier moves' swept solids: the reference no longer agrees."""
+    def planted(c0, c1, axis, radius, corner, height):
+        return sweep_parts(c0, c1, axis, radius, 0.5 * corner, height)
+
+    engagement, _, _, reference = compare_run("staircase", axes, 0.5, planted)
+    worst = np.nanmax(np.abs(engagement.length - reference["length"]))
+    assert worst > 1e-3
+
+
+def test_a_nearly_flat_bull_nose_ramp_is_refused_in_words():
+    """Axes turning along the pass: the sub-steps run within 5.7° of the plane across the axis."""
+    stock = staircase()
+    moves, rows = program("staircase", "turning", 0.3 * RADIUS)
+    tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=0.3 * RADIUS)
+    path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
+    with pytest.raises(NotExactError, match=r"program row 2, the move ending there: the step from .* to the tool's "
+                                            r"axis, within 5.74° of the plane across it but not in it: .* a bull-nose "
+                                            r"mill \(R 5 mm, corner radius 1.5 mm\)"):
+        validate(staircase_solid(stock), stock, tool, path, SETTINGS, sweep=(swept_pieces(moves, 0.01), rows))
+
+
+def test_validate_a_bull_nose_against_the_in_process_stock():
+    stock = staircase()
+    moves, rows = program("staircase", "vertical", 0.3 * RADIUS)
+    tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=0.3 * RADIUS)
+    path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
+    result = validate(staircase_solid(stock), stock, tool, path, SETTINGS, sweep=(swept_pieces(moves, 0.01), rows))
+    comparison = result.comparison
+    assert result.in_process is not None and result.in_process.changed.any()
+    assert np.nanmax(np.abs(comparison.difference)) <= AGREE
+    assert np.nanmax(np.abs(comparison.end_difference)) <= AGREE
+    assert (result.in_process.initial - comparison.l_ref).max() > 0.5
+
+
+APT = """UNITS/MM
+MULTAX/ON
+CUTTER/10,{corner},0,0,0,0,40
+CSI_SET_FLUTE_LENGTH/12
+SPINDL/RPM,4000,CLW
+RAPID
+GOTO/8,-3,20,0,0,1
+GOTO/8,-3,3,0,0,1
+GOTO/30,-3,3,0,0,1
+GOTO/52,-3,3,0,0,1
+GOTO/52,-3,20,0,0,1
+RAPID
+GOTO/52,4,20,0,0,1
+GOTO/52,4,2,0,0,1
+GOTO/30,4,2,0,0,1
+GOTO/8,4,2,0,0,1
+GOTO/8,4,20,0,0,1
+FINI
+"""
+
+
+@pytest.mark.parametrize("corner", [1.5, 5.0])
+def test_cli_validate_a_corner_tool_in_process(tmp_path, monkeypatch, capsys, corner):
+    from abm_workbench.formats.staircase_json import dump_staircase
+
+    dump_staircase(staircase(), tmp_path / "stock.json")
+    (tmp_path / "path.apt").write_text(APT.format(corner=corner))
+    monkeypatch.chdir(tmp_path)
+    argv = ["validate", "--stock", "stock.json", "--toolpath", "path.apt", "--flutes", "2", "--feed-per-tooth", "0.1",
+            "--phi-step", "30", "--report", "report", "--stock-model", "in-process"]
+    status = cli.main(argv)
+    _, err = capsys.readouterr()
+    assert status == 0, err
+    page = (tmp_path / "report" / "index.html").read_text(encoding="utf-8")
+    assert "in-process: the stock minus the volumes swept" in page and "<h2>In-process stock</h2>" in page
+    with open(tmp_path / "report" / "comparison.csv", newline="") as file:
+        table = list(csv.DictReader(file))
+    initial, ref, abm = (np.array([float(row[name]) if row[name] not in ("", "nan") else np.nan for row in table])
+                         for name in ("l_initial", "l_ref", "l_abm"))
+    assert np.nanmax(np.abs(abm - ref)) <= AGREE and np.nanmax(initial - ref) > 0.5
