@@ -196,6 +196,42 @@
         <translation>Validierungsprozesse</translation>
     </message>
     <message>
+        <source>Program CL {index} of {count}: operation {number}{name}, {tool}, its CL {cl}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every CL point of the whole program, operation after operation: moved into another operation, the dock goes there once it rests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no engagement of operation {number} of {job}: select the Job and use Engage CAM job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not computed: {reason}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>going there once the slider rests…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computing operation {number} of the program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not shown: {reason}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>

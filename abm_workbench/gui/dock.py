@@ -4,7 +4,8 @@ One ``QDockWidget`` ("ABM engagement", object name ``ABM_EngagementDock``) on th
 FreeCAD's main window, showing one engagement object at a time (:func:`show`):
 
 - a slider and a spin box over the CL points (0-based, as in the results CSV): every CL point of
-  the toolpath's operation, all its passes; the chosen CL point is drawn on top of the model
+  the toolpath's operation, all its passes; for a program of several operations, a second slider
+  over the whole program, kept in step (:mod:`.program`); the chosen CL point is drawn on top of the model
   (``EngagementViewProvider.highlight``) and a line says its depth of cut, engagement segments
   and whether earlier moves of the program changed it (:func:`in_process_words`) at once, and
   its plots follow once the events queued are handled (a timer of 0 ms: a dragged slider plots
@@ -32,6 +33,7 @@ from .colouring import COLOUR_BY, QUANTITIES
 from . import state
 from .colouring import HIGHLIGHT_COLOUR
 from .i18n import noop, translate
+from .program import ProgramRow
 
 OBJECT_NAME = "ABM_EngagementDock"
 #: The quantities' names of colouring.QUANTITIES, for the translation template.
@@ -74,6 +76,8 @@ class EngagementDock(QtGui.QDockWidget):
         self.slider.valueChanged.connect(self.spin.setValue)
         self.spin.valueChanged.connect(self.slider.setValue)
         self.spin.valueChanged.connect(self.choose)
+        self.program = ProgramRow(self)
+        layout.addWidget(self.program)
         self.about = QtGui.QLabel()
         self.about.setWordWrap(True)
         layout.addWidget(self.about)
@@ -135,6 +139,7 @@ class EngagementDock(QtGui.QDockWidget):
                 figure.clear()
                 canvas.draw_idle()
             self.tabs.setTabEnabled(FORCES_TAB, False)
+            self.program.show_for(None, 0)
             return
         m = result.shape[0]
         if cl is None:
@@ -154,6 +159,7 @@ class EngagementDock(QtGui.QDockWidget):
             widget.setRange(0, m - 1)
             widget.setValue(int(cl))
             widget.blockSignals(False)
+        self.program.show_for(obj, int(cl))
         vobj = obj.ViewObject
         if "ColourBy" in vobj.PropertiesList:
             self.colour_by.blockSignals(True)
