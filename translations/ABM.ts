@@ -12,6 +12,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>millimetres (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{program} works in inches, and the tool table {table} gives its lengths in the machine's units, which LinuxCNC does not write in the table. Which units is the machine set up in (LINEAR_UNITS of its INI file)? (the toolpath's ToolTableUnits; change it later in the property editor)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Tool table of {file}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -37,6 +49,10 @@
     </message>
     <message>
         <source>CL points to check (all, or e.g. 0,22,40; about 1 s each):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{file}: not imported: it works in inches, and the units of the tool table {table} were not said</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
