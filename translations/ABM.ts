@@ -4,6 +4,46 @@
 <context>
     <name>ABM</name>
     <message>
+        <source>diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flutes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flute length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed per tooth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>select a FreeCAD CAM Job, or operations of one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no operation has moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{job}: no operation the engine computes ({reasons})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{operation}: no tool controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{operation}: {controller} gives no {value} (set it in its toolbit, or in Edit → Preferences → ABM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{operation}: not in the program of {job} (inactive, or no moves)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Import stock</source>
         <translation type="unfinished"></translation>
     </message>
@@ -24,6 +64,30 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>toolpath</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>toolpaths</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>engagements</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Tool table of {file}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -36,11 +100,31 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{count} {nouns} selected: select one {noun}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no {noun} in the document: import one first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{count} {nouns} in the document: select the one to use</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Validating {label} at {count} CL points against booleans…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Computing model test 1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Reading the toolpath…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computing the engagement of the CAM job…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -49,6 +133,10 @@
     </message>
     <message>
         <source>CL points to check (all, or e.g. 0,22,40; about 1 s each):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{label}: compute it first (recompute the document)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -64,7 +152,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{label}: validation report {page}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{file}: not imported: its program loads tools by number, and no tool table was chosen (a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>validation cancelled: nothing written</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -77,6 +173,54 @@
     </message>
     <message>
         <source>resultant cutting force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>top</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>straight wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>curved wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flute end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stock side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>immersion end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bottom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flute start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>peak |F| over φ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean |F| over φ</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -108,11 +252,53 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>not changed by earlier moves</source>
+        <source>length of
+cut (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cut area
+(mm²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>h (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL {cl} over the tool rotation angle φ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>φ (deg)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>CL point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass progression</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>force (N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL {cl}: peak |F| {peak} N, mean {mean} N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resultant force along the pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not changed by earlier moves</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -125,6 +311,14 @@
     </message>
     <message>
         <source>no forces: turn Cutting forces on in the engagement's task panel and recompute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>depth of cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max length of cut</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -148,7 +342,35 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>segment: UEP surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>UEP surface of the engagement segment:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock (computing CL {cl}…)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computing the in-process stock of {label} at CL {cl}…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl} (program row {row}): {volume} mm³ removed by earlier moves near it, in {seconds} s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show in-process stock: inspect an engagement first (Inspect engagement), then choose its CL point in the dock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl}: cancelled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -332,6 +554,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Computing the engagement…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Fixed by the toolpath file, the values it was made for:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -344,7 +570,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Computing the engagement…</source>
+        <source>{document}: input files missing, not re-pointed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{label}: {file} is not in {folder}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

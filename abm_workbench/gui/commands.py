@@ -122,7 +122,7 @@ class OpenModelTest(Command):
         engagement = create_engagement(doc, stock, toolpath, **job)
         for obj in (stock, toolpath, engagement):
             view_providers.attach(obj)
-        with busy("Computing model test 1…"):
+        with busy(translate("Computing model test 1…")):
             recompute_checked(doc, (stock, toolpath, engagement))
         fit_view()
         dock.show(engagement)
@@ -357,19 +357,26 @@ def operation_words(operation):
     return operation.summary() + ("" if refusal is None else f" ({translate('not for the engine')}: {refusal})")
 
 
+#: The ABM objects' kinds in words, one and several, for messages.
+NOUNS = {"ABM::Stock": (noop("stock"), noop("stocks")), "ABM::Toolpath": (noop("toolpath"), noop("toolpaths")),
+         "ABM::Engagement": (noop("engagement"), noop("engagements"))}
+
+
 def pick(doc, kind, selection):
     """The one ABM object of `kind` ("ABM::Stock", …): the selected one, else the document's only one."""
-    noun = kind.split("::")[1].lower()
+    noun, nouns = (translate(word) for word in NOUNS[kind])
     chosen = [obj for obj in selection if view_providers.kind(obj) == kind]
     if len(chosen) > 1:
-        raise CommandError(f"{len(chosen)} {noun}s selected: select one {noun}")
+        raise CommandError(translate("{count} {nouns} selected: select one {noun}", count=len(chosen), nouns=nouns,
+                                     noun=noun))
     if chosen:
         return chosen[0]
     found = [obj for obj in doc.Objects if view_providers.kind(obj) == kind]
     if not found:
-        raise CommandError(f"no {noun} in the document: import one first")
+        raise CommandError(translate("no {noun} in the document: import one first", noun=noun))
     if len(found) > 1:
-        raise CommandError(f"{len(found)} {noun}s in the document: select the one to use")
+        raise CommandError(translate("{count} {nouns} in the document: select the one to use", count=len(found),
+                                     nouns=nouns))
     return found[0]
 
 
@@ -427,7 +434,7 @@ class EngageCamJob(Command):
         from .cam_jobs import engage
 
         made = engage(doc, selection)
-        with busy("Computing the engagement of the CAM job…"):
+        with busy(translate("Computing the engagement of the CAM job…")):
             recompute_checked(doc, made)
         dock.show(made[-1])
         return made
@@ -482,7 +489,7 @@ class ValidateEngagement(Command):
             doc = FreeCAD.ActiveDocument
             engagement = selected_engagement(doc)
             if engagement.Proxy.result(engagement) is None:
-                raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+                raise CommandError(translate("{label}: compute it first (recompute the document)", label=engagement.Label))
             count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
         except Exception as error:  # noqa: BLE001 (said in a dialog and the report view; the GUI goes on)
             report_error(error, window)
@@ -537,18 +544,19 @@ class ValidateEngagement(Command):
         from .validate import Cancelled, cl_indices, prepare, report_folder
 
         if engagement.Proxy.result(engagement) is None:
-            raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+            raise CommandError(translate("{label}: compute it first (recompute the document)", label=engagement.Label))
         count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
         cls = cl_indices(cls_text, count)
         progress = ProgressDialog(translate("Validating {label} at {count} CL points against booleans…",
                                             label=engagement.Label, count=len(cls)))
         try:
             run = prepare(engagement, cls, folder or report_folder(engagement))
-            page = worker.work(run, sink=progress, cancelled=Cancelled("validation cancelled: nothing written"))
+            page = worker.work(run, sink=progress, cancelled=Cancelled(translate("validation cancelled: nothing written")))
         finally:
             progress.close()
         engagement.ValidationReport = page
-        FreeCAD.Console.PrintMessage(f"{PROG}: {engagement.Label}: validation report {page}\n")
+        FreeCAD.Console.PrintMessage(f"{PROG}: " + translate("{label}: validation report {page}", label=engagement.Label,
+                                                             page=page) + "\n")
         if open_report:
             from PySide import QtCore, QtGui
 
