@@ -15,7 +15,7 @@ the program's CL point, its operation (number, name, tool) and the CL point with
   the engagement of the document that computes that operation of the same program on the same stock
   if there is one (no recompute), else the engagement's own toolpath is set to that operation and
   the engagement recomputed (one undo step "Choose operation"; the tool and cut the file gives for
-  that operation win, as on import). A toolpath linked to a CAM Job follows the Job's operation, so
+  that operation are copied into the engagement, as on import). A toolpath linked to a CAM Job follows the Job's operation, so
   there the row only goes to the engagements "Engage CAM job" made. An operation the engine does not
   compute (a drill) is said, not computed.
 
@@ -33,6 +33,8 @@ from .reporting import CommandError, recompute_checked, report_error
 
 #: Milliseconds the program slider must rest in another operation before the dock goes there.
 SETTLE_MS = 400
+#: The cutting parameters a toolpath file may give (create_engagement copies them), copied for another operation.
+FILE_PARAMETERS = ("diameter", "flute_length", "corner_radius", "spindle_rpm", "flutes", "feed_per_tooth")
 
 
 @dataclass(frozen=True)
@@ -102,6 +104,20 @@ def same_program(engagement, other, number):
         return theirs.Proxy.load(theirs)[1].operation.number == number
     except Exception:  # noqa: BLE001 (a toolpath that cannot be read computes no operation)
         return False
+
+
+def take_from_file(engagement):
+    """Set the engagement's cutting properties that its toolpath file gives (for the operation it now reads) to
+    the file's values, as create_engagement does for a new engagement: the task panel then shows them, and
+    the recompute has no value of the object to overrule."""
+    from ..features.engagement import SETTINGS, given_parameters
+    from ..jobs import resolve
+
+    _, hints = engagement.Toolpath.Proxy.load(engagement.Toolpath)
+    parameters = resolve(given_parameters(engagement), hints, {})
+    for key in FILE_PARAMETERS:
+        if parameters.fixed_by_file(key):
+            setattr(engagement, SETTINGS[key][0], parameters.values[key])
 
 
 class ProgramRow(QtGui.QWidget):
@@ -207,6 +223,7 @@ class ProgramRow(QtGui.QWidget):
         doc.openTransaction(translate("Choose operation"))
         try:
             toolpath.Operation = number
+            take_from_file(engagement)
             with busy(translate("Computing operation {number} of the program…", number=number)):
                 recompute_checked(doc, (toolpath, engagement))
         except BaseException:

@@ -39,6 +39,7 @@ import shiboken2
 from PySide import QtCore, QtGui
 QtWidgets = QtGui
 window = FreeCADGui.getMainWindow()
+report = window.findChild(QtWidgets.QDockWidget, "Report view").widget()
 {events}
 def wait(ms):
     until = QtCore.QTime.currentTime().addMSecs(ms)
@@ -77,6 +78,8 @@ def state():
                 diameter=float(engagement.Proxy.inputs(engagement).tool.diameter), program=slider.value(),
                 cl=shown.spin.value(), cl_slider=shown.slider.value(), where=where.text(),
                 recomputes=len(recomputes), highlight=engagement.ViewObject.Proxy.cl,
+                properties=[engagement.Diameter.Value, engagement.FluteLength.Value, engagement.SpindleSpeed,
+                            engagement.FeedPerTooth.Value],
                 points=[[v.X, v.Y, v.Z] for v in toolpath.Shape.Vertexes])
 verdict["start"] = dict(state(), visible=row.isVisible(), maximum=slider.maximum())
 recomputes.clear()
@@ -133,6 +136,7 @@ verdict["seen"] = seen
 wait(1500)
 settle()
 verdict["dragged"] = state()
+verdict["report"] = report.toPlainText()
 """
 
 
@@ -165,6 +169,9 @@ def test_program_slider_keys_and_drag(tmp_path, run_gui):
     assert rested["operation"] == 2 and rested["rows"] == n2 and rested["diameter"] == 8.0
     assert rested["cl"] == rested["highlight"] == n2 - 1 and rested["program"] == n1 + n2 - 1
     assert rested["recomputes"] == 1 and rested["undo"][0] == "Choose operation"
+    # the file's tool and cut of operation 2 in the engagement's properties: CUTTER/8, flute length 20,
+    # SPINDL 5000 rpm, FEDRAT 600 mm/min with job.json's 2 flutes: 600 / (5000 · 2) mm per tooth
+    assert np.allclose(rested["properties"], [8.0, 20.0, 5000.0, 600 / (5000 * 2)], rtol=1e-12, atol=0)
     assert rested["where"] == (f"Program CL {n1 + n2 - 1} of {n1 + n2}: operation 2 ({second_name}), "
                                f"flat-end mill D8 mm, its CL {n2 - 1}")
     # the toolpath object now draws operation 2's cutting points, as the file has them
@@ -181,3 +188,6 @@ def test_program_slider_keys_and_drag(tmp_path, run_gui):
     assert dragged["recomputes"] == 2 and dragged["operation"] == 1 and dragged["rows"] == n1
     assert dragged["cl"] == dragged["program"] == dragged["highlight"] == seen[-1]
     assert np.abs(np.array(dragged["points"]) - first).max() < 1e-9
+    assert np.allclose(dragged["properties"], [12.0, 30.0, 4000.0, 800 / (4000 * 2)], rtol=1e-12, atol=0)
+    # nothing the user must read as a command line's option, no error
+    assert "--" not in verdict["report"] and "Traceback" not in verdict["report"], verdict["report"]
