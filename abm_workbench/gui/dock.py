@@ -171,6 +171,7 @@ class EngagementDock(QtGui.QDockWidget):
             self.colour_by.setCurrentIndex(COLOUR_BY.index(vobj.ColourBy))
             self.colour_by.blockSignals(False)
         self.show_legend()
+        self.figure.clear()  # new results (another object or operation, a recompute): axes made and laid out anew
         self.choose(int(cl))
 
     def choose(self, cl):
@@ -208,7 +209,7 @@ class EngagementDock(QtGui.QDockWidget):
 
     def plot(self, result, cl):
         """Length of cut, cut area, h (the same at every CL point) over φ at `cl`, and the pass progression
-        with `cl` marked. The four axes are made once (laid out then, and when the dock is resized) and
+        with `cl` marked. The four axes are made once per results (laid out then, and when the dock is resized) and
         only their curves are drawn anew for another CL point: clearing and laying out axes is most of
         a redraw's cost."""
         from ..report.colours import SURFACE_COLOURS
