@@ -136,7 +136,24 @@ verdict["seen"] = seen
 wait(1500)
 settle()
 verdict["dragged"] = state()
-verdict["report"] = report.toPlainText()
+verdict["report"] = report.toPlainText()  # what the program slider's moves wrote
+
+# a second engagement computing operation 2 of the same program on the same stock: End goes to it, nothing
+# recomputed, the first engagement's toolpath left at operation 1
+second_path = create_toolpath(doc, {program!r}, operation=2)
+second = create_engagement(doc, stock, second_path, **commands.load_settings({job!r}))
+for obj in (second_path, second):
+    view_providers.attach(obj)
+doc.recompute()
+shown = commands.InspectEngagement.show(engagement, 5)
+settle()
+recomputes.clear()
+slider.setFocus()
+key(slider, QtCore.Qt.Key_End)
+wait(1500)
+settle()
+verdict["other"] = [shown.obj.Name, second.Name, toolpath.Operation, len(recomputes), shown.spin.value(),
+                    second.ViewObject.Proxy.cl, slider.value(), where.text()]
 """
 
 
@@ -189,5 +206,8 @@ def test_program_slider_keys_and_drag(tmp_path, run_gui):
     assert dragged["cl"] == dragged["program"] == dragged["highlight"] == seen[-1]
     assert np.abs(np.array(dragged["points"]) - first).max() < 1e-9
     assert np.allclose(dragged["properties"], [12.0, 30.0, 4000.0, 800 / (4000 * 2)], rtol=1e-12, atol=0)
+    name, second_name_, operation, count, cl, highlight, index, words = verdict["other"]
+    assert name == second_name_ and operation == 1 and count == 0
+    assert cl == highlight == n2 - 1 and index == n1 + n2 - 1 and f"operation 2 ({second_name})" in words
     # nothing the user must read as a command line's option, no error
     assert "--" not in verdict["report"] and "Traceback" not in verdict["report"], verdict["report"]
