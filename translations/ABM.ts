@@ -4,11 +4,87 @@
 <context>
     <name>ABM</name>
     <message>
+        <source>diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flutes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flute length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed per tooth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>select a FreeCAD CAM Job, or operations of one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no operation has moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{job}: no operation the engine computes ({reasons})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{operation}: no tool controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{operation}: {controller} gives no {value} (set it in its toolbit, or in Edit → Preferences → ABM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{operation}: not in the program of {job} (inactive, or no moves)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Import stock</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Import toolpath</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{program} works in inches, and the tool table {table} gives its lengths in the machine's units, which LinuxCNC does not write in the table. Which units is the machine set up in (LINEAR_UNITS of its INI file)? (the toolpath's ToolTableUnits; change it later in the property editor)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>toolpath</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>toolpaths</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>engagement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>engagements</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -24,11 +100,31 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{count} {nouns} selected: select one {noun}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no {noun} in the document: import one first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{count} {nouns} in the document: select the one to use</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Validating {label} at {count} CL points against booleans…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Computing model test 1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Reading the toolpath…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computing the engagement of the CAM job…</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -40,6 +136,14 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{label}: compute it first (recompute the document)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{file}: not imported: it works in inches, and the units of the tool table {table} were not said</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>not for the engine</source>
         <translation type="unfinished"></translation>
     </message>
@@ -48,7 +152,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{label}: validation report {page}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{file}: not imported: its program loads tools by number, and no tool table was chosen (a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>validation cancelled: nothing written</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -61,6 +173,54 @@
     </message>
     <message>
         <source>resultant cutting force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>top</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>straight wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>curved wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flute end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stock side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>immersion end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bottom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flute start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>peak |F| over φ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean |F| over φ</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -92,11 +252,53 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>not changed by earlier moves</source>
+        <source>length of
+cut (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cut area
+(mm²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>h (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL {cl} over the tool rotation angle φ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>φ (deg)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>CL point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass progression</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>force (N)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL {cl}: peak |F| {peak} N, mean {mean} N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resultant force along the pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not changed by earlier moves</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -109,6 +311,14 @@
     </message>
     <message>
         <source>no forces: turn Cutting forces on in the engagement's task panel and recompute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>depth of cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max length of cut</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -132,7 +342,35 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>segment: UEP surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>UEP surface of the engagement segment:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock (computing CL {cl}…)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computing the in-process stock of {label} at CL {cl}…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl} (program row {row}): {volume} mm³ removed by earlier moves near it, in {seconds} s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show in-process stock: inspect an engagement first (Inspect engagement), then choose its CL point in the dock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl}: cancelled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -193,6 +431,42 @@
     </message>
     <message>
         <source>Validation workers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program CL {index} of {count}: operation {number}{name}, {tool}, its CL {cl}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every CL point of the whole program, operation after operation: moved into another operation, the dock goes there once it rests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no engagement of operation {number} of {job}: select the Job and use Engage CAM job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not computed: {reason}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>going there once the slider rests…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computing operation {number} of the program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not shown: {reason}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -280,6 +554,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Computing the engagement…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Fixed by the toolpath file, the values it was made for:</source>
         <translation type="unfinished"></translation>
     </message>
@@ -292,7 +570,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Computing the engagement…</source>
+        <source>{document}: input files missing, not re-pointed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{label}: {file} is not in {folder}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -4,12 +4,88 @@
 <context>
     <name>ABM</name>
     <message>
+        <source>diameter</source>
+        <translation>Durchmesser</translation>
+    </message>
+    <message>
+        <source>flutes</source>
+        <translation>Schneidenzahl</translation>
+    </message>
+    <message>
+        <source>flute length</source>
+        <translation>Schneidenlänge</translation>
+    </message>
+    <message>
+        <source>feed per tooth</source>
+        <translation>Vorschub pro Zahn</translation>
+    </message>
+    <message>
+        <source>select a FreeCAD CAM Job, or operations of one</source>
+        <translation>einen FreeCAD-CAM-Job oder Operationen eines Jobs auswählen</translation>
+    </message>
+    <message>
+        <source>no operation has moves</source>
+        <translation>keine Operation hat Bewegungen</translation>
+    </message>
+    <message>
+        <source>{job}: no operation the engine computes ({reasons})</source>
+        <translation>{job}: keine Operation, die der Rechenkern berechnet ({reasons})</translation>
+    </message>
+    <message>
+        <source>{operation}: no tool controller</source>
+        <translation>{operation}: kein Werkzeugcontroller</translation>
+    </message>
+    <message>
+        <source>{operation}: {controller} gives no {value} (set it in its toolbit, or in Edit → Preferences → ABM)</source>
+        <translation>{operation}: {controller} gibt keinen Wert für {value} an (im Toolbit festlegen oder unter Bearbeiten → Einstellungen → ABM)</translation>
+    </message>
+    <message>
+        <source>{operation}: not in the program of {job} (inactive, or no moves)</source>
+        <translation>{operation}: nicht im Programm von {job} (inaktiv oder ohne Bewegungen)</translation>
+    </message>
+    <message>
         <source>Import stock</source>
         <translation>Rohteil importieren</translation>
     </message>
     <message>
         <source>Import toolpath</source>
         <translation>Werkzeugbahn importieren</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>Millimeter (mm)</translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation>Zoll (in)</translation>
+    </message>
+    <message>
+        <source>{program} works in inches, and the tool table {table} gives its lengths in the machine's units, which LinuxCNC does not write in the table. Which units is the machine set up in (LINEAR_UNITS of its INI file)? (the toolpath's ToolTableUnits; change it later in the property editor)</source>
+        <translation>{program} arbeitet in Zoll, und die Werkzeugtabelle {table} gibt ihre Längen in den Einheiten der Maschine an, die LinuxCNC nicht in die Tabelle schreibt. In welchen Einheiten ist die Maschine eingerichtet (LINEAR_UNITS ihrer INI-Datei)? (ToolTableUnits der Werkzeugbahn; später im Eigenschafteneditor änderbar)</translation>
+    </message>
+    <message>
+        <source>stock</source>
+        <translation>Rohteil</translation>
+    </message>
+    <message>
+        <source>stocks</source>
+        <translation>Rohteile</translation>
+    </message>
+    <message>
+        <source>toolpath</source>
+        <translation>Werkzeugbahn</translation>
+    </message>
+    <message>
+        <source>toolpaths</source>
+        <translation>Werkzeugbahnen</translation>
+    </message>
+    <message>
+        <source>engagement</source>
+        <translation>Eingriff</translation>
+    </message>
+    <message>
+        <source>engagements</source>
+        <translation>Eingriffe</translation>
     </message>
     <message>
         <source>Tool table of {file}</source>
@@ -24,12 +100,32 @@
         <translation>{file} enthält mehrere Operationen: die zu berechnende wählen (Operation der Werkzeugbahn; später im Eigenschafteneditor änderbar)</translation>
     </message>
     <message>
+        <source>{count} {nouns} selected: select one {noun}</source>
+        <translation>{count} {nouns} ausgewählt: nur ein Objekt vom Typ {noun} auswählen</translation>
+    </message>
+    <message>
+        <source>no {noun} in the document: import one first</source>
+        <translation>kein Objekt vom Typ {noun} im Dokument: zuerst eines importieren</translation>
+    </message>
+    <message>
+        <source>{count} {nouns} in the document: select the one to use</source>
+        <translation>{count} {nouns} im Dokument: das zu verwendende auswählen</translation>
+    </message>
+    <message>
         <source>Validating {label} at {count} CL points against booleans…</source>
         <translation>{label} wird an {count} CL-Punkten gegen boolesche Operationen validiert…</translation>
     </message>
     <message>
+        <source>Computing model test 1…</source>
+        <translation>Modelltest 1 wird berechnet…</translation>
+    </message>
+    <message>
         <source>Reading the toolpath…</source>
         <translation>Werkzeugbahn wird gelesen…</translation>
+    </message>
+    <message>
+        <source>Computing the engagement of the CAM job…</source>
+        <translation>Eingriff des CAM-Jobs wird berechnet…</translation>
     </message>
     <message>
         <source>Validate engagement</source>
@@ -40,6 +136,14 @@
         <translation>Zu prüfende CL-Punkte (all oder z. B. 0,22,40; je etwa 1 s):</translation>
     </message>
     <message>
+        <source>{label}: compute it first (recompute the document)</source>
+        <translation>{label}: zuerst berechnen (Dokument neu berechnen)</translation>
+    </message>
+    <message>
+        <source>{file}: not imported: it works in inches, and the units of the tool table {table} were not said</source>
+        <translation>{file}: nicht importiert: es arbeitet in Zoll, und die Einheiten der Werkzeugtabelle {table} wurden nicht angegeben</translation>
+    </message>
+    <message>
         <source>not for the engine</source>
         <translation>nicht für den Rechenkern</translation>
     </message>
@@ -48,8 +152,16 @@
         <translation>Ordner für den Validierungsbericht</translation>
     </message>
     <message>
+        <source>{label}: validation report {page}</source>
+        <translation>{label}: Validierungsbericht {page}</translation>
+    </message>
+    <message>
         <source>{file}: not imported: its program loads tools by number, and no tool table was chosen (a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
         <translation>{file}: nicht importiert: das Programm lädt Werkzeuge per Nummer, und es wurde keine Werkzeugtabelle gewählt (eine LinuxCNC-Werkzeugtabelle oder das FreeCAD-Dokument, aus dem das Programm erzeugt wurde)</translation>
+    </message>
+    <message>
+        <source>validation cancelled: nothing written</source>
+        <translation>Validierung abgebrochen: nichts geschrieben</translation>
     </message>
     <message>
         <source>length of cut</source>
@@ -62,6 +174,54 @@
     <message>
         <source>resultant cutting force</source>
         <translation>resultierende Schnittkraft</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>top</source>
+        <translation>Deckfläche</translation>
+    </message>
+    <message>
+        <source>straight wall</source>
+        <translation>gerade Wand</translation>
+    </message>
+    <message>
+        <source>curved wall</source>
+        <translation>gekrümmte Wand</translation>
+    </message>
+    <message>
+        <source>flute end</source>
+        <translation>Schneidenende</translation>
+    </message>
+    <message>
+        <source>stock side</source>
+        <translation>Rohteilseite</translation>
+    </message>
+    <message>
+        <source>immersion end</source>
+        <translation>Eingriffsende</translation>
+    </message>
+    <message>
+        <source>bottom</source>
+        <translation>Boden</translation>
+    </message>
+    <message>
+        <source>flute start</source>
+        <translation>Schneidenanfang</translation>
+    </message>
+    <message>
+        <source>machined</source>
+        <translation>bearbeitet</translation>
+    </message>
+    <message>
+        <source>peak |F| over φ</source>
+        <translation>Spitze |F| über φ</translation>
+    </message>
+    <message>
+        <source>mean |F| over φ</source>
+        <translation>Mittel |F| über φ</translation>
     </message>
     <message>
         <source>in-process stock: {count} CL points changed by earlier moves of the program</source>
@@ -92,12 +252,56 @@
         <translation>; Kraftspitze {force} N</translation>
     </message>
     <message>
-        <source>not changed by earlier moves</source>
-        <translation>nicht durch frühere Bewegungen verändert</translation>
+        <source>length of
+cut (mm)</source>
+        <translation>Schnitt-
+länge (mm)</translation>
+    </message>
+    <message>
+        <source>cut area
+(mm²)</source>
+        <translation>Spanungs-
+fläche (mm²)</translation>
+    </message>
+    <message>
+        <source>h (mm)</source>
+        <translation>h (mm)</translation>
+    </message>
+    <message>
+        <source>CL {cl} over the tool rotation angle φ</source>
+        <translation>CL {cl} über dem Drehwinkel φ des Werkzeugs</translation>
+    </message>
+    <message>
+        <source>φ (deg)</source>
+        <translation>φ (Grad)</translation>
     </message>
     <message>
         <source>CL point</source>
         <translation>CL-Punkt</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Pass progression</source>
+        <translation>Verlauf über die Bahn</translation>
+    </message>
+    <message>
+        <source>force (N)</source>
+        <translation>Kraft (N)</translation>
+    </message>
+    <message>
+        <source>CL {cl}: peak |F| {peak} N, mean {mean} N</source>
+        <translation>CL {cl}: Spitze |F| {peak} N, Mittel {mean} N</translation>
+    </message>
+    <message>
+        <source>Resultant force along the pass</source>
+        <translation>Resultierende Kraft entlang der Bahn</translation>
+    </message>
+    <message>
+        <source>not changed by earlier moves</source>
+        <translation>nicht durch frühere Bewegungen verändert</translation>
     </message>
     <message>
         <source>Colour by</source>
@@ -110,6 +314,14 @@
     <message>
         <source>no forces: turn Cutting forces on in the engagement's task panel and recompute</source>
         <translation>keine Kräfte: Schnittkräfte in der Aufgabenansicht des Eingriffs einschalten und neu berechnen</translation>
+    </message>
+    <message>
+        <source>depth of cut</source>
+        <translation>Schnitttiefe</translation>
+    </message>
+    <message>
+        <source>max length of cut</source>
+        <translation>größte Schnittlänge</translation>
     </message>
     <message>
         <source>engagement segment (UEP surface)</source>
@@ -132,8 +344,36 @@
         <translation>CL {cl}: das Werkzeug greift hier nicht in das Rohteil ein</translation>
     </message>
     <message>
+        <source>segment: UEP surface</source>
+        <translation>Segment: UEP-Fläche</translation>
+    </message>
+    <message>
         <source>UEP surface of the engagement segment:</source>
         <translation>UEP-Fläche des Eingriffssegments:</translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl}</source>
+        <translation>Zwischenrohteil bei CL {cl}</translation>
+    </message>
+    <message>
+        <source>In-process stock (computing CL {cl}…)</source>
+        <translation>Zwischenrohteil (CL {cl} wird berechnet…)</translation>
+    </message>
+    <message>
+        <source>Computing the in-process stock of {label} at CL {cl}…</source>
+        <translation>Zwischenrohteil von {label} bei CL {cl} wird berechnet…</translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl} (program row {row}): {volume} mm³ removed by earlier moves near it, in {seconds} s</source>
+        <translation>Zwischenrohteil bei CL {cl} (Programmzeile {row}): {volume} mm³ durch frühere Bewegungen in der Nähe abgetragen, in {seconds} s</translation>
+    </message>
+    <message>
+        <source>Show in-process stock: inspect an engagement first (Inspect engagement), then choose its CL point in the dock</source>
+        <translation>Zwischenrohteil zeigen: zuerst einen Eingriff untersuchen („Eingriff untersuchen“), dann seinen CL-Punkt im Dock wählen</translation>
+    </message>
+    <message>
+        <source>In-process stock at CL {cl}: cancelled</source>
+        <translation>Zwischenrohteil bei CL {cl}: abgebrochen</translation>
     </message>
     <message>
         <source>Tool diameter</source>
@@ -194,6 +434,42 @@
     <message>
         <source>Validation workers</source>
         <translation>Validierungsprozesse</translation>
+    </message>
+    <message>
+        <source>Program CL {index} of {count}: operation {number}{name}, {tool}, its CL {cl}</source>
+        <translation>Programm-CL {index} von {count}: Operation {number}{name}, {tool}, ihr CL {cl}</translation>
+    </message>
+    <message>
+        <source>Every CL point of the whole program, operation after operation: moved into another operation, the dock goes there once it rests</source>
+        <translation>Alle CL-Punkte des ganzen Programms, Operation für Operation: in eine andere Operation bewegt, wechselt das Dock dorthin, sobald der Regler ruht</translation>
+    </message>
+    <message>
+        <source>Choose operation</source>
+        <translation>Operation wählen</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>no engagement of operation {number} of {job}: select the Job and use Engage CAM job</source>
+        <translation>kein Eingriff für Operation {number} von {job}: den Job auswählen und „CAM-Job eingreifen lassen“ verwenden</translation>
+    </message>
+    <message>
+        <source>not computed: {reason}</source>
+        <translation>nicht berechnet: {reason}</translation>
+    </message>
+    <message>
+        <source>going there once the slider rests…</source>
+        <translation>wird angezeigt, sobald der Regler ruht…</translation>
+    </message>
+    <message>
+        <source>Computing operation {number} of the program…</source>
+        <translation>Operation {number} des Programms wird berechnet…</translation>
+    </message>
+    <message>
+        <source>not shown: {reason}</source>
+        <translation>nicht angezeigt: {reason}</translation>
     </message>
     <message>
         <source>Cancel</source>
@@ -280,6 +556,10 @@
         <translation>y-Fenster</translation>
     </message>
     <message>
+        <source>Computing the engagement…</source>
+        <translation>Eingriff wird berechnet…</translation>
+    </message>
+    <message>
         <source>Fixed by the toolpath file, the values it was made for:</source>
         <translation>Durch die Werkzeugbahndatei festgelegt, die Werte, für die sie erstellt wurde:</translation>
     </message>
@@ -292,8 +572,12 @@
         <translation>Fehlend:</translation>
     </message>
     <message>
-        <source>Computing the engagement…</source>
-        <translation>Eingriff wird berechnet…</translation>
+        <source>{document}: input files missing, not re-pointed:</source>
+        <translation>{document}: Eingabedateien fehlen, nicht neu zugeordnet:</translation>
+    </message>
+    <message>
+        <source>{label}: {file} is not in {folder}</source>
+        <translation>{label}: {file} ist nicht in {folder}</translation>
     </message>
     <message>
         <source>Reading and recognising the stock…</source>

@@ -8,7 +8,9 @@
   it recomputes; cam.job_program); ``CamOperation``, the Job's operation computed (wins over
   Operation); ``Operation``, the program's operation computed (1-based; 0: its one milling
   operation); ``ToolTable``, the tools of a G-code program's T words (a LinuxCNC tool table or
-  the FCStd that posted it; empty: none).
+  the FCStd that posted it; empty: none); ``ToolTableUnits``, the units of a LinuxCNC tool table's
+  lengths, the machine's (``not said``: mm, and a program in inches with such a table is refused
+  until they are said; ``mm``; ``inch``).
 - group "Summary" (read-only, set by ``execute`` from the file): ``CLPoints``, and what an APT
   file says about the tool and the cut, 0 where it says nothing: ``Operations`` (every
   operation of the file: number, name, tool, CL points), ``ToolDiameter`` and
@@ -106,8 +108,9 @@ class ToolpathFeature(FeatureProxy):
             stamp = None
         operation = getattr(obj, "Operation", 0) or None
         tools = getattr(obj, "ToolTable", "")
-        if self._cache is None or self._cache[0] != (path, stamp, operation, tools):
-            self._cache = ((path, stamp, operation, tools), self._read(obj, path, operation))
+        units = machine_units(obj)
+        if self._cache is None or self._cache[0] != (path, stamp, operation, tools, units):
+            self._cache = ((path, stamp, operation, tools, units), self._read(obj, path, operation))
         return self._cache[1]
 
     def _read(self, obj, path, operation, job=None):
@@ -131,7 +134,8 @@ class ToolpathFeature(FeatureProxy):
             if tools:
                 from ..formats.gcode.options import ReadOptions
 
-                return load_path(path, operation, options=ReadOptions(tool_table=tools))
+                return load_path(path, operation, options=ReadOptions(tool_table=tools,
+                                                                      machine_units=machine_units(obj)))
             return load_path(path, operation)
         except OperationChoiceError as error:
             listing = "; ".join(op.summary() for op in error.operations)
@@ -172,13 +176,31 @@ def add_operation_property(obj):
         ], read_only=True)
 
 
+#: Values of ToolTableUnits: the first says nothing (read in mm, a program in inches refused).
+TOOL_TABLE_UNITS = ("not said", "mm", "inch")
+
+
 def add_tool_table_property(obj):
-    """Add ToolTable (group "Source") when missing."""
+    """Add ToolTable and ToolTableUnits (group "Source") when missing."""
     if "ToolTable" not in obj.PropertiesList:
         add_properties(obj, "Source", [
             ("App::PropertyFile", "ToolTable", "G-code: the tools of its T words, a LinuxCNC tool table or the FreeCAD "
                                                "document (FCStd) that posted the program (empty: none)"),
         ])
+    if "ToolTableUnits" not in obj.PropertiesList:
+        add_properties(obj, "Source", [
+            ("App::PropertyEnumeration", "ToolTableUnits", "units of a LinuxCNC tool table's lengths: the machine's "
+                                                           "(its INI file's LINEAR_UNITS), which LinuxCNC does not "
+                                                           "write in the table; not said: mm, and a program in inches "
+                                                           "with such a table is refused"),
+        ])
+        obj.ToolTableUnits = list(TOOL_TABLE_UNITS)
+
+
+def machine_units(obj):
+    """ReadOptions' machine_units of the toolpath `obj`: "mm", "inch", or None (not said, or no table)."""
+    units = getattr(obj, "ToolTableUnits", TOOL_TABLE_UNITS[0])
+    return units if getattr(obj, "ToolTable", "") and units != TOOL_TABLE_UNITS[0] else None
 
 
 def polyline(points):
@@ -192,11 +214,12 @@ def polyline(points):
 
 
 def create_toolpath(doc=None, path=None, name="Toolpath", *, cam_job=None, cam_operation=None, operation=0,
-                    tool_table=""):
+                    tool_table="", tool_table_units=TOOL_TABLE_UNITS[0]):
     """Add a toolpath object reading `path` (CSV, APT, CLS, G-code), or the program of `cam_job` (a FreeCAD CAM
     Job of the document), to `doc` (default the active document; RuntimeError if none); the operation
     computed: `cam_operation` (an operation of the Job), else `operation` (1-based; 0: the program's one
-    milling operation); tool_table: a G-code program's tool table (LinuxCNC, or the FCStd that posted it).
+    milling operation); tool_table: a G-code program's tool table (LinuxCNC, or the FCStd that posted it);
+    tool_table_units: the units of a LinuxCNC table's lengths (TOOL_TABLE_UNITS).
     Returns the object (not yet recomputed)."""
     doc = document_or_active(doc)
     obj = doc.addObject("Part::FeaturePython", name)
@@ -206,4 +229,5 @@ def create_toolpath(doc=None, path=None, name="Toolpath", *, cam_job=None, cam_o
     obj.CamJob, obj.CamOperation = cam_job, cam_operation
     obj.Operation = operation
     obj.ToolTable = os.fspath(tool_table)
+    obj.ToolTableUnits = tool_table_units or TOOL_TABLE_UNITS[0]
     return obj

@@ -14,7 +14,12 @@ from ..cam.job_program import job_program
 from ..cam.toolbits import controller_tool
 from ..formats.cl import STEP, TOLERANCE
 from . import preferences, view_providers
+from .i18n import noop, translate
 from .reporting import CommandError
+
+#: The required values of preferences.REQUIRED in words, for messages.
+REQUIRED_WORDS = {"diameter": noop("diameter"), "flutes": noop("flutes"), "flute_length": noop("flute length"),
+                  "feed_per_tooth": noop("feed per tooth")}
 
 
 def chosen(selection):
@@ -32,7 +37,7 @@ def chosen(selection):
             if placed is not None and (job, placed) not in found:
                 found.append((job, placed))
     if not found:
-        raise CommandError("select a FreeCAD CAM Job, or operations of one")
+        raise CommandError(translate("select a FreeCAD CAM Job, or operations of one"))
     return [(job, op) for job, op in found if op is None or (job, None) not in found]  # a Job chosen takes all
 
 
@@ -54,15 +59,18 @@ def operations_to_engage(job, op):
     if op is not None:
         operation = by_label.get(op.Label)
         if operation is None:
-            raise CommandError(f"{op.Label}: not in the program of {job.Label} (inactive, or no moves)")
+            raise CommandError(translate("{operation}: not in the program of {job} (inactive, or no moves)",
+                                         operation=op.Label, job=job.Label))
         if operation.refusal() is not None:
             raise CommandError(operation.refusal())
         return [op]
     found = [cam_op for cam_op in operations(job)
              if cam_op.Label in by_label and by_label[cam_op.Label].refusal() is None]
     if not found:
-        reasons = "; ".join(operation.refusal() for operation in program.operations) or "no operation has moves"
-        raise CommandError(f"{job.Label}: no operation the engine computes ({reasons})")
+        reasons = "; ".join(operation.refusal() for operation in program.operations) or translate(
+            "no operation has moves")
+        raise CommandError(translate("{job}: no operation the engine computes ({reasons})", job=job.Label,
+                                     reasons=reasons))
     return found
 
 
@@ -72,7 +80,7 @@ def settings_of(op):
     settings = preferences.engagement_defaults()
     controller = tool_controller(op)
     if controller is None:
-        raise CommandError(f"{op.Label}: no tool controller")
+        raise CommandError(translate("{operation}: no tool controller", operation=op.Label))
     tool, _ = controller_tool(controller)
     for key, value in (("diameter", tool.diameter), ("corner_radius", tool.corner_radius),
                        ("flute_length", tool.flute_length), ("flutes", tool.flutes)):
@@ -86,8 +94,9 @@ def settings_of(op):
             settings["feed_per_tooth"] = feed / (rpm * settings["flutes"])
     missing = [key for key in preferences.REQUIRED if not settings.get(key)]
     if missing:
-        raise CommandError(f"{op.Label}: {controller.Label} gives no {missing[0].replace('_', ' ')} (set it in its "
-                           "toolbit, or in Edit → Preferences → ABM)")
+        raise CommandError(translate("{operation}: {controller} gives no {value} (set it in its toolbit, or in Edit → "
+                                     "Preferences → ABM)", operation=op.Label, controller=controller.Label,
+                                     value=translate(REQUIRED_WORDS[missing[0]])))
     return settings
 
 

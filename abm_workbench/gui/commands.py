@@ -122,7 +122,7 @@ class OpenModelTest(Command):
         engagement = create_engagement(doc, stock, toolpath, **job)
         for obj in (stock, toolpath, engagement):
             view_providers.attach(obj)
-        with busy("Computing model test 1…"):
+        with busy(translate("Computing model test 1…")):
             recompute_checked(doc, (stock, toolpath, engagement))
         fit_view()
         dock.show(engagement)
@@ -227,23 +227,26 @@ class ImportToolpath(_ImportFile):
             self.execute(path, *options)
 
     @staticmethod
-    def create(doc, source, operation=0, tool_table=""):
+    def create(doc, source, operation=0, tool_table="", units=None):
         """The toolpath object of `source`: a file path (its `operation`, 1-based, 0: its one milling
-        operation; a G-code program's `tool_table`), or a CAM Job or operation of the document."""
+        operation; a G-code program's `tool_table` and the `units` of its lengths, "mm" or "inch", None
+        not said), or a CAM Job or operation of the document."""
         from ..cam.freecad_cam import is_job, job_of
         from ..features import create_toolpath
 
         if isinstance(source, (str, os.PathLike)):
-            return create_toolpath(doc, source, operation=int(operation), tool_table=tool_table)
+            return create_toolpath(doc, source, operation=int(operation), tool_table=tool_table,
+                                   tool_table_units=units or "not said")
         job = job_of(source)
         return create_toolpath(doc, cam_job=job, cam_operation=None if is_job(source) else source)
 
 
-def toolpath_needs(path, tool_table=""):
+def toolpath_needs(path, tool_table="", units=None):
     """What reading the toolpath file `path` needs from the user: ("operation", operations) when it holds
     several milling operations (formats.cl Operation objects, all of the program's), ("tool table", message)
-    when it is G-code whose T words need a tool table and none is given; else None (it reads, or fails for
-    a reason the import will say). Read in a worker thread."""
+    when it is G-code whose T words need a tool table and none is given, ("units", message) when it is
+    G-code in inches whose LinuxCNC `tool_table` gives lengths in units not said (`units`: "mm", "inch" or
+    None); else None (it reads, or fails for a reason the import will say). Read in a worker thread."""
     from ..errors import InputError
     from ..formats.cl.program import OperationChoiceError
     from ..jobs import load_path
@@ -253,7 +256,7 @@ def toolpath_needs(path, tool_table=""):
     if tool_table:
         from ..formats.gcode.options import ReadOptions
 
-        options = ReadOptions(tool_table=tool_table)
+        options = ReadOptions(tool_table=tool_table, machine_units=units)
     try:
         worker.work(load_path, path, None, options=options, text=noop("Reading the toolpath…"))
     except OperationChoiceError as error:
@@ -264,13 +267,15 @@ def toolpath_needs(path, tool_table=""):
     except InputError as error:
         if not tool_table and "no tool table" in str(error):
             return "tool table", str(error)
+        if tool_table and units is None and "--machine-units" in str(error):
+            return "units", str(error)
     return None
 
 
 def ask_toolpath_options(path, tool_table=""):
-    """(operation, tool table) to import the toolpath file `path` with, asked in dialogs where the file needs
-    them (:func:`toolpath_needs`): the operation of a program of several, the tool table of G-code; None when
-    the user cancels."""
+    """(operation, tool table, units of its lengths) to import the toolpath file `path` with, asked in dialogs
+    where the file needs them (:func:`toolpath_needs`): the operation of a program of several, the tool table
+    of G-code and, for a program in inches, the units of a LinuxCNC table; None when the user cancels."""
     from PySide import QtGui
 
     window = FreeCADGui.getMainWindow()
@@ -287,6 +292,12 @@ def ask_toolpath_options(path, tool_table=""):
             return None
         tool_table = chosen
         need = toolpath_needs(path, tool_table)
+    units = None
+    if need is not None and need[0] == "units":
+        units = ask_units(path, tool_table)
+        if units is None:
+            return None
+        need = toolpath_needs(path, tool_table, units)
     operation = 0
     if need is not None and need[0] == "operation":
         operations = need[1]
@@ -305,7 +316,39 @@ def ask_toolpath_options(path, tool_table=""):
             return None
         operation = operations[[operation_words(op) for op in operations].index(dialog.textValue())].number
         dialog.deleteLater()
-    return operation, tool_table
+    return operation, tool_table, units
+
+
+#: The choices of :func:`ask_units`, in the order shown: (words, ReadOptions' machine_units).
+UNITS = ((noop("millimetres (mm)"), "mm"), (noop("inches (in)"), "inch"))
+
+
+def ask_units(path, tool_table):
+    """The units of the lengths of the LinuxCNC `tool_table` of the G-code program `path` (which works in inches),
+    asked in a dialog (``ABM_MachineUnits``): "mm" or "inch"; None when the user cancels (said in the report
+    view: nothing imported)."""
+    from PySide import QtGui
+
+    program, table = os.path.basename(path), os.path.basename(tool_table)
+    dialog = QtGui.QInputDialog(FreeCADGui.getMainWindow())
+    dialog.setObjectName("ABM_MachineUnits")
+    dialog.setWindowTitle(translate("Import toolpath"))
+    dialog.setLabelText(translate("{program} works in inches, and the tool table {table} gives its lengths in the "
+                                  "machine's units, which LinuxCNC does not write in the table. Which units is the "
+                                  "machine set up in (LINEAR_UNITS of its INI file)? (the toolpath's ToolTableUnits; "
+                                  "change it later in the property editor)", program=program, table=table))
+    words = [translate(text) for text, _ in UNITS]
+    dialog.setComboBoxItems(words)
+    dialog.setComboBoxEditable(False)
+    chosen = dialog.exec_()
+    answer = dialog.textValue()
+    dialog.deleteLater()
+    if not chosen:
+        FreeCAD.Console.PrintWarning(
+            f"{PROG}: " + translate("{file}: not imported: it works in inches, and the units of the tool table {table} "
+                                    "were not said", file=program, table=table) + "\n")
+        return None
+    return UNITS[words.index(answer)][1]
 
 
 def operation_words(operation):
@@ -314,19 +357,26 @@ def operation_words(operation):
     return operation.summary() + ("" if refusal is None else f" ({translate('not for the engine')}: {refusal})")
 
 
+#: The ABM objects' kinds in words, one and several, for messages.
+NOUNS = {"ABM::Stock": (noop("stock"), noop("stocks")), "ABM::Toolpath": (noop("toolpath"), noop("toolpaths")),
+         "ABM::Engagement": (noop("engagement"), noop("engagements"))}
+
+
 def pick(doc, kind, selection):
     """The one ABM object of `kind` ("ABM::Stock", …): the selected one, else the document's only one."""
-    noun = kind.split("::")[1].lower()
+    noun, nouns = (translate(word) for word in NOUNS[kind])
     chosen = [obj for obj in selection if view_providers.kind(obj) == kind]
     if len(chosen) > 1:
-        raise CommandError(f"{len(chosen)} {noun}s selected: select one {noun}")
+        raise CommandError(translate("{count} {nouns} selected: select one {noun}", count=len(chosen), nouns=nouns,
+                                     noun=noun))
     if chosen:
         return chosen[0]
     found = [obj for obj in doc.Objects if view_providers.kind(obj) == kind]
     if not found:
-        raise CommandError(f"no {noun} in the document: import one first")
+        raise CommandError(translate("no {noun} in the document: import one first", noun=noun))
     if len(found) > 1:
-        raise CommandError(f"{len(found)} {noun}s in the document: select the one to use")
+        raise CommandError(translate("{count} {nouns} in the document: select the one to use", count=len(found),
+                                     nouns=nouns))
     return found[0]
 
 
@@ -384,7 +434,7 @@ class EngageCamJob(Command):
         from .cam_jobs import engage
 
         made = engage(doc, selection)
-        with busy("Computing the engagement of the CAM job…"):
+        with busy(translate("Computing the engagement of the CAM job…")):
             recompute_checked(doc, made)
         dock.show(made[-1])
         return made
@@ -439,7 +489,7 @@ class ValidateEngagement(Command):
             doc = FreeCAD.ActiveDocument
             engagement = selected_engagement(doc)
             if engagement.Proxy.result(engagement) is None:
-                raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+                raise CommandError(translate("{label}: compute it first (recompute the document)", label=engagement.Label))
             count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
         except Exception as error:  # noqa: BLE001 (said in a dialog and the report view; the GUI goes on)
             report_error(error, window)
@@ -494,18 +544,19 @@ class ValidateEngagement(Command):
         from .validate import Cancelled, cl_indices, prepare, report_folder
 
         if engagement.Proxy.result(engagement) is None:
-            raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+            raise CommandError(translate("{label}: compute it first (recompute the document)", label=engagement.Label))
         count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
         cls = cl_indices(cls_text, count)
         progress = ProgressDialog(translate("Validating {label} at {count} CL points against booleans…",
                                             label=engagement.Label, count=len(cls)))
         try:
             run = prepare(engagement, cls, folder or report_folder(engagement))
-            page = worker.work(run, sink=progress, cancelled=Cancelled("validation cancelled: nothing written"))
+            page = worker.work(run, sink=progress, cancelled=Cancelled(translate("validation cancelled: nothing written")))
         finally:
             progress.close()
         engagement.ValidationReport = page
-        FreeCAD.Console.PrintMessage(f"{PROG}: {engagement.Label}: validation report {page}\n")
+        FreeCAD.Console.PrintMessage(f"{PROG}: " + translate("{label}: validation report {page}", label=engagement.Label,
+                                                             page=page) + "\n")
         if open_report:
             from PySide import QtCore, QtGui
 

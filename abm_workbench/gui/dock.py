@@ -4,7 +4,8 @@ One ``QDockWidget`` ("ABM engagement", object name ``ABM_EngagementDock``) on th
 FreeCAD's main window, showing one engagement object at a time (:func:`show`):
 
 - a slider and a spin box over the CL points (0-based, as in the results CSV): every CL point of
-  the toolpath's operation, all its passes; the chosen CL point is drawn on top of the model
+  the toolpath's operation, all its passes; for a program of several operations, a second slider
+  over the whole program, kept in step (:mod:`.program`); the chosen CL point is drawn on top of the model
   (``EngagementViewProvider.highlight``) and a line says its depth of cut, engagement segments
   and whether earlier moves of the program changed it (:func:`in_process_words`) at once, and
   its plots follow once the events queued are handled (a timer of 0 ms: a dragged slider plots
@@ -32,10 +33,16 @@ from .colouring import COLOUR_BY, QUANTITIES
 from . import state
 from .colouring import HIGHLIGHT_COLOUR
 from .i18n import noop, translate
+from .program import ProgramRow
 
 OBJECT_NAME = "ABM_EngagementDock"
 #: The quantities' names of colouring.QUANTITIES, for the translation template.
 QUANTITY_WORDS = (noop("length of cut"), noop("cut area"), noop("resultant cutting force"))
+#: The UEP surface kinds of report.colours.SURFACE_COLOURS in words (underscores as blanks), for the template.
+SURFACE_WORDS = (noop("none"), noop("top"), noop("straight wall"), noop("curved wall"), noop("flute end"),
+                 noop("stock side"), noop("immersion end"), noop("bottom"), noop("flute start"), noop("machined"))
+#: The curves' labels that report.forces.draw_force_along gives, for the template (translated in the dock).
+FORCE_CURVES = (noop("peak |F| over φ"), noop("mean |F| over φ"))
 #: Width (px) of the legend's colour bar.
 BAR_WIDTH = 220
 #: Height of the length plot × its largest value, so the segment legend sits above the curve.
@@ -74,6 +81,8 @@ class EngagementDock(QtGui.QDockWidget):
         self.slider.valueChanged.connect(self.spin.setValue)
         self.spin.valueChanged.connect(self.slider.setValue)
         self.spin.valueChanged.connect(self.choose)
+        self.program = ProgramRow(self)
+        layout.addWidget(self.program)
         self.about = QtGui.QLabel()
         self.about.setWordWrap(True)
         layout.addWidget(self.about)
@@ -135,6 +144,7 @@ class EngagementDock(QtGui.QDockWidget):
                 figure.clear()
                 canvas.draw_idle()
             self.tabs.setTabEnabled(FORCES_TAB, False)
+            self.program.show_for(None, 0)
             return
         m = result.shape[0]
         if cl is None:
@@ -154,12 +164,14 @@ class EngagementDock(QtGui.QDockWidget):
             widget.setRange(0, m - 1)
             widget.setValue(int(cl))
             widget.blockSignals(False)
+        self.program.show_for(obj, int(cl))
         vobj = obj.ViewObject
         if "ColourBy" in vobj.PropertiesList:
             self.colour_by.blockSignals(True)
             self.colour_by.setCurrentIndex(COLOUR_BY.index(vobj.ColourBy))
             self.colour_by.blockSignals(False)
         self.show_legend()
+        self.figure.clear()  # new results (another object or operation, a recompute): axes made and laid out anew
         self.choose(int(cl))
 
     def choose(self, cl):
@@ -173,7 +185,7 @@ class EngagementDock(QtGui.QDockWidget):
         segments = result.segments(cl)
         depth = result.depth_of_cut[cl]
         if segments:
-            parts = ", ".join(f"{s['letter']} {s['phi_start']:g}–{s['phi_end']:g}° {s['surface'].replace('_', ' ')}"
+            parts = ", ".join(f"{s['letter']} {s['phi_start']:g}–{s['phi_end']:g}° {surface_words(s['surface'])}"
                               for s in segments)
             self.about.setText(translate("CL {cl}: depth of cut {depth} mm, max length of cut {length} mm; segments",
                                          cl=cl, depth=f"{depth:.3f}", length=f"{result.length[cl].max():.3f}")
@@ -197,43 +209,43 @@ class EngagementDock(QtGui.QDockWidget):
 
     def plot(self, result, cl):
         """Length of cut, cut area, h (the same at every CL point) over φ at `cl`, and the pass progression
-        with `cl` marked. The four axes are made once (laid out then, and when the dock is resized) and
+        with `cl` marked. The four axes are made once per results (laid out then, and when the dock is resized) and
         only their curves are drawn anew for another CL point: clearing and laying out axes is most of
         a redraw's cost."""
         from ..report.colours import SURFACE_COLOURS
 
         axes, new = _reused_axes(self.figure, PLOTS)
         phi = result.phi
-        for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h[cl]),
-                                     ("length of\ncut (mm)", "cut area\n(mm²)", "h (mm)")):  # two lines: short axes
+        labels = (translate("length of\ncut (mm)"), translate("cut area\n(mm²)"), translate("h (mm)"))  # two lines
+        for ax, values, label in zip(axes[:3], (result.length[cl], result.area[cl], result.h[cl]), labels):
             ax.plot(phi, np.where(result.engaged[cl], values, np.nan), color="0.6", linewidth=1.0)
             for index, segment in enumerate(result.segments(cl)):
                 rows = result.segment[cl] == index
                 ax.plot(phi[rows], values[rows], ".-", markersize=2, color=SURFACE_COLOURS[segment["surface"]],
-                        label=f"{segment['letter']} {segment['surface'].replace('_', ' ')}")
+                        label=f"{segment['letter']} {surface_words(segment['surface'])}")
             ax.set_ylabel(label, fontsize="small")
             ax.set_xlim(phi[0], phi[-1] if len(phi) > 1 else phi[0] + 1.0)
             ax.relim()
             ax.autoscale_view(scalex=False)
-        axes[0].set_title(f"CL {cl} over the tool rotation angle φ", fontsize="small")
+        axes[0].set_title(translate("CL {cl} over the tool rotation angle φ", cl=cl), fontsize="small")
         if result.segments(cl):  # room above the curves for the legend
             axes[0].set_ylim(0.0, LEGEND_HEADROOM * max(float(np.nanmax(result.length[cl])), 1e-9))
-            axes[0].legend(fontsize="x-small", ncol=3, loc="upper center", title="segment: UEP surface",
+            axes[0].legend(fontsize="x-small", ncol=3, loc="upper center", title=translate("segment: UEP surface"),
                            title_fontsize="x-small")
-        axes[2].set_xlabel("φ (deg)", fontsize="small")
+        axes[2].set_xlabel(translate("φ (deg)"), fontsize="small")
         index = np.arange(result.shape[0])
         depth, longest = result.depth_of_cut, result.length.max(axis=1)
-        axes[3].plot(index, depth, ".-", color="black", label="depth of cut")
-        axes[3].plot(index, longest, ".-", color="tab:green", label="max length of cut")
+        axes[3].plot(index, depth, ".-", color="black", label=translate("depth of cut"))
+        axes[3].plot(index, longest, ".-", color="tab:green", label=translate("max length of cut"))
         axes[3].axvline(cl, color=_hex(HIGHLIGHT_COLOUR), linewidth=2.0)
         for values in (depth, longest):
             if np.isfinite(values[cl]):
                 axes[3].plot([cl], [values[cl]], "o", color="red")
         axes[3].relim()
         axes[3].autoscale_view()
-        axes[3].set_xlabel("CL point", fontsize="small")
-        axes[3].set_ylabel("mm", fontsize="small")
-        axes[3].set_title("Pass progression", fontsize="small")
+        axes[3].set_xlabel(translate("CL point"), fontsize="small")
+        axes[3].set_ylabel(translate("mm"), fontsize="small")
+        axes[3].set_title(translate("Pass progression"), fontsize="small")
         axes[3].legend(fontsize="x-small")
         if new:
             _lay_out(self.figure)
@@ -247,19 +259,21 @@ class EngagementDock(QtGui.QDockWidget):
         figure.clear()
         over_phi, along = figure.subplots(2, 1, height_ratios=(3, 2))
         draw_force_over_phi(over_phi, forces, cl)
-        over_phi.set_xlabel("φ (deg)", fontsize="small")
-        over_phi.set_ylabel("force (N)", fontsize="small")
-        over_phi.set_title(f"CL {cl}: peak |F| {forces.peak[cl]:.4g} N, mean {forces.mean[cl]:.4g} N",
-                           fontsize="small")
+        over_phi.set_xlabel(translate("φ (deg)"), fontsize="small")
+        over_phi.set_ylabel(translate("force (N)"), fontsize="small")
+        over_phi.set_title(translate("CL {cl}: peak |F| {peak} N, mean {mean} N", cl=cl, peak=f"{forces.peak[cl]:.4g}",
+                                     mean=f"{forces.mean[cl]:.4g}"), fontsize="small")
         top = max(float(np.abs(forces.xyz[cl]).max()), float(forces.resultant[cl].max()), 1e-9)
         over_phi.set_ylim(-1.1 * top if (forces.xyz[cl] < 0).any() else 0.0, 1.6 * top)  # room for the legend
         over_phi.legend(fontsize="x-small", ncol=4, loc="upper center")
         draw_force_along(along, forces, [])
         along.axvline(cl, color=_hex(HIGHLIGHT_COLOUR), linewidth=2.0)
         along.plot([cl, cl], [forces.peak[cl], forces.mean[cl]], "o", color="red")
-        along.set_xlabel("CL point", fontsize="small")
-        along.set_ylabel("force (N)", fontsize="small")
-        along.set_title("Resultant force along the pass", fontsize="small")
+        for line in along.lines:  # the report's curve labels, in the user's language
+            line.set_label(translate(line.get_label()) if line.get_label() in FORCE_CURVES else line.get_label())
+        along.set_xlabel(translate("CL point"), fontsize="small")
+        along.set_ylabel(translate("force (N)"), fontsize="small")
+        along.set_title(translate("Resultant force along the pass"), fontsize="small")
         along.legend(fontsize="x-small", loc="lower right")
         for ax in (over_phi, along):
             ax.tick_params(labelsize="x-small")
@@ -274,7 +288,7 @@ class EngagementDock(QtGui.QDockWidget):
             return
         if legend.kind == "segment":
             rows = "".join(f"<tr><td style='background:{_hex(rgb)}'>&nbsp;&nbsp;&nbsp;&nbsp;</td>"
-                           f"<td>&nbsp;{name.replace('_', ' ')}</td></tr>" for name, rgb in legend.entries)
+                           f"<td>&nbsp;{surface_words(name)}</td></tr>" for name, rgb in legend.entries)
             self.legend.setText(translate("UEP surface of the engagement segment:") + f"<table>{rows}</table>")
             return
         self.legend.setPixmap(colour_bar(legend))
@@ -313,6 +327,11 @@ def _lay_out(figure):
     figure.set_layout_engine("constrained")
     figure.canvas.draw()
     figure.set_layout_engine("none")
+
+
+def surface_words(kind):
+    """The UEP surface `kind` ("curved_wall") in the user's words ("curved wall", :data:`SURFACE_WORDS`)."""
+    return translate(kind.replace("_", " "))
 
 
 def stock_model_words(obj):
@@ -354,7 +373,7 @@ def colour_bar(legend):
     painter.drawRect(0, 0, BAR_WIDTH + 1, height + 1)
     painter.drawText(QtCore.QRect(0, height + 3, BAR_WIDTH, text), QtCore.Qt.AlignLeft, f"{legend.low:.3g}")
     painter.drawText(QtCore.QRect(0, height + 3, BAR_WIDTH, text), QtCore.Qt.AlignCenter,
-                     f"{legend.label} ({legend.unit})")
+                     f"{translate(legend.label)} ({legend.unit})")
     painter.drawText(QtCore.QRect(0, height + 3, BAR_WIDTH, text), QtCore.Qt.AlignRight, f"{legend.high:.3g}")
     painter.end()
     return pixmap

@@ -17,13 +17,16 @@ from PySide import QtCore
 import FreeCADGui
 
 from . import dock, view_providers
+from .i18n import noop, translate
 from .reporting import CommandError, recompute_checked, report_error
 from .worker import CANCELLED
 
 #: Milliseconds the dock's CL point must stay unchanged before the stock is recomputed.
 SETTLE_MS = 400
-#: Label of the in-process stock object (the CL point is added).
-LABEL = "In-process stock"
+#: Label of the in-process stock object, with its CL point (translated where it is set).
+LABEL = noop("In-process stock at CL {cl}")
+#: Its label while its booleans run.
+LABEL_COMPUTING = noop("In-process stock (computing CL {cl}…)")
 #: Colour of the in-process stock (RGB 0..1): the stock's grey would hide the cuts.
 COLOUR = (0.85, 0.65, 0.35)
 #: True while show_at recomputes (the GUI's event loop runs meanwhile: the Follower waits for it).
@@ -46,7 +49,7 @@ def show_at(engagement, cl):
     from ..features.inprocess_stock import create_inprocess_stock
 
     if engagement.Proxy.result(engagement) is None:
-        raise CommandError(f"{engagement.Label}: compute it first (recompute the document)")
+        raise CommandError(translate("{label}: compute it first (recompute the document)", label=engagement.Label))
     global computing
     doc = engagement.Document
     obj = stock_of(engagement)
@@ -57,9 +60,9 @@ def show_at(engagement, cl):
         obj.ViewObject.ShapeColor = COLOUR
     before = obj.CLPoint
     obj.CLPoint = int(cl)
-    obj.Label = f"{LABEL} (computing CL {cl}…)"
+    obj.Label = translate(LABEL_COMPUTING, cl=cl)
     status = FreeCADGui.getMainWindow().statusBar()
-    status.showMessage(f"Computing the in-process stock of {engagement.Label} at CL {cl}…")
+    status.showMessage(translate("Computing the in-process stock of {label} at CL {cl}…", label=engagement.Label, cl=cl))
     computing, removed = True, False
     try:
         recompute_checked(doc, (obj,))
@@ -67,18 +70,18 @@ def show_at(engagement, cl):
         if CANCELLED not in obj.getStatusString():
             raise
         removed = _cancelled(obj, new, before)
-        status.showMessage(f"In-process stock at CL {cl}: cancelled", 10000)
+        status.showMessage(translate("In-process stock at CL {cl}: cancelled", cl=cl), 10000)
         return None
     finally:
         computing = False
         if not removed:
-            obj.Label = f"{LABEL} at CL {obj.CLPoint}"
+            obj.Label = translate(LABEL, cl=obj.CLPoint)
     if engagement.Stock is not None and engagement.Stock.ViewObject is not None:
         engagement.Stock.ViewObject.Visibility = False
     obj.ViewObject.Visibility = True
-    status.showMessage(
-        f"In-process stock at CL {obj.CLPoint} (program row {obj.ProgramRow}): {obj.RemovedVolume:.1f} mm³ removed "
-        f"by earlier moves near it, in {obj.ComputeTime:.1f} s", 10000)
+    status.showMessage(translate("In-process stock at CL {cl} (program row {row}): {volume} mm³ removed by earlier moves "
+                                 "near it, in {seconds} s", cl=obj.CLPoint, row=obj.ProgramRow,
+                                 volume=f"{obj.RemovedVolume:.1f}", seconds=f"{obj.ComputeTime:.1f}"), 10000)
     return obj
 
 
@@ -133,7 +136,7 @@ def show_for_dock():
     """The in-process stock at the dock's engagement and chosen CL point; CommandError without a dock."""
     shown = dock.find()
     if shown is None or dock._result(shown.obj) is None:
-        raise CommandError("Show in-process stock: inspect an engagement first (Inspect engagement), then choose its "
-                           "CL point in the dock")
+        raise CommandError(translate("Show in-process stock: inspect an engagement first (Inspect engagement), then "
+                                     "choose its CL point in the dock"))
     follow(shown)
     return show_at(shown.obj, shown.spin.value())

@@ -25,6 +25,7 @@ class CommandError(Exception):
 #: Command-line options that messages of the engine and the readers name, as the GUI names them.
 OPTION_WORDS = {
     "tool-table": "the toolpath's ToolTable property",
+    "machine-units": "the toolpath's ToolTableUnits property",
     "operation": "the toolpath's Operation property",
     "helix": "the helix angle β",
     "stock-model": "the engagement's StockModel property",
@@ -38,7 +39,9 @@ OPTION_WORDS = {
 }
 #: Whole phrases of the command line's messages, as the GUI says them.
 PHRASES = (("give the tool table (--tool-table FILE: ", "set the toolpath's ToolTable property ("),
-           ("choose one with --operation N", "choose one in the toolpath's Operation property"))
+           ("choose one with --operation N", "choose one in the toolpath's Operation property"),
+           ("say them (--machine-units mm or inch)", "say them in the toolpath's ToolTableUnits property (mm or "
+                                                     "inch)"))
 _OPTION = re.compile(r"--([a-z][a-z-]*)(?: [A-Z]+\b)?")
 
 

@@ -12,7 +12,11 @@ workbench, runs this file there as a macro, and waits for it. Inside the GUI,
 - ``gui_task_panel.png``: the whole window with the engagement's task panel, a negative
   diameter typed: the field marked, OK disabled, the command line's message;
 - ``gui_dock_forces.png``: the whole window, forces on (Al7075-T6, full slot), the dock's Forces
-  tab at the CL point with the highest peak force.
+  tab at the CL point with the highest peak force;
+- ``gui_program.png``: the whole window with model test 3's program of two operations (stock with
+  exact walls, job.json's cut): the dock's program slider moved into operation 2 and rested there, the
+  engagement recomputed for it (:mod:`.program`), at that operation's CL point with the most kinds of UEP
+  surface.
 
 The GUI tests call :func:`take_screenshots` too, so the pictures and the tests see the same.
 """
@@ -88,7 +92,7 @@ def take_screenshots(folder):
     FreeCADGui.updateGui()
     paths = [os.path.join(folder, name) for name in
              ("gui_window.png", "gui_cl_segments.png", "gui_cl_length.png", "gui_task_panel.png",
-              "gui_dock_forces.png")]
+              "gui_dock_forces.png", "gui_program.png")]
     grab_screen(paths[0])
     zoom_on(view, result, cl)
     for path, colour_by in zip(paths[1:3], ("segment", "length")):
@@ -112,7 +116,36 @@ def take_screenshots(folder):
     FreeCADGui.updateGui()
     grab_screen(paths[4])
     FreeCAD.closeDocument(engagement.Document.Name)
+    program_window(paths[5])
     return paths
+
+
+def program_window(path):
+    """Model test 3 in a new document, the dock's program slider moved into operation 2 and rested there: the
+    whole window saved to `path`."""
+    import FreeCAD
+    import FreeCADGui
+
+    from ..features import create_engagement, create_stock, create_toolpath
+    from . import commands, dock, view_providers
+
+    folder = os.path.join(ROOT, "resources", "models", "model_test_3")
+    doc = FreeCAD.newDocument("ModelTest3")
+    stock = create_stock(doc, os.path.join(folder, "stock.step"), walls="exact")
+    toolpath = create_toolpath(doc, os.path.join(folder, "program.apt"), operation=1)
+    engagement = create_engagement(doc, stock, toolpath, **commands.load_settings(os.path.join(folder, "job.json")))
+    for obj in (stock, toolpath, engagement):
+        view_providers.attach(obj)
+    doc.recompute()
+    commands.fit_view()
+    row = dock.show(engagement).program
+    second = row.spans[1]
+    row.slider.setValue(second.start + second.count // 2)  # as a user moves it; the dock goes there once it rests
+    row.settle()
+    row.slider.setValue(second.start + richest_cl(engagement.Proxy.result(engagement)))
+    FreeCADGui.updateGui()
+    grab_screen(path)
+    FreeCAD.closeDocument(doc.Name)
 
 
 def _macro():

@@ -402,7 +402,7 @@ class EngagementPanel:
             if self.field(name).isEnabled() or name in ("WallModel", "YWindow", "Forces", "Material"):
                 setattr(obj, name, int(value) if name == "Flutes" else value)
         try:
-            with busy("Computing the engagement…"):
+            with busy(translate("Computing the engagement…")):
                 recompute_checked(doc, (obj,))
         except (CommandError, InputError) as error:
             report_error(error)

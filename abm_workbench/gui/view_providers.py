@@ -455,11 +455,13 @@ def ask_repoint(doc):
     folder = dialog.selectedFiles()[0] if dialog.exec_() else ""
     dialog.deleteLater()
     if not folder:
-        FreeCAD.Console.PrintWarning(f"ABM: {doc.Label}: input files missing, not re-pointed:\n{names}\n")
+        FreeCAD.Console.PrintWarning("ABM: " + translate("{document}: input files missing, not re-pointed:",
+                                                         document=doc.Label) + f"\n{names}\n")
         return []
     moved = repoint(doc, folder)
     for obj, _, path in missing_files(doc):
-        FreeCAD.Console.PrintWarning(f"ABM: {obj.Label}: {os.path.basename(path)} is not in {folder}\n")
+        FreeCAD.Console.PrintWarning("ABM: " + translate("{label}: {file} is not in {folder}", label=obj.Label,
+                                                         file=os.path.basename(path), folder=folder) + "\n")
     if moved:
         doc.recompute()
     return moved

@@ -390,7 +390,8 @@ def test_make_screenshots_writes_the_readme_pictures_with_visible_segments(tmp_p
     from abm_workbench.gui.screenshots import main
 
     assert main(str(tmp_path)) == 0
-    names = ["gui_window.png", "gui_cl_segments.png", "gui_cl_length.png", "gui_task_panel.png", "gui_dock_forces.png"]
+    names = ["gui_window.png", "gui_cl_segments.png", "gui_cl_length.png", "gui_task_panel.png", "gui_dock_forces.png",
+             "gui_program.png"]
     assert sorted(os.listdir(tmp_path)) == sorted(names)
     pixels = np.asarray(Image.open(tmp_path / "gui_cl_segments.png").convert("RGB")).reshape(-1, 3).astype(int)
     r, g, b = pixels.T

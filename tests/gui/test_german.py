@@ -21,6 +21,11 @@ press(toolbar_button("ABM_OpenModelTest"))
 settle()
 shown = dock.find()
 verdict["dock"] = [shown.windowTitle(), shown.tabs.tabText(0), shown.about.text()[:40]]
+shown.plot_chosen()  # the plots of the CL point shown, as the dock draws them once the events queued are handled
+axes = shown.figure.axes
+verdict["plots"] = [[ax.get_title() for ax in axes], axes[0].get_ylabel(), axes[2].get_xlabel(),
+                    axes[0].get_legend().get_title().get_text(), [t.get_text() for t in axes[3].get_legend().get_texts()],
+                    shown.about.text()]
 FreeCADGui.ActiveDocument.setEdit(FreeCAD.ActiveDocument.getObject("Engagement"), 0)
 settle()
 panel = task_panel.shown()
@@ -39,5 +44,10 @@ def test_german_labels(tmp_path, run_gui):
     assert title == "ABM-Eingriff" and tab == "Eingriff" and about.startswith("CL ") and "Schnitttiefe" in about
     assert "Durchmesser" in verdict["panel"] and "Wandmodell" in verdict["panel"]
     assert "Diameter" not in verdict["panel"]
+    titles, ylabel, xlabel, legend_title, legend, about = verdict["plots"]
+    assert titles[0].startswith("CL ") and titles[0].endswith(" über dem Drehwinkel φ des Werkzeugs")
+    assert titles[3] == "Verlauf über die Bahn" and ylabel == "Schnitt-\nlänge (mm)" and xlabel == "φ (Grad)"
+    assert legend_title == "Segment: UEP-Fläche" and legend == ["Schnitttiefe", "größte Schnittlänge"]
+    assert "gekrümmte Wand" in about or "Deckfläche" in about  # the segments' UEP surfaces in German
     assert verdict["sections"] == ["Werkzeug", "Schnitt", "Drehwinkel φ des Werkzeugs", "Rohteilmodell",
                                    "Schnittkräfte"]
