@@ -580,6 +580,22 @@ fläche (mm²)</translation>
         <translation>{label}: {file} ist nicht in {folder}</translation>
     </message>
     <message>
+        <source>{done} of {total} CL points, about {left} left</source>
+        <translation>{done} von {total} CL-Punkten, noch etwa {left}</translation>
+    </message>
+    <message>
+        <source>{done} of {total} steps, about {left} left</source>
+        <translation>{done} von {total} Schritten, noch etwa {left}</translation>
+    </message>
+    <message>
+        <source>{minutes} min {seconds} s</source>
+        <translation>{minutes} min {seconds} s</translation>
+    </message>
+    <message>
+        <source>{seconds} s</source>
+        <translation>{seconds} s</translation>
+    </message>
+    <message>
         <source>Reading and recognising the stock…</source>
         <translation>Rohteil wird gelesen und erkannt…</translation>
     </message>
