@@ -286,7 +286,7 @@ def letters(engagement: Engagement):
 
 
 def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, progress=None, workers=1,
-             scheduler=None, sweep=None, cls=None):
+             scheduler=None, sweep=None, cls=None, apart=False):
     """Run the engine on one pass and the boolean reference at its CL points `cls`; a Validation.
 
     solid: the stock as a Part.Shape (the reference's stock); staircase: the engine's (a Staircase or a
@@ -304,8 +304,10 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     statistics leave those CL points out (ValueError, before any work, for a list that is empty, repeats
     an index or leaves 0..m−1). workers: processes computing the reference
     (1: this one; 0: one per core; see the module docstring; against the in-process stock a pass that
-    repeats a CL point exactly is computed here, its CL points not being told apart in a worker);
-    scheduler: a Dask scheduler's address to compute it on instead (reference_by_workers). Raises
+    repeats a CL point exactly is computed as one task, its CL points not being told apart in a task of
+    one);
+    scheduler: a Dask scheduler's address to compute it on instead (reference_by_workers). apart: the
+    reference in worker processes also for 1 worker (reference_by_workers). Raises
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
     """
@@ -335,9 +337,10 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
         part_rows = np.asarray(rows) if chosen is None else np.asarray(rows)[chosen]
         function = corner_lengths_in_process if tool.corner_radius > 0.0 else flat_lengths_in_process
         extra = (ProgramSweep(pieces, part_rows, part),)
-        workers = 1 if _repeats_cl_point(part) else workers
-    reference = reference_by_workers(function, solid, tool, part, engagement.phi, extra, workers=workers,
-                                     scheduler=scheduler, progress=progress)
+    whole = sweep is not None and _repeats_cl_point(part)
+    reference = reference_by_workers(function, solid, tool, part, engagement.phi, extra,
+                                     workers=1 if whole else workers, scheduler=scheduler, progress=progress,
+                                     apart=apart, whole=whole)
     if chosen is not None:
         reference = _spread(reference, chosen, len(toolpath))
     boolean_seconds = time.perf_counter() - started
@@ -442,12 +445,12 @@ def _largest(values):
 
 
 def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, flutes=None, progress=None,
-                   workers=1, scheduler=None):
+                   workers=1, scheduler=None, apart=False):
     """Run the helix solver and the helix boolean reference on one pass; a HelixValidation.
 
     solid: the stock as a Part.Shape; staircase: the engine's. tool.helix may be any allowed β
     (0 too: the boolean then uses straight segments). flutes: 0-based flutes to check (default
-    all). progress(done, total) after each CL point of the reference. workers, scheduler: as validate. Raises
+    all). progress(done, total) after each CL point of the reference. workers, scheduler, apart: as validate. Raises
     NoEngagementError, before the reference runs, when no checked flute engages anywhere.
     Needs FreeCAD.
     """
@@ -463,14 +466,14 @@ def validate_helix(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *
         raise NoEngagementError("no CL point of the pass engages the stock with the checked flutes")
     started = time.perf_counter()
     reference = reference_by_workers(flute_lengths_by_boolean, solid, tool, toolpath, engagement.phi, (chosen,),
-                                     workers=workers, scheduler=scheduler, progress=progress)
+                                     workers=workers, scheduler=scheduler, progress=progress, apart=apart)
     boolean_seconds = time.perf_counter() - started
     return HelixValidation(engagement, reference, chosen, toolpath, tool,
                            {"abm": abm_seconds, "boolean": boolean_seconds})
 
 
 def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, workers=1, scheduler=None,
-                         progress=None):
+                         progress=None, apart=False, whole=False):
     """reference(solid, tool, toolpath, phi, *extra, progress): a boolean reference (a dict of
     arrays over CL points first), computed in `workers` processes or on a Dask cluster, one CL
     point per task.
@@ -478,9 +481,13 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
     reference: a module-level function of cad (profile_lengths_by_boolean, flat_lengths_by_boolean,
     flat_lengths_in_process, corner_lengths_in_process, flute_lengths_by_boolean).
     workers: 1 (or a pass of one CL point) runs it here; N > 1 in N spawned processes
-    (worker_processes.WorkerProcesses); 0 one per core. scheduler: the address of a Dask scheduler
-    ("tcp://host:port"), instead of local processes. progress(done, total) after each CL point. On
-    any exception (KeyboardInterrupt too) every local worker is ended before it propagates.
+    (worker_processes.WorkerProcesses); 0 one per core. apart: 1 runs it in one spawned process too
+    (FreeCAD's GUI: its Python bindings hold the interpreter's lock through each OpenCASCADE call, so a
+    boolean in a thread of FreeCAD's process stalls the GUI's thread as long). whole: the pass as one
+    task (one process; progress(1, 1) at its end), for a pass whose CL points a task of one cannot tell
+    apart. scheduler: the address of a Dask scheduler ("tcp://host:port"), instead of local processes.
+    progress(done, total) after each CL point. On any exception (KeyboardInterrupt too) every local
+    worker is ended before it propagates.
     """
     from .parallel import worker_count
 
@@ -491,14 +498,17 @@ def reference_by_workers(reference, solid, tool, toolpath, phi, extra=(), *, wor
         with contextlib.closing(map_cl_points(task, solid.exportBrepToString(), len(toolpath), scheduler)) as finished:
             return _assembled(finished, len(toolpath), progress)
     count = min(worker_count(workers), len(toolpath))
-    if count <= 1:
+    if count <= 1 and not apart:
         return reference(solid, tool, toolpath, phi, *extra, progress)
     from .parallel import toolpath_part
     from .worker_processes import WorkerProcesses
 
-    tasks = [(reference, tool, toolpath_part(toolpath, i, i + 1), phi, extra) for i in range(len(toolpath))]
-    with WorkerProcesses(count, _start_worker, (solid.exportBrepToString(),)) as processes:
-        return _assembled(processes.map_unordered(_reference_task, tasks), len(toolpath), progress)
+    if whole:
+        count, tasks = 1, [(reference, tool, toolpath, phi, extra)]
+    else:
+        tasks = [(reference, tool, toolpath_part(toolpath, i, i + 1), phi, extra) for i in range(len(toolpath))]
+    with WorkerProcesses(max(count, 1), _start_worker, (solid.exportBrepToString(),)) as processes:
+        return _assembled(processes.map_unordered(_reference_task, tasks), len(tasks), progress)
 
 
 def _assembled(finished, m, progress):

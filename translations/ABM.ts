@@ -426,7 +426,7 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Processes computing the boolean reference of a validation: 1 in FreeCAD's own process, 0 one per core</source>
+        <source>Processes computing the boolean reference of a validation, beside FreeCAD's own (which stays free to draw): 0 one per core</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

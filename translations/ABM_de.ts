@@ -428,8 +428,8 @@ fläche (mm²)</translation>
         <translation>einer pro Kern</translation>
     </message>
     <message>
-        <source>Processes computing the boolean reference of a validation: 1 in FreeCAD's own process, 0 one per core</source>
-        <translation>Prozesse, die die boolesche Referenz einer Validierung berechnen: 1 im eigenen Prozess von FreeCAD, 0 einer pro Kern</translation>
+        <source>Processes computing the boolean reference of a validation, beside FreeCAD's own (which stays free to draw): 0 one per core</source>
+        <translation>Prozesse, die die Boolesche Referenz einer Validierung berechnen, neben FreeCADs eigenem (der frei zum Zeichnen bleibt): 0 einer je Kern</translation>
     </message>
     <message>
         <source>Validation workers</source>

@@ -13,7 +13,7 @@ registered by InitGui.py with ``FreeCADGui.addPreferencePage``):
 - the colour map of the quantities on the engagement surface and in the dock's colour bar
   (a matplotlib colour map name, :data:`COLOUR_MAPS`), :func:`colour_map`;
 - the processes computing a validation's boolean reference, "Validation workers"
-  (:func:`validation_workers`: 1 in FreeCAD's own process, 0 one per core, N that many spawned
+  (:func:`validation_workers`: 0 one per core, N that many spawned
   Python processes, each with its own FreeCAD).
 """
 
@@ -119,8 +119,8 @@ class PreferencesPage:
         self.workers.setObjectName("ABM_ValidationWorkers")
         self.workers.setRange(0, MAX_WORKERS)
         self.workers.setSpecialValueText(translate("one per core"))
-        self.workers.setToolTip(translate("Processes computing the boolean reference of a validation: 1 in "
-                                          "FreeCAD's own process, 0 one per core"))
+        self.workers.setToolTip(translate("Processes computing the boolean reference of a validation, beside "
+                                          "FreeCAD's own (which stays free to draw): 0 one per core"))
         rows.addRow(translate("Validation workers"), self.workers)
         layout.addWidget(box)
         layout.addStretch(1)

@@ -13,8 +13,10 @@ With the object's Forces on, the report gets its "Cutting forces" section: the o
 model (``features.engagement.force_model_of``) on the pass validated. A helical tool is
 validated by the helix boolean (``jobs.run.validation``), flute 1 reported, as ``validate --helix``.
 The boolean reference runs on the processes of the preference "Validation workers"
-(``preferences.validation_workers``: 1 in FreeCAD's process, 0 one per core), as ``validate
---workers``; a progress callback that raises (Cancel) ends those processes at once.
+(``preferences.validation_workers``: N spawned processes, 0 one per core), as ``validate
+--workers``, never on FreeCAD's own process while its GUI is up (its bindings hold Python's lock through
+each boolean, which would stall the GUI's thread as long); a progress callback that raises (Cancel) ends
+those processes at once.
 """
 
 import os
@@ -52,20 +54,22 @@ def report_folder(obj):
     return os.path.join(results_folder(obj.Document), f"{obj.Name}_validation")
 
 
-def validate_engagement(obj, cls, folder, progress=None, workers=None):
+def validate_engagement(obj, cls, folder, progress=None, workers=None, apart=None):
     """Validate the engagement object `obj` at CL points `cls` (indices, None: all) and write the
     report into `folder`; the path of its index.html.
 
     progress(done, total) is called after each CL point of the boolean reference; an exception
     it raises (e.g. :class:`Cancelled`) stops the validation, ends its worker processes and leaves
-    `folder` as it was. workers: processes computing the boolean reference (1 this one, 0 one per core),
-    None: the preference "Validation workers".
+    `folder` as it was. workers: processes computing the boolean reference (0 one per core), None: the
+    preference "Validation workers"; apart: True computes it in worker processes also for 1 (FreeCAD's
+    Python bindings hold the interpreter's lock through each boolean: in FreeCAD's own process the GUI's
+    thread would stall as long), False in this process for 1, None: True when FreeCAD's GUI is up.
     InputError with the command line's message for bad input.
     """
-    return prepare(obj, cls, folder, workers)(progress)
+    return prepare(obj, cls, folder, workers, apart)(progress)
 
 
-def prepare(obj, cls, folder, workers=None):
+def prepare(obj, cls, folder, workers=None, apart=None):
     """The validation of :func:`validate_engagement` in two halves: this one reads the document object `obj`
     (its inputs, on the GUI thread), and returns the other, ``run(progress=None)`` -> the report's path,
     which touches no document object (the worker thread runs it, gui.worker)."""
@@ -91,11 +95,15 @@ def prepare(obj, cls, folder, workers=None):
     if sweep is not None:
         sweep = (sweep[0], np.asarray(sweep[1])[index])
     label, workers = obj.Label, validation_workers() if workers is None else workers
+    if apart is None:
+        import FreeCAD
+
+        apart = bool(FreeCAD.GuiUp)
 
     def run(progress=None):
         try:
             validation, helix = checked_validation(solid, stock.model, tool, pass_, settings, progress=progress,
-                                                   workers=workers, sweep=sweep)
+                                                   workers=workers, sweep=sweep, apart=apart)
         except NoEngagementError:
             raise InputError(f"{hints.source}: the tool never touches the stock at CL points "
                              f"{_cl_list(chosen)}") from None

@@ -300,22 +300,22 @@ def no_engagement(job: Job):
 
 
 def validation(solid, staircase, tool, toolpath, settings, *, flutes=None, progress=None, workers=1,
-               scheduler=None, sweep=None, cls=None):
+               scheduler=None, sweep=None, cls=None, apart=False):
     """(Validation of flute 1 or the first checked flute, HelixValidation or None) of the engine against
     OpenCASCADE booleans: straight edges by ``validation.validate`` (against the in-process stock when
     `sweep` = (SweptPieces, program rows) is given), a helical tool (or chosen `flutes`, 0-based) by
     ``validation.validate_helix``. validation.NoEngagementError when the tool never touches the stock.
-    workers, scheduler: where the boolean reference runs (``validation.reference_by_workers``). cls: the
+    workers, scheduler, apart: where the boolean reference runs (``validation.reference_by_workers``). cls: the
     CL points the boolean checks (None: all; straight edges only)."""
     from ..validation import validate, validate_helix
 
     if tool.helix == 0.0 and flutes is None:
         return validate(solid, staircase, tool, toolpath, settings, progress=progress, workers=workers,
-                        scheduler=scheduler, sweep=sweep, cls=cls), None
+                        scheduler=scheduler, sweep=sweep, cls=cls, apart=apart), None
     if not isinstance(staircase, Staircase):
         raise ParameterError("helix", HELIX_NEEDS_STAIRCASE)
     helix = validate_helix(solid, staircase, tool, toolpath, settings, flutes=flutes, progress=progress,
-                           workers=workers, scheduler=scheduler)
+                           workers=workers, scheduler=scheduler, apart=apart)
     return helix.flute(helix.flutes[0]), helix
 
 

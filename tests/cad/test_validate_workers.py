@@ -110,3 +110,28 @@ def test_sigterm_during_validate_leaves_no_staging_folder(tmp_path):
     _, err = child.communicate(timeout=120)
     assert child.returncode == 128 + signal.SIGTERM and err.splitlines()[-1] == "abm: stopped by SIGTERM"
     assert os.listdir(tmp_path) == []
+
+
+def test_apart_computes_one_workers_reference_in_a_spawned_process(model):
+    """apart (the GUI's way: FreeCAD's bindings hold Python's lock through a boolean): 1 worker is a
+    spawned process, with the reference of this one bit for bit and a step per CL point."""
+    solid, stock, tool, path, settings = model
+    seen, calls = [], []
+
+    def progress(done, total):
+        seen.append(len(multiprocessing.active_children()))
+        calls.append((done, total))
+
+    here = validate(solid, stock, tool, path, settings)
+    apart = validate(solid, stock, tool, path, settings, workers=1, apart=True, progress=progress)
+    same(here.reference, apart.reference)
+    assert seen == [1] * len(ROWS) and calls == [(k, len(ROWS)) for k in range(1, len(ROWS) + 1)]
+    assert multiprocessing.active_children() == []
+
+
+def test_whole_sends_the_pass_as_one_task(model):
+    solid, _, tool, path, settings = model
+    calls = []
+    out = reference_by_workers(slow_first, solid, tool, path, settings.phi, workers=1, apart=True, whole=True,
+                               progress=lambda done, total: calls.append((done, total)))
+    assert np.array_equal(out["x"], path.cl[:, 0]) and calls == [(1, 1)]

@@ -41,7 +41,7 @@ engagement = commands.ComputeEngagement().execute(
     dict(diameter=12, flutes=2, flute_length=30, feed_per_tooth=0.1, inclination=10, phi_step=10), [stock, path])
 settle()
 out = {out!r}
-validate_engagement(engagement, [3, 11, 20, 29], os.path.join(out, "one"), workers=1)
+validate_engagement(engagement, [3, 11, 20, 29], os.path.join(out, "one"), workers=1, apart=False)
 
 from abm_workbench.gui import validate as validate_module, worker
 children = multiprocessing.active_children
