@@ -97,25 +97,30 @@ class _Arcs:
         return points[0], points[1], sag * (1.0 + 1e-9) + 1e-12, points[2]
 
     def near(self, seg, level, index, pieces):
-        """(K,) bool: the pairs (arc seg, hull index at `level`) not surely apart: what is left of the arc in
-        PARTS equal parts, each in the capsule of its chord grown by its sagitta, and the hull (a chain's grown
-        by its slack and lean) apart from none of them (inprocess._apart)."""
-        low, high = self.envelope[0, seg], self.envelope[1, seg]
+        """(K,) bool: the pairs (arc seg (K,) non-decreasing, hull index at `level`) not surely apart: what is left
+        of the arc in PARTS equal parts, each in the capsule of its chord grown by its sagitta, and the hull (a
+        chain's grown by its slack and lean) apart from none of them (inprocess._apart)."""
+        if seg.size == 0:
+            return np.zeros(0, dtype=bool)
+        # The parts' ends per arc, then gathered for its pairs.
+        new = np.r_[True, seg[1:] != seg[:-1]]
+        arc, owner = seg[new], np.cumsum(new) - 1
+        low, high = self.envelope[0, arc], self.envelope[1, arc]
         step = (high - low) / PARTS
         sag = self.radius * (1.0 - np.cos(0.5 * np.maximum(step, 0.0))) * (1.0 + 1e-9) + 1e-12
-        centre, d, w = self.centre[seg], self.d[seg], self.w[seg]
-        hulls = pieces.hulls(level, index)
-        slack, lean = (pieces.chain_slack[index], pieces.chain_lean[index]) if level == "chain" else (0.0, None)
-        near = np.zeros(seg.size, dtype=bool)
+        centre, d, w = self.centre[arc], self.d[arc], self.w[arc]
         ends = [centre + self.radius * (np.sin(t)[:, None] * d - np.cos(t)[:, None] * w)
                 for t in (low + j * step for j in range(PARTS + 1))]
+        near = np.zeros(seg.size, dtype=bool)
         for j in range(PARTS):
             rows = np.flatnonzero(~near)
             if rows.size == 0:
                 break
-            near[rows] = ~_apart(ends[j][rows], ends[j + 1][rows], *(h[rows] for h in hulls),
-                                 (slack if lean is None else slack[rows]) + sag[rows],
-                                 None if lean is None else lean[rows])
+            at, hull = owner[rows], index[rows]
+            grown = sag[at] + (pieces.chain_slack[hull] if level == "chain" else 0.0)
+            near[rows] = ~_apart(np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0),
+                                 *pieces.hulls(level, hull), grown,
+                                 pieces.chain_lean[hull] if level == "chain" else None)
         return near
 
     def open(self):
