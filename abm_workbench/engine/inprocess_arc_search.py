@@ -210,18 +210,19 @@ class _Units:
         owner = np.r_[g[whole], g_piece]
         self.index = np.r_[k[whole], piece]
         self.whole = np.r_[np.ones(int(whole.sum()), dtype=bool), np.zeros(piece.size, dtype=bool)]
-        depth = np.r_[_depth(centre[g[whole]], *pieces.hulls("chain", k[whole])[:4]),
-                      _depth(centre[g_piece], *pieces.hulls("piece", piece)[:4])]
+        depth = np.r_[_depth(centre[g[whole]], *pieces.hulls("chain", k[whole])[:4], pieces.chain_corner[k[whole]]),
+                      _depth(centre[g_piece], *pieces.hulls("piece", piece)[:4], pieces.corner[piece])]
         order = np.lexsort((depth, owner))
         owner, self.index, self.whole = owner[order], self.index[order], self.whole[order]
         self.count = np.bincount(owner, minlength=first.size)
         self.start = np.cumsum(self.count) - self.count
 
 
-def _depth(x, c0, c1, axis, big):
-    """(K,) how far points x (K, 3) lie outside the hulls (c0, c1, axis, radius big) (negative: inside), seen
-    along the axis or below the hull's lowest bottom, the larger: the order in which a group takes its
-    units (deepest first)."""
-    across = _across(x, c0, c1, axis) - big
-    below = np.minimum(row_dot(c1 - c0, axis), 0.0) - row_dot(x - c0, axis)
-    return np.maximum(across, below)
+def _depth(x, c0, c1, axis, big, corner):
+    """(K,) about how far points x (K, 3) lie outside the hulls (c0, c1, axis, radius big, tools' corner radius)
+    (negative: inside): seen along the axis and below the hull's lowest bottom, the corner rounded. Only the
+    order in which units are taken (deepest first) comes from it."""
+    across = _across(x, c0, c1, axis)
+    height = row_dot(x - c0, axis) - np.minimum(row_dot(c1 - c0, axis), 0.0)
+    rounded = np.hypot(np.maximum(across - (big - corner), 0.0), np.maximum(corner - height, 0.0)) - corner
+    return np.maximum(rounded, np.maximum(across - big, -height))
