@@ -6,13 +6,14 @@ not by the call). The arcs of one CL point make a group, held by one sphere. The
 arcs may be solved against: the chains whose slices (KD tree) meet the sphere and which are not surely apart
 from it; a rigid chain ending before the CL point as one hull (its pieces' union), of every other chain the
 pieces of its spans ending before the CL point, each not surely apart from the sphere either. The units are
-ranked by how deep the sphere's centre lies in them. Then rounds: every arc with something left takes its
-group's next 1, 2, 4, … units in that order, drops those surely apart from the capsule of what is left of it
-(the chord grown by the sagitta), solves the others and narrows its range. An arc whose range closes takes no
+ranked by how deep the sphere's centre lies in them (the tool's corner rounded, _depth). Then rounds: every arc
+with something left takes its group's next 1, 2, 4, … units in that order, drops those surely apart from what is
+left of it (in PARTS equal parts, each in the capsule of its chord grown by its sagitta), solves the others and
+narrows its range. An arc whose range closes takes no
 more units; most arcs of a program that went over them before close after a unit or two (docs/ENGINE.md,
 "Tools with a corner in the in-process stock", "The arcs' search").
 
-A unit is dropped for an arc only when it is surely apart from the arc's capsule at that time, and the range
+A unit is dropped for an arc only when it is surely apart from what is left of the arc at that time, and the range
 only narrows: so every unit that could remove something of what is left at the end is solved, and what is
 removed (the union of the removals over the arc's range) is the same whatever the order. Which removals are
 found may depend on the other arcs of the CL point in the call (the group's sphere and order), not what they
