@@ -22,7 +22,8 @@ remove. Shapes: L arcs; ψ in radians, lengths in mm.
 
 import numpy as np
 
-from .inprocess import _apart, _across, _chain_spans, _csr, _narrow, _span_pieces, _sphere_chains
+from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _narrow, _seen_along, _span_pieces, \
+    _sphere_chains
 from .inprocess_arc import arc_swept_intervals
 from .swept import row_dot
 from .tolerances import LENGTH_EPS
@@ -119,9 +120,17 @@ class _Arcs:
                 break
             at, hull = owner[rows], index[rows]
             grown = sag[at] + (pieces.chain_slack[hull] if level == "chain" else 0.0)
-            near[rows] = ~_apart(np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0),
-                                 *pieces.hulls(level, hull), grown,
-                                 pieces.chain_lean[hull] if level == "chain" else None)
+            a, b, hulls = np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0), pieces.hulls(level, hull)
+            lean = pieces.chain_lean[hull] if level == "chain" else None
+            close = ~_apart(a, b, *hulls, grown, lean)
+            # Where the cylinder's test leaves a pair open, the tool's corner (a chain's lean as more slack).
+            corner = pieces.corners(level, hull)
+            bent = np.flatnonzero(close & (corner > 0.0))
+            if bent.size:
+                slack = grown[bent] if lean is None else grown[bent] + lean[bent] * np.hypot(hulls[3][bent],
+                                                                                          hulls[4][bent])
+                close[bent] = ~_corner_apart(a[bent], b[bent], *(h[bent] for h in hulls[:4]), corner[bent], slack)
+            near[rows] = close
         return near
 
     def open(self):
@@ -217,6 +226,22 @@ class _Units:
         owner, self.index, self.whole = owner[order], self.index[order], self.whole[order]
         self.count = np.bincount(owner, minlength=first.size)
         self.start = np.cumsum(self.count) - self.count
+
+
+def _corner_apart(a, b, c0, c1, axis, big, corner, slack):
+    """(K,) bool: the segments a … b (K, 3) grown by slack (K,) surely miss the hulls (c0, c1, axis, radius big) of
+    tools with a corner radius (K,) > 0, by more than inprocess._CLEAR.
+
+    The tool is the points within r (its corner radius) of K = {a ≥ r, |b| ≤ R − r} (below its top), so its sweep
+    lies within r of K's sweep. A point y whose distance seen along the axis from the path is e, and whose height
+    above the path's lowest bottom is h, lies at least hypot(max(e − (R − r), 0), max(r − h, 0)) from K's sweep
+    (across the axis K reaches R − r from the path, along it no lower than r above that bottom); over the segment
+    both bounds are taken at their least (inprocess._seen_along, the higher end)."""
+    qa, e, d = a - c0, b - a, c1 - c0
+    aa, ew, dw = row_dot(qa, axis), row_dot(e, axis), row_dot(d, axis)
+    out = np.maximum(_seen_along(qa, e, d, aa, ew, dw) - (big - corner), 0.0)
+    below = np.maximum(corner + np.minimum(dw, 0.0) - np.maximum(aa, aa + ew), 0.0)
+    return np.hypot(out, below) > corner + slack + _CLEAR
 
 
 def _depth(x, c0, c1, axis, big, corner):
