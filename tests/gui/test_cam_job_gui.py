@@ -50,9 +50,9 @@ def test_a_selected_cam_job_engaged_by_its_toolbar_button(tmp_path, run_gui):
     build_job(tmp_path)
 
     # The Adaptive's ball-end mill against the in-process stock (1287 CL points after 145 rapids) takes about
-    # 25 s of CPU time (docs/BENCHMARKS.md, "Corner tools in the in-process stock: memory and time on a real
-    # program"), and the Job's recompute computes it again: the whole test took 4.6 min on the 2-core VM under a
-    # load average of 9 (it was 900 s here when that run took two minutes of CPU).
+    # 17 s of CPU time (docs/BENCHMARKS.md, "Corner tools in the in-process stock: memory and time on a real
+    # program"), and the Job's recompute computes it again: with 25 s the whole test took 4.6 min on the 2-core VM
+    # under a load average of 9 (the limit was 900 s when that run took two minutes of CPU).
     verdict = run_gui(HEAD + EVENTS + BODY.format(job=str(tmp_path / "job.FCStd")), timeout=480)
 
     # The operations the engine computes (the profile's flat-end, the pocket's bull-nose and the adaptive's
