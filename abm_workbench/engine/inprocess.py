@@ -520,8 +520,9 @@ def _seen_along(q, e, d, qw, ew, dw):
     safe_a, safe_g = np.where(a > 0.0, a, 1.0), np.where(g > 0.0, g, 1.0)
     denom = a * g - b * b
     s = np.where(denom > 1e-12 * a * g, _unit((b * f - c * g) / np.where(denom > 0.0, denom, 1.0)), 0.0)
-    t = (b * s + f) / safe_g
-    s = np.where(t < 0.0, _unit(-c / safe_a), np.where(t > 1.0, _unit((b - c) / safe_a), s))
+    # A path seen as a point (g = 0: a move along the axis, a plunge) has t = 0 and s the point's projection.
+    t = np.where(g > 0.0, (b * s + f) / safe_g, 0.0)
+    s = np.where((t < 0.0) | (g <= 0.0), _unit(-c / safe_a), np.where(t > 1.0, _unit((b - c) / safe_a), s))
     t = _unit(t)
     # |q + s·e − t·d|² across w, expanded in the dot products.
     gap = h + 2.0 * s * c - 2.0 * t * f + s * s * a - 2.0 * s * t * b + t * t * g

@@ -35,7 +35,6 @@ import numpy as np
 
 from .inprocess_swept import monotone_root, swept_gauge
 from .swept import row_dot
-from .tolerances import LENGTH_EPS
 
 #: An arc within this many ulps of its coordinates of lying on the earlier tool's corner (the foot bound) is on
 #: it, and inside.
@@ -50,8 +49,6 @@ START_INTERVALS = 4
 MAX_LEVELS = 80
 #: Intervals of one arc open at once at most; the excess, narrowest first, is decided as leaves.
 MAX_OPEN = 64
-#: Pairs solved per batch.
-PAIR_BATCH = 1 << 12
 
 
 class _Arcs:
@@ -262,107 +259,3 @@ def _merged(pair, start, end):
     head = np.flatnonzero(new)
     tail = np.r_[head[1:], pair.size] - 1
     return pair[head], start[head], reach[tail]
-
-
-def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, radius, top, p):
-    """Removal intervals (rows (R,) int, enter, leave (R,) mm of arc length) of the corner arcs `line` inside
-    the pieces of the cutting moves that end before their CL point.
-
-    line: (L,) int ascending, the arcs holding material (row i·p + k: CL point i, angle k), all of it
-    within lo … hi (L,) mm of arc length s = radius·ψ; centres, ds, ws: (N, 3) every arc's centre and unit
-    vectors (P(ψ) = centre + radius·(sin ψ·d − cos ψ·w), 0 ≤ ψ ≤ top); radius: the corner radius (mm); pieces,
-    program_index and p as for inprocess.removal_intervals, whose rules these follow: removals overlapping
-    lo … hi by more than LENGTH_EPS, one removal [lo, hi] for an arc covered whole, each depending on
-    its arc alone (each (arc, piece) pair is solved over the whole arc, 0 … top, whatever is left of it).
-
-    The search (docs/ENGINE.md, "Tools with a corner in the in-process stock"): the chains whose balls meet
-    each arc's bounding sphere (the KD tree), kept when not surely apart from its capsule (the chord of what is left of the arc,
-    grown by its sagitta); a rigid chain that ends before the arc's CL point whole, the others' spans and
-    pieces likewise; then rounds in which each arc solves its 1, 2, 4, … pairs that reach deepest (the
-    arc's middle farthest inside the hull seen along its axis), narrows what is left of it and drops the
-    pairs then apart from it.
-    """
-    from .inprocess import _apart, _chain_spans, _narrow, _span_pieces, _sphere_chains, _across, _Ranking
-
-    line = np.asarray(line, dtype=np.intp).reshape(-1)
-    empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
-    if line.size == 0 or pieces.move.size == 0:
-        return empty
-    radius = float(radius)
-    lo, hi = np.asarray(lo, dtype=float) / radius, np.asarray(hi, dtype=float) / radius
-    envelope = np.stack([lo, hi, lo, hi])
-    centre, d, w = (np.take(v, line, axis=0) for v in (centres, ds, ws))
-    before = np.asarray(program_index, dtype=np.intp)[line // p] - 1
-    n = line.size
-
-    def capsule(seg):
-        """(a, b, sagitta, middle) of what is left of the arcs seg: chord ends, the chord's distance bound,
-        the arc's middle point."""
-        low, high = envelope[0, seg], envelope[1, seg]
-        mid = 0.5 * (low + high)
-        points = [centre[seg] + radius * (np.sin(t)[:, None] * d[seg] - np.cos(t)[:, None] * w[seg])
-                  for t in (low, high, mid)]
-        sag = radius * (1.0 - np.cos(0.5 * np.maximum(high - low, 0.0)))
-        return points[0], points[1], sag * (1.0 + 1e-9) + 1e-12, points[2]
-
-    everyone = np.arange(n)
-    a, b, sag, _ = capsule(everyone)
-    sphere = 0.5 * (a + b)
-    bound = 0.5 * np.sqrt(row_dot(b - a, b - a)) + sag
-    seg, chain = _sphere_chains(sphere, bound, before, pieces)
-    keep = ~_apart(a[seg], b[seg], *pieces.hulls("chain", chain), pieces.chain_slack[chain] + sag[seg],
-                   pieces.chain_lean[chain])
-    seg, chain = seg[keep], chain[keep]
-    whole = pieces.chain_rigid[chain] & (pieces.chain_last[chain] <= before[seg])
-    found = [_solve_arcs(seg[whole], chain[whole], "chain", envelope, centre, d, w, radius, top, pieces)]
-    _narrow(envelope, *found[-1][:3])
-    seg, span = _chain_spans(seg[~whole], chain[~whole], before, pieces)
-    open_ = envelope[0, seg] < envelope[1, seg]
-    seg, span = seg[open_], span[open_]
-    a, b, sag, _ = capsule(seg)
-    keep = ~_apart(a, b, *pieces.hulls("span", span), pieces.span_slack[span] + sag, 0.5 * pieces.span_turn[span])
-    seg, piece = _span_pieces(seg[keep], span[keep], pieces)
-    a, b, sag, middle = capsule(seg)
-    keep = ~_apart(a, b, *pieces.hulls("piece", piece), sag)
-    seg, piece, middle = seg[keep], piece[keep], middle[keep]
-    c0, c1, axis, big, _ = pieces.hulls("piece", piece)
-    depth = _across(middle, c0, c1, axis) - big
-    ranking = _Ranking(seg, depth)
-    open_ = np.ones(seg.size, dtype=bool)
-    take = 1
-    while open_.any():
-        at = np.flatnonzero(open_)
-        alive = envelope[0, seg[at]] < envelope[1, seg[at]]
-        a, b, sag, _ = capsule(seg[at])
-        near = alive & ~_apart(a, b, *pieces.hulls("piece", piece[at]), sag)
-        open_[at[~near]] = False
-        chosen = np.flatnonzero(ranking.first(open_, take))
-        found.append(_solve_arcs(seg[chosen], piece[chosen], "piece", envelope, centre, d, w, radius, top, pieces))
-        open_[chosen] = False
-        _narrow(envelope, *found[-1][:3])
-        take *= 2
-    dead = envelope[0] >= envelope[1]
-    seg, enter, leave = (np.concatenate(part) for part in zip(*found))
-    alive = ~dead[seg]
-    rows = np.concatenate([line[dead], line[seg[alive]]])
-    start = np.concatenate([envelope[2, dead], enter[alive]]) * radius
-    end = np.concatenate([envelope[3, dead], leave[alive]]) * radius
-    return rows, start, end
-
-
-def _solve_arcs(seg, index, level, envelope, centre, d, w, radius, top, pieces):
-    """Removal intervals (seg, enter, leave) in ψ of the arcs seg (K,) inside the hulls `index` (K,) at
-    `level` ("piece" or "chain"), solved over the whole arc (0 … top: the result depends on the pair alone)
-    and kept where they overlap the arc's first range (envelope rows 2, 3) by more than LENGTH_EPS of arc
-    length; in batches of PAIR_BATCH."""
-    out = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
-    for begin in range(0, seg.size, PAIR_BATCH):
-        s, q = seg[begin:begin + PAIR_BATCH], index[begin:begin + PAIR_BATCH]
-        hulls = pieces.hulls(level, q)
-        pair, start, end = arc_swept_intervals(centre[s], d[s], w[s], np.full(s.size, radius), np.zeros(s.size),
-                                               np.full(s.size, float(top)), *hulls, pieces.corners(level, q))
-        owner = s[pair]
-        overlap = (np.minimum(end, envelope[3, owner]) - np.maximum(start, envelope[2, owner])) * radius
-        hit = overlap > LENGTH_EPS
-        out.append((owner[hit], start[hit], end[hit]))
-    return tuple(np.concatenate(part) for part in zip(*out))

@@ -16,7 +16,7 @@ import numpy as np
 from . import inprocess_pass
 from .engagement import edge_lines, empty_results, engage, finished_engagement, inside_intervals
 from .inprocess import inprocess_intervals, removal_intervals, subtract
-from .inprocess_arc import arc_removal_intervals
+from .inprocess_arc_search import arc_removal_intervals
 from .interval_engagement import engagement_from_intervals
 from .arguments import check_arguments
 from .model import Staircase

@@ -1,0 +1,101 @@
+"""The corner arcs' search for removals (engine/inprocess_arc_search.py): its work arrays are bounded by a block of CL
+points, not by the call, and the blocks do not change the result; the sure-miss test of a move along the tool axis
+(a plunge).
+
+Before 2026-11-26 the search made one table of (arc, chain) pairs for every arc of a call and expanded it to (arc,
+span) pairs: 3.5 GB on FreeCAD CAM's Adaptive with a D6 ball-end mill (docs/BENCHMARKS.md). The bound checked here
+is what keeps that from coming back; the brute-force comparisons of the arcs' results are in
+test_inprocess_corner_program.py.
+"""
+
+import dataclasses
+
+import numpy as np
+
+import abm_workbench.engine.inprocess_arc_search as search
+from abm_workbench.engine import CutSettings, Tool, Toolpath
+from abm_workbench.engine.inprocess import _apart, swept_pieces
+from abm_workbench.engine.stocks import engage_in_process
+
+from .test_inprocess_corner_program import Program, straight
+from .test_tool_profiles import STAIRCASE
+
+PHI = CutSettings(0.1, 0.0, 0.0, 350.0, 10.0)  # 36 angles
+
+
+def ball_program():
+    """Five passes of a D8 ball-end mill across the staircase, 2.5 mm apart and each 0.4 mm lower, then a sixth
+    between the last two: (program, tool, rows of the sixth pass)."""
+    program = Program()
+    tool = Tool(8.0, 2, 12.0, corner_radius=4.0)
+    for k in range(5):
+        program.add(straight(-12, 12, -5.0 + 2.5 * k, 2.8 - 0.4 * k, 13), tool.radius, tool.flute_length,
+                    tool.corner_radius)
+    rows = program.add(straight(-12, 12, 3.75, 1.0, 13), tool.radius, tool.flute_length, tool.corner_radius)
+    return program, tool, rows
+
+
+def largest_arrays(monkeypatch, block, pairs):
+    """Run the sixth pass with ARC_BLOCK = block arcs and ROUND_PAIRS = pairs; (Engagement, the largest number of
+    rows given to the sure-miss test, the largest given to the arc solver)."""
+    program, tool, rows = ball_program()
+    pieces = swept_pieces(program.moves())
+    toolpath = Toolpath(program.array("cl")[rows], np.zeros(rows.size), np.zeros(rows.size))
+    seen = {"apart": 0, "solve": 0}
+
+    def counting(name, function):
+        def counted(first, *args, **kwargs):
+            seen[name] = max(seen[name], len(first))
+            return function(first, *args, **kwargs)
+        return counted
+
+    monkeypatch.setattr(search, "ARC_BLOCK", block)
+    monkeypatch.setattr(search, "ROUND_PAIRS", pairs)
+    monkeypatch.setattr(search, "_apart", counting("apart", search._apart))
+    monkeypatch.setattr(search, "arc_swept_intervals", counting("solve", search.arc_swept_intervals))
+    engagement = engage_in_process(STAIRCASE, tool, toolpath, PHI, pieces, rows)[0]
+    return engagement, seen["apart"], seen["solve"], pieces
+
+
+def test_work_is_bounded_by_the_block(monkeypatch):
+    """With blocks of two CL points (72 arcs) and rounds of at most 100 pairs, no array of the search holds more
+    rows than a round's pairs or a block's (CL point, piece) candidates, however many CL points the call has (13 x
+    36 = 468 arcs, about 20 pieces near each: one table for the whole call would hold thousands); and the result is
+    the same, bit for bit, as with one block and large rounds."""
+    p = PHI.phi.size
+    small, apart_rows, solve_rows, pieces = largest_arrays(monkeypatch, 2 * p, 100)
+    # A block's candidates: 2 CL points x every piece of the program at most; a round: 100 pairs or one per arc.
+    bound = max(100, 2 * p, 2 * pieces.move.size)
+    assert 0 < apart_rows <= bound
+    assert 0 < solve_rows <= bound
+    whole, apart_whole, _, _ = largest_arrays(monkeypatch, 1 << 20, 1 << 20)
+    assert apart_whole > bound  # the call as one block does exceed it: the bound above is not vacuous
+    assert small.engaged.any()
+    for field in dataclasses.fields(small):
+        a, b = getattr(small, field.name), getattr(whole, field.name)
+        assert np.array_equal(a, b, equal_nan=np.asarray(a).dtype.kind == "f"), field.name
+
+
+def test_blocks_are_whole_cl_points():
+    """_blocks cuts only between CL points, at most ARC_BLOCK arcs each, a larger CL point alone."""
+    cl = np.repeat([0, 1, 2, 3, 4], [3, search.ARC_BLOCK + 1, 2, 2, search.ARC_BLOCK - 3])
+    blocks = search._blocks(cl)
+    assert blocks[0][0] == 0 and blocks[-1][1] == cl.size
+    assert all(a[1] == b[0] for a, b in zip(blocks, blocks[1:]))
+    for begin, end in blocks:
+        assert begin == 0 or cl[begin] != cl[begin - 1]
+        assert end == cl.size or cl[end] != cl[end - 1]
+        assert end - begin <= search.ARC_BLOCK or np.unique(cl[begin:end]).size == 1
+    assert [np.unique(cl[b:e]).tolist() for b, e in blocks] == [[0], [1], [2, 3], [4]]
+
+
+def test_sure_miss_of_a_plunge():
+    """A move along its tool's axis (a plunge) is a point seen along the axis: a segment passing over that point
+    is not apart from it, one passing beside it farther than the radius is (the test once took only the
+    segment's first end)."""
+    c0, c1, axis = np.array([[0.0, 0.0, 2.0]]), np.array([[0.0, 0.0, 0.0]]), np.array([[0.0, 0.0, 1.0]])
+    hull = (c0, c1, axis, np.array([1.0]), np.array([5.0]))
+    across = _apart(np.array([[-3.0, 0.2, 1.0]]), np.array([[3.0, 0.2, 1.0]]), *hull, np.array([0.0]))
+    beside = _apart(np.array([[-3.0, 1.5, 1.0]]), np.array([[3.0, 1.5, 1.0]]), *hull, np.array([0.0]))
+    assert not across[0]
+    assert beside[0]
