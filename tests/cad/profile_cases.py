@@ -106,3 +106,26 @@ def differences(engagement, reference):
         assert np.array_equal(np.isnan(a), np.isnan(b)), f"{name}: engaged at different instants"
         worst[name] = float(np.nanmax(np.abs(a - b), initial=0.0))
     return worst
+
+
+#: Two passes of a D10 tool (corner radius {corner} mm, flute length 12) along x at y −3 and 4 over a part, as an
+#: APT CL file: the second pass beside what the first removed (the in-process stock's validation tests).
+TWO_PASSES_APT = """UNITS/MM
+MULTAX/ON
+CUTTER/10,{corner},0,0,0,0,40
+CSI_SET_FLUTE_LENGTH/12
+SPINDL/RPM,4000,CLW
+RAPID
+GOTO/8,-3,20,0,0,1
+GOTO/8,-3,3,0,0,1
+GOTO/30,-3,3,0,0,1
+GOTO/52,-3,3,0,0,1
+GOTO/52,-3,20,0,0,1
+RAPID
+GOTO/52,4,20,0,0,1
+GOTO/52,4,2,0,0,1
+GOTO/30,4,2,0,0,1
+GOTO/8,4,2,0,0,1
+GOTO/8,4,20,0,0,1
+FINI
+"""

@@ -26,7 +26,7 @@ from abm_workbench.engine.stocks import engage_in_process
 from abm_workbench.validation import validate
 from tests.engine.test_inprocess import staircase
 
-from .profile_cases import stocks
+from .profile_cases import TWO_PASSES_APT, stocks
 
 AGREE = 1e-6  # mm: both sides are exact
 SETTINGS = CutSettings(0.1, phi_start=2.5, phi_end=357.5, phi_step=15.0)
@@ -276,25 +276,6 @@ def test_validate_a_bull_nose_against_the_in_process_stock():
     assert (result.in_process.initial - comparison.l_ref).max() > 0.5
 
 
-APT = """UNITS/MM
-MULTAX/ON
-CUTTER/10,{corner},0,0,0,0,40
-CSI_SET_FLUTE_LENGTH/12
-SPINDL/RPM,4000,CLW
-RAPID
-GOTO/8,-3,20,0,0,1
-GOTO/8,-3,3,0,0,1
-GOTO/30,-3,3,0,0,1
-GOTO/52,-3,3,0,0,1
-GOTO/52,-3,20,0,0,1
-RAPID
-GOTO/52,4,20,0,0,1
-GOTO/52,4,2,0,0,1
-GOTO/30,4,2,0,0,1
-GOTO/8,4,2,0,0,1
-GOTO/8,4,20,0,0,1
-FINI
-"""
 
 
 @pytest.mark.parametrize("corner", [1.5, 5.0])
@@ -302,7 +283,7 @@ def test_cli_validate_a_corner_tool_in_process(tmp_path, monkeypatch, capsys, co
     from abm_workbench.formats.staircase_json import dump_staircase
 
     dump_staircase(staircase(), tmp_path / "stock.json")
-    (tmp_path / "path.apt").write_text(APT.format(corner=corner))
+    (tmp_path / "path.apt").write_text(TWO_PASSES_APT.format(corner=corner))
     monkeypatch.chdir(tmp_path)
     argv = ["validate", "--stock", "stock.json", "--toolpath", "path.apt", "--flutes", "2", "--feed-per-tooth", "0.1",
             "--phi-step", "30", "--report", "report", "--stock-model", "in-process"]

@@ -18,6 +18,7 @@ from abm_workbench.cad.solids import staircase_solid
 from abm_workbench.engine import CutSettings, Tool, Toolpath, edge_lines
 from abm_workbench.engine.inprocess import swept_pieces
 from abm_workbench.validation import validate
+from tests.cad.profile_cases import TWO_PASSES_APT
 from tests.engine.test_inprocess import Program, reference, staircase, straight
 
 AGREE = 0.01  # mm: the issue's bound, for lengths, LEP and UEP
@@ -123,25 +124,7 @@ def test_stock_heights_show_what_earlier_moves_removed():
     assert lowered  # some of the points show what earlier moves removed
 
 
-APT = """UNITS/MM
-MULTAX/ON
-CUTTER/10,0,0,0,0,0,40
-CSI_SET_FLUTE_LENGTH/12
-SPINDL/RPM,4000,CLW
-RAPID
-GOTO/8,-3,20,0,0,1
-GOTO/8,-3,3,0,0,1
-GOTO/30,-3,3,0,0,1
-GOTO/52,-3,3,0,0,1
-GOTO/52,-3,20,0,0,1
-RAPID
-GOTO/52,4,20,0,0,1
-GOTO/52,4,2,0,0,1
-GOTO/30,4,2,0,0,1
-GOTO/8,4,2,0,0,1
-GOTO/8,4,20,0,0,1
-FINI
-"""
+APT = TWO_PASSES_APT.format(corner=0)
 
 
 def test_cli_validate_in_process_names_the_stock_model(tmp_path, monkeypatch, capsys):
