@@ -257,7 +257,7 @@ class EngagementFeature(FeatureProxy):
         stock_obj = obj.Stock
         stock_proxy = _proxy(stock_obj, StockFeature, "Stock", obj)
         try:
-            parameters = resolve(given_parameters(obj), hints, {})
+            parameters = resolve(given_parameters(obj), hints, {}, words=lambda parameter: f"the property {parameter.prop}")
             tool, settings = tool_and_settings(parameters.values, obj.HelixAngle.Value)
         except ParameterError as error:
             raise property_words(obj.Label, error) from None
@@ -438,7 +438,7 @@ class EngagementFeature(FeatureProxy):
             return None
         try:
             _, hints = obj.Toolpath.Proxy.load(obj.Toolpath)
-            tool, _ = tool_and_settings(resolve(given_parameters(obj), hints, {}).values, obj.HelixAngle.Value)
+            tool, _ = tool_and_settings(resolve(given_parameters(obj), hints, {}, words=lambda parameter: f"the property {parameter.prop}").values, obj.HelixAngle.Value)
         except (InputError, ParameterError):
             return None
         if tool.corner_radius == 0.0:

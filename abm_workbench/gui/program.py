@@ -114,7 +114,7 @@ def take_from_file(engagement):
     from ..jobs import resolve
 
     _, hints = engagement.Toolpath.Proxy.load(engagement.Toolpath)
-    parameters = resolve(given_parameters(engagement), hints, {})
+    parameters = resolve(given_parameters(engagement), hints, {}, words=lambda parameter: f"the property {parameter.prop}")
     for key in FILE_PARAMETERS:
         if parameters.fixed_by_file(key):
             setattr(engagement, SETTINGS[key][0], parameters.values[key])

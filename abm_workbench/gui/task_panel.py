@@ -288,7 +288,7 @@ class EngagementPanel:
         if message is not None:
             return message, field
         try:
-            parameters = resolve(self.given(values), self.hints, {})
+            parameters = resolve(self.given(values), self.hints, {}, words=lambda parameter: f"the property {parameter.prop}")
             self.show_fixed(parameters)
             tool_and_settings(parameters.values, values["HelixAngle"])
             if values["Forces"]:

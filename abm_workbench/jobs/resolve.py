@@ -61,11 +61,12 @@ class Parameters:
         return ", ".join(f"{text} [{self.source_text(name, given_word)}]" for name, text in items)
 
 
-def resolve(given, hints, job, job_source=None):
+def resolve(given, hints, job, job_source=None, words=lambda parameter: parameter.option):
     """The Parameters of the cutting parameters.
 
     given: {name: value or None} of the front end's own input (keys of parameters.CUTTING;
-    missing or None: not given). hints: the toolpath file's PathHints. job: {name: value} of a
+    missing or None: not given); words(parameter): how that front end names a parameter in a message
+    (the command line's option, the GUI's property). hints: the toolpath file's PathHints. job: {name: value} of a
     job file (already checked), job_source its path. ParameterError for a value out of range, MissingParameter for
     a required value given nowhere (a ParameterError naming the job file when its value is bad).
     The feed per tooth comes from the toolpath file only when its feed is the same at every CL
@@ -86,7 +87,7 @@ def resolve(given, hints, job, job_source=None):
         if file_value is not None:
             values[name] = parameter.check(file_value, hints.source)
             sources[name] = ("file", f"{os.path.basename(hints.source)} {hints.records.get(name, parameter.record)}")
-            for other, where in ((mine, parameter.option), (theirs, job_source)):
+            for other, where in ((mine, words(parameter)), (theirs, job_source)):
                 if other is not None and not np.isclose(other, file_value, rtol=1e-9, atol=0.0):
                     conflicts.append(f"{hints.source} gives {name} {file_value:g}, {where} {other:g}: "
                                      f"using {file_value:g}, the value the toolpath was made for")

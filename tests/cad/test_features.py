@@ -568,3 +568,20 @@ def test_a_moved_project_reopens_with_its_input_files_and_missing_ones_are_repoi
         assert reopened.getObject("Toolpath").File == os.path.join(MODEL, "toolpath.csv")
     finally:
         FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_property_overruled_by_the_toolpath_file_is_named_as_a_property(doc, tmp_path):
+    """The engagement's warning names the property that differs from the file, in the GUI's words (no
+    command-line option)."""
+    path = load_toolpath(TOOLPATH)
+    moves = "".join("GOTO/" + ",".join(f"{v:.12f}" for v in (*p, 0.0, 0.0, 1.0)) + "\n" for p in path.cl)
+    apt = tmp_path / "path.apt"
+    apt.write_text(APT.format(moves=moves))
+    engagement = create_engagement(doc, create_stock(doc, STOCK_JSON), create_toolpath(doc, apt), flutes=2)
+    engagement.ShowSurfaces = False
+    engagement.SpindleSpeed = 5000.0
+    doc.recompute()
+    assert engagement.isValid(), engagement.getStatusString()
+    conflict = [text for text in engagement.Warnings if "spindle_rpm" in text]
+    assert conflict == [f"{apt} gives spindle_rpm 4000, the property SpindleSpeed 5000: using 4000, the value the "
+                        "toolpath was made for"], engagement.Warnings
