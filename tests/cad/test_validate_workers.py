@@ -99,7 +99,7 @@ def test_sigterm_during_validate_leaves_no_staging_folder(tmp_path):
     report = tmp_path / "report"
     command = [sys.executable, "-m", "abm_workbench", "validate", "--stock", os.path.join(MODEL, "stock.step"),
                "--toolpath", os.path.join(MODEL, "toolpath.csv"), "--job", os.path.join(MODEL, "job.json"),
-               "--phi-step", "5", "--cl", "0,1", "--report", str(report)]
+               "--phi-step", "5", "--cl", "0,1", "--check", "0,1", "--report", str(report)]
     child = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + 120.0
     while not any(name.startswith(".report.") for name in os.listdir(tmp_path)):
