@@ -26,6 +26,8 @@ subgradient v of G at both ends (docs/ENGINE.md, "Tools with a corner in the in-
   the middle and an interval without one takes its ends' side (a sliver thinner than that is lost).
   An arc with more than MAX_OPEN intervals open at once (only where it runs within rounding of a solid's
   boundary over a stretch, not on the earlier tool's corner) has the excess decided as such leaves.
+* an interval wholly outside the range of ψ that matters (`care`: in the search, what is left of the arc, the rest
+  being removed already or holding no material) by more than CARE_MARGIN is decided as such a leaf at once.
 
 Points on the boundary (G ≤ 0) are inside, as the flat-end closed form takes them.
 Shapes: K (arc, piece) pairs, (K, 3) vectors and (K,) numbers; ψ in radians; lengths in mm.
@@ -49,6 +51,8 @@ START_INTERVALS = 4
 MAX_LEVELS = 80
 #: Intervals of one arc open at once at most; the excess, narrowest first, is decided as leaves.
 MAX_OPEN = 64
+#: Intervals of the search farther than this (mm of arc) outside the range that matters (care) are not refined.
+CARE_MARGIN = 1e-9
 
 
 class _Arcs:
@@ -115,18 +119,25 @@ def _largest(constant, cos_part, sin_part, a, b):
     return best
 
 
-def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height, corner):
+def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height, corner, care=None):
     """Where K arcs lie inside K swept solids: (pair (J,), start (J,), end (J,)) in ψ (rad), sorted by pair
     then start, disjoint within a pair.
 
     centre, d, w (K, 3), radius (K,): the arcs P(ψ) = centre + radius·(sin ψ·d − cos ψ·w) over
     lo ≤ ψ ≤ hi (K,); c0, c1, axis (K, 3), big, height, corner (K,): the tools (radius, cutting height,
     corner radius) moved from c0 to c1 with a constant axis. See the module docstring.
+
+    care: None, or (from, to) (K,) each in ψ: only there do the intervals matter. An interval of the search
+    lying wholly outside it by more than CARE_MARGIN mm of arc is decided as it stands, as a leaf is (its
+    crossing at its middle), not refined: the result is the same inside care ± CARE_MARGIN, coarser outside.
     """
     arcs = _Arcs(*(np.asarray(v, dtype=float) for v in (centre, d, w, radius, c0, c1, axis, big, height, corner)))
     lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
     k = lo.size
     tol = REFINE_TOL / arcs.radius
+    if care is not None:
+        margin = CARE_MARGIN / arcs.radius
+        care = (np.asarray(care[0], dtype=float) - margin, np.asarray(care[1], dtype=float) + margin)
     pair = np.repeat(np.arange(k), START_INTERVALS + 1)
     fraction = np.tile(np.linspace(0.0, 1.0, START_INTERVALS + 1), k)
     psi = lo[pair] + fraction * (hi - lo)[pair]
@@ -148,7 +159,8 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
         r = arcs.radius[p]
         out = _below(a, b, fa, fb, da, db) - 0.5 * r * h * h > 0.0
         full = ~out & (np.maximum(fa, fb) + 0.125 * r * h * h <= 0.0)
-        rows = np.flatnonzero(~out & ~full)
+        aside = ~out & ~full & ((b < care[0][p]) | (a > care[1][p])) if care is not None else np.zeros(p.size, bool)
+        rows = np.flatnonzero(~out & ~full & ~aside)
         if rows.size:
             bound = np.minimum(arcs.foot_bound(p[rows], a[rows], b[rows], cur["foota"][rows], cur["sa"][rows]),
                                arcs.foot_bound(p[rows], a[rows], b[rows], cur["footb"][rows], cur["sb"][rows]))
@@ -160,8 +172,8 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
         change = (fa > 0.0) != (fb > 0.0)
         falling = change & (fa > 0.0) & (db + r * h < 0.0)
         rising = change & (fa <= 0.0) & (da - r * h > 0.0)
-        one = ~out & ~full & (falling | rising)
-        tiny = ~out & ~full & ~one & ((h <= tol[p]) | _crowded(p, h, ~out & ~full & ~one))
+        one = ~out & ~full & ~aside & (falling | rising)
+        tiny = ~out & ~full & ~one & ((h <= tol[p]) | aside | _crowded(p, h, ~out & ~full & ~one))
         inside.append((p[full], a[full], b[full]))
         single.append({key: cur[key][one] for key in ("pair", "a", "b", "fa", "fb")})
         leaves.append({key: cur[key][tiny] for key in ("pair", "a", "b", "fa", "fb")})

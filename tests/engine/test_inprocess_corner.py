@@ -278,3 +278,68 @@ def test_arc_on_the_same_tool_is_inside_and_cheap():
         np.testing.assert_array_equal(a, 0.0)
         np.testing.assert_allclose(b, 0.5 * np.pi, rtol=0, atol=1e-15)
         assert sum(calls) <= 5 * n
+
+
+def _clipped(runs, low, high):
+    """The runs [(a, b), …] cut to [low, high], those left shorter than 1e-12 dropped."""
+    cut = [(max(a, low), min(b, high)) for a, b in runs]
+    return [(a, b) for a, b in cut if b - a > 1e-12]
+
+
+def test_arc_care_range():
+    """arc_swept_intervals told the range of ψ that matters (care): inside it the runs are those without care, bit for
+    bit, and the reference's to EXACT mm of arc; with fewer gauge evaluations (crossings outside it are not
+    refined)."""
+    import abm_workbench.engine.inprocess_arc as arcs
+
+    rng = np.random.default_rng(11)
+    cases = []
+    for trial in range(60):
+        centre, d, w, radius = random_arc(rng)
+        c0, move, axis, big, corner, height = random_piece(rng, trial, RATIOS[1 + trial % 4])
+        c0 = centre + rng.normal(size=3) * 2.0
+        low, high = sorted(rng.uniform(0.0, 0.5 * np.pi, 2))
+        cases.append((centre, d, w, radius, c0, move, axis, big, corner, height, low, high))
+    centre, d, w, radius, c0, move, axis, big, corner, height, low, high = (np.array(c) for c in zip(*cases))
+    n = len(cases)
+    lo, hi = np.zeros(n), np.full(n, 0.5 * np.pi)
+    calls = []
+    evaluate, value = arcs._Arcs.evaluate, arcs._Arcs.value
+
+    def counted(self, pair, psi):
+        calls.append(pair.size)
+        return evaluate(self, pair, psi)
+
+    def counted_value(self, pair, psi):
+        calls.append(pair.size)
+        return value(self, pair, psi)
+
+    runs = {}
+    arcs._Arcs.evaluate, arcs._Arcs.value = counted, counted_value
+    try:
+        for name, care in (("all", None), ("care", (low, high))):
+            calls.clear()
+            pair, start, end = arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c0 + move, axis, big, height,
+                                                   corner, care=care)
+            runs[name] = ([list(zip(start[pair == k], end[pair == k])) for k in range(n)], sum(calls))
+    finally:
+        arcs._Arcs.evaluate, arcs._Arcs.value = evaluate, value
+    (every, spent), (cared, fewer) = runs["all"], runs["care"]
+
+    def flag(edge, t):
+        points = arc_point(centre[edge], d[edge], w[edge], radius[edge], t)
+        return in_swept(points, c0[edge], move[edge], axis[edge], big[edge], corner[edge], height[edge])
+
+    extra = [[v + x for a, b in found for v in (a, b) for x in (-1e-9, 0.0, 1e-9)] for found in every]
+    want = batch_runs(flag, hi, extra)
+    hits = 0
+    for k in range(n):
+        mine = _clipped(cared[k], low[k], high[k])
+        assert mine == _clipped(every[k], low[k], high[k]), k
+        reference = _clipped(want[k], low[k], high[k])
+        hits += bool(reference)
+        assert len(mine) == len(reference), (k, mine, reference)
+        for (a, b), (x, y) in zip(mine, reference):
+            assert abs(a - x) * radius[k] <= EXACT and abs(b - y) * radius[k] <= EXACT, (k, mine, reference)
+    assert hits >= 10
+    assert fewer < spent, (fewer, spent)
