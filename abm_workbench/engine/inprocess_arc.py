@@ -17,7 +17,8 @@ subgradient v of G at both ends (docs/ENGINE.md, "Tools with a corner in the in-
   tool's own corner (the same tool again, or its sweep), where it is zero up to rounding: taken as
   inside when it and F at both ends are within COINCIDENT ulps of the coordinates and [a, b] is at least
   COINCIDENT_WIDTH mm of arc (a tangential touch is within rounding over far less). At most zero: all
-  of [a, b] is inside.
+  of [a, b] is inside. The foot bound is at least F at both ends, so it is only computed where F at both
+  ends is within that rounding of inside.
 * one crossing: F + (r/2)·ψ² convex makes F'(x) ≤ D(b) + r·(b − x) and F'(x) ≥ D(a) − r·(x − a);
   so with F(a) > 0 ≥ F(b) and D(b) + r·h < 0 (or F(a) ≤ 0 < F(b) and D(a) − r·h > 0) F is monotone
   on [a, b] and crosses zero once: that root is refined by the Illinois method
@@ -26,8 +27,6 @@ subgradient v of G at both ends (docs/ENGINE.md, "Tools with a corner in the in-
   the middle and an interval without one takes its ends' side (a sliver thinner than that is lost).
   An arc with more than MAX_OPEN intervals open at once (only where it runs within rounding of a solid's
   boundary over a stretch, not on the earlier tool's corner) has the excess decided as such leaves.
-* an interval wholly outside the range of ψ that matters (`care`: in the search, what is left of the arc, the rest
-  being removed already or holding no material) by more than CARE_MARGIN is decided as such a leaf at once.
 
 Points on the boundary (G ≤ 0) are inside, as the flat-end closed form takes them.
 Shapes: K (arc, piece) pairs, (K, 3) vectors and (K,) numbers; ψ in radians; lengths in mm.
@@ -51,8 +50,6 @@ START_INTERVALS = 4
 MAX_LEVELS = 80
 #: Intervals of one arc open at once at most; the excess, narrowest first, is decided as leaves.
 MAX_OPEN = 64
-#: Intervals of the search farther than this (mm of arc) outside the range that matters (care) are not refined.
-CARE_MARGIN = 1e-9
 
 
 class _Arcs:
@@ -119,25 +116,18 @@ def _largest(constant, cos_part, sin_part, a, b):
     return best
 
 
-def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height, corner, care=None):
+def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height, corner):
     """Where K arcs lie inside K swept solids: (pair (J,), start (J,), end (J,)) in ψ (rad), sorted by pair
     then start, disjoint within a pair.
 
     centre, d, w (K, 3), radius (K,): the arcs P(ψ) = centre + radius·(sin ψ·d − cos ψ·w) over
     lo ≤ ψ ≤ hi (K,); c0, c1, axis (K, 3), big, height, corner (K,): the tools (radius, cutting height,
     corner radius) moved from c0 to c1 with a constant axis. See the module docstring.
-
-    care: None, or (from, to) (K,) each in ψ: only there do the intervals matter. An interval of the search
-    lying wholly outside it by more than CARE_MARGIN mm of arc is decided as it stands, as a leaf is (its
-    crossing at its middle), not refined: the result is the same inside care ± CARE_MARGIN, coarser outside.
     """
     arcs = _Arcs(*(np.asarray(v, dtype=float) for v in (centre, d, w, radius, c0, c1, axis, big, height, corner)))
     lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
     k = lo.size
     tol = REFINE_TOL / arcs.radius
-    if care is not None:
-        margin = CARE_MARGIN / arcs.radius
-        care = (np.asarray(care[0], dtype=float) - margin, np.asarray(care[1], dtype=float) + margin)
     pair = np.repeat(np.arange(k), START_INTERVALS + 1)
     fraction = np.tile(np.linspace(0.0, 1.0, START_INTERVALS + 1), k)
     psi = lo[pair] + fraction * (hi - lo)[pair]
@@ -159,8 +149,9 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
         r = arcs.radius[p]
         out = _below(a, b, fa, fb, da, db) - 0.5 * r * h * h > 0.0
         full = ~out & (np.maximum(fa, fb) + 0.125 * r * h * h <= 0.0)
-        aside = ~out & ~full & ((b < care[0][p]) | (a > care[1][p])) if care is not None else np.zeros(p.size, bool)
-        rows = np.flatnonzero(~out & ~full & ~aside)
+        # The foot bound is at least F at both ends: only where both are within rounding of inside can it be at
+        # most zero, or within rounding.
+        rows = np.flatnonzero(~out & ~full & (np.maximum(fa, fb) <= arcs.noise[p]))
         if rows.size:
             bound = np.minimum(arcs.foot_bound(p[rows], a[rows], b[rows], cur["foota"][rows], cur["sa"][rows]),
                                arcs.foot_bound(p[rows], a[rows], b[rows], cur["footb"][rows], cur["sb"][rows]))
@@ -172,8 +163,8 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
         change = (fa > 0.0) != (fb > 0.0)
         falling = change & (fa > 0.0) & (db + r * h < 0.0)
         rising = change & (fa <= 0.0) & (da - r * h > 0.0)
-        one = ~out & ~full & ~aside & (falling | rising)
-        tiny = ~out & ~full & ~one & ((h <= tol[p]) | aside | _crowded(p, h, ~out & ~full & ~one))
+        one = ~out & ~full & (falling | rising)
+        tiny = ~out & ~full & ~one & ((h <= tol[p]) | _crowded(p, h, ~out & ~full & ~one))
         inside.append((p[full], a[full], b[full]))
         single.append({key: cur[key][one] for key in ("pair", "a", "b", "fa", "fb")})
         leaves.append({key: cur[key][tiny] for key in ("pair", "a", "b", "fa", "fb")})

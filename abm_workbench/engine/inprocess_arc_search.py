@@ -28,7 +28,6 @@ import numpy as np
 from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _narrow, _seen_along, _span_pieces, \
     _sphere_chains
 from .inprocess_arc import arc_swept_intervals
-from .inprocess_swept import swept_gauge
 from .swept import row_dot
 from .tolerances import LENGTH_EPS
 
@@ -42,8 +41,6 @@ PARTS = 4
 PAIR_BATCH = 1 << 12
 #: Open arcs of one CL point at consecutive angles tested together first, at most.
 CLUSTER = 8
-GAUGE = True
-CARE = True
 
 
 def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, radius, top, p):
@@ -106,10 +103,13 @@ class _Arcs:
         sag = self.radius * (1.0 - np.cos(0.5 * np.maximum(high - low, 0.0)))
         return points[0], points[1], sag * (1.0 + 1e-9) + 1e-12, points[2]
 
-    def parts(self, seg):
-        """(owner (K,), ends, sag) of the arcs seg (K,) non-decreasing: what is left of each distinct arc in PARTS
-        equal parts, ends[j] (n, 3) the start of part j (ends[PARTS] the end), sag (n,) its sagitta (grown by its
-        rounding), owner: each row's arc among the n distinct ones."""
+    def near(self, seg, level, index, pieces):
+        """(K,) bool: the pairs (arc seg (K,) non-decreasing, hull index at `level`) not surely apart: what is left
+        of the arc in PARTS equal parts, each in the capsule of its chord grown by its sagitta, and the hull (a
+        chain's grown by its slack and lean) apart from none of them (inprocess._apart)."""
+        if seg.size == 0:
+            return np.zeros(0, dtype=bool)
+        # The parts' ends per arc, then gathered for its pairs.
         new = np.r_[True, seg[1:] != seg[:-1]]
         arc, owner = seg[new], np.cumsum(new) - 1
         low, high = self.envelope[0, arc], self.envelope[1, arc]
@@ -118,15 +118,6 @@ class _Arcs:
         centre, d, w = self.centre[arc], self.d[arc], self.w[arc]
         ends = [centre + self.radius * (np.sin(t)[:, None] * d - np.cos(t)[:, None] * w)
                 for t in (low + j * step for j in range(PARTS + 1))]
-        return owner, ends, sag
-
-    def near(self, seg, level, index, pieces):
-        """(K,) bool: the pairs (arc seg (K,) non-decreasing, hull index at `level`) not surely apart: what is left
-        of the arc in PARTS equal parts, each in the capsule of its chord grown by its sagitta, and the hull (a
-        chain's grown by its slack and lean) apart from none of them (inprocess._apart)."""
-        if seg.size == 0:
-            return np.zeros(0, dtype=bool)
-        owner, ends, sag = self.parts(seg)
         near = np.zeros(seg.size, dtype=bool)
         for j in range(PARTS):
             rows = np.flatnonzero(~near)
@@ -135,29 +126,6 @@ class _Arcs:
             at = owner[rows]
             near[rows] = _close(np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0), sag[at], level,
                                 index[rows], pieces)
-        return near
-
-    def gauge_near(self, seg, level, index, pieces):
-        """(K,) bool: the pairs (as for near) whose swept solid's gauge G (inprocess_swept.swept_gauge, convex and
-        1-Lipschitz) does not prove what is left of the arc outside: part j lies within half its chord of the
-        chord's middle m_j, so G(m_j) above that (a chain's grown by its slack, and _CLEAR) keeps it out."""
-        if seg.size == 0:
-            return np.zeros(0, dtype=bool)
-        owner, ends, _ = self.parts(seg)
-        c0, c1, axis, big, height = pieces.hulls(level, index)
-        corner = pieces.corners(level, index)
-        slack = (pieces.chain_slack[index] if level == "chain" else 0.0) + _CLEAR
-        near = np.zeros(seg.size, dtype=bool)
-        for j in range(PARTS):
-            rows = np.flatnonzero(~near)
-            if rows.size == 0:
-                break
-            at = owner[rows]
-            a, b = np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0)
-            chord = b - a
-            value = swept_gauge(a + 0.5 * chord, c0[rows], c1[rows] - c0[rows], axis[rows], big[rows], height[rows],
-                                corner[rows], value_only=True)
-            near[rows] = value <= 0.5 * np.sqrt(row_dot(chord, chord)) + np.take(np.broadcast_to(slack, index.shape), rows)
         return near
 
     def spheres(self, live, first):
@@ -197,8 +165,7 @@ class _Arcs:
             s, q = seg[begin:begin + PAIR_BATCH], index[begin:begin + PAIR_BATCH]
             pair, start, end = arc_swept_intervals(self.centre[s], self.d[s], self.w[s], np.full(s.size, self.radius),
                                                    np.zeros(s.size), np.full(s.size, self.top),
-                                                   *pieces.hulls(level, q), pieces.corners(level, q),
-                                                   care=(self.envelope[0, s], self.envelope[1, s]) if CARE else None)
+                                                   *pieces.hulls(level, q), pieces.corners(level, q))
             owner = s[pair]
             overlap = (np.minimum(end, self.envelope[3, owner]) - np.maximum(start, self.envelope[2, owner]))
             hit = overlap * self.radius > LENGTH_EPS
@@ -237,8 +204,6 @@ def _block(pieces, line, lo, hi, cl, before, geometry):
         for level, chosen in (("chain", np.flatnonzero(whole)), ("piece", np.flatnonzero(~whole))):
             index = units.index[unit[chosen]]
             near = arcs.near(seg[chosen], level, index, pieces)
-            if GAUGE:
-                near[near] = arcs.gauge_near(seg[chosen[near]], level, index[near], pieces)
             found.append(arcs.solve(seg[chosen[near]], index[near], level, pieces))
         pos += step
         take *= 2
