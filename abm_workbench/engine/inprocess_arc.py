@@ -17,7 +17,8 @@ subgradient v of G at both ends (docs/ENGINE.md, "Tools with a corner in the in-
   tool's own corner (the same tool again, or its sweep), where it is zero up to rounding: taken as
   inside when it and F at both ends are within COINCIDENT ulps of the coordinates and [a, b] is at least
   COINCIDENT_WIDTH mm of arc (a tangential touch is within rounding over far less). At most zero: all
-  of [a, b] is inside.
+  of [a, b] is inside. The foot bound is at least F at both ends, so it is only computed where F at both
+  ends is within that rounding of inside.
 * one crossing: F + (r/2)·ψ² convex makes F'(x) ≤ D(b) + r·(b − x) and F'(x) ≥ D(a) − r·(x − a);
   so with F(a) > 0 ≥ F(b) and D(b) + r·h < 0 (or F(a) ≤ 0 < F(b) and D(a) − r·h > 0) F is monotone
   on [a, b] and crosses zero once: that root is refined by the Illinois method
@@ -148,7 +149,9 @@ def arc_swept_intervals(centre, d, w, radius, lo, hi, c0, c1, axis, big, height,
         r = arcs.radius[p]
         out = _below(a, b, fa, fb, da, db) - 0.5 * r * h * h > 0.0
         full = ~out & (np.maximum(fa, fb) + 0.125 * r * h * h <= 0.0)
-        rows = np.flatnonzero(~out & ~full)
+        # The foot bound is at least F at both ends: only where both are within rounding of inside can it be at
+        # most zero, or within rounding.
+        rows = np.flatnonzero(~out & ~full & (np.maximum(fa, fb) <= arcs.noise[p]))
         if rows.size:
             bound = np.minimum(arcs.foot_bound(p[rows], a[rows], b[rows], cur["foota"][rows], cur["sa"][rows]),
                                arcs.foot_bound(p[rows], a[rows], b[rows], cur["footb"][rows], cur["sb"][rows]))

@@ -8,8 +8,11 @@ from it; a rigid chain ending before the CL point as one hull (its pieces' union
 pieces of its spans ending before the CL point, each not surely apart from the sphere either. The units are
 ranked by how deep the sphere's centre lies in them (the tool's corner rounded, _depth). Then rounds: every arc
 with something left takes its group's next 1, 2, 4, … units in that order, drops those surely apart from what is
-left of it (in PARTS equal parts, each in the capsule of its chord grown by its sagitta), solves the others and
-narrows its range. An arc whose range closes takes no
+left of it, solves the others and narrows its range. The sure-miss test comes in two steps: the open arcs of a CL
+point at consecutive angles in clusters of up to CLUSTER, each cluster in PARTS spheres (sphere j holds every arc
+of the cluster over part j of the cluster's range of ψ), and a unit apart from all of a cluster's spheres is
+dropped for all its arcs; then each arc alone, what is left of it in PARTS equal parts, each in the capsule of its
+chord grown by its sagitta. An arc whose range closes takes no
 more units; most arcs of a program that went over them before close after a unit or two (docs/ENGINE.md,
 "Tools with a corner in the in-process stock", "The arcs' search").
 
@@ -36,6 +39,8 @@ ROUND_PAIRS = 1 << 17
 PARTS = 4
 #: Pairs solved per batch.
 PAIR_BATCH = 1 << 12
+#: Open arcs of one CL point at consecutive angles tested together first, at most.
+CLUSTER = 8
 
 
 def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, radius, top, p):
@@ -118,20 +123,33 @@ class _Arcs:
             rows = np.flatnonzero(~near)
             if rows.size == 0:
                 break
-            at, hull = owner[rows], index[rows]
-            grown = sag[at] + (pieces.chain_slack[hull] if level == "chain" else 0.0)
-            a, b, hulls = np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0), pieces.hulls(level, hull)
-            lean = pieces.chain_lean[hull] if level == "chain" else None
-            close = ~_apart(a, b, *hulls, grown, lean)
-            # Where the cylinder's test leaves a pair open, the tool's corner (a chain's lean as more slack).
-            corner = pieces.corners(level, hull)
-            bent = np.flatnonzero(close & (corner > 0.0))
-            if bent.size:
-                slack = grown[bent] if lean is None else grown[bent] + lean[bent] * np.hypot(hulls[3][bent],
-                                                                                          hulls[4][bent])
-                close[bent] = ~_corner_apart(a[bent], b[bent], *(h[bent] for h in hulls[:4]), corner[bent], slack)
-            near[rows] = close
+            at = owner[rows]
+            near[rows] = _close(np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0), sag[at], level,
+                                index[rows], pieces)
         return near
+
+    def spheres(self, live, first):
+        """(centre (C, PARTS, 3), size (C, PARTS)) of the clusters of the open arcs live (n,) (cluster c: live[first[c]]
+        up to the next first): sphere j holds every arc of the cluster over part j of PARTS equal parts of the
+        cluster's range of ψ (from the least to the largest of what is left of its arcs): an arc of at most π lies
+        within half its chord of the chord's middle (its ends are the farthest)."""
+        count = np.diff(np.r_[first, live.size])
+        low = np.minimum.reduceat(self.envelope[0, live], first)
+        high = np.maximum.reduceat(self.envelope[1, live], first)
+        owner = np.repeat(np.arange(first.size), count)
+        step = (high - low) / PARTS
+        centre, d, w = self.centre[live], self.d[live], self.w[live]
+        ends = [centre + self.radius * (np.sin(t)[:, None] * d - np.cos(t)[:, None] * w)
+                for t in ((low + j * step)[owner] for j in range(PARTS + 1))]
+        middle, size = np.zeros((first.size, PARTS, 3)), np.zeros((first.size, PARTS))
+        for j in range(PARTS):
+            chord = ends[j + 1] - ends[j]
+            mid = ends[j] + 0.5 * chord
+            middle[:, j] = np.add.reduceat(mid, first, axis=0) / count[:, None]
+            gap = mid - middle[owner, j]
+            reach = np.sqrt(row_dot(gap, gap)) + 0.5 * np.sqrt(row_dot(chord, chord))
+            size[:, j] = np.maximum.reduceat(reach, first) * (1.0 + 1e-9) + 1e-12
+        return middle, size
 
     def open(self):
         """(L,) bool: the arcs with something left."""
@@ -173,7 +191,13 @@ def _block(pieces, line, lo, hi, cl, before, geometry):
         if live.size == 0:
             break
         step = max(1, min(take, ROUND_PAIRS // live.size))
-        owner, rank = _csr(np.minimum(left[live], step))
+        count = np.minimum(left[live], step)
+        owner, rank = _csr(count)
+        # The clusters' spheres first: a pair goes on only where its cluster's does.
+        heads, cluster = _clusters(live, line, group)
+        near = _clusters_near(arcs, units, live, heads, group, pos, count[heads], pieces)
+        keep = near[(np.cumsum(count[heads]) - count[heads])[cluster[owner]] + rank]
+        owner, rank = owner[keep], rank[keep]
         seg = live[owner]
         unit = units.start[group[seg]] + pos[group[seg]] + rank
         whole = units.whole[unit]
@@ -191,6 +215,41 @@ def _block(pieces, line, lo, hi, cl, before, geometry):
     start = np.concatenate([arcs.envelope[2, dead], enter[alive]]) * arcs.radius
     end = np.concatenate([arcs.envelope[3, dead], leave[alive]]) * arcs.radius
     return rows, start, end
+
+
+def _clusters(live, line, group):
+    """(first (C,), cluster (n,)): the open arcs live (n,) ascending in clusters, runs of at most CLUSTER arcs of one
+    CL point at consecutive rows (angles) of line; first: each cluster's first position in live, cluster: each
+    arc's cluster."""
+    rows, mine = line[live], group[live]
+    new = np.r_[True, (mine[1:] != mine[:-1]) | (rows[1:] - rows[:-1] != 1)]
+    start = np.flatnonzero(new)
+    rank = np.arange(live.size) - start[np.cumsum(new) - 1]
+    new |= rank % CLUSTER == 0
+    return np.flatnonzero(new), np.cumsum(new) - 1
+
+
+def _clusters_near(arcs, units, live, first, group, pos, count, pieces):
+    """(sum(count),) bool: the pairs (cluster c, its group's next count[c] units) not surely apart from the
+    cluster's spheres (_Arcs.spheres), cluster by cluster, unit by unit in order."""
+    centre, size = arcs.spheres(live, first)
+    owner, rank = _csr(count)
+    g = group[live[first]][owner]
+    unit = units.start[g] + pos[g] + rank
+    whole = units.whole[unit]
+    near = np.zeros(unit.size, dtype=bool)
+    for level, chosen in (("chain", np.flatnonzero(whole)), ("piece", np.flatnonzero(~whole))):
+        index = units.index[unit[chosen]]
+        close = np.zeros(chosen.size, dtype=bool)
+        for j in range(PARTS):
+            rows = np.flatnonzero(~close)
+            if rows.size == 0:
+                break
+            at = owner[chosen[rows]]
+            point = centre[at, j]
+            close[rows] = _close(point, point, size[at, j], level, index[rows], pieces)
+        near[chosen] = close
+    return near
 
 
 class _Units:
@@ -226,6 +285,23 @@ class _Units:
         owner, self.index, self.whole = owner[order], self.index[order], self.whole[order]
         self.count = np.bincount(owner, minlength=first.size)
         self.start = np.cumsum(self.count) - self.count
+
+
+def _close(a, b, grown, level, hull, pieces):
+    """(K,) bool: the segments a … b (K, 3) grown by `grown` (K,) not surely apart from the hulls `hull` (K,) at
+    `level` (a chain's grown by its slack and lean): the flat cylinder's test (inprocess._apart), and where it
+    leaves a pair open and the tool has a corner, the corner's (_corner_apart)."""
+    hulls = pieces.hulls(level, hull)
+    lean = None
+    if level == "chain":
+        grown, lean = grown + pieces.chain_slack[hull], pieces.chain_lean[hull]
+    close = ~_apart(a, b, *hulls, grown, lean)
+    corner = pieces.corners(level, hull)
+    bent = np.flatnonzero(close & (corner > 0.0))
+    if bent.size:
+        slack = grown[bent] if lean is None else grown[bent] + lean[bent] * np.hypot(hulls[3][bent], hulls[4][bent])
+        close[bent] = ~_corner_apart(a[bent], b[bent], *(h[bent] for h in hulls[:4]), corner[bent], slack)
+    return close
 
 
 def _corner_apart(a, b, c0, c1, axis, big, corner, slack):

@@ -99,3 +99,87 @@ def test_sure_miss_of_a_plunge():
     beside = _apart(np.array([[-3.0, 1.5, 1.0]]), np.array([[3.0, 1.5, 1.0]]), *hull, np.array([0.0]))
     assert not across[0]
     assert beside[0]
+
+
+def random_arcs(rng, n, radius):
+    """n arcs (centres, d, w) of one corner radius at random places and orientations (d ⊥ w, unit)."""
+    centres = rng.uniform(-5.0, 5.0, (n, 3))
+    w = rng.normal(size=(n, 3))
+    w /= np.linalg.norm(w, axis=1)[:, None]
+    d = rng.normal(size=(n, 3))
+    d -= (d * w).sum(axis=1)[:, None] * w
+    d /= np.linalg.norm(d, axis=1)[:, None]
+    return centres, d, w
+
+
+def test_cluster_spheres_hold_their_arcs():
+    """Each cluster's sphere j holds the points of every arc of the cluster over part j of the cluster's range of ψ,
+    sampled at 2,001 points per part (the arcs written out here as C + r·(sin ψ·d − cos ψ·w), not by the module);
+    arcs of a cluster at nearby angles, as a CL point's are, and far apart, with ranges of every width."""
+    rng = np.random.default_rng(7)
+    radius, top = 3.0, 0.5 * np.pi
+    for spread in (0.05, 3.0):
+        n = 40
+        centres, d, w = random_arcs(rng, n, radius)
+        centres = centres[:1] + spread * (centres - centres[:1]) / 10.0
+        lo = rng.uniform(0.0, top, n) * rng.integers(0, 2, n)
+        hi = np.minimum(lo + rng.uniform(0.0, top, n) ** 2, top)
+        hi[::7] = lo[::7] + 1e-9  # a range almost closed
+        line = np.arange(n)
+        arcs = search._Arcs(line, lo, hi, (centres, d, w, radius, top))
+        live = np.arange(n)
+        first = np.array([0, 1, 5, 13, 21, 29, 37])
+        centre, size = arcs.spheres(live, first)
+        cluster = np.repeat(np.arange(first.size), np.diff(np.r_[first, n]))
+        low = np.minimum.reduceat(lo, first)
+        high = np.maximum.reduceat(hi, first)
+        worst = np.full(first.size, -np.inf)
+        for i in range(n):
+            c = cluster[i]
+            for j in range(search.PARTS):
+                psi = np.linspace(low[c] + j * (high[c] - low[c]) / search.PARTS,
+                                  low[c] + (j + 1) * (high[c] - low[c]) / search.PARTS, 2001)
+                points = centres[i] + radius * (np.sin(psi)[:, None] * d[i] - np.cos(psi)[:, None] * w[i])
+                gap = np.linalg.norm(points - centre[c, j], axis=1).max() - size[c, j]
+                worst[c] = max(worst[c], gap)
+        assert (worst <= 0.0).all(), worst
+        # Tight for a cluster of one arc (its part's ends are the farthest points): a sphere too small by 10⁻⁶ mm
+        # would fail above.
+        assert worst[0] > -1e-6, worst[0]
+
+
+def test_clusters_change_no_result(monkeypatch):
+    """Clusters of up to CLUSTER arcs drop pairs before each arc's own test; with clusters of one arc, or (as good as)
+    without the clusters' test, every Engagement field is the same, bit for bit, and the clusters leave fewer pairs
+    to the arcs' own test."""
+    program, tool, rows = ball_program()
+    pieces = swept_pieces(program.moves())
+    toolpath = Toolpath(program.array("cl")[rows], np.zeros(rows.size), np.zeros(rows.size))
+    tested = {}
+
+    def run(name):
+        seen = [0]
+        near = search._Arcs.near
+
+        def counted(self, seg, *args):
+            seen[0] += len(seg)
+            return near(self, seg, *args)
+
+        monkeypatch.setattr(search._Arcs, "near", counted)
+        out = engage_in_process(STAIRCASE, tool, toolpath, PHI, pieces, rows)[0]
+        monkeypatch.setattr(search._Arcs, "near", near)
+        tested[name] = seen[0]
+        return out
+
+    clustered = run("clusters")
+    monkeypatch.setattr(search, "CLUSTER", 1)
+    single = run("single")
+    monkeypatch.setattr(search, "_clusters_near", lambda arcs, units, live, first, group, pos, count, pieces:
+                        np.ones(int(count.sum()), dtype=bool))
+    without = run("without")
+    assert clustered.engaged.any()
+    for other in (single, without):
+        for field in dataclasses.fields(clustered):
+            a, b = getattr(clustered, field.name), getattr(other, field.name)
+            assert np.array_equal(a, b, equal_nan=np.asarray(a).dtype.kind == "f"), field.name
+    assert tested["clusters"] < tested["without"], tested
