@@ -274,9 +274,9 @@ def _run_starts(key):
 
 
 def _rows(table, index):
-    """The rows index (K,) of table (N, …): np.take, which gathers rows of an (N, 3) array about
-    three times faster than table[index]."""
-    return np.take(table, index, axis=0)
+    """The rows index (K,) of table (N, …): ndarray.take, which gathers rows of an (N, 3) array
+    about three times faster than table[index] (and without np.take's dispatch, 2 µs a call)."""
+    return table.take(index, axis=0)
 
 
 def _turned(theta, fraction):
@@ -449,28 +449,38 @@ def _apart(a, b, c0, c1, axis, radius, height, slack, lean=None, touch=False, ri
     return apart
 
 
-def _inside(x, c0, c1, axis, radius, low, high):
-    """(K,) bool: points x (K, 3) lie in the volume {c0 + s·(c1 − c0) + a·axis + b : 0 ≤ s ≤ 1,
-    low ≤ a ≤ high, b ⊥ axis, |b| ≤ radius} (mm): the s allowed by the axial bounds and the s
-    allowed by the radius are two intervals, which must meet within [0, 1]."""
-    q, d = x - c0, c1 - c0
-    a0, da = row_dot(q, axis), row_dot(d, axis)
-    b0, dp = q - a0[:, None] * axis, d - da[:, None] * axis
-    with np.errstate(divide="ignore", invalid="ignore"):
-        s1, s2 = (a0 - low) / da, (a0 - high) / da
+def _inside(ends, c0, c1, axis, radius, low, high):
+    """(K,) bool: the points of every array in ends (each (K, 3)) lie in the volume
+    {c0 + s·(c1 − c0) + a·axis + b : 0 ≤ s ≤ 1, low ≤ a ≤ high, b ⊥ axis, |b| ≤ radius} (mm): per
+    point, the s allowed by the axial bounds and the s allowed by the radius are two intervals,
+    which must meet within [0, 1]. The volume's own terms are computed once for all the points."""
+    d = c1 - c0
+    da = row_dot(d, axis)
+    dp = d - da[:, None] * axis
     flat = np.abs(da) <= 1e-15
-    ok = (a0 >= low) & (a0 <= high)
-    lo = np.where(flat, np.where(ok, 0.0, np.inf), np.minimum(s1, s2))
-    hi = np.where(flat, np.where(ok, 1.0, -np.inf), np.maximum(s1, s2))
-    aa, bb = row_dot(dp, dp), row_dot(b0, dp)
-    cc = row_dot(b0, b0) - radius * radius
-    disc = bb * bb - aa * cc
+    aa = row_dot(dp, dp)
     still = aa <= 1e-24
-    root = np.sqrt(np.maximum(disc, 0.0))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        r_lo = np.where(still, np.where(cc <= 0.0, 0.0, np.inf), np.where(disc >= 0.0, (bb - root) / aa, np.inf))
-        r_hi = np.where(still, np.where(cc <= 0.0, 1.0, -np.inf), np.where(disc >= 0.0, (bb + root) / aa, -np.inf))
-    return np.maximum(np.maximum(lo, r_lo), 0.0) <= np.minimum(np.minimum(hi, r_hi), 1.0)
+    rr = radius * radius
+    inside = None
+    for x in ends:
+        q = x - c0
+        a0 = row_dot(q, axis)
+        b0 = q - a0[:, None] * axis
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s1, s2 = (a0 - low) / da, (a0 - high) / da
+        ok = (a0 >= low) & (a0 <= high)
+        lo = np.where(flat, np.where(ok, 0.0, np.inf), np.minimum(s1, s2))
+        hi = np.where(flat, np.where(ok, 1.0, -np.inf), np.maximum(s1, s2))
+        bb = row_dot(b0, dp)
+        cc = row_dot(b0, b0) - rr
+        disc = bb * bb - aa * cc
+        root = np.sqrt(np.maximum(disc, 0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r_lo = np.where(still, np.where(cc <= 0.0, 0.0, np.inf), np.where(disc >= 0.0, (bb - root) / aa, np.inf))
+            r_hi = np.where(still, np.where(cc <= 0.0, 1.0, -np.inf), np.where(disc >= 0.0, (bb + root) / aa, -np.inf))
+        meets = np.maximum(np.maximum(lo, r_lo), 0.0) <= np.minimum(np.minimum(hi, r_hi), 1.0)
+        inside = meets if inside is None else inside & meets
+    return inside
 
 
 def _deep_inside(a, b, c0, c1, axis, radius, height, slack, corner):
@@ -478,16 +488,15 @@ def _deep_inside(a, b, c0, c1, axis, radius, height, slack, corner):
     tool (c0, c1, axis, radius, height, corner: hulls and their tools' corner radii), so the segment does
     (the volume is convex). A tool with a corner holds the cylinders of radius R − r over its whole
     height and of radius R above its corner; both ends must lie in one of them (each convex)."""
-    hull = (c0, c1, axis, radius - slack, slack, height - slack)
-    inside = _inside(a, *hull) & _inside(b, *hull)
+    inside = _inside((a, b), c0, c1, axis, radius - slack, slack, height - slack)
     bent = np.flatnonzero(corner > 0.0)
     if bent.size:
+        ends = (a[bent], b[bent])
         narrow = (c0[bent], c1[bent], axis[bent], radius[bent] - corner[bent] - slack[bent], slack[bent],
                   height[bent] - slack[bent])
         upper = (c0[bent], c1[bent], axis[bent], radius[bent] - slack[bent], corner[bent] + slack[bent],
                  height[bent] - slack[bent])
-        inside[bent] = ((narrow[3] > 0.0) & _inside(a[bent], *narrow) & _inside(b[bent], *narrow)
-                        | (upper[3] > 0.0) & _inside(a[bent], *upper) & _inside(b[bent], *upper))
+        inside[bent] = ((narrow[3] > 0.0) & _inside(ends, *narrow) | (upper[3] > 0.0) & _inside(ends, *upper))
     return inside
 
 
