@@ -1052,17 +1052,32 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     open_ = envelope[0, whole] < envelope[1, whole]
     out = [_solved(whole[open_], chain[open_], envelope, origins, directions, pieces, whole=True)]
     a, b = _ends(seg, envelope, origins, directions)
+    # A segment lying deep enough inside a span (both ends at least the span's slack inside
+    # its hull, which is convex) is removed whole: its other pairs need no solving. First the
+    # latest span of each run of a segment's pairs: on a path of short moves (arcs as chords)
+    # a line on the tool's trailing side lies inside dozens of the moves just before, and the
+    # latest closes it without a test of the others.
+    latest = np.flatnonzero(_smallest(seg, -span, 1))
+    closed, by = _closed_inside(seg[latest], span[latest], _rows(a, latest), _rows(b, latest), envelope, pieces)
+    out.append((closed, envelope[0, closed], envelope[1, closed], by))
+    envelope[1, closed] = envelope[0, closed]
+    tried = np.zeros(seg.size, dtype=bool)
+    tried[latest] = True
+    rest = np.flatnonzero(envelope[0, seg] < envelope[1, seg])
+    seg, span, tried = seg[rest], span[rest], tried[rest]
+    a, b = _rows(a, rest), _rows(b, rest)
     hulls = pieces.hulls("span", span)
     keep = ~_apart(a, b, *hulls, 0.0, 0.5 * pieces.span_turn[span], touch=True)
     seg, span = seg[keep], span[keep]
     if seg.size == 0:
-        return out[0]
-    # A segment lying deep enough inside a span (both ends at least the span's slack inside
-    # its hull, which is convex) is removed whole: its other pairs need no solving.
+        return tuple(np.concatenate(part) for part in zip(*out))
+    # The others (not found inside by the latest span's test, which saw the same ends).
     at = np.flatnonzero(keep)
-    c0, c1, axis, radius, h = (_rows(column, at) for column in hulls)
-    slack = pieces.span_slack[span]
-    inside = _deep_inside(_rows(a, at), _rows(b, at), c0, c1, axis, radius, h, slack, pieces.corners("span", span))
+    inside = np.zeros(at.size, dtype=bool)
+    test = np.flatnonzero(~tried[at])
+    c0, c1, axis, radius, h = (_rows(column, at[test]) for column in hulls)
+    inside[test] = _deep_inside(_rows(a, at[test]), _rows(b, at[test]), c0, c1, axis, radius, h,
+                                pieces.span_slack[span[test]], pieces.corners("span", span[test]))
     out.append((seg[inside], envelope[0, seg[inside]], envelope[1, seg[inside]], span[inside]))
     envelope[1, seg[inside]] = envelope[0, seg[inside]]
     span = span[~inside]
@@ -1094,6 +1109,17 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
         take *= 2
     return tuple(np.concatenate(part) for part in zip(*out))
 
+
+
+def _closed_inside(seg, span, a, b, envelope, pieces):
+    """(segments, spans): of the pairs (segment seg, span) (K,), with the segments' ends a, b
+    (K, 3), those whose segment lies deep inside the span (_deep_inside) and is still open."""
+    open_ = np.flatnonzero(envelope[0, seg] < envelope[1, seg])
+    seg, span = seg[open_], span[open_]
+    c0, c1, axis, radius, h = pieces.hulls("span", span)
+    inside = _deep_inside(_rows(a, open_), _rows(b, open_), c0, c1, axis, radius, h, pieces.span_slack[span],
+                          pieces.corners("span", span))
+    return seg[inside], span[inside]
 
 class _Ranking:
     """The rows (K,) of each owner (K,) ordered by a key (K,), ties to the earlier row,
