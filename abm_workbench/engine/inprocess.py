@@ -1041,16 +1041,27 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     remaining material, narrowed in place by the removals found (rows 2, 3: as it was at
     first); origins, directions: (L, 3) the segments' lines; before (L,) the last program row
     before each segment's CL point. A span of a rigid chain that ends before that row is
-    solved as its whole chain (_whole_chains). A segment found to lie inside a span's hull is
-    removed whole: its envelope as it was then is given as one removal. The other pairs are
+    solved as its whole chain (_whole_chains). A segment found to lie inside a span's hull (or
+    a rigid chain's) is removed whole: its envelope as it was then is given as one removal; the
+    latest chain and the latest span of each segment are tested for that first, and the pairs
+    of the segments they remove are not tested at all. The other pairs are
     solved in rounds: each round solves, per segment, the pieces reaching lowest and highest
     along its line (1, 2, 4, … of each), narrows the envelopes, and drops the pairs whose piece
     is then surely apart from the envelope (it can remove nothing more), so that a line cut by
     many pieces solves few of them.
     """
     (whole, chain), (seg, span) = _whole_chains(seg, span, before, pieces)
+    out = [_none()]
+    if whole.size:
+        # The latest rigid chain of each segment first: a segment deep inside it is removed
+        # whole, and its other chains and spans need no solving (as the spans below).
+        latest = np.flatnonzero(_smallest(whole, -chain, 1))
+        closed, by = _closed_inside("chain", whole[latest], chain[latest],
+                                    *_ends(whole[latest], envelope, origins, directions), envelope, pieces)
+        out.append((closed, envelope[0, closed], envelope[1, closed], pieces.chain_first[by]))
+        envelope[1, closed] = envelope[0, closed]
     open_ = envelope[0, whole] < envelope[1, whole]
-    out = [_solved(whole[open_], chain[open_], envelope, origins, directions, pieces, whole=True)]
+    out.append(_solved(whole[open_], chain[open_], envelope, origins, directions, pieces, whole=True))
     a, b = _ends(seg, envelope, origins, directions)
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving. First the
@@ -1058,7 +1069,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     # a line on the tool's trailing side lies inside dozens of the moves just before, and the
     # latest closes it without a test of the others.
     latest = np.flatnonzero(_smallest(seg, -span, 1))
-    closed, by = _closed_inside(seg[latest], span[latest], _rows(a, latest), _rows(b, latest), envelope, pieces)
+    closed, by = _closed_inside("span", seg[latest], span[latest], _rows(a, latest), _rows(b, latest), envelope, pieces)
     out.append((closed, envelope[0, closed], envelope[1, closed], by))
     envelope[1, closed] = envelope[0, closed]
     tried = np.zeros(seg.size, dtype=bool)
@@ -1111,15 +1122,16 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
 
 
 
-def _closed_inside(seg, span, a, b, envelope, pieces):
-    """(segments, spans): of the pairs (segment seg, span) (K,), with the segments' ends a, b
-    (K, 3), those whose segment lies deep inside the span (_deep_inside) and is still open."""
+def _closed_inside(level, seg, item, a, b, envelope, pieces):
+    """(segments, items): of the pairs (segment seg, span or chain item) (K,) (level "span" or
+    "chain"), with the segments' ends a, b (K, 3), those whose segment is still open and lies
+    deep inside the item's hull (_deep_inside, grown by its slack)."""
     open_ = np.flatnonzero(envelope[0, seg] < envelope[1, seg])
-    seg, span = seg[open_], span[open_]
-    c0, c1, axis, radius, h = pieces.hulls("span", span)
-    inside = _deep_inside(_rows(a, open_), _rows(b, open_), c0, c1, axis, radius, h, pieces.span_slack[span],
-                          pieces.corners("span", span))
-    return seg[inside], span[inside]
+    seg, item = seg[open_], item[open_]
+    c0, c1, axis, radius, h = pieces.hulls(level, item)
+    inside = _deep_inside(_rows(a, open_), _rows(b, open_), c0, c1, axis, radius, h,
+                          getattr(pieces, level + "_slack")[item], pieces.corners(level, item))
+    return seg[inside], item[inside]
 
 class _Ranking:
     """The rows (K,) of each owner (K,) ordered by a key (K,), ties to the earlier row,
