@@ -1055,7 +1055,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     if whole.size:
         # The latest rigid chain of each segment first: a segment deep inside it is removed
         # whole, and its other chains and spans need no solving (as the spans below).
-        latest = np.flatnonzero(_smallest(whole, -chain, 1))
+        latest = _latest(whole, chain)
         closed, by = _closed_inside("chain", whole[latest], chain[latest],
                                     *_ends(whole[latest], envelope, origins, directions), envelope, pieces)
         out.append((closed, envelope[0, closed], envelope[1, closed], pieces.chain_first[by]))
@@ -1068,7 +1068,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     # latest span of each run of a segment's pairs: on a path of short moves (arcs as chords)
     # a line on the tool's trailing side lies inside dozens of the moves just before, and the
     # latest closes it without a test of the others.
-    latest = np.flatnonzero(_smallest(seg, -span, 1))
+    latest = _latest(seg, span)
     closed, by = _closed_inside("span", seg[latest], span[latest], _rows(a, latest), _rows(b, latest), envelope, pieces)
     out.append((closed, envelope[0, closed], envelope[1, closed], by))
     envelope[1, closed] = envelope[0, closed]
@@ -1121,6 +1121,14 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     return tuple(np.concatenate(part) for part in zip(*out))
 
 
+
+def _latest(seg, item):
+    """(R,) the rows, one per distinct segment of seg (K,), of its largest item (K,) (ties: the
+    first): runs of equal segments, where they come in order, else after a stable sort by segment."""
+    if seg.size and (seg[1:] < seg[:-1]).any():
+        order = np.argsort(seg, kind="stable")
+        return order[_smallest(seg[order], -item[order], 1)]
+    return np.flatnonzero(_smallest(seg, -item, 1))
 
 def _closed_inside(level, seg, item, a, b, envelope, pieces):
     """(segments, items): of the pairs (segment seg, span or chain item) (K,) (level "span" or
