@@ -1123,12 +1123,18 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
 
 
 def _latest(seg, item):
-    """(R,) the rows, one per distinct segment of seg (K,), of its largest item (K,) (ties: the
+    """(R,) the rows, one per distinct segment of seg (K,), of its largest item (K,) int (ties: the
     first): runs of equal segments, where they come in order, else after a stable sort by segment."""
-    if seg.size and (seg[1:] < seg[:-1]).any():
+    if seg.size == 0:
+        return np.zeros(0, dtype=np.intp)
+    order = None
+    if (seg[1:] < seg[:-1]).any():
         order = np.argsort(seg, kind="stable")
-        return order[_smallest(seg[order], -item[order], 1)]
-    return np.flatnonzero(_smallest(seg, -item, 1))
+        seg, item = seg[order], item[order]
+    start, count = _run_starts(seg)
+    hit = (item == np.repeat(np.maximum.reduceat(item, start), count)).nonzero()[0]
+    first = hit[_run_starts(seg[hit])[0]]
+    return first if order is None else order[first]
 
 def _closed_inside(level, seg, item, a, b, envelope, pieces):
     """(segments, items): of the pairs (segment seg, span or chain item) (K,) (level "span" or

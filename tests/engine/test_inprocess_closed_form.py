@@ -14,7 +14,7 @@ Lengths in mm.
 
 import numpy as np
 
-from abm_workbench.engine.inprocess import _deep_inside
+from abm_workbench.engine.inprocess import _deep_inside, _latest
 from abm_workbench.engine.swept import line_hull_interval
 
 S_SAMPLES = 2001   # positions s ∈ [0, 1] along a move (a step of at most 0.005 mm here)
@@ -87,3 +87,21 @@ def test_line_hull_interval_rows_alone_and_in_any_order():
         one = slice(i, i + 1)
         e, l = line_hull_interval(o[one], u[one], c0[one], (c0 + d)[one], w[one], r[one], h[one])
         assert e.view(np.int64)[0] == enter.view(np.int64)[i] and l.view(np.int64)[0] == leave.view(np.int64)[i]
+
+
+def test_latest_pair_of_each_segment_against_a_loop():
+    """inprocess._latest (which pair of each segment is tested for deep inside first): one row per
+    distinct segment, holding its largest item, the first such row; segments in order, in runs
+    out of order, and empty."""
+
+    rng = np.random.default_rng(4)
+    for trial in range(30):
+        n = int(rng.integers(0, 60))
+        seg = np.sort(rng.integers(0, 12, n)) if trial % 2 else rng.integers(0, 12, n)
+        item = rng.integers(0, 5, n)
+        rows = _latest(seg, item)
+        expected = []
+        for s in np.unique(seg):
+            mine = np.flatnonzero(seg == s)
+            expected.append(mine[np.argmax(item[mine])])  # argmax: the first of the largest
+        assert sorted(rows.tolist()) == sorted(expected), trial
