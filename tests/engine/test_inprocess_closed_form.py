@@ -8,7 +8,9 @@ in place, and inprocess._inside takes several points against one hull at once
   where the sampling is sure: the point is inside a hull shrunk by 0.01 mm more, or outside one
   grown by 0.01 mm);
 - line_hull_interval gives each row the same bits alone as in a batch, and in a batch whose
-  rows come in another order (each row's arithmetic is its own, whatever the table around it).
+  rows come in another order (each row's arithmetic is its own, whatever the table around it);
+- the pair of each segment tested first (inprocess._latest) is the one of its largest span or
+  chain, against a loop over the segments.
 Lengths in mm.
 """
 
@@ -93,7 +95,6 @@ def test_latest_pair_of_each_segment_against_a_loop():
     """inprocess._latest (which pair of each segment is tested for deep inside first): one row per
     distinct segment, holding its largest item, the first such row; segments in order, in runs
     out of order, and empty."""
-
     rng = np.random.default_rng(4)
     for trial in range(30):
         n = int(rng.integers(0, 60))
