@@ -1065,7 +1065,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     a, b = _ends(seg, envelope, origins, directions)
     # A segment lying deep enough inside a span (both ends at least the span's slack inside
     # its hull, which is convex) is removed whole: its other pairs need no solving. First the
-    # latest span of each run of a segment's pairs: on a path of short moves (arcs as chords)
+    # latest span of each segment: on a path of short moves (arcs as chords)
     # a line on the tool's trailing side lies inside dozens of the moves just before, and the
     # latest closes it without a test of the others.
     latest = _latest(seg, span)
@@ -1082,7 +1082,7 @@ def _line_span_pairs(seg, span, envelope, origins, directions, before, pieces):
     seg, span = seg[keep], span[keep]
     if seg.size == 0:
         return tuple(np.concatenate(part) for part in zip(*out))
-    # The others (not found inside by the latest span's test, which saw the same ends).
+    # The others (a latest span not found inside saw the same ends and the same tests).
     at = np.flatnonzero(keep)
     inside = np.zeros(at.size, dtype=bool)
     test = np.flatnonzero(~tried[at])
@@ -1139,12 +1139,19 @@ def _latest(seg, item):
 def _closed_inside(level, seg, item, a, b, envelope, pieces):
     """(segments, items): of the pairs (segment seg, span or chain item) (K,) (level "span" or
     "chain"), with the segments' ends a, b (K, 3), those whose segment is still open and lies
-    deep inside the item's hull (_deep_inside, grown by its slack)."""
+    deep inside the item's hull (_deep_inside, grown by its slack). A span must also pass the
+    sure-miss test that _line_span_pairs makes of every pair first (a segment within
+    inprocess_touch.TOUCH of its axial range counts as apart), so that a pair found inside here
+    is one found inside there; a rigid chain is solved whole unconditionally, and its closed form
+    removes such a segment as well."""
     open_ = np.flatnonzero(envelope[0, seg] < envelope[1, seg])
-    seg, item = seg[open_], item[open_]
-    c0, c1, axis, radius, h = pieces.hulls(level, item)
-    inside = _deep_inside(_rows(a, open_), _rows(b, open_), c0, c1, axis, radius, h,
-                          getattr(pieces, level + "_slack")[item], pieces.corners(level, item))
+    seg, item, a, b = seg[open_], item[open_], _rows(a, open_), _rows(b, open_)
+    hulls = pieces.hulls(level, item)
+    if level == "span":
+        near = np.flatnonzero(~_apart(a, b, *hulls, 0.0, 0.5 * pieces.span_turn[item], touch=True))
+        seg, item, a, b = seg[near], item[near], _rows(a, near), _rows(b, near)
+        hulls = tuple(_rows(column, near) for column in hulls)
+    inside = _deep_inside(a, b, *hulls, getattr(pieces, level + "_slack")[item], pieces.corners(level, item))
     return seg[inside], item[inside]
 
 class _Ranking:
