@@ -37,17 +37,26 @@ def row_dot(a, b):
     return product[:, 0] + product[:, 1] + product[:, 2]
 
 
-def _quadratic_roots(a, b, c):
+def _quadratic_roots(a, b, c, out=None):
     """Real roots t of a·t² + 2b·t + c = 0 for (P,) coefficients: (P, 2), NaN where none
-    (or where a is zero: the quadratic then does not depend on t)."""
+    (or where a is zero: the quadratic then does not depend on t). out: a (P, 2) array (a view
+    of a larger one will do) to write them to, returned."""
     disc = b * b - a * c
     ok = (a > SQUARED_EPS) & (disc >= 0.0)
     root = np.sqrt(np.where(ok, disc, 0.0))
     big = -b - np.copysign(root, b)  # no cancellation: |big| = |b| + root
+    if out is None:
+        out = np.empty((b.shape[0], 2))
     with np.errstate(divide="ignore", invalid="ignore"):
-        first = np.where(big != 0.0, big / np.where(ok, a, 1.0), 0.0)
-        second = np.where(big != 0.0, c / big, 0.0)
-    return np.where(ok[:, None], np.stack([first, second], axis=1), np.nan)
+        nonzero = big != 0.0
+        out[:, 0] = np.where(ok, np.where(nonzero, big / np.where(ok, a, 1.0), 0.0), np.nan)
+        out[:, 1] = np.where(ok, np.where(nonzero, c / big, 0.0), np.nan)
+    return out
+
+
+#: Candidates (l, s) per line in line_hull_interval: 2 roots each of the lines s = 0 and s = 1,
+#: of the lines a = 0 and a = H, and of the tangent; the strip's 4 corners.
+_CANDIDATES = 14
 
 
 def line_hull_interval(origin, direction, c0, c1, axis, radius, height):
@@ -58,6 +67,10 @@ def line_hull_interval(origin, direction, c0, c1, axis, radius, height):
     (the same at both ends); radius, height: (P,) tool radius and cutting height (mm).
     Returns enter, leave (P,) in mm along each line (enter ≤ leave), NaN where the line misses
     the volume.
+
+    The candidates are written into one (P, 14) table each for l and s, and a dot product that
+    several of them use is computed once (the same operations on the same numbers as one at a
+    time: the same bits).
     """
     o, u = np.asarray(origin, dtype=float), np.asarray(direction, dtype=float)
     w = np.asarray(axis, dtype=float)
@@ -68,33 +81,33 @@ def line_hull_interval(origin, direction, c0, c1, axis, radius, height):
     a0, ua, da = row_dot(q, w), row_dot(u, w), row_dot(d, w)
     b0, up, dp = q - a0[:, None] * w, u - ua[:, None] * w, d - da[:, None] * w
     rr = r * r
-    ls, ss = [], []
-
-    def add(l_values, s_values):
-        ls.append(l_values)
-        ss.append(s_values)
-
+    uu = row_dot(up, up)
+    l = np.empty((a0.shape[0], _CANDIDATES))
+    s = np.empty((a0.shape[0], _CANDIDATES))
     # The lines s = 0 and s = 1 against the quadratic: |b0 − s0·dp + l·up|² = r².
-    for s0 in (0.0, 1.0):
+    for column, s0 in ((0, 0.0), (2, 1.0)):
         base = b0 - s0 * dp
-        roots = _quadratic_roots(row_dot(up, up), row_dot(up, base), row_dot(base, base) - rr)
-        add(roots, np.full_like(roots, s0))
+        _quadratic_roots(uu, row_dot(up, base), row_dot(base, base) - rr, l[:, column:column + 2])
+        s[:, column:column + 2] = s0
     # The lines a = 0 and a = H, (l, s) = P0 + t·(da, ua), against the quadratic.
     norm = ua * ua + da * da
     has_line = norm > SQUARED_EPS
     g = da[:, None] * up - ua[:, None] * dp
-    for c in (np.zeros_like(h), h):
+    gg = row_dot(g, g)
+    zero = np.zeros_like(h)
+    for column, c in ((4, zero), (6, h)):
         scale = np.where(has_line, (c - a0) / np.where(has_line, norm, 1.0), np.nan)
         p_l, p_s = scale * ua, -scale * da
         base = b0 + p_l[:, None] * up - p_s[:, None] * dp
-        t = _quadratic_roots(row_dot(g, g), row_dot(g, base), row_dot(base, base) - rr)
-        add(p_l[:, None] + t * da[:, None], p_s[:, None] + t * ua[:, None])
+        t = _quadratic_roots(gg, row_dot(g, base), row_dot(base, base) - rr)
+        l[:, column:column + 2] = p_l[:, None] + t * da[:, None]
+        s[:, column:column + 2] = p_s[:, None] + t * ua[:, None]
     # The four corners of the strip 0 ≤ s ≤ 1 with 0 ≤ a ≤ H.
+    crossing = np.abs(ua) > 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
-        for c in (np.zeros_like(h), h):
-            for s0 in (0.0, 1.0):
-                l_corner = np.where(np.abs(ua) > 0.0, (c - a0 + s0 * da) / ua, np.nan)
-                add(l_corner[:, None], np.full((l_corner.size, 1), s0))
+        for column, c, s0 in ((8, zero, 0.0), (9, zero, 1.0), (10, h, 0.0), (11, h, 1.0)):
+            l[:, column] = np.where(crossing, (c - a0 + s0 * da) / ua, np.nan)
+            s[:, column] = s0
     # Where the quadratic's boundary runs along s: s = dp·(b0 + l·up)/|dp|², and the part of
     # b0 + l·up across dp has length r.
     dd = row_dot(dp, dp)
@@ -102,22 +115,38 @@ def line_hull_interval(origin, direction, c0, c1, axis, radius, height):
     unit = dp / np.sqrt(np.where(moving, dd, 1.0))[:, None]
     e0 = b0 - row_dot(b0, unit)[:, None] * unit
     e1 = up - row_dot(up, unit)[:, None] * unit
-    roots = _quadratic_roots(np.where(moving, row_dot(e1, e1), 0.0), row_dot(e1, e0), row_dot(e0, e0) - rr)
+    roots = _quadratic_roots(np.where(moving, row_dot(e1, e1), 0.0), row_dot(e1, e0), row_dot(e0, e0) - rr,
+                             l[:, 12:14])
+    bd, ud = row_dot(b0, dp)[:, None], row_dot(up, dp)[:, None]
     with np.errstate(divide="ignore", invalid="ignore"):
-        s_tangent = (row_dot(b0, dp)[:, None] + roots * row_dot(up, dp)[:, None]) / np.where(moving, dd, 1.0)[:, None]
-    add(roots, s_tangent)
+        s[:, 12:14] = (bd + roots * ud) / np.where(moving, dd, 1.0)[:, None]
 
-    l = np.concatenate(ls, axis=1)
-    s = np.concatenate(ss, axis=1)
     eps = FEASIBLE_EPS
-    a = a0[:, None] + l * ua[:, None] - s * da[:, None]
-    # |b0 + l·up − s·dp|² expanded in the pair's dot products.
-    bu, bd, ud = row_dot(b0, up)[:, None], row_dot(b0, dp)[:, None], row_dot(up, dp)[:, None]
+    # The feasibility of every candidate, in place (the same operations in the same order as
+    # the expressions in the comments: the same bits, without a temporary table per step).
+    # a = a0 + l·ua − s·da
+    a = l * ua[:, None]
+    a += a0[:, None]
+    a -= s * da[:, None]
+    # |b0 + l·up − s·dp|² expanded in the pair's dot products:
+    # |b0|² + l·(l·|up|² + 2·(b0·up − s·(up·dp))) + s·(s·|dp|² − 2·(b0·dp))
     with np.errstate(invalid="ignore"):
-        across = (row_dot(b0, b0)[:, None] + l * (l * row_dot(up, up)[:, None] + 2.0 * (bu - s * ud))
-                  + s * (s * dd[:, None] - 2.0 * bd))
-        feasible = ((s >= -eps) & (s <= 1.0 + eps) & (a >= -eps) & (a <= h[:, None] + eps)
-                    & (across <= (r[:, None] + eps) ** 2))
+        inner = s * ud
+        np.subtract(row_dot(b0, up)[:, None], inner, out=inner)
+        inner *= 2.0
+        across = l * uu[:, None]
+        across += inner
+        across *= l
+        across += row_dot(b0, b0)[:, None]
+        other = s * dd[:, None]
+        other -= 2.0 * bd
+        other *= s
+        across += other
+        feasible = s >= -eps
+        feasible &= s <= 1.0 + eps
+        feasible &= a >= -eps
+        feasible &= a <= h[:, None] + eps
+        feasible &= across <= (r[:, None] + eps) ** 2
     hit = feasible.any(axis=1)
     enter = np.where(hit, np.where(feasible, l, np.inf).min(axis=1), np.nan)
     leave = np.where(hit, np.where(feasible, l, -np.inf).max(axis=1), np.nan)
