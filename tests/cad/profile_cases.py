@@ -129,3 +129,21 @@ GOTO/8,4,2,0,0,1
 GOTO/8,4,20,0,0,1
 FINI
 """
+
+
+def validate_two_passes(folder, monkeypatch, capsys, corner, stock_model="in-process", report="report"):
+    """`validate --stock-model STOCK_MODEL` of TWO_PASSES_APT (corner radius `corner` mm) over the in-process tests'
+    staircase, in `folder`; the report's index.html text (the report in folder/`report`)."""
+    from abm_workbench import cli
+    from abm_workbench.formats.staircase_json import dump_staircase
+    from tests.engine.test_inprocess import staircase
+
+    dump_staircase(staircase(), folder / "stock.json")
+    (folder / "path.apt").write_text(TWO_PASSES_APT.format(corner=corner))
+    monkeypatch.chdir(folder)
+    status = cli.main(["validate", "--stock", "stock.json", "--toolpath", "path.apt", "--flutes", "2",
+                       "--feed-per-tooth", "0.1", "--phi-step", "30", "--report", report, "--stock-model",
+                       stock_model])
+    _, err = capsys.readouterr()
+    assert status == 0, err
+    return (folder / report / "index.html").read_text(encoding="utf-8")

@@ -13,7 +13,6 @@ import csv
 import numpy as np
 import pytest
 
-from abm_workbench import cli
 from abm_workbench.cad import corner_sweep
 from abm_workbench.cad.boolean import _inside_intervals
 from abm_workbench.cad.corner_inprocess import corner_lengths_in_process
@@ -26,7 +25,7 @@ from abm_workbench.engine.stocks import engage_in_process
 from abm_workbench.validation import validate
 from tests.engine.test_inprocess import staircase
 
-from .profile_cases import TWO_PASSES_APT, stocks
+from .profile_cases import stocks, validate_two_passes
 
 AGREE = 1e-6  # mm: both sides are exact
 SETTINGS = CutSettings(0.1, phi_start=2.5, phi_end=357.5, phi_step=15.0)
@@ -280,17 +279,7 @@ def test_validate_a_bull_nose_against_the_in_process_stock():
 
 @pytest.mark.parametrize("corner", [1.5, 5.0])
 def test_cli_validate_a_corner_tool_in_process(tmp_path, monkeypatch, capsys, corner):
-    from abm_workbench.formats.staircase_json import dump_staircase
-
-    dump_staircase(staircase(), tmp_path / "stock.json")
-    (tmp_path / "path.apt").write_text(TWO_PASSES_APT.format(corner=corner))
-    monkeypatch.chdir(tmp_path)
-    argv = ["validate", "--stock", "stock.json", "--toolpath", "path.apt", "--flutes", "2", "--feed-per-tooth", "0.1",
-            "--phi-step", "30", "--report", "report", "--stock-model", "in-process"]
-    status = cli.main(argv)
-    _, err = capsys.readouterr()
-    assert status == 0, err
-    page = (tmp_path / "report" / "index.html").read_text(encoding="utf-8")
+    page = validate_two_passes(tmp_path, monkeypatch, capsys, corner)
     assert "in-process: the stock minus the volumes swept" in page and "<h2>In-process stock</h2>" in page
     with open(tmp_path / "report" / "comparison.csv", newline="") as file:
         table = list(csv.DictReader(file))

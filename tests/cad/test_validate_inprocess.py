@@ -11,14 +11,13 @@ tilted, crossing both. Both operations' passes are validated.
 import numpy as np
 import pytest
 
-from abm_workbench import cli
 from abm_workbench.cad import inprocess_boolean
 from abm_workbench.cad.inprocess_boolean import ProgramSweep
 from abm_workbench.cad.solids import staircase_solid
 from abm_workbench.engine import CutSettings, Tool, Toolpath, edge_lines
 from abm_workbench.engine.inprocess import swept_pieces
 from abm_workbench.validation import validate
-from tests.cad.profile_cases import TWO_PASSES_APT
+from tests.cad.profile_cases import validate_two_passes
 from tests.engine.test_inprocess import Program, reference, staircase, straight
 
 AGREE = 0.01  # mm: the issue's bound, for lengths, LEP and UEP
@@ -124,21 +123,8 @@ def test_stock_heights_show_what_earlier_moves_removed():
     assert lowered  # some of the points show what earlier moves removed
 
 
-APT = TWO_PASSES_APT.format(corner=0)
-
-
 def test_cli_validate_in_process_names_the_stock_model(tmp_path, monkeypatch, capsys):
-    from abm_workbench.formats.staircase_json import dump_staircase
-
-    dump_staircase(staircase(), tmp_path / "stock.json")
-    (tmp_path / "path.apt").write_text(APT)
-    monkeypatch.chdir(tmp_path)
-    argv = ["validate", "--stock", "stock.json", "--toolpath", "path.apt", "--flutes", "2", "--feed-per-tooth", "0.1",
-            "--phi-step", "30", "--report", "report", "--stock-model", "in-process"]
-    status = cli.main(argv)
-    _, err = capsys.readouterr()
-    assert status == 0, err
-    page = (tmp_path / "report" / "index.html").read_text(encoding="utf-8")
+    page = validate_two_passes(tmp_path, monkeypatch, capsys, 0)
     assert "stock model" in page and "in-process: the stock minus the volumes swept" in page
     assert "<h2>In-process stock</h2>" in page
     header = (tmp_path / "report" / "comparison.csv").read_text().splitlines()[0].split(",")
@@ -146,8 +132,5 @@ def test_cli_validate_in_process_names_the_stock_model(tmp_path, monkeypatch, ca
     depth = (tmp_path / "report" / "depth.csv").read_text().splitlines()
     changed = [int(line.split(",")[-2]) for line in depth[1:]]
     assert depth[0].endswith("changed,swept") and any(changed)
-    status = cli.main(argv[:-1] + ["initial", "--report", "initial"])
-    _, err = capsys.readouterr()
-    assert status == 0, err
-    page = (tmp_path / "initial" / "index.html").read_text(encoding="utf-8")
+    page = validate_two_passes(tmp_path, monkeypatch, capsys, 0, "initial", "initial")
     assert "initial: the stock as given" in page and "<h2>In-process stock</h2>" not in page
