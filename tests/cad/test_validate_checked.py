@@ -22,7 +22,8 @@ from abm_workbench.validation import overall, segment_summary, validate
 from tests.engine.test_inprocess import staircase
 
 from .test_report import read_csv
-from .test_validate_inprocess import AGREE, APT, SETTINGS, TOLERANCE, check, program
+from .profile_cases import TWO_PASSES_APT
+from .test_validate_inprocess import AGREE, SETTINGS, TOLERANCE, check, program
 
 
 def test_only_the_chosen_cl_points_are_checked_and_they_agree_with_brute_force():
@@ -61,7 +62,7 @@ def test_validate_rejects_bad_cl_lists(cls):
 def case(tmp_path, monkeypatch):
     """The test program's files in tmp_path (the working folder); the validate arguments without outputs."""
     dump_staircase(staircase(), tmp_path / "stock.json")
-    (tmp_path / "path.apt").write_text(APT)
+    (tmp_path / "path.apt").write_text(TWO_PASSES_APT.format(corner=0))
     monkeypatch.chdir(tmp_path)
     return ["validate", "--stock", "stock.json", "--toolpath", "path.apt", "--flutes", "2", "--feed-per-tooth",
             "0.1", "--phi-step", "30", "--stock-model", "in-process"]
