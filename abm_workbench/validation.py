@@ -115,11 +115,14 @@ class InProcessCheck:
     """What a validation against the in-process stock adds: initial (m, p) the engine's length of
     cut in the stock as given (mm); changed (m,) bool, earlier moves removed material from some
     edge line of the CL point (the engine's finding); swept (m,) int, the swept pieces of earlier
-    moves near the tool that the reference sectioned at each CL point."""
+    moves near the tool that the reference sectioned at each CL point; gauged (m,) int, those of them it
+    decided with the exact inside test instead of OpenCASCADE's solids (cad.sweep_membership: a bull-nose
+    mill's nearly flat ramps), None for a flat-end mill."""
 
     initial: np.ndarray
     changed: np.ndarray
     swept: np.ndarray
+    gauged: np.ndarray = None
 
 
 @dataclass(frozen=True)
@@ -295,10 +298,7 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     corner arcs (true circular arcs), side lines and end edges. sweep: (SweptPieces of the whole program,
     (m,) program row of each CL point), both in the pass's frame, to check against the in-process stock (the
     engine's engage_in_process against cad.profile_boolean.flat_lengths_in_process, or for a tool with a
-    corner cad.corner_inprocess.corner_lengths_in_process), or None for the stock as given; for a tool with a
-    corner, ValueError (cad.corner_sweep.NotExactError), before any work, when an earlier move's swept
-    volume has no trusted exact solid (a bull-nose mill's move within 5.74° of the plane across its axis but
-    not in it; any ramp of a tool shorter than its corner radius). progress(done,
+    corner cad.corner_inprocess.corner_lengths_in_process), or None for the stock as given. progress(done,
     total) is called after each CL point of the reference. cls: the CL indices (0-based, distinct) the
     reference checks, None: all; elsewhere the reference's arrays are NaN (Comparison.checked) and the
     statistics leave those CL points out (ValueError, before any work, for a list that is empty, repeats
@@ -311,14 +311,11 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
     NoEngagementError, before running the reference, when the engine finds no engagement at
     all. Needs FreeCAD.
     """
-    from .cad.corner_inprocess import check_sweepable, corner_lengths_in_process
+    from .cad.corner_inprocess import corner_lengths_in_process
     from .cad.inprocess_boolean import ProgramSweep
     from .cad.profile_boolean import flat_lengths_by_boolean, flat_lengths_in_process, profile_lengths_by_boolean
 
     chosen = _checked_rows(cls, len(toolpath))
-    if sweep is not None and tool.corner_radius > 0.0:
-        checked_rows = np.asarray(sweep[1]) if chosen is None else np.asarray(sweep[1])[chosen]
-        check_sweepable(sweep[0], int(np.max(checked_rows)))
     started = time.perf_counter()
     if sweep is None:
         engagement = engage_stock(staircase, tool, toolpath, settings)
@@ -345,7 +342,7 @@ def validate(solid, staircase, tool: Tool, toolpath: Toolpath, settings, *, prog
         reference = _spread(reference, chosen, len(toolpath))
     boolean_seconds = time.perf_counter() - started
     comparison = compare(engagement, reference, toolpath, tool)
-    check = None if sweep is None else InProcessCheck(initial, changed, reference["swept"])
+    check = None if sweep is None else InProcessCheck(initial, changed, reference["swept"], reference.get("gauged"))
     return Validation(engagement, reference, comparison, {"abm": abm_seconds, "boolean": boolean_seconds}, check)
 
 

@@ -8,30 +8,20 @@ its `union` solids and, for a ball's ramp, inside one of its `column` solids) is
 those of cad.inprocess_boolean's reference (its _near_tool): the same constant-axis sub-steps as the
 engine's swept_pieces. Lengths in mm, angles in degrees.
 
-Before any boolean, :func:`check_sweepable` refuses a program with a piece whose swept volume has no trusted
-exact solid here (corner_sweep.move_kind: a bull-nose mill's nearly flat ramp), naming the move.
+A piece whose volume has no such solids (corner_sweep.move_kind "gauge": a bull-nose mill's nearly flat
+ramp, an oblique move of a tool shorter than its corner radius, or solids OpenCASCADE failed to build) is
+decided by the exact inside test instead (sweep_membership.exact_intervals); "gauged" counts such pieces.
 """
 
 import numpy as np
 
 from ..engine import Tool, Toolpath
 from .boolean import _distinct_angles, _merged
-from .corner_sweep import NotExactError, move_kind, not_exact, sweep_parts
+from .corner_sweep import NotExactError, move_kind, sweep_parts
 from .inprocess_boolean import BOX_SLACK, ProgramSweep, _minus, _near_tool, _piece_boxes
 from .profile_boolean import _angles, _instant_arrays, _sectioned, edge_intervals
 from .profile_edges import EdgeGeometry, edge_shapes, tool_frames
-
-
-def check_sweepable(pieces, upto):
-    """NotExactError naming the first program row whose move (a piece of it, among the SweptPieces
-    `pieces` of moves ending before row `upto`) has no trusted exact swept solid (corner_sweep.move_kind)."""
-    for i in np.flatnonzero(np.asarray(pieces.move) < int(upto)):
-        if pieces.corner[i] > 0.0 and move_kind(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i],
-                                                pieces.corner[i], pieces.height[i]) is None:
-            why = not_exact(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.corner[i],
-                            pieces.height[i])
-            raise NotExactError(f"the in-process stock has no exact OpenCASCADE reference at program row "
-                                f"{int(pieces.move[i])}, the move ending there: {why}")
+from .sweep_membership import exact_intervals
 
 
 def _intersected(first, second):
@@ -72,10 +62,11 @@ def _edge_boxes(shapes):
     return low, high
 
 
-def swept_away(found, geometry: EdgeGeometry, pieces, chosen, parts=sweep_parts):
+def swept_away(found, geometry: EdgeGeometry, pieces, chosen, parts=sweep_parts, gauged=None):
     """`found` ({kind: q lists of merged intervals}, the edges inside the stock) less what lies in the
     volumes pieces `chosen` (k,) swept, nearest piece to the tip first; edges left empty drop out. parts:
-    the function building a piece's SweptParts (a test plants an error in it)."""
+    the function building a piece's SweptParts (a test plants an error in it); gauged: a list that gets
+    (piece, undecided) for each piece decided by the exact inside test (module docstring)."""
     chosen = np.asarray(chosen, dtype=int)
     if chosen.size == 0:
         return found
@@ -93,12 +84,20 @@ def swept_away(found, geometry: EdgeGeometry, pieces, chosen, parts=sweep_parts)
             continue
         shapes = [item for item, keep in zip(shapes, near) if keep]
         boxes = (low[near], high[near])
-        swept = parts(pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.corner[i],
-                      pieces.height[i])
-        inside = _inside_parts(swept.union, geometry, shapes, boxes)
-        if swept.column is not None and inside:
-            column = _inside_parts(swept.column, geometry, shapes, boxes)
-            inside = {key: _intersected(value, column.get(key, [])) for key, value in inside.items()}
+        piece = (pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.corner[i], pieces.height[i])
+        try:
+            swept = None if move_kind(*piece) == "gauge" else parts(*piece)
+        except NotExactError:
+            swept = None
+        if swept is None:
+            inside, undecided = exact_intervals(geometry, {(kind, k): found[kind][k] for kind, k, _ in shapes}, piece)
+            if gauged is not None:
+                gauged.append((int(i), undecided))
+        else:
+            inside = _inside_parts(swept.union, geometry, shapes, boxes)
+            if swept.column is not None and inside:
+                column = _inside_parts(swept.column, geometry, shapes, boxes)
+                inside = {key: _intersected(value, column.get(key, [])) for key, value in inside.items()}
         for (kind, k), removed in inside.items():
             if removed:
                 found[kind][k] = _minus(found[kind][k], removed)
@@ -110,9 +109,9 @@ def corner_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, sw
     """profile_boolean.profile_lengths_by_boolean's dict (m, p) against the in-process stock: at each CL
     point of `toolpath` (a part of sweep.toolpath) the edges inside the stock `shape` (Part.Shape) and in
     none of the volumes the earlier pieces near the tool swept (swept_away); plus "swept" (m,) int, the
-    pieces met at each CL point. For tools with a corner radius; NotExactError, before any boolean, for a
-    program with a move whose swept volume has no exact solid (check_sweepable). progress(done, total)
-    after each CL point; parts: as swept_away."""
+    pieces met at each CL point, "gauged" (m,) int, those of them decided by the exact inside test, and
+    "undecided" (m,) int, the pieces of edges that test left undecided (sweep_membership.BUDGET). For tools
+    with a corner radius. progress(done, total) after each CL point; parts: as swept_away."""
     if tool.corner_radius <= 0.0:
         raise ValueError("corner_lengths_in_process is for tools with a corner radius; flat-end mills have "
                          "profile_boolean.flat_lengths_in_process")
@@ -120,14 +119,15 @@ def corner_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, sw
     distinct, source = _distinct_angles(phi)
     frames = tool_frames(toolpath)
     rows = sweep.rows_of(toolpath)
-    check_sweepable(sweep.pieces, int(np.max(rows)))
     out = []
     for i, row in enumerate(rows):
         chosen, _ = _near_tool(sweep.pieces, row, tool, toolpath, i)
         geometry = EdgeGeometry.of(tool, toolpath.cl[i], frames[i], distinct)
-        disputes = []
-        found = swept_away(edge_intervals(shape, geometry, disputes=disputes), geometry, sweep.pieces, chosen, parts)
-        out.append({**_instant_arrays(geometry, found, source), "disputed": len(disputes), "swept": len(chosen)})
+        disputes, gauged = [], []
+        found = swept_away(edge_intervals(shape, geometry, disputes=disputes), geometry, sweep.pieces, chosen, parts,
+                           gauged)
+        out.append({**_instant_arrays(geometry, found, source), "disputed": len(disputes), "swept": len(chosen),
+                    "gauged": len(gauged), "undecided": sum(count for _, count in gauged)})
         if progress is not None:
             progress(i + 1, len(rows))
     return {name: np.array([part[name] for part in out]) for name in out[0]}

@@ -19,8 +19,10 @@ tool's swept volume") proves the constructions used here:
   disc of radius R at height r and the crescent of the torus between it and the torus's silhouette seen
   along m (:func:`silhouette_crescent`: the silhouette is an exact offset curve).
 
-A bull-nose move within RAMP_SLOPE of the plane across the axis, and a move neither across nor along the
-axis of a tool shorter than its corner radius, are refused (:class:`NotExactError`).
+Two kinds of move get no solids here (kind "gauge"): a bull-nose move within RAMP_SLOPE of the plane across
+the axis but not in it, whose solids have nearly degenerate faces OpenCASCADE misjudges, and a move neither
+across nor along the axis of a tool shorter than its corner radius. The reference finds the edges in their
+volumes with the exact inside test of cad.sweep_membership instead.
 
 A swept volume is returned as a SweptParts: the volume is (the union of `union`) ∩ (the union of
 `column`, when given), so that a line or an arc is sectioned with each part alone, never a boolean of
@@ -40,24 +42,24 @@ from .profile_edges import segment_shape, tool_solid
 V = FreeCAD.Vector
 
 
-#: A bull-nose mill's move must rise or fall at least this much per mm (the sine of its angle to the plane
-#: across the axis) for the "ramp" construction: the extrusion of a circle along a direction close to its
-#: plane is a nearly degenerate surface (its normal's length is that sine where the circle runs along the
-#: move), and OpenCASCADE's point classifier then misjudges points beside the solid (measured: 33 of 3000 points
-#: about a disc of radius 5 mm extruded along a move of slope 0.0083; 1 of 400 about a bull-nose ramp of slope
-#: 0.062, both outside the solid's box, which the reference heeds; inside it 1 to 3 of 3000 at slopes up to
-#: 0.0083 and none at 0.05 and 0.2: docs/VALIDATION.md).
+#: A bull-nose mill's move rising or falling less than this per mm (the sine of its angle to the plane across
+#: the axis) has no solids here: the extrusion of a circle along a direction close to its plane is a nearly
+#: degenerate surface (its normal's length is that sine where the circle runs along the move), and OpenCASCADE's
+#: point classifier then misjudges points beside the solid (33 of 3000 points about a disc of radius 5 mm
+#: extruded along a move of slope 0.0083, outside the solid's box; inside it 1 to 3 of 3000 at slopes up to
+#: 0.0083), its booleans miss crossings (an arc's 0.23 mm in the solids of a move of slope 0.009), and below
+#: about 10⁻⁴ it no longer splits the torus along the silhouette (docs/VALIDATION.md).
 RAMP_SLOPE = 0.1
 
 
 class NotExactError(ValueError):
-    """The swept volume of a move has no exact construction here (a bull-nose mill's ramp)."""
+    """OpenCASCADE did not build the exact solids of a move's swept volume."""
 
 
 @dataclass(frozen=True)
 class SweptParts:
     """A swept volume as solids (Part.Shape): the union of `union`, cut to the union of `column` when
-    that is not None. kind: "still", "across", "along" or "ball" (the construction used)."""
+    that is not None. kind: "still", "across", "along", "ball" or "ramp" (the construction used)."""
 
     union: list
     column: Optional[list]
@@ -66,9 +68,8 @@ class SweptParts:
 
 def move_kind(c0, c1, axis, radius, corner, height):
     """"still", "across", "along", "ball" or "ramp": the construction :func:`sweep_parts` uses for the move
-    c0 → c1 ((3,) mm) of a tool with unit axis `axis`, or None when there is none (a tool whose flute length
-    is shorter than its corner radius, on a move neither across nor along its axis). A component of the move
-    below FLAT_EPS mm counts as zero."""
+    c0 → c1 ((3,) mm) of a tool with unit axis `axis`, or "gauge" when it has none (module docstring). A
+    component of the move below FLAT_EPS mm counts as zero."""
     d = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
     w = np.asarray(axis, dtype=float)
     along = float(d @ w)
@@ -80,27 +81,10 @@ def move_kind(c0, c1, axis, radius, corner, height):
     if across <= FLAT_EPS:
         return "along"
     if height < corner:
-        return None
+        return "gauge"
     if corner >= radius:
         return "ball"
-    return "ramp" if abs(along) >= RAMP_SLOPE * float(np.linalg.norm(d)) else None
-
-
-def not_exact(c0, c1, axis, radius, corner, height):
-    """Why the step (a move, or a sub-step of a move whose axis turns) c0 → c1 ((3,) mm) of the tool (unit
-    axis, radius, corner radius, cutting height, mm) has no trusted exact swept solid here, in words naming
-    the move (for one move_kind gives None)."""
-    m = np.asarray(c1, dtype=float) - np.asarray(c0, dtype=float)
-    angle = np.degrees(np.arccos(np.clip(float(m @ np.asarray(axis, dtype=float)) / np.linalg.norm(m), -1.0, 1.0)))
-    if height < corner:
-        return (f"the step from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis: the volume "
-                f"a tool shorter than its corner radius (R {radius:g} mm, corner radius {corner:g} mm, flute length "
-                f"{height:g} mm) sweeps along a move neither across nor along its axis has no exact OpenCASCADE "
-                "solid here")
-    return (f"the step from {_point(c0)} to {_point(c1)} mm runs at {angle:.6g}° to the tool's axis, within "
-            f"{np.degrees(np.arcsin(RAMP_SLOPE)):.3g}° of the plane across it but not in it: OpenCASCADE's solid of "
-            f"the volume a bull-nose mill (R {radius:g} mm, corner radius {corner:g} mm) sweeps along it has nearly "
-            "degenerate faces its point classifier misjudges (cad.corner_sweep.RAMP_SLOPE)")
+    return "ramp" if abs(along) >= RAMP_SLOPE * float(np.linalg.norm(d)) else "gauge"
 
 
 def frame_of(axis):
@@ -180,12 +164,12 @@ def _rounded_parallelogram(corner0, side, move, r):
 def sweep_parts(c0, c1, axis, radius, corner, height):
     """SweptParts of the volume the tool (radius R, corner radius r with 0 < r ≤ R, cutting height H, mm;
     tip centre c0 (3,), unit axis (3,)) sweeps moving straight to c1 with its axis fixed (module
-    docstring). NotExactError naming the move where move_kind gives None."""
+    docstring). NotExactError where move_kind gives "gauge", or where OpenCASCADE fails to build them."""
     c0, c1, w = (np.asarray(v, dtype=float) for v in (c0, c1, axis))
     kind = move_kind(c0, c1, w, radius, corner, height)
     m = c1 - c0
-    if kind is None:
-        raise NotExactError(not_exact(c0, c1, w, radius, corner, height))
+    if kind == "gauge":
+        raise NotExactError(f"the move from {_point(c0)} to {_point(c1)} mm has no exact solids here")
     ends = [placed_tool(c0, w, radius, corner, height)]
     if kind == "still":
         return SweptParts(ends, None, kind)

@@ -74,7 +74,7 @@ def prepare(obj, cls, folder, workers=None, apart=None):
     (its inputs, on the GUI thread), and returns the other, ``run(progress=None)`` -> the report's path,
     which touches no document object (the worker thread runs it, gui.worker)."""
     from ..features.engagement import force_model_of
-    from ..jobs.run import pass_forces_of, validate_sweep, validation as checked_validation
+    from ..jobs.run import pass_forces_of, validation as checked_validation
     from ..report.html import ReportJob, write_report
     from ..report.staging import staged
     from ..validation import NoEngagementError
@@ -90,8 +90,7 @@ def prepare(obj, cls, folder, workers=None, apart=None):
         raise InputError("CL points: choose at least one")
     index = np.array(chosen)
     pass_ = toolpath.rows(index)
-    sweep, model_note = validate_sweep(tool, *obj.Proxy.stock_model(obj, toolpath, hints, parameters, tool,
-                                                                   settings, model))
+    sweep, model_note = obj.Proxy.stock_model(obj, toolpath, hints, parameters, tool, settings, model)
     if sweep is not None:
         sweep = (sweep[0], np.asarray(sweep[1])[index])
     label, workers = obj.Label, validation_workers() if workers is None else workers

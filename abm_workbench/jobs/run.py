@@ -708,37 +708,15 @@ def validate(job: Job, report, *, fcstd=None, cls=None, check=None, check_every=
 
 def _validated_sweep(job, prepared, flutes, warn):
     """(in_process_sweep's (SweptPieces, rows) or None, why not or '') for validate: the rule of engage,
-    and the stock as given when single flutes of a tool are checked (the helix boolean) or an earlier move
-    of a tool with a corner has no exact swept solid (validate_sweep); ParameterError then when in-process
-    was asked for."""
+    and the stock as given when single flutes of a tool are checked (the helix boolean); ParameterError then
+    when in-process was asked for."""
     if flutes is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", "in-process is not available for validate with --flute (the helix "
                                                 "boolean) yet: use initial")
         return None, "" if job.stock_model == "initial" else \
             "the in-process stock is not available for validate with --flute (the helix boolean) yet"
-    sweep, note = in_process_sweep(prepared, warn=warn)
-    checked, why = validate_sweep(prepared.tool, sweep, note)
-    if checked is None and sweep is not None and job.stock_model == "in-process":
-        raise ParameterError("stock_model", f"in-process is not available for validate here: {why}; use initial")
-    return checked, why
-
-
-def validate_sweep(tool, sweep, model_note):
-    """(sweep, model_note) for validating `tool` against the in-process stock: a tool with a corner keeps the
-    sweep ((SweptPieces, rows) or None) when the OpenCASCADE reference has an exact solid for every earlier
-    move's swept volume (cad.corner_inprocess.check_sweepable), else gets the stock as given (None) and the
-    reason, naming the move; any other tool keeps in_process_sweep's (sweep, model_note)."""
-    if sweep is None or tool.corner_radius <= 0.0:
-        return sweep, model_note
-    from ..cad.corner_inprocess import check_sweepable
-    from ..cad.corner_sweep import NotExactError
-
-    try:
-        check_sweepable(sweep[0], int(np.max(sweep[1])))
-    except NotExactError as error:
-        return None, str(error)
-    return sweep, model_note
+    return in_process_sweep(prepared, warn=warn)
 
 
 def _stock_model_text(job, prepared, in_process, model_note):

@@ -39,6 +39,9 @@ DEPTH_COLUMNS = ("cl", "cl_x", "cl_y", "cl_z", "depth_abm", "depth_ref", "differ
 #: The columns added against the in-process stock.
 INPROCESS_COMPARISON_COLUMNS = ("l_initial",)
 INPROCESS_DEPTH_COLUMNS = ("changed", "swept")
+#: The column added against the in-process stock for a tool with a corner: the swept pieces near the tool the
+#: reference decided with the exact inside test (cad.sweep_membership) instead of OpenCASCADE's solids.
+CORNER_DEPTH_COLUMNS = ("gauged",)
 
 
 def report_tables(validation, toolpath):
@@ -68,6 +71,9 @@ def report_tables(validation, toolpath):
         depth.update(changed=check.changed.astype(int), swept=check.swept)
         comparison_names += INPROCESS_COMPARISON_COLUMNS
         depth_names += INPROCESS_DEPTH_COLUMNS
+        if check.gauged is not None:
+            depth["gauged"] = check.gauged
+            depth_names += CORNER_DEPTH_COLUMNS
     rows = np.ravel(comparison.checked)
     return {
         "comparison.csv": csv_text(comparison_names, [np.ravel(columns[c])[rows] for c in comparison_names]),

@@ -5,7 +5,9 @@ along the move (the tool's inside test written here from its definition), volume
 Steiner's formulas. Then the engine's in-process results (engage_in_process: length, LEP, UEP, end edge)
 against the OpenCASCADE reference at every CL point of a pass whose earlier passes removed material from its
 edges: on the staircase and the terraced stock, vertical, tilted and turning axes, r/R 0.1 to 1, within
-AGREE; a planted error in the earlier moves' swept solids shows; a bull-nose mill's ramp is refused in words.
+AGREE; a planted error in the earlier moves' swept solids shows. A bull-nose mill's shallow ramps, which get
+no solids, are decided by the exact inside test (cad.sweep_membership), itself checked against the sampler,
+and a planted error in it shows.
 """
 
 import csv
@@ -13,11 +15,14 @@ import csv
 import numpy as np
 import pytest
 
-from abm_workbench.cad import corner_sweep
+from abm_workbench.cad import corner_inprocess, corner_sweep
 from abm_workbench.cad.boolean import _inside_intervals
 from abm_workbench.cad.corner_inprocess import corner_lengths_in_process
 from abm_workbench.cad.corner_sweep import NotExactError, SweptParts, sweep_parts
 from abm_workbench.cad.inprocess_boolean import BOX_SLACK, ProgramSweep
+from abm_workbench.cad.profile_boolean import _edge_length
+from abm_workbench.cad.profile_edges import EdgeGeometry
+from abm_workbench.cad.sweep_membership import edge_points, exact_intervals
 from abm_workbench.cad.solids import staircase_solid
 from abm_workbench.engine import CutSettings, Tool, Toolpath
 from abm_workbench.engine.inprocess import ProgramMoves, swept_pieces
@@ -112,8 +117,9 @@ def test_the_swept_solids_hold_the_points_the_sampler_finds(move, ratio):
     w, m = MOVES[move]
     c0 = np.array([1.0, -2.0, 0.5])
     corner = ratio * RADIUS
-    if move == "flat ramp" and ratio < 1.0:
-        with pytest.raises(NotExactError, match="within 5.74° of the plane across it but not in it"):
+    if move == "flat ramp" and ratio < 1.0:  # no solids: the exact inside test decides (test_the_exact_inside_test…)
+        assert corner_sweep.move_kind(c0, c0 + m, w, RADIUS, corner, FLUTE) == "gauge"
+        with pytest.raises(NotExactError, match="has no exact solids here"):
             sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE)
         return
     swept = sweep_parts(c0, c0 + m, w, RADIUS, corner, FLUTE)
@@ -173,19 +179,25 @@ def staircase_passes():
             [(52.0, 4.0, 14.0), (52.0, 4.0, 2.0), (30.0, 4.0, 2.0), (8.0, 4.0, 2.0)]]
 
 
+#: How much each move after the plunge rises (mm; the moves are 20 to 22 mm long) for the axes "ramp" (0.11 to
+#: 0.12 mm per mm: OpenCASCADE's solids) and "shallow ramp" (0.009 to 0.01 per mm: the exact inside test).
+RISE = {"ramp": 2.5, "shallow ramp": 0.2}
+
+
 def program(stock_name, axes, corner):
-    """(ProgramMoves, rows of the second pass): the stock's two passes; axes "vertical", "ramp" (vertical,
-    the moves after the plunge rising), "tilted" (fixed, the passes' moves across it and the plunges along
-    it) or "turning" (the axis leaning more along each pass; each move a ramp in sub-steps)."""
+    """(ProgramMoves, rows of the second pass): the stock's two passes; axes "vertical", "ramp" or "shallow
+    ramp" (vertical, the moves after the plunge rising by RISE), "tilted" (fixed, the passes' moves across it
+    and the plunges along it) or "turning" (the axis leaning more along each pass; each move a ramp in
+    sub-steps)."""
     passes = [np.array(p) for p in (staircase_passes() if stock_name == "staircase" else terraced_passes())]
     cl, axis, cutting = [], [], []
     for points in passes:
         n = len(points)
-        if axes in ("vertical", "ramp"):
+        if axes in ("vertical", "ramp", "shallow ramp"):
             w = np.tile([0.0, 0.0, 1.0], (n, 1))
-            if axes == "ramp":  # each move across the stock rises 2.5 mm (0.11 to 0.12 mm per mm)
+            if axes in RISE:
                 points = points.copy()
-                points[2:, 2] += 2.5 * np.arange(1, n - 1)
+                points[2:, 2] += RISE[axes] * np.arange(1, n - 1)
         elif axes == "tilted":
             w = np.tile(np.array([0.0, 0.3, 1.0]) / np.hypot(0.3, 1.0), (n, 1))
             # keep the moves across the axis: heights follow the tilt (z = z0 − 0.3 (y − y0) stays put, y fixed)
@@ -227,7 +239,9 @@ def assert_agree(engagement, reference, agree=AGREE):
 CASES = [(stock, "vertical", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.3, 0.5, 1.0)] + \
         [(stock, "tilted", ratio) for stock in ("staircase", "terraced") for ratio in (0.3, 1.0)] + \
         [(stock, "turning", 1.0) for stock in ("staircase", "terraced")] + \
-        [(stock, "ramp", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.5, 1.0)]
+        [(stock, "ramp", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.5, 1.0)] + \
+        [(stock, "shallow ramp", ratio) for stock in ("staircase", "terraced") for ratio in (0.1, 0.5)] + \
+        [("staircase", "turning", 0.3)]
 
 
 @pytest.mark.parametrize("stock_name,axes,ratio", CASES)
@@ -237,6 +251,8 @@ def test_the_engine_agrees_with_the_in_process_reference(stock_name, axes, ratio
     removed = initial - reference["length"]
     assert changed.any() and removed.max() > 0.5 and reference["swept"].max() > 0  # earlier moves took material
     assert (reference["corner_length"] > 0.0).any()
+    gauged = axes == "shallow ramp" or (axes == "turning" and ratio < 1.0)
+    assert (reference["gauged"].max() > 0) == gauged and reference["undecided"].sum() == 0
 
 
 @pytest.mark.parametrize("axes", ["vertical", "ramp"])
@@ -250,16 +266,49 @@ def test_a_planted_error_in_the_earlier_moves_shows(axes):
     assert worst > 1e-3
 
 
-def test_a_nearly_flat_bull_nose_ramp_is_refused_in_words():
-    """Axes turning along the pass: the sub-steps run within 5.7° of the plane across the axis."""
-    stock = staircase()
-    moves, rows = program("staircase", "turning", 0.3 * RADIUS)
+def test_a_planted_error_in_the_exact_inside_test_shows(monkeypatch):
+    """The exact inside test deciding the shallow ramps with half the corner radius: the reference no longer
+    agrees (and with the true one it does: test_the_engine_agrees_with_the_in_process_reference)."""
+    real = corner_inprocess.exact_intervals
+
+    def planted(geometry, spans, piece):
+        c0, c1, axis, radius, corner, height = piece
+        return real(geometry, spans, (c0, c1, axis, radius, 0.5 * corner, height))
+
+    monkeypatch.setattr(corner_inprocess, "exact_intervals", planted)
+    engagement, _, _, reference = compare_run("staircase", "shallow ramp", 0.5)
+    assert reference["gauged"].max() > 0
+    assert np.nanmax(np.abs(engagement.length - reference["length"])) > 1e-3
+
+
+@pytest.mark.parametrize("kind", ["arc", "side", "end"])
+@pytest.mark.parametrize("slope", [0.0, 1e-6, 0.009, 0.5])
+def test_the_exact_inside_test_against_the_sampler(kind, slope):
+    """sweep_membership.exact_intervals against the sampler (the tool at 1,001 positions along the move,
+    the edge at 2,001 points): the lengths inside agree within the sampler's resolution, for edges of a tool
+    beside, above and through a bull-nose mill's moves (r/R 0.3), at 12 angles."""
+    rng = np.random.default_rng(11)
     tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=0.3 * RADIUS)
-    path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
-    with pytest.raises(NotExactError, match=r"program row 2, the move ending there: the step from .* to the tool's "
-                                            r"axis, within 5.74° of the plane across it but not in it: .* a bull-nose "
-                                            r"mill \(R 5 mm, corner radius 1.5 mm\)"):
-        validate(staircase_solid(stock), stock, tool, path, SETTINGS, sweep=(swept_pieces(moves, 0.01), rows))
+    worst, inside = 0.0, 0.0
+    for _ in range(4):
+        c0 = rng.uniform(-3.0, 3.0, 3)
+        m = np.array([8.0, rng.uniform(-3.0, 3.0), 0.0])
+        m[2] = slope * np.linalg.norm(m[:2]) / np.sqrt(max(1.0 - slope * slope, 1e-12))
+        piece = (c0, c0 + m, np.array([0.0, 0.0, 1.0]), RADIUS, tool.corner_radius, FLUTE)
+        tip = c0 + 0.5 * m + rng.uniform([-6.0, -9.0, -1.0], [6.0, 9.0, 2.0])
+        geometry = EdgeGeometry.of(tool, tip, corner_sweep.frame_of([0.1, -0.2, 1.0]), np.arange(0.0, 360.0, 30.0))
+        spans = {(kind, k): [(0.0, _edge_length(geometry, kind))] for k in range(len(geometry.d))}
+        found, undecided = exact_intervals(geometry, spans, piece)
+        assert undecided == 0
+        for (_, k), intervals in found.items():
+            t = np.linspace(0.0, _edge_length(geometry, kind), 2001)
+            points = edge_points(geometry, np.full(t.size, kind), np.full(t.size, k), t)
+            sampled = sampled_sweep(points, c0, m, piece[2], RADIUS, tool.corner_radius, FLUTE, steps=1001) <= 0.0
+            step = t[1] - t[0]
+            length = sum(b - a for a, b in intervals)
+            worst = max(worst, abs(length - sampled.sum() * step))
+            inside += length
+    assert inside > 1.0 and worst <= 4 * (_edge_length(geometry, kind) / 2000 + np.linalg.norm(m) / 2000)
 
 
 def test_validate_a_bull_nose_against_the_in_process_stock():

@@ -204,3 +204,26 @@ def test_in_process_section(tmp_path, validation):
     assert "initial: the stock as given" in plain and "In-process stock" not in plain
     assert page.count("data:image/png;base64,") == plain.count("data:image/png;base64,") + 1  # the stock picture
     figures.inprocess_figure(inprocess, views, PATH, TOOL).savefig(tmp_path / "inprocess.png")
+
+
+def test_in_process_section_says_what_the_exact_test_decided(tmp_path, validation):
+    """A corner tool's check: the swept pieces the reference decided with its exact inside test are counted on
+    the page, per CL point in its table and in depth.csv's column gauged; none, no sentence."""
+    import dataclasses
+
+    from abm_workbench.report.tables import CORNER_DEPTH_COLUMNS, INPROCESS_DEPTH_COLUMNS
+    from abm_workbench.validation import InProcessCheck
+
+    initial = validation.engagement.length + np.array([[0.0], [1.5], [0.0]])
+    for gauged, said in (([0, 3, 2], True), ([0, 0, 0], False)):
+        check = InProcessCheck(initial, np.array([False, True, False]), np.array([0, 7, 2]), np.array(gauged))
+        folder = tmp_path / str(said)
+        os.makedirs(folder)
+        page = open(write_report(folder, dataclasses.replace(validation, in_process=check), job(), [(1, "chosen")]),
+                    encoding="utf-8").read()
+        assert ("5 swept pieces near the tool (summed over the checked CL points) are moves OpenCASCADE has no "
+                "reliable solids for" in page) == said
+        assert ("7 (3 by the exact test)" in page) == said
+        depth = read_csv(folder / "depth.csv")
+        assert tuple(depth) == DEPTH_COLUMNS + INPROCESS_DEPTH_COLUMNS + CORNER_DEPTH_COLUMNS
+        assert depth["gauged"] == [str(n) for n in gauged]
