@@ -4,7 +4,7 @@ PYTHON := /usr/bin/python3
 DEBS := freecad-python3 freecad python3-numpy python3-scipy python3-matplotlib python3-pytest python3-hypothesis python3-dask python3-distributed xvfb xauth qttools5-dev-tools
 OUT := build
 
-.PHONY: translations figures deps model-test-1 model-test-2 model-test-4 model-test-5 validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
+.PHONY: translations figures deps model-test-1 model-test-2 model-test-4 model-test-5 validate-model-test-5-in-process validate-model-test-1 validate-model-test-2 validate-model-test-4 validate-model-test-3 test benchmark scaling models install screenshots compare-peers
 
 # Install the Debian packages that are missing (as root, or through sudo).
 deps:
@@ -58,13 +58,21 @@ validate-model-test-3: deps
 # five-axis raster of 7 passes, as NX writes it (toolpath.cls: TLDATA/MILL with the corner radius, MSYS, GOTO with
 # tilted axes; 518 CL points), against OpenCASCADE on the stock as given: corner arcs, sides and end edges of every
 # other CL point (and the shown ones) at phi step 3 deg, 2 worker processes, a report and an annotated document, and
-# the estimate of what earlier passes removed (the in-process stock of a corner tool is computed by neither side) at
-# every 37th CL point. Through the Python API (tests/cad/run_model_test_5.py), for that estimate; `abm validate
-# --job resources/models/model_test_5/job.json ...` checks the same files without it. About 10 minutes on 2 quiet cores.
+# the estimate of what earlier passes removed at every 37th CL point. Through the Python API
+# (tests/cad/run_model_test_5.py), for that estimate; `abm validate --job resources/models/model_test_5/job.json ...`
+# checks the same files without it. About 10 minutes on 2 quiet cores. validate-model-test-5-in-process checks three CL
+# points against the in-process stock instead (what the earlier passes removed, on both sides; the reference decides
+# the mill's nearly flat five-axis sub-steps with its exact inside test, docs/VALIDATION.md): about 7 minutes.
 model-test-5: deps
 	$(PYTHON) -m tests.cad.run_model_test_5 --report $(OUT)/model_test_5/validation \
 	  --fcstd $(OUT)/model_test_5/validation.FCStd --cl 40,150,268,440 --check-every 2 --phi-step 3 --workers 2 \
 	  --removed-every 37
+
+validate-model-test-5-in-process: deps
+	$(PYTHON) -m abm_workbench validate --job resources/models/model_test_5/job.json \
+	  --stock resources/models/model_test_5/stock.step --toolpath resources/models/model_test_5/toolpath.cls \
+	  --stock-model in-process --phi-step 3 --workers 2 --check 150,268,440 --cl 268 \
+	  --report $(OUT)/model_test_5/validation_in_process
 
 test: deps
 	$(PYTHON) -m pytest -q tests
