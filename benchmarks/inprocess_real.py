@@ -26,7 +26,9 @@ after `swept_pieces` of the whole program, timed with it). CPU time is `time.pro
 peak memory is the process's peak resident set after each step (ru_maxrss). `--save DIR`
 writes each program's in-process Engagement fields to DIR/<program>.npz, `--compare DIR`
 compares them with such a file (bit for bit, else the largest difference).
-`--profile` prints the in-process run's top functions (cProfile, by own time).
+`--profile` prints the in-process run's top functions (cProfile, by own time). `--corner R` cuts
+the same programs with a tool of that corner radius (mm; the tool's radius for a ball-end mill),
+on both runs.
 """
 
 import os
@@ -101,7 +103,8 @@ class Path:
         axis = np.tile([0.0, 0.0, 1.0], (n, 1))
         cutting = np.array(self.cutting)
         cutting[0] = False
-        return ProgramMoves(cl, axis, cutting, np.full(n, tool.radius), np.full(n, tool.flute_length), np.arange(n))
+        return ProgramMoves(cl, axis, cutting, np.full(n, tool.radius), np.full(n, tool.flute_length), np.arange(n),
+                            np.full(n, tool.corner_radius))
 
 
 def rounded_ring(path, cx, cy, a, b, r, z, first):
@@ -195,6 +198,8 @@ def peak_mb():
 def run(name, args):
     """One program: its figures (a dict), and its in-process Engagement."""
     tool, path = PROGRAMS[name]()
+    if args.corner:
+        tool = dataclasses.replace(tool, corner_radius=min(args.corner, tool.radius))
     moves = path.program(tool)
     rows = np.flatnonzero(moves.cutting)
     toolpath = Toolpath(moves.cl[rows], np.zeros(rows.size), np.zeros(rows.size))
@@ -259,6 +264,7 @@ def main():
     parser.add_argument("--save", help="write each program's in-process Engagement to DIR/<program>.npz")
     parser.add_argument("--compare", help="compare with DIR/<program>.npz")
     parser.add_argument("--profile", action="store_true", help="profile the in-process runs")
+    parser.add_argument("--corner", type=float, default=0.0, help="the tool's corner radius (mm; default 0, flat-end)")
     args = parser.parse_args()
     print("| program | cutting moves | CL points | instants | initial s | in-process s (sweep) | ratio | "
           "initial µs/instant | in-process µs/instant | in-process ms/CL | CL changed | "
