@@ -11,6 +11,10 @@ engine's swept_pieces. Lengths in mm, angles in degrees.
 A piece whose volume has no such solids (corner_sweep.move_kind "gauge": a bull-nose mill's nearly flat
 ramp, an oblique move of a tool shorter than its corner radius, or solids OpenCASCADE failed to build) is
 decided by the exact inside test instead (sweep_membership.exact_intervals); "gauged" counts such pieces.
+That test first asks of every piece whether it meets what is left of the edges at all: a piece it finds apart
+from them is not built nor sectioned ("apart" counts them), and OpenCASCADE sections only the edges it meets.
+Both are exact, so this changes no result; it spares the booleans of the many pieces near the tool that take
+nothing more (most of them, once the nearest pieces have taken what they swept).
 """
 
 import numpy as np
@@ -62,11 +66,13 @@ def _edge_boxes(shapes):
     return low, high
 
 
-def swept_away(found, geometry: EdgeGeometry, pieces, chosen, parts=sweep_parts, gauged=None):
+def swept_away(found, geometry: EdgeGeometry, pieces, chosen, parts=sweep_parts, gauged=None, apart=None):
     """`found` ({kind: q lists of merged intervals}, the edges inside the stock) less what lies in the
     volumes pieces `chosen` (k,) swept, nearest piece to the tip first; edges left empty drop out. parts:
     the function building a piece's SweptParts (a test plants an error in it); gauged: a list that gets
-    (piece, undecided) for each piece decided by the exact inside test (module docstring)."""
+    (piece, undecided) for each piece decided by the exact inside test; apart: a list that gets each piece
+    the exact test finds apart from what is left of the edges, which OpenCASCADE then does not section
+    (module docstring)."""
     chosen = np.asarray(chosen, dtype=int)
     if chosen.size == 0:
         return found
@@ -85,15 +91,22 @@ def swept_away(found, geometry: EdgeGeometry, pieces, chosen, parts=sweep_parts,
         shapes = [item for item, keep in zip(shapes, near) if keep]
         boxes = (low[near], high[near])
         piece = (pieces.c0[i], pieces.c1[i], pieces.axis[i], pieces.radius[i], pieces.corner[i], pieces.height[i])
+        inside, undecided = exact_intervals(geometry, {(kind, k): found[kind][k] for kind, k, _ in shapes}, piece)
+        touched = np.array([bool(inside[(kind, k)]) for kind, k, _ in shapes])
+        if not touched.any():
+            if apart is not None:
+                apart.append(int(i))
+            continue
         try:
             swept = None if move_kind(*piece) == "gauge" else parts(*piece)
         except NotExactError:
             swept = None
         if swept is None:
-            inside, undecided = exact_intervals(geometry, {(kind, k): found[kind][k] for kind, k, _ in shapes}, piece)
             if gauged is not None:
                 gauged.append((int(i), undecided))
         else:
+            shapes = [item for item, keep in zip(shapes, touched) if keep]
+            boxes = (boxes[0][touched], boxes[1][touched])
             inside = _inside_parts(swept.union, geometry, shapes, boxes)
             if swept.column is not None and inside:
                 column = _inside_parts(swept.column, geometry, shapes, boxes)
@@ -109,8 +122,9 @@ def corner_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, sw
     """profile_boolean.profile_lengths_by_boolean's dict (m, p) against the in-process stock: at each CL
     point of `toolpath` (a part of sweep.toolpath) the edges inside the stock `shape` (Part.Shape) and in
     none of the volumes the earlier pieces near the tool swept (swept_away); plus "swept" (m,) int, the
-    pieces met at each CL point, "gauged" (m,) int, those of them decided by the exact inside test, and
-    "undecided" (m,) int, the pieces of edges that test left undecided (sweep_membership.BUDGET). For tools
+    pieces met at each CL point, "gauged" (m,) int, those of them decided by the exact inside test,
+    "undecided" (m,) int, the pieces of edges that test left undecided (sweep_membership.BUDGET), and
+    "apart" (m,) int, the pieces that test found apart from what was left of the edges. For tools
     with a corner radius. progress(done, total) after each CL point; parts: as swept_away."""
     if tool.corner_radius <= 0.0:
         raise ValueError("corner_lengths_in_process is for tools with a corner radius; flat-end mills have "
@@ -123,11 +137,11 @@ def corner_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, sw
     for i, row in enumerate(rows):
         chosen, _ = _near_tool(sweep.pieces, row, tool, toolpath, i)
         geometry = EdgeGeometry.of(tool, toolpath.cl[i], frames[i], distinct)
-        disputes, gauged = [], []
+        disputes, gauged, apart = [], [], []
         found = swept_away(edge_intervals(shape, geometry, disputes=disputes), geometry, sweep.pieces, chosen, parts,
-                           gauged)
+                           gauged, apart)
         out.append({**_instant_arrays(geometry, found, source), "disputed": len(disputes), "swept": len(chosen),
-                    "gauged": len(gauged), "undecided": sum(count for _, count in gauged)})
+                    "gauged": len(gauged), "undecided": sum(count for _, count in gauged), "apart": len(apart)})
         if progress is not None:
             progress(i + 1, len(rows))
     return {name: np.array([part[name] for part in out]) for name in out[0]}
