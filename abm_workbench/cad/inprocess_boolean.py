@@ -22,6 +22,7 @@ from ..engine import Tool, Toolpath, edge_lines
 from ..engine.inprocess import SweptPieces, swept_pieces
 from .boolean import _distinct_angles, _inside_intervals, _merged
 from .freecad_env import FreeCAD, Part
+from .sweep_membership import curve_intervals
 
 #: A move component below this (mm) is zero: its extrusion would be flat.
 FLAT_EPS = 1e-9
@@ -328,8 +329,9 @@ def swept_near_tool(pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i)
 def stock_heights(stock_solid, pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i, cells=24):
     """The in-process stock around CL point i of `toolpath` (program row `row`) seen from above:
     (x (c,), y (c,), z (c, c)) mm, z[a, b] the top of the stock minus the earlier moves' swept
-    volumes (inprocess_sections of vertical lines) over (x[b], y[a]), NaN where none is left; the
-    grid of c = `cells` points covers the tool's bounding box grown by BOX_MARGIN."""
+    volumes (inprocess_sections of vertical lines; the volumes of pieces of tools with a corner by the
+    exact inside test, sweep_membership) over (x[b], y[a]), NaN where none is left; the grid of
+    c = `cells` points covers the tool's bounding box grown by BOX_MARGIN."""
     chosen, w = _near_tool(pieces, row, tool, toolpath, i)
     centre = toolpath.cl[i] + 0.5 * tool.flute_length * w
     half = 0.5 * tool.flute_length * np.abs(w) + tool.radius * np.sqrt(np.clip(1.0 - w * w, 0.0, 1.0)) + BOX_MARGIN
@@ -338,6 +340,13 @@ def stock_heights(stock_solid, pieces: SweptPieces, row, tool: Tool, toolpath: T
     y = np.linspace(centre[1] - half[1], centre[1] + half[1], cells)
     gx, gy = np.meshgrid(x, y)
     base = np.column_stack([gx.ravel(), gy.ravel(), np.full(gx.size, box.ZMin - 1.0)])
-    found = inprocess_sections(stock_solid, pieces, chosen, base, np.array([0.0, 0.0, 1.0]), box.ZLength + 2.0)
+    up = np.array([0.0, 0.0, 1.0])
+    chosen = np.asarray(chosen, dtype=int)
+    corner = pieces.corner[chosen] > 0.0
+    found = inprocess_sections(stock_solid, pieces, chosen[~corner], base, up, box.ZLength + 2.0)
+    for k in chosen[corner]:
+        piece = (pieces.c0[k], pieces.c1[k], pieces.axis[k], pieces.radius[k], pieces.corner[k], pieces.height[k])
+        inside, _ = curve_intervals(lambda owner, t: base[owner] + t[:, None] * up, found, piece)
+        found = [_minus(kept, away) for kept, away in zip(found, inside)]
     top = np.array([pieces_[-1][1] if pieces_ else np.nan for pieces_ in found]) + box.ZMin - 1.0
     return x, y, top.reshape(cells, cells)

@@ -85,9 +85,18 @@ def exact_intervals(geometry: EdgeGeometry, spans, piece):
     move `piece` (c0, c1, axis, radius, corner, height; mm) sweeps, and how many pieces of edges the BUDGET
     left undecided."""
     keys = list(spans)
-    rows = [(i, x, y) for i, key in enumerate(keys) for x, y in spans[key]]
     kinds = np.array([kind for kind, _ in keys])
     ks = np.array([k for _, k in keys], dtype=int)
+    found, undecided = curve_intervals(lambda owner, t: edge_points(geometry, kinds[owner], ks[owner], t),
+                                       [spans[key] for key in keys], piece)
+    return dict(zip(keys, found)), undecided
+
+
+def curve_intervals(points_at, spans, piece):
+    """(n lists of merged intervals, undecided): where the spans (n lists of (a, b)) of n unit-speed curves lie
+    in the volume the constant-axis move `piece` sweeps (module docstring); points_at(owner (k,), t (k,)) gives
+    the points (k, 3) of curves `owner` at parameters t."""
+    rows = [(i, x, y) for i, found in enumerate(spans) for x, y in found]
     owner = np.array([i for i, _, _ in rows], dtype=int)
     a = np.array([x for _, x, _ in rows], dtype=float)
     b = np.array([y for _, _, y in rows], dtype=float)
@@ -96,7 +105,7 @@ def exact_intervals(geometry: EdgeGeometry, spans, piece):
     found, undecided = [], 0
     while owner.size:
         middle, half = 0.5 * (a + b), 0.5 * (b - a)
-        gauge = swept_gauge(edge_points(geometry, kinds[owner], ks[owner], middle), *piece)
+        gauge = swept_gauge(points_at(owner, middle), *piece)
         done = (np.abs(gauge) > half + slack) | (half <= HALF_EPS)
         if owner.size > BUDGET:
             undecided += int((~done).sum())
@@ -106,7 +115,7 @@ def exact_intervals(geometry: EdgeGeometry, spans, piece):
                                                       b[done & (gauge <= 0.0)])]
         owner, a, b, middle = owner[~done], a[~done], b[~done], middle[~done]
         owner, a, b = np.concatenate([owner, owner]), np.concatenate([a, middle]), np.concatenate([middle, b])
-    pieces = {key: [] for key in keys}
+    pieces = [[] for _ in spans]
     for i, x, y in found:
-        pieces[keys[i]].append((x, y))
-    return {key: [(x, y) for x, y in _merged(value) if y - x >= PIECE_EPS] for key, value in pieces.items()}, undecided
+        pieces[i].append((x, y))
+    return [[(x, y) for x, y in _merged(value) if y - x >= PIECE_EPS] for value in pieces], undecided

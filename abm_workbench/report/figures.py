@@ -189,7 +189,7 @@ def inprocess_figure(validation, views, toolpath, tool):
         axes.view_init(elev=28.0, azim=-62.0)
         axes.tick_params(labelsize="x-small")
         changed = "changed by earlier moves" if check.changed[cl] else "not changed by earlier moves"
-        axes.set_title(f"CL {cl}: top of the in-process stock around the tool\n({changed}; {check.swept[cl]} swept "
+        axes.set_title(f"CL {cl}: top of the in-process stock around the tool\n({changed}; {check.swept[cl]:.0f} swept "
                        "pieces near)",
                        fontsize="small", loc="left")
         along = figure.add_subplot(grid[row, 1])

@@ -11,6 +11,7 @@ and a planted error in it shows.
 """
 
 import csv
+import dataclasses
 
 import numpy as np
 import pytest
@@ -335,3 +336,39 @@ def test_cli_validate_a_corner_tool_in_process(tmp_path, monkeypatch, capsys, co
     initial, ref, abm = (np.array([float(row[name]) if row[name] not in ("", "nan") else np.nan for row in table])
                          for name in ("l_initial", "l_ref", "l_abm"))
     assert np.nanmax(np.abs(abm - ref)) <= AGREE and np.nanmax(initial - ref) > 0.5
+
+
+def test_the_report_pictures_of_a_corner_tool_show_its_own_swept_volume():
+    """inprocess_boolean.stock_heights (the report's pictures of the in-process stock) for a bull-nose mill's
+    second pass: the top along vertical lines against the sampler (the stock's sections less every earlier
+    move, the tool at 1,001 positions along each, z every 0.01 mm), within the sampling; swept as flat-end
+    cylinders, as the pictures once were, the tops differ."""
+    from abm_workbench.cad import inprocess_boolean
+
+    ratio = 0.5
+    solid = staircase_solid(staircase())
+    moves, rows = program("staircase", "vertical", ratio * RADIUS)
+    pieces = swept_pieces(moves, 0.01)
+    tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=ratio * RADIUS)
+    path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
+    flat = dataclasses.replace(pieces, corner=np.zeros_like(pieces.corner))
+    up, z = np.array([0.0, 0.0, 1.0]), np.linspace(-1.0, 11.0, 1201)
+    worst, moved = 0.0, 0.0
+    for i in (1, 2):
+        x, y, top = inprocess_boolean.stock_heights(solid, pieces, rows[i], tool, path, i, cells=5)
+        _, _, top_flat = inprocess_boolean.stock_heights(solid, flat, rows[i], tool, path, i, cells=5)
+        base = np.array([[x[b], y[a], z[0]] for a in range(5) for b in range(5)])
+        for n, found in enumerate(_inside_intervals(solid, base, up, z[-1] - z[0])):
+            column = np.column_stack([np.full(z.size, base[n, 0]), np.full(z.size, base[n, 1]), z])
+            keep = np.zeros(z.size, dtype=bool)
+            for start, end in found:
+                keep |= (z - z[0] >= start) & (z - z[0] <= end)
+            for k in np.flatnonzero(pieces.move < rows[i]):
+                keep &= sampled_sweep(column, pieces.c0[k], pieces.c1[k] - pieces.c0[k], pieces.axis[k],
+                                      pieces.radius[k], pieces.corner[k], pieces.height[k], steps=1001) > 0.0
+            got, flat_got = top.ravel()[n], top_flat.ravel()[n]
+            assert keep.any() != np.isnan(got)
+            if keep.any():
+                worst = max(worst, abs(z[keep].max() - got))
+                moved = max(moved, np.inf if np.isnan(flat_got) else abs(flat_got - got))
+    assert worst <= 0.011 and moved > 0.1
