@@ -372,3 +372,40 @@ def test_the_report_pictures_of_a_corner_tool_show_its_own_swept_volume():
                 worst = max(worst, abs(z[keep].max() - got))
                 moved = max(moved, np.inf if np.isnan(flat_got) else abs(flat_got - got))
     assert worst <= 0.011 and moved > 0.1
+
+
+@pytest.mark.parametrize("axes", ["vertical", "shallow ramp"])
+def test_the_annotated_document_draws_a_corner_tools_swept_solids(axes):
+    """CL<i>_Removed of a bull-nose mill's pass: the exact solids of each earlier piece (a point beside a piece's
+    middle, under the tool's corner, is outside them, inside the flat-end hull); the pieces without exact
+    solids (nearly flat ramps) drawn as the flat-end hull, and the description says how many."""
+    from abm_workbench.cad.annotate import annotated_document
+    from abm_workbench.cad.freecad_env import FreeCAD
+    from abm_workbench.cad.inprocess_boolean import _near_tool
+
+    corner = 0.5 * RADIUS
+    solid = staircase_solid(staircase())
+    moves, rows = program("staircase", axes, corner)
+    pieces = swept_pieces(moves, 0.01)
+    tool = Tool(2.0 * RADIUS, 2, FLUTE, corner_radius=corner)
+    path = Toolpath.from_axes(moves.cl[rows], moves.axis[rows])
+    engagement, _, _ = engage_in_process(staircase(), tool, path, SETTINGS, pieces, rows)
+    document, _ = annotated_document("CornerRemoved", solid, engagement, path, tool, cls=[2], intersections=[2],
+                                     sweep=(pieces, rows))
+    try:
+        removed = document.getObject("CL002_Removed")
+        chosen, _ = _near_tool(pieces, rows[2], tool, path, 2)
+        kind = "across" if axes == "vertical" else "gauge"
+        k = next(k for k in chosen if corner_sweep.move_kind(pieces.c0[k], pieces.c1[k], pieces.axis[k], RADIUS,
+                                                            corner, FLUTE) == kind)
+        across = np.cross(pieces.c1[k] - pieces.c0[k], [0.0, 0.0, 1.0])
+        across *= np.sign(across @ (pieces.c1[k] - path.cl[2])) / np.linalg.norm(across)  # away from the tool
+        middle = 0.5 * (pieces.c0[k] + pieces.c1[k])
+        beside = middle + (RADIUS - 0.2) * across + [0.0, 0.0, 0.1]  # in the flat hull, beside the corner
+        inside = any(part.isInside(corner_sweep.V(*beside), 1e-9, True) for part in removed.Shape.Solids)
+        if axes == "vertical":
+            assert not inside and "drawn as the hull" not in removed.Description
+        else:
+            assert inside and "pieces of a tool with a corner" in removed.Description
+    finally:
+        FreeCAD.closeDocument(document.Name)
