@@ -189,6 +189,22 @@ def sweep_parts(c0, c1, axis, radius, corner, height):
     return SweptParts(low + upper + [disc, silhouette_crescent(c0, w, m, radius, corner).extrude(V(*m))], None, kind)
 
 
+def swept_solid(c0, c1, axis, radius, corner, height):
+    """Part.Shape: the volume of sweep_parts (same arguments) as one shape to cut a stock by (the `union`
+    fused; a ball's ramp, that fusion's common with the `column` fused), or None where the move has no exact
+    solids here (move_kind "gauge", or OpenCASCADE failing to build them)."""
+    try:
+        swept = sweep_parts(c0, c1, axis, radius, corner, height)
+    except NotExactError:
+        return None
+
+    def fused(parts):
+        return parts[0] if len(parts) == 1 else parts[0].multiFuse(parts[1:])
+
+    shape = fused(swept.union)
+    return shape if swept.column is None else shape.common(fused(swept.column))
+
+
 def silhouette_crescent(c, axis, move, radius, corner):
     """Part.Face: the part of a bull-nose corner's torus (tip centre c, unit axis w, radius R, corner radius
     r < R, mm) between its silhouette seen along `move` m (neither across nor along w) and its widest circle

@@ -82,27 +82,53 @@ def pieces_near(pieces: SweptPieces, upto, centre, reach):
     return np.flatnonzero((pieces.move <= upto - 1) & (gap <= reach))
 
 
-#: The arrays of :func:`hulls_of`, each (k,) or (k, 3): the pieces' swept volumes as cut_by_hulls builds them.
+#: The arrays of :func:`hulls_of`, each (k,) or (k, 3): the pieces' swept volumes as cut_by_hulls builds them
+#: (and "corner", the corner radius, when a piece has one).
 HULL_FIELDS = ("c0", "c1", "axis", "radius", "height")
 
 
 def hulls_of(pieces: SweptPieces, chosen):
-    """{c0, c1, axis, radius, height}: the arrays of pieces `chosen` (k,), all cut_by_hulls needs (plain
-    numpy, so a worker process gets them without the program's pieces)."""
+    """{c0, c1, axis, radius, height[, corner]}: the arrays of pieces `chosen` (k,), all cut_by_hulls needs
+    (plain numpy, so a worker process gets them without the program's pieces); corner when a piece has a
+    corner radius."""
     chosen = np.asarray(chosen, dtype=int)
-    return {name: np.array(getattr(pieces, name)[chosen]) for name in HULL_FIELDS}
+    hulls = {name: np.array(getattr(pieces, name)[chosen]) for name in HULL_FIELDS}
+    if (pieces.corner[chosen] > 0.0).any():
+        hulls["corner"] = np.array(pieces.corner[chosen])
+    return hulls
+
+
+def outlined_pieces(hulls):
+    """How many of the pieces `hulls` (hulls_of) cut_by_hulls cuts as the hull of the flat-end cylinder of their
+    radius, which holds their volume: those of a tool with a corner without exact solids (corner_sweep.move_kind
+    "gauge": a bull-nose mill's moves within 5.74° of the plane across its axis; oblique moves of a tool
+    shorter than its corner radius)."""
+    from .corner_sweep import move_kind
+
+    corner = hulls.get("corner")
+    if corner is None:
+        return 0
+    return sum(corner[i] > 0.0 and move_kind(hulls["c0"][i], hulls["c1"][i], hulls["axis"][i], hulls["radius"][i],
+                                             corner[i], hulls["height"][i]) == "gauge" for i in range(len(corner)))
 
 
 def cut_by_hulls(stock_solid, hulls, progress=None):
-    """`stock_solid` (Part.Shape) minus the hull solids of the pieces `hulls` (hulls_of), fused first; the
-    solid itself when there is none. progress(done, total): after each hull solid, the fuse and the cut."""
+    """`stock_solid` (Part.Shape) minus the swept volumes of the pieces `hulls` (hulls_of), fused first: a
+    flat-end mill's hull solid, a corner tool's exact solid (corner_sweep.swept_solid) or, where it has none,
+    the flat-end hull that holds it (outlined_pieces counts those); the solid itself when there is none.
+    progress(done, total): after each piece's solid, the fuse and the cut."""
+    from .corner_sweep import swept_solid
+
     count = len(hulls["radius"])
     if count == 0:
         return stock_solid
     total = count + 2
+    corner = hulls.get("corner", np.zeros(count))
     tools = []
     for i in range(count):
-        tools.append(hull_solid(*(hulls[name][i] for name in HULL_FIELDS)))
+        exact = swept_solid(*(hulls[name][i] for name in HULL_FIELDS[:4]), corner[i],
+                            hulls["height"][i]) if corner[i] > 0.0 else None
+        tools.append(exact if exact is not None else hull_solid(*(hulls[name][i] for name in HULL_FIELDS)))
         if progress is not None:
             progress(i + 1, total)
     removal = tools[0].multiFuse(tools[1:]) if len(tools) > 1 else tools[0]

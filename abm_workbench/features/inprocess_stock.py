@@ -17,7 +17,8 @@
 Its Shape is the stock object's solid (part coordinates) minus the volumes the cutting moves of
 the whole program that end before the CL point swept, near it: the OpenCASCADE construction
 the validation uses (:func:`abm_workbench.cad.inprocess_boolean.inprocess_solid`), each
-constant-axis piece of a move an exact solid. Five-axis moves are cut into sub-steps no farther
+constant-axis piece of a move an exact solid (a corner tool's nearly flat ramps, which have none, the
+flat-end hull that holds them, said in the Report view). Five-axis moves are cut into sub-steps no farther
 apart than SweepTolerance at the tool's rim: the engagement's 0.05 mm makes hundreds of pieces
 near a CL point of a five-axis program, minutes of booleans, so the view takes 0.5 mm by default
 (the cut surfaces then show facets of at most that size between sub-steps). The program's swept
@@ -30,7 +31,8 @@ import time
 
 import numpy as np
 
-from ..cad.inprocess_boolean import cut_and_removed, hulls_near
+from ..cad.freecad_env import FreeCAD
+from ..cad.inprocess_boolean import cut_and_removed, hulls_near, outlined_pieces
 from ..engine.inprocess import swept_pieces
 from ..errors import InputError
 from ..jobs.inputs import program_moves
@@ -113,7 +115,15 @@ class InProcessStockFeature(FeatureProxy):
         if self._last is not None and self._last[0] == key:  # back at the shape last computed (e.g. after Cancel)
             shape, removed, seconds = self._last[1:]
         else:
-            shape, removed = boolean_call(cut_and_removed, stock_shape, hulls_near((moves, pieces), row, near))
+            hulls = hulls_near((moves, pieces), row, near)
+            outlined = outlined_pieces(hulls)
+            if outlined:
+                FreeCAD.Console.PrintWarning(
+                    f"{obj.Label}: {outlined} of the {len(hulls['radius'])} earlier pieces near CL point "
+                    f"{obj.CLPoint} are nearly flat ramps of a tool with a corner, which have no exact solid: they "
+                    "are cut as the hull of the flat-end cylinder of their radius, so the view shows less stock "
+                    "beside them than is left (the engine and validate take their exact volumes)\n")
+            shape, removed = boolean_call(cut_and_removed, stock_shape, hulls)
             seconds = time.perf_counter() - started
             self._last = (key, shape, removed, seconds)
         obj.Shape = shape
