@@ -34,7 +34,7 @@ from ..engine import Engagement, Tool, Toolpath
 from ..report.colours import SURFACE_COLOURS
 from .boolean import cutter_intersection
 from .freecad_env import FreeCAD, Part
-from .corner_sweep import NotExactError, sweep_parts
+from .corner_sweep import swept_solid
 from .inprocess_boolean import swept_near_tool
 from .profile_edges import EdgeGeometry, profile_piece_shapes, tool_frames
 
@@ -76,7 +76,7 @@ def annotated_document(name, solid, engagement: Engagement, toolpath: Toolpath, 
                                                 f"(boolean) of {against}", transparency=40))
                 if sweep is not None:
                     pieces, rows = sweep
-                    removed = swept_near_tool(pieces, rows[cl], tool, toolpath, int(cl), _corner_union)
+                    removed = swept_near_tool(pieces, rows[cl], tool, toolpath, int(cl), _corner_solid)
                     for obj in _inprocess_objects(builder, prefix, removed, (tops or {}).get(cl)):
                         group.addObject(obj)
         document.recompute()
@@ -176,15 +176,11 @@ def _cl_objects(builder, prefix, engagement, cl, tool=None, toolpath=None):
     return objects
 
 
-def _corner_union(c0, c1, axis, radius, corner, height):
-    """The exact solids whose union is a corner tool's swept volume (corner_sweep.sweep_parts), or None where
-    that volume is an intersection (a ball-end mill's ramp) or has no solids (a bull-nose mill's nearly flat
-    ramp)."""
-    try:
-        swept = sweep_parts(c0, c1, axis, radius, corner, height)
-    except NotExactError:
-        return None
-    return swept.union if swept.column is None else None
+def _corner_solid(c0, c1, axis, radius, corner, height):
+    """[the exact solid of a corner tool's swept volume] (corner_sweep.swept_solid), or None where it has
+    none (a bull-nose mill's nearly flat ramp)."""
+    solid = swept_solid(c0, c1, axis, radius, corner, height)
+    return None if solid is None else [solid]
 
 
 def _inprocess_objects(builder, prefix, removed, top):
@@ -194,8 +190,8 @@ def _inprocess_objects(builder, prefix, removed, top):
     shape, outlined = removed
     if shape is not None:
         outline = "" if not outlined else (
-            f"; {outlined} pieces of a tool with a corner (a ball-end mill's ramps, a bull-nose mill's moves within "
-            "5.74° of the plane across its axis) drawn as the hull of the flat-end cylinder of their radius, "
+            f"; {outlined} pieces of a tool with a corner (a bull-nose mill's moves within 5.74° of the plane across "
+            "its axis, which have no exact solid) drawn as the hull of the flat-end cylinder of their radius, "
             "which holds their volume")
         objects.append(builder.feature(
             f"{prefix}_Removed", shape, "volumes swept by the earlier cutting moves near the tool (solids of each "

@@ -345,9 +345,9 @@ def swept_near_tool(pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i,
     """(Part.Compound or None, outlined): the solids (not fused) of the volumes that the earlier moves'
     pieces near the tool at CL point i of `toolpath` (program row `row`) swept, those the in-process
     reference sections there (None when no earlier piece comes near): hull_parts of a flat-end mill's
-    piece; of a piece of a tool with a corner, corner_parts(c0, c1, axis, radius, corner, height) (the
-    exact union: corner_sweep's solids), or, where that gives None, the hull of the flat-end cylinder of
-    its radius, which holds its volume; outlined counts those."""
+    piece; of a piece of a tool with a corner, corner_parts(c0, c1, axis, radius, corner, height) (a list of
+    solids: its exact volume), or, where that gives None, the hull of the flat-end cylinder of its radius,
+    which holds its volume; outlined counts those."""
     chosen, _ = _near_tool(pieces, row, tool, toolpath, i)
     if len(chosen) == 0:
         return None, 0

@@ -374,8 +374,9 @@ def test_the_report_pictures_of_a_corner_tool_show_its_own_swept_volume():
     assert worst <= 0.011 and moved > 0.1
 
 
-@pytest.mark.parametrize("axes", ["vertical", "shallow ramp"])
-def test_the_annotated_document_draws_a_corner_tools_swept_solids(axes):
+@pytest.mark.parametrize("axes,ratio,kind", [("vertical", 0.5, "across"), ("ramp", 1.0, "ball"),
+                                             ("shallow ramp", 0.5, "gauge")])
+def test_the_annotated_document_draws_a_corner_tools_swept_solids(axes, ratio, kind):
     """CL<i>_Removed of a bull-nose mill's pass: the exact solids of each earlier piece (a point beside a piece's
     middle, under the tool's corner, is outside them, inside the flat-end hull); the pieces without exact
     solids (nearly flat ramps) drawn as the flat-end hull, and the description says how many."""
@@ -383,7 +384,7 @@ def test_the_annotated_document_draws_a_corner_tools_swept_solids(axes):
     from abm_workbench.cad.freecad_env import FreeCAD
     from abm_workbench.cad.inprocess_boolean import _near_tool
 
-    corner = 0.5 * RADIUS
+    corner = ratio * RADIUS
     solid = staircase_solid(staircase())
     moves, rows = program("staircase", axes, corner)
     pieces = swept_pieces(moves, 0.01)
@@ -395,7 +396,6 @@ def test_the_annotated_document_draws_a_corner_tools_swept_solids(axes):
     try:
         removed = document.getObject("CL002_Removed")
         chosen, _ = _near_tool(pieces, rows[2], tool, path, 2)
-        kind = "across" if axes == "vertical" else "gauge"
         k = next(k for k in chosen if corner_sweep.move_kind(pieces.c0[k], pieces.c1[k], pieces.axis[k], RADIUS,
                                                             corner, FLUTE) == kind)
         across = np.cross(pieces.c1[k] - pieces.c0[k], [0.0, 0.0, 1.0])
@@ -403,7 +403,7 @@ def test_the_annotated_document_draws_a_corner_tools_swept_solids(axes):
         middle = 0.5 * (pieces.c0[k] + pieces.c1[k])
         beside = middle + (RADIUS - 0.2) * across + [0.0, 0.0, 0.1]  # in the flat hull, beside the corner
         inside = any(part.isInside(corner_sweep.V(*beside), 1e-9, True) for part in removed.Shape.Solids)
-        if axes == "vertical":
+        if kind != "gauge":
             assert not inside and "drawn as the hull" not in removed.Description
         else:
             assert inside and "pieces of a tool with a corner" in removed.Description
