@@ -115,9 +115,9 @@ class InProcessCheck:
     """What a validation against the in-process stock adds: initial (m, p) the engine's length of
     cut in the stock as given (mm); changed (m,) bool, earlier moves removed material from some
     edge line of the CL point (the engine's finding); swept (m,) int, the swept pieces of earlier
-    moves near the tool that the reference sectioned at each CL point; gauged (m,) int, those of them it
-    decided with the exact inside test instead of OpenCASCADE's solids (cad.sweep_membership: a bull-nose
-    mill's nearly flat ramps), None for a flat-end mill."""
+    moves near the tool that the reference sectioned at each CL point; gauged (m,) int, those of them that
+    meet the edges and that it decided with the exact inside test instead of OpenCASCADE's solids
+    (cad.sweep_membership: a bull-nose mill's nearly flat ramps), None for a flat-end mill."""
 
     initial: np.ndarray
     changed: np.ndarray

@@ -252,8 +252,9 @@ def _inprocess_section(validation, job, cls, views):
             "max l, in-process (ABM)", "max l, in-process (boolean)", "max |Δl| (mm)")
     exact_test = ""
     if gauged is not None and np.nansum(gauged) > 0:
-        exact_test = (f"<p>{int(np.nansum(gauged))} swept pieces near the tool (summed over the checked CL points) "
-                      f"are moves OpenCASCADE has no reliable solids for (a bull-nose mill's moves within 5.74° of "
+        exact_test = (f"<p>{int(np.nansum(gauged))} of the swept pieces that meet the tool's edges (summed over the "
+                      f"checked CL points) are moves OpenCASCADE has no reliable solids for (a bull-nose mill's "
+                      f"moves within 5.74° of "
                       f"the plane across its axis, whose solids have nearly degenerate faces its booleans misjudge; "
                       f"oblique moves of a tool shorter than its corner radius): the reference decides where the "
                       f"edges lie in those with an exact inside test of its own (the tool's distance function "

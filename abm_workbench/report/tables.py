@@ -39,8 +39,9 @@ DEPTH_COLUMNS = ("cl", "cl_x", "cl_y", "cl_z", "depth_abm", "depth_ref", "differ
 #: The columns added against the in-process stock.
 INPROCESS_COMPARISON_COLUMNS = ("l_initial",)
 INPROCESS_DEPTH_COLUMNS = ("changed", "swept")
-#: The column added against the in-process stock for a tool with a corner: the swept pieces near the tool the
-#: reference decided with the exact inside test (cad.sweep_membership) instead of OpenCASCADE's solids.
+#: The column added against the in-process stock for a tool with a corner: the swept pieces meeting the tool's
+#: edges that the reference decided with the exact inside test (cad.sweep_membership) instead of OpenCASCADE's
+#: solids.
 CORNER_DEPTH_COLUMNS = ("gauged",)
 
 

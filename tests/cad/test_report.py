@@ -221,8 +221,8 @@ def test_in_process_section_says_what_the_exact_test_decided(tmp_path, validatio
         os.makedirs(folder)
         page = open(write_report(folder, dataclasses.replace(validation, in_process=check), job(), [(1, "chosen")]),
                     encoding="utf-8").read()
-        assert ("5 swept pieces near the tool (summed over the checked CL points) are moves OpenCASCADE has no "
-                "reliable solids for" in page) == said
+        assert ("5 of the swept pieces that meet the tool's edges (summed over the checked CL points) are moves "
+                "OpenCASCADE has no reliable solids for" in page) == said
         assert ("7 (3 by the exact test)" in page) == said
         depth = read_csv(folder / "depth.csv")
         assert tuple(depth) == DEPTH_COLUMNS + INPROCESS_DEPTH_COLUMNS + CORNER_DEPTH_COLUMNS
