@@ -12,7 +12,9 @@ This subpackage is the only place that imports FreeCAD and Part (through
   :mod:`.corner_sweep`, :mod:`.corner_inprocess`: exact solids of the volumes a bull-nose or ball-end mill
   sweeps, and that reference against the in-process stock (:mod:`.sweep_membership`, its exact inside test for
   the volumes OpenCASCADE's solids do not give reliably); :mod:`.profile_inprocess`: an estimate of what
-  earlier moves took from a corner tool's edges where it is checked against the stock as given.
+  earlier moves took from a corner tool's edges where it is checked against the stock as given;
+  :mod:`.hull_solids`, :mod:`.inprocess_boolean`: a flat-end mill's swept volumes and the in-process stock by
+  OpenCASCADE.
 - :mod:`.annotate`: a FreeCAD document with the stock, the toolpath and the engagement of
   chosen CL points drawn on the model.
 """

@@ -13,7 +13,7 @@ tool's swept volume") proves the constructions used here:
 * **Ball-end, any direction** (r = R ≤ H): T = K ∩ P with K the points within r of the axis segment
   from height r to H + r and P the column of radius R from height −r to H; then S = (K ⊕ [0, 1]·m) ∩
   (P ⊕ [0, 1]·m). The first is the parallelogram (axis segment ⊕ move) grown by r: a slab, four
-  cylinders, four spheres; the second the flat-end hull (inprocess_boolean.hull_parts).
+  cylinders, four spheres; the second the flat-end hull (hull_solids.hull_parts).
 * **Bull-nose, any other direction** (r < R ≤ H): T is its corner part T₁ (heights 0 to r) and the
   cylinder above, whose sweep is the flat-end hull; T₁ sweeps T₁(c0) ∪ T₁(c1) ∪ (Σ ⊕ [0, 1]·m) with Σ the
   disc of radius R at height r and the crescent of the torus between it and the torus's silhouette seen
@@ -36,7 +36,7 @@ import numpy as np
 
 from ..engine import Tool
 from .freecad_env import FreeCAD, Part
-from .inprocess_boolean import FLAT_EPS, hull_parts
+from .hull_solids import FLAT_EPS, hull_parts
 from .profile_edges import segment_shape, tool_solid
 
 V = FreeCAD.Vector

@@ -2,11 +2,8 @@
 
 It mirrors engine.inprocess with booleans. Each constant-axis piece of a cutting move (the same
 pieces engine.inprocess.swept_pieces makes: a move whose axis turns is cut into sub-steps) is
-built as an exact solid: the convex hull of its two end cylinders is the union of the two
-cylinders and the extrusions, along the move d = c1 − c0, of the cylinder's bottom disc, its
-top disc and its axial rectangle across the move (the rectangle through the axis, ⊥ to d's part
-across the axis). Every line parallel to d that meets the first cylinder meets one of those
-three faces inside it, so the extrusions fill the gap between the two cylinders.
+built as an exact solid: a flat-end mill's the convex hull of its two end cylinders (hull_solids), a
+corner tool's its corner_sweep solids.
 
 validate's reference against the in-process stock (edge_lengths_in_process) sections each edge
 segment with the stock and with each of those solids of the pieces near the tool, and keeps what
@@ -21,11 +18,11 @@ import numpy as np
 from ..engine import Tool, Toolpath, edge_lines
 from ..engine.inprocess import SweptPieces, swept_pieces
 from .boolean import _distinct_angles, _inside_intervals, _merged
-from .freecad_env import FreeCAD, Part
+from .corner_sweep import move_kind, swept_solid
+from .freecad_env import Part
+from .hull_solids import hull_parts, hull_solid
 from .sweep_membership import curve_intervals
 
-#: A move component below this (mm) is zero: its extrusion would be flat.
-FLAT_EPS = 1e-9
 #: The local stock around a CL point is the stock inside the tool's bounding box grown by this (mm).
 BOX_MARGIN = 1.0
 #: Stock left between two swept solids that meet (OpenCASCADE puts their common face within its
@@ -33,43 +30,6 @@ BOX_MARGIN = 1.0
 SLIVER = 1e-6
 #: Boxes that come within this (mm) of each other are taken to meet (room for rounding).
 BOX_SLACK = 1e-6
-
-
-def _vector(values):
-    return FreeCAD.Vector(*(float(v) for v in values))
-
-
-def hull_parts(c0, c1, axis, radius, height):
-    """Part.Shape solids whose union is the volume a cylinder (radius, height, unit axis, bottom
-    centre c0) sweeps moving straight to c1 with its axis fixed: the two end cylinders and the
-    extrusions of the module docstring (mm). A list of 1 to 5 solids."""
-    c0, c1, w = (np.asarray(v, dtype=float) for v in (c0, c1, axis))
-    d = c1 - c0
-    da = float(d @ w)
-    dp = d - da * w
-    parts = [Part.makeCylinder(radius, height, _vector(c0), _vector(w))]
-    if np.linalg.norm(d) <= FLAT_EPS:
-        return parts
-    parts.append(Part.makeCylinder(radius, height, _vector(c1), _vector(w)))
-    if abs(da) > FLAT_EPS:
-        for base in (c0, c0 + height * w):
-            disc = Part.Face(Part.Wire(Part.makeCircle(radius, _vector(base), _vector(w))))
-            parts.append(disc.extrude(_vector(d)))
-    if np.linalg.norm(dp) > FLAT_EPS:
-        across = np.cross(w, dp / np.linalg.norm(dp))
-        corners = [c0 - radius * across, c0 + radius * across, c0 + radius * across + height * w,
-                   c0 - radius * across + height * w]
-        rectangle = Part.Face(Part.makePolygon([_vector(c) for c in corners + corners[:1]]))
-        parts.append(rectangle.extrude(_vector(d)))
-    return parts
-
-
-def hull_solid(c0, c1, axis, radius, height):
-    """Part.Shape of the volume a cylinder (radius, height, unit axis, bottom centre c0) sweeps
-    moving straight to c1 with its axis fixed: the convex hull of the two end cylinders (mm),
-    the hull_parts fused."""
-    parts = hull_parts(c0, c1, axis, radius, height)
-    return parts[0] if len(parts) == 1 else parts[0].multiFuse(parts[1:]).removeSplitter()
 
 
 def pieces_near(pieces: SweptPieces, upto, centre, reach):
@@ -103,8 +63,6 @@ def outlined_pieces(hulls):
     radius, which holds their volume: those of a tool with a corner without exact solids (corner_sweep.move_kind
     "gauge": a bull-nose mill's moves within 5.74° of the plane across its axis; oblique moves of a tool
     shorter than its corner radius)."""
-    from .corner_sweep import move_kind
-
     corner = hulls.get("corner")
     if corner is None:
         return 0
@@ -117,8 +75,6 @@ def cut_by_hulls(stock_solid, hulls, progress=None):
     flat-end mill's hull solid, a corner tool's exact solid (corner_sweep.swept_solid) or, where it has none,
     the flat-end hull that holds it (outlined_pieces counts those); the solid itself when there is none.
     progress(done, total): after each piece's solid, the fuse and the cut."""
-    from .corner_sweep import swept_solid
-
     count = len(hulls["radius"])
     if count == 0:
         return stock_solid
