@@ -34,7 +34,6 @@ from ..engine import Engagement, Tool, Toolpath
 from ..report.colours import SURFACE_COLOURS
 from .boolean import cutter_intersection
 from .freecad_env import FreeCAD, Part
-from .corner_sweep import swept_solid
 from .inprocess_boolean import swept_near_tool
 from .profile_edges import EdgeGeometry, profile_piece_shapes, tool_frames
 
@@ -76,7 +75,7 @@ def annotated_document(name, solid, engagement: Engagement, toolpath: Toolpath, 
                                                 f"(boolean) of {against}", transparency=40))
                 if sweep is not None:
                     pieces, rows = sweep
-                    removed = swept_near_tool(pieces, rows[cl], tool, toolpath, int(cl), _corner_solid)
+                    removed = swept_near_tool(pieces, rows[cl], tool, toolpath, int(cl))
                     for obj in _inprocess_objects(builder, prefix, removed, (tops or {}).get(cl)):
                         group.addObject(obj)
         document.recompute()
@@ -174,13 +173,6 @@ def _cl_objects(builder, prefix, engagement, cl, tool=None, toolpath=None):
             obj.setEditorMode(prop, 1)
         objects.append(obj)
     return objects
-
-
-def _corner_solid(c0, c1, axis, radius, corner, height):
-    """[the exact solid of a corner tool's swept volume] (corner_sweep.swept_solid), or None where it has
-    none (a bull-nose mill's nearly flat ramp)."""
-    solid = swept_solid(c0, c1, axis, radius, corner, height)
-    return None if solid is None else [solid]
 
 
 def _inprocess_objects(builder, prefix, removed, top):

@@ -297,25 +297,24 @@ def edge_lengths_in_process(shape, tool: Tool, toolpath: Toolpath, phi_deg, swee
     return {name: np.array([part[name] for part in parts]) for name in parts[0]}
 
 
-def swept_near_tool(pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i, corner_parts=None):
+def swept_near_tool(pieces: SweptPieces, row, tool: Tool, toolpath: Toolpath, i):
     """(Part.Compound or None, outlined): the solids (not fused) of the volumes that the earlier moves'
     pieces near the tool at CL point i of `toolpath` (program row `row`) swept, those the in-process
     reference sections there (None when no earlier piece comes near): hull_parts of a flat-end mill's
-    piece; of a piece of a tool with a corner, corner_parts(c0, c1, axis, radius, corner, height) (a list of
-    solids: its exact volume), or, where that gives None, the hull of the flat-end cylinder of its radius,
-    which holds its volume; outlined counts those."""
+    piece; of a piece of a tool with a corner, its exact solid (corner_sweep.swept_solid) or, where it has
+    none, the hull of the flat-end cylinder of its radius, which holds its volume; outlined counts those."""
     chosen, _ = _near_tool(pieces, row, tool, toolpath, i)
     if len(chosen) == 0:
         return None, 0
     solids, outlined = [], 0
     for k in chosen:
         exact = None
-        if pieces.corner[k] > 0.0 and corner_parts is not None:
-            exact = corner_parts(pieces.c0[k], pieces.c1[k], pieces.axis[k], pieces.radius[k], pieces.corner[k],
-                                 pieces.height[k])
-        outlined += pieces.corner[k] > 0.0 and exact is None
-        solids += exact if exact is not None else hull_parts(pieces.c0[k], pieces.c1[k], pieces.axis[k],
-                                                              pieces.radius[k], pieces.height[k])
+        if pieces.corner[k] > 0.0:
+            exact = swept_solid(pieces.c0[k], pieces.c1[k], pieces.axis[k], pieces.radius[k], pieces.corner[k],
+                                pieces.height[k])
+            outlined += exact is None
+        solids += [exact] if exact is not None else hull_parts(pieces.c0[k], pieces.c1[k], pieces.axis[k],
+                                                                pieces.radius[k], pieces.height[k])
     return Part.Compound(solids), int(outlined)
 
 
