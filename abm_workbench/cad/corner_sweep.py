@@ -192,17 +192,19 @@ def sweep_parts(c0, c1, axis, radius, corner, height):
 def swept_solid(c0, c1, axis, radius, corner, height):
     """Part.Shape: the volume of sweep_parts (same arguments) as one shape to cut a stock by (the `union`
     fused; a ball's ramp, that fusion's common with the `column` fused), or None where the move has no exact
-    solids here (move_kind "gauge", or OpenCASCADE failing to build them)."""
-    try:
-        swept = sweep_parts(c0, c1, axis, radius, corner, height)
-    except NotExactError:
-        return None
-
+    solids here (move_kind "gauge") or OpenCASCADE fails to build or fuse them into a valid shape (seen on
+    model test 5's five-axis ramps: "Multi fuse failed")."""
     def fused(parts):
         return parts[0] if len(parts) == 1 else parts[0].multiFuse(parts[1:])
 
-    shape = fused(swept.union)
-    return shape if swept.column is None else shape.common(fused(swept.column))
+    try:
+        swept = sweep_parts(c0, c1, axis, radius, corner, height)
+        shape = fused(swept.union)
+        if swept.column is not None:
+            shape = shape.common(fused(swept.column))
+    except (NotExactError, RuntimeError, Part.OCCError):
+        return None
+    return shape if not shape.isNull() and shape.isValid() else None
 
 
 def silhouette_crescent(c, axis, move, radius, corner):

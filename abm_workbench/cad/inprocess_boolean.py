@@ -18,7 +18,7 @@ import numpy as np
 from ..engine import Tool, Toolpath, edge_lines
 from ..engine.inprocess import SweptPieces, swept_pieces
 from .boolean import _distinct_angles, _inside_intervals, _merged
-from .corner_sweep import move_kind, swept_solid
+from .corner_sweep import swept_solid
 from .freecad_env import Part
 from .hull_solids import hull_parts, hull_solid
 from .sweep_membership import curve_intervals
@@ -58,33 +58,25 @@ def hulls_of(pieces: SweptPieces, chosen):
     return hulls
 
 
-def outlined_pieces(hulls):
-    """How many of the pieces `hulls` (hulls_of) cut_by_hulls cuts as the hull of the flat-end cylinder of their
-    radius, which holds their volume: those of a tool with a corner without exact solids (corner_sweep.move_kind
-    "gauge": a bull-nose mill's moves within 5.74° of the plane across its axis; oblique moves of a tool
-    shorter than its corner radius)."""
-    corner = hulls.get("corner")
-    if corner is None:
-        return 0
-    return sum(corner[i] > 0.0 and move_kind(hulls["c0"][i], hulls["c1"][i], hulls["axis"][i], hulls["radius"][i],
-                                             corner[i], hulls["height"][i]) == "gauge" for i in range(len(corner)))
-
-
 def cut_by_hulls(stock_solid, hulls, progress=None):
-    """`stock_solid` (Part.Shape) minus the swept volumes of the pieces `hulls` (hulls_of), fused first: a
-    flat-end mill's hull solid, a corner tool's exact solid (corner_sweep.swept_solid) or, where it has none,
-    the flat-end hull that holds it (outlined_pieces counts those); the solid itself when there is none.
-    progress(done, total): after each piece's solid, the fuse and the cut."""
+    """`stock_solid` (Part.Shape) minus the hull solids of the pieces `hulls` (hulls_of), fused first (a corner
+    tool's piece too: the flat-end hull holds its volume; fusing hundreds of exact corner solids took
+    OpenCASCADE more than ten minutes on model test 5); the solid itself when there is none.
+    progress(done, total): after each hull solid, the fuse and the cut."""
+    return _cut_counted(stock_solid, hulls, progress)[0]
+
+
+def _cut_counted(stock_solid, hulls, progress=None):
+    """(cut_by_hulls's shape, outlined): outlined, the pieces of a tool with a corner (cut as the flat-end hull
+    that holds their volume)."""
     count = len(hulls["radius"])
     if count == 0:
-        return stock_solid
+        return stock_solid, 0
     total = count + 2
     corner = hulls.get("corner", np.zeros(count))
-    tools = []
+    tools, outlined = [], int((corner > 0.0).sum())
     for i in range(count):
-        exact = swept_solid(*(hulls[name][i] for name in HULL_FIELDS[:4]), corner[i],
-                            hulls["height"][i]) if corner[i] > 0.0 else None
-        tools.append(exact if exact is not None else hull_solid(*(hulls[name][i] for name in HULL_FIELDS)))
+        tools.append(hull_solid(*(hulls[name][i] for name in HULL_FIELDS)))
         if progress is not None:
             progress(i + 1, total)
     removal = tools[0].multiFuse(tools[1:]) if len(tools) > 1 else tools[0]
@@ -93,14 +85,15 @@ def cut_by_hulls(stock_solid, hulls, progress=None):
     cut = stock_solid.cut(removal)
     if progress is not None:
         progress(total, total)
-    return cut
+    return cut, int(outlined)
 
 
 def cut_and_removed(stock_solid, hulls, progress=None):
-    """(cut_by_hulls(stock_solid, hulls), the volume it removed (mm³)): both computed where the booleans run
-    (OpenCASCADE's volume of a cut B-spline solid takes a fraction of a second)."""
-    cut = cut_by_hulls(stock_solid, hulls, progress)
-    return cut, stock_solid.Volume - cut.Volume
+    """(cut_by_hulls(stock_solid, hulls), the volume it removed (mm³), the pieces of a tool with a corner cut as
+    the flat-end hull that holds them): all computed where the booleans run (OpenCASCADE's volume of a cut
+    B-spline solid takes a fraction of a second)."""
+    cut, outlined = _cut_counted(stock_solid, hulls, progress)
+    return cut, stock_solid.Volume - cut.Volume, outlined
 
 
 def cut_by_pieces(stock_solid, pieces: SweptPieces, chosen):

@@ -17,8 +17,8 @@
 Its Shape is the stock object's solid (part coordinates) minus the volumes the cutting moves of
 the whole program that end before the CL point swept, near it: the OpenCASCADE construction
 the validation uses (:func:`abm_workbench.cad.inprocess_boolean.inprocess_solid`), each
-constant-axis piece of a move an exact solid (a corner tool's nearly flat ramps, which have none, the
-flat-end hull that holds them, said in the Report view). Five-axis moves are cut into sub-steps no farther
+constant-axis piece of a move an exact solid (a corner tool's piece the flat-end hull that holds it,
+said in the Report view: fusing hundreds of exact corner solids takes OpenCASCADE too long). Five-axis moves are cut into sub-steps no farther
 apart than SweepTolerance at the tool's rim: the engagement's 0.05 mm makes hundreds of pieces
 near a CL point of a five-axis program, minutes of booleans, so the view takes 0.5 mm by default
 (the cut surfaces then show facets of at most that size between sub-steps). The program's swept
@@ -32,7 +32,7 @@ import time
 import numpy as np
 
 from ..cad.freecad_env import FreeCAD
-from ..cad.inprocess_boolean import cut_and_removed, hulls_near, outlined_pieces
+from ..cad.inprocess_boolean import cut_and_removed, hulls_near
 from ..engine.inprocess import swept_pieces
 from ..errors import InputError
 from ..jobs.inputs import program_moves
@@ -46,7 +46,7 @@ def _call(function, *args):
     return function(*args)
 
 
-#: boolean_call(function, stock_shape, hulls) -> function(stock_shape, hulls), the cut stock and the volume
+#: boolean_call(function, stock_shape, hulls) -> function(stock_shape, hulls), the cut stock, the volume
 #: it lost: how execute runs the OpenCASCADE booleans (seconds to minutes near a dense five-axis program;
 #: function takes a progress(done, total) keyword too). Headless, a plain call; the GUI runs it in a
 #: worker process, with progress and Cancel (``gui.worker.install``: ``gui.worker.in_process``).
@@ -116,14 +116,13 @@ class InProcessStockFeature(FeatureProxy):
             shape, removed, seconds = self._last[1:]
         else:
             hulls = hulls_near((moves, pieces), row, near)
-            outlined = outlined_pieces(hulls)
+            shape, removed, outlined = boolean_call(cut_and_removed, stock_shape, hulls)
             if outlined:
                 FreeCAD.Console.PrintWarning(
                     f"{obj.Label}: {outlined} of the {len(hulls['radius'])} earlier pieces near CL point "
-                    f"{obj.CLPoint} are nearly flat ramps of a tool with a corner, which have no exact solid: they "
-                    "are cut as the hull of the flat-end cylinder of their radius, so the view shows less stock "
-                    "beside them than is left (the engine and validate take their exact volumes)\n")
-            shape, removed = boolean_call(cut_and_removed, stock_shape, hulls)
+                    f"{obj.CLPoint} are moves of a tool with a corner: they are cut as the hull of the flat-end "
+                    "cylinder of their radius, which holds their volume, so the view shows less stock beside the "
+                    "corner than is left (the engine and validate take their exact volumes)\n")
             seconds = time.perf_counter() - started
             self._last = (key, shape, removed, seconds)
         obj.Shape = shape

@@ -411,31 +411,15 @@ def test_the_annotated_document_draws_a_corner_tools_swept_solids(axes, ratio, k
         FreeCAD.closeDocument(document.Name)
 
 
-def test_the_in_process_stock_view_cuts_a_corner_tools_exact_volumes():
-    """inprocess_boolean.cut_by_hulls (the InProcessStock object's shape) for a bull-nose mill: random points about
-    the tool at the second pass's third CL point, inside the cut stock exactly where the sampler (the stock,
-    less every earlier move with the tool at 1,001 positions) says; cut by flat-end hulls, as it once was, less
-    stock is left. Nearly flat ramps have no exact solid: counted (outlined_pieces) and cut by the hull."""
-    from abm_workbench.cad.inprocess_boolean import cut_by_hulls, hulls_near, outlined_pieces
+def test_the_in_process_stock_view_says_it_cuts_a_corner_tools_pieces_as_flat_end_hulls():
+    """inprocess_boolean.cut_and_removed (the InProcessStock object's shape) cuts a bull-nose mill's pieces as the
+    flat-end hulls that hold them and counts them, for the object to say so."""
+    from abm_workbench.cad.inprocess_boolean import cut_and_removed, hulls_near
 
-    corner = 0.5 * RADIUS
     solid = staircase_solid(staircase())
-    moves, rows = program("staircase", "vertical", corner)
-    pieces = swept_pieces(moves, 0.01)
-    hulls = hulls_near((moves, pieces), int(rows[2]), None)
-    assert "corner" in hulls and outlined_pieces(hulls) == 0
-    cut = cut_by_hulls(solid, hulls)
-    flat = cut_by_hulls(solid, {name: value for name, value in hulls.items() if name != "corner"})
-    assert cut.isValid() and cut.Volume > flat.Volume + 1.0
-    rng = np.random.default_rng(7)
-    points = moves.cl[rows[2]] + rng.uniform([-12.0, -12.0, -3.0], [12.0, 12.0, 6.0], (400, 3))
-    gauge = np.full(len(points), np.inf)
-    for k in np.flatnonzero(pieces.move < rows[2]):
-        gauge = np.minimum(gauge, sampled_sweep(points, pieces.c0[k], pieces.c1[k] - pieces.c0[k], pieces.axis[k],
-                                                RADIUS, corner, FLUTE, steps=1001))
-    decided = (gauge < -1e-6) | (gauge > 0.01)
-    in_stock = np.array([solid.isInside(corner_sweep.V(*p), 1e-9, True) for p in points])
-    in_cut = np.array([cut.isInside(corner_sweep.V(*p), 1e-9, True) for p in points])
-    assert decided.sum() > 300 and (in_cut[decided] == (in_stock & (gauge > 0.0))[decided]).all()
-    shallow, shallow_rows = program("staircase", "shallow ramp", corner)
-    assert outlined_pieces(hulls_near((shallow, swept_pieces(shallow, 0.01)), int(shallow_rows[2]), None)) > 0
+    moves, rows = program("staircase", "vertical", 0.5 * RADIUS)
+    hulls = hulls_near((moves, swept_pieces(moves, 0.01)), int(rows[2]), None)
+    cut, removed, outlined = cut_and_removed(solid, hulls)
+    assert cut.isValid() and removed > 1.0 and outlined == len(hulls["radius"]) > 0
+    flat = {name: value for name, value in hulls.items() if name != "corner"}
+    assert cut_and_removed(solid, flat)[2] == 0
