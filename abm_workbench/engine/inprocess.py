@@ -27,8 +27,9 @@ from .engagement import SURFACES
 from .inprocess_balls import BallParts
 from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
-from .intervals import EdgeIntervals
+from .inprocess_plan import line_level_interval
 from .inprocess_swept import line_swept_interval
+from .intervals import EdgeIntervals
 from .swept import FEASIBLE_EPS, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
 
@@ -1214,7 +1215,8 @@ def _solved(seg, piece, envelope, origins, directions, pieces, whole=False):
 def _line_interval(origin, direction, pieces, level, index):
     """(enter, leave) (K,) of the lines (origin, direction (K, 3)) in the hulls of pieces or chains `index`
     (K,) at `level`: swept.line_hull_interval for flat-end tools (closed form), and
-    inprocess_swept.line_swept_interval for tools with a corner."""
+    inprocess_swept.line_swept_interval for tools with a corner, in closed form where the plan view decides
+    (inprocess_plan.line_level_interval: moves across the axis, lines along or across it)."""
     hulls = pieces.hulls(level, index)
     if not pieces.any_corner:
         return line_hull_interval(origin, direction, *hulls)
@@ -1227,8 +1229,12 @@ def _line_interval(origin, direction, pieces, level, index):
     if flat.size:
         enter[flat], leave[flat] = line_hull_interval(origin[flat], direction[flat], *(h[flat] for h in hulls))
     bent = np.flatnonzero(bent)
-    enter[bent], leave[bent] = line_swept_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
-                                                   corner[bent])
+    plan, enter[bent], leave[bent] = line_level_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
+                                                         corner[bent])
+    bent = bent[~plan]
+    if bent.size:
+        enter[bent], leave[bent] = line_swept_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
+                                                       corner[bent])
     return enter, leave
 
 

@@ -12,8 +12,8 @@ left of it, solves the others and narrows its range. The sure-miss test comes in
 point at consecutive angles in clusters of up to CLUSTER, each cluster in PARTS spheres (sphere j holds every arc
 of the cluster over part j of the cluster's range of ψ), and a unit apart from all of a cluster's spheres is
 dropped for all its arcs; then each arc alone, what is left of it in PARTS equal parts, each in the capsule of its
-chord grown by its sagitta. An arc whose range closes takes no
-more units; most arcs of a program that went over them before close after a unit or two (docs/ENGINE.md,
+chord grown by its sagitta (not for the pairs the plan view decides in closed form, inprocess_plan, whose solve
+costs less than that test). An arc whose range closes takes no more units; most arcs of a program that went over them before close after a unit or two (docs/ENGINE.md,
 "Tools with a corner in the in-process stock", "The arcs' search").
 
 A unit is dropped for an arc only when it is surely apart from what is left of the arc at that time, and the range
@@ -28,6 +28,7 @@ import numpy as np
 from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _narrow, _seen_along, _span_pieces, \
     _sphere_chains
 from .inprocess_arc import arc_swept_intervals
+from .inprocess_plan import arc_kinds, arc_level_intervals
 from .swept import row_dot
 from .tolerances import LENGTH_EPS
 
@@ -43,16 +44,17 @@ PAIR_BATCH = 1 << 12
 CLUSTER = 8
 
 
-def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, radius, top, p):
+def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, radius, top, p, tips, big):
     """Removal intervals (rows (R,) int, enter, leave (R,) mm of arc length) of the corner arcs `line` inside
     the pieces of the cutting moves that end before their CL point.
 
     line: (L,) int ascending, the arcs holding material (row i·p + k: CL point i, angle k), all of it
     within lo … hi (L,) mm of arc length s = radius·ψ; centres, ds, ws: (N, 3) every arc's centre and unit
-    vectors (P(ψ) = centre + radius·(sin ψ·d − cos ψ·w), 0 ≤ ψ ≤ top); radius: the corner radius (mm); pieces,
-    program_index and p as for inprocess.removal_intervals, whose rules these follow: removals overlapping
-    lo … hi by more than LENGTH_EPS, one removal [lo, hi] for an arc covered whole (each (arc, piece) pair is
-    solved over the whole arc, 0 … top, whatever is left of it). See the module docstring for the search.
+    vectors (P(ψ) = centre + radius·(sin ψ·d − cos ψ·w), 0 ≤ ψ ≤ top); tips (N, 3): each arc's tool tip;
+    radius, big: the tool's corner radius and radius (mm); pieces, program_index and p as for
+    inprocess.removal_intervals, whose rules these follow: removals overlapping lo … hi by more than LENGTH_EPS,
+    one removal [lo, hi] for an arc covered whole (each (arc, piece) pair is solved over the whole arc, 0 … top,
+    whatever is left of it). See the module docstring for the search.
     """
     line = np.asarray(line, dtype=np.intp).reshape(-1)
     empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
@@ -62,7 +64,7 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
     lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
     cl = line // p
     before = np.asarray(program_index, dtype=np.intp)[cl] - 1
-    geometry = (centres, ds, ws, radius, float(top))
+    geometry = (centres, ds, ws, tips, radius, float(big), float(top))
     found = [empty]
     for begin, end in _blocks(cl):
         rows = slice(begin, end)
@@ -89,8 +91,8 @@ class _Arcs:
     narrowed as removals are found; rows 2, 3: the range as given) and its capsule."""
 
     def __init__(self, line, lo, hi, geometry):
-        centres, ds, ws, self.radius, self.top = geometry
-        self.centre, self.d, self.w = (np.take(v, line, axis=0) for v in (centres, ds, ws))
+        centres, ds, ws, tips, self.radius, self.big, self.top = geometry
+        self.centre, self.d, self.w, self.tip = (np.take(v, line, axis=0) for v in (centres, ds, ws, tips))
         self.envelope = np.stack([lo, hi, lo, hi])
 
     def capsule(self, seg):
@@ -151,6 +153,13 @@ class _Arcs:
             size[:, j] = np.maximum.reduceat(reach, first) * (1.0 + 1e-9) + 1e-12
         return middle, size
 
+    def plan(self, seg, level, index, pieces):
+        """(K,) bool: the pairs (arc seg, hull index at `level`) the plan view decides (inprocess_plan.arc_kinds)."""
+        tool = (np.full(seg.size, self.big), np.full(seg.size, self.radius))
+        below, at = arc_kinds(self.tip[seg], self.w[seg], *tool, *pieces.hulls(level, index),
+                              pieces.corners(level, index))
+        return below | at
+
     def open(self):
         """(L,) bool: the arcs with something left."""
         return self.envelope[0] < self.envelope[1]
@@ -159,13 +168,22 @@ class _Arcs:
         """Removal intervals (seg, enter, leave) in ψ of the arcs seg (K,) inside the hulls `index` (K,) at
         `level` ("piece" or "chain"), each pair solved over the whole arc (0 … top) and kept where it overlaps
         the arc's range as given by more than LENGTH_EPS of arc length; the envelopes narrowed; in batches of
-        PAIR_BATCH."""
+        PAIR_BATCH. Pairs the plan view decides (an earlier move across the axis: inprocess_plan) in closed form,
+        the others by inprocess_arc."""
         out = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
         for begin in range(0, seg.size, PAIR_BATCH):
             s, q = seg[begin:begin + PAIR_BATCH], index[begin:begin + PAIR_BATCH]
-            pair, start, end = arc_swept_intervals(self.centre[s], self.d[s], self.w[s], np.full(s.size, self.radius),
-                                                   np.zeros(s.size), np.full(s.size, self.top),
-                                                   *pieces.hulls(level, q), pieces.corners(level, q))
+            hulls, corners = pieces.hulls(level, q), pieces.corners(level, q)
+            full = [np.full(s.size, v) for v in (self.big, self.radius, self.top)]
+            plan, start, end = arc_level_intervals(self.tip[s], self.d[s], self.w[s], *full, *hulls, corners)
+            pair = np.flatnonzero(plan & (end > start))
+            start, end = start[pair], end[pair]
+            rest = np.flatnonzero(~plan)
+            if rest.size:
+                found = arc_swept_intervals(self.centre[s[rest]], self.d[s[rest]], self.w[s[rest]], full[1][rest],
+                                            np.zeros(rest.size), full[2][rest], *(h[rest] for h in hulls),
+                                            corners[rest])
+                pair, start, end = np.r_[pair, rest[found[0]]], np.r_[start, found[1]], np.r_[end, found[2]]
             owner = s[pair]
             overlap = (np.minimum(end, self.envelope[3, owner]) - np.maximum(start, self.envelope[2, owner]))
             hit = overlap * self.radius > LENGTH_EPS
@@ -203,7 +221,10 @@ def _block(pieces, line, lo, hi, cl, before, geometry):
         whole = units.whole[unit]
         for level, chosen in (("chain", np.flatnonzero(whole)), ("piece", np.flatnonzero(~whole))):
             index = units.index[unit[chosen]]
-            near = arcs.near(seg[chosen], level, index, pieces)
+            # A pair the plan view decides costs less to solve than to test.
+            near = arcs.plan(seg[chosen], level, index, pieces)
+            rest = np.flatnonzero(~near)
+            near[rest] = arcs.near(seg[chosen[rest]], level, index[rest], pieces)
             found.append(arcs.solve(seg[chosen[near]], index[near], level, pieces))
         pos += step
         take *= 2

@@ -233,7 +233,7 @@ class _CornerEdges:
         if on_arc.any():
             parts.append(arc_removal_intervals(pieces, program_index, line[on_arc], lo[on_arc],
                                                np.minimum(hi[on_arc], corner), self.centre, self.d, self.w, self.r,
-                                               corner_top(self.tool), self.p))
+                                               corner_top(self.tool), self.p, self.tip, self.big))
         on_side = (hi > corner) & (self.length > self.r)
         if on_side.any():
             rows, enter, leave = removal_intervals(pieces, program_index, line[on_side],

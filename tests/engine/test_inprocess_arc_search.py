@@ -126,7 +126,7 @@ def test_cluster_spheres_hold_their_arcs():
         hi = np.minimum(lo + rng.uniform(0.0, top, n) ** 2, top)
         hi[::7] = lo[::7] + 1e-9  # a range almost closed
         line = np.arange(n)
-        arcs = search._Arcs(line, lo, hi, (centres, d, w, radius, top))
+        arcs = search._Arcs(line, lo, hi, (centres, d, w, centres - radius * w, radius, radius, top))
         live = np.arange(n)
         first = np.array([0, 1, 5, 13, 21, 29, 37])
         centre, size = arcs.spheres(live, first)

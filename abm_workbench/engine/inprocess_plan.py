@@ -1,0 +1,209 @@
+"""Closed forms in plan view for the edges of a tool with a corner against an earlier move across its axis.
+
+A three-axis or 3+2 program cuts most of its material with moves across the tool axis W (m·W = 0): the earlier
+tool (radius R_e, corner r_e, cutting height H_e) moved from c0 to c1 = c0 + m sweeps the points at height
+h above its bottom (0 ≤ h ≤ H_e) whose distance across W from the segment c0 … c1 is at most ρ_e(h)
+(ρ_e(h) = R_e − r_e + √(r_e² − (r_e − h)²) below r_e, R_e above). When the current tool has the same axis W,
+each of its cutting edges meets that solid in closed form (docs/ENGINE.md, "Plan view"):
+
+* a corner arc at the level of the earlier move (its tip at h = 0), of the same tool (R, r equal, H_e ≥ r):
+  the arc's point at ψ stands at height r·(1 − cos ψ) and at ρ = R − r + r·sin ψ from the axis, where the
+  earlier tool's radius is ρ too; so it is inside where dist(A + ρ·d, segment) ≤ ρ (A the tip seen across W,
+  d the edge's direction). dist − ρ is convex in ρ, so that set is one interval, and each of its three parts
+  (the discs at the ends, the strip along the segment) is bounded by conditions linear in ρ (the ρ² terms
+  cancel). Then ψ = asin((ρ − R + r)/r). An arc whose whole height lies at or below the earlier bottom
+  (the tip r or more below it, seen from the earlier move: level ≤ −r) meets it at most in a point.
+* a straight side (a line along W): its distance D across W from the segment is constant, so it is inside
+  where ρ_e(h) ≥ D: above h* = r_e − √(r_e² − (D − R_e + r_e)²) (0 for D ≤ R_e − r_e), up to H_e.
+* an end edge (a line across W at height h of the earlier move): inside where its distance from the segment
+  is at most ρ_e(h), a constant: each disc's chord, linear conditions for the strip.
+
+Points on the boundary are inside; an edge within inprocess_arc.COINCIDENT ulps of its coordinates of a
+boundary over its whole length runs along it, and is inside (as inprocess_arc decides such arcs); whether a
+straight side meets the solid at all is decided exactly. Shapes: K (edge, piece) pairs, (K, 3)
+vectors and (K,) numbers; ψ in radians, lengths in mm.
+"""
+
+import numpy as np
+
+from .inprocess_arc import COINCIDENT
+from .swept import row_dot
+
+
+def _noise(*vectors, size):
+    """(K,) COINCIDENT ulps of the largest coordinate of the vectors (K, 3) plus size (K,)."""
+    return COINCIDENT * np.spacing(sum(np.abs(v).max(axis=1) for v in vectors) + size)
+
+
+def across(c0, c1, axis):
+    """(K,) bool: the moves c0 → c1 (K, 3) that run exactly across their unit axis (K, 3) (m·W = 0)."""
+    return row_dot(c1 - c0, axis) == 0.0
+
+
+def _frame(m, axis):
+    """(u, n, length) of the moves m (K, 3) across the axis: unit along, unit across (W × u), length;
+    u = n = 0 where the move has no length."""
+    length = np.sqrt(row_dot(m, m))
+    safe = np.where(length > 0.0, length, 1.0)
+    u = m / safe[:, None]
+    n = np.cross(axis, u)
+    return u, n, length
+
+
+def _linear(a, b, span=None, slack=0.0):
+    """(low, high) (K,): the ρ with a + b·ρ ≤ 0 (an empty one as low > high). span: (low, high) (K,) the range of
+    ρ that matters; a condition within slack (K,) of holding over all of it holds everywhere (an edge running
+    along that boundary to rounding)."""
+    if span is not None:
+        along = np.maximum(a + b * span[0], a + b * span[1]) <= slack
+        a, b = np.where(along, -np.inf, a), np.where(along, 0.0, b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        root = -a / np.where(b != 0.0, b, 1.0)
+    low = np.where(b < 0.0, root, -np.inf)
+    high = np.where(b > 0.0, root, np.inf)
+    empty = (b == 0.0) & (a > 0.0)
+    return np.where(empty, np.inf, low), np.where(empty, -np.inf, high)
+
+
+def _joined(parts, span):
+    """(low, high) (K,): the union of intervals within span (low, high) (K,) known to be one interval there (the
+    hull of their non-empty parts within span)."""
+    low, high = np.full(parts[0][0].shape, np.inf), np.full(parts[0][0].shape, -np.inf)
+    for a, b in parts:
+        a, b = np.maximum(a, span[0]), np.minimum(b, span[1])
+        full = a <= b
+        low = np.where(full, np.minimum(low, a), low)
+        high = np.where(full, np.maximum(high, b), high)
+    return low, high
+
+
+def _meet(*parts):
+    """(low, high): the intersection of intervals."""
+    return np.max([p[0] for p in parts], axis=0), np.min([p[1] for p in parts], axis=0)
+
+
+def arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner):
+    """(below, level) (K,) bool: the (arc, earlier move) pairs arc_level_intervals decides, as outside (the arc
+    r or more below the move) and in closed form (at its level, the same tool); arguments as there."""
+    same_axis = np.all(p_axis == axis, axis=1) & across(c0, c1, p_axis)
+    level = row_dot(tip - c0, axis)
+    below = same_axis & (level <= -corner)
+    level_arc = (same_axis & (level == 0.0) & (p_big == big) & (p_corner == corner) & (p_height >= corner)
+                 & (corner > 0.0))
+    return below, level_arc
+
+
+def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner):
+    """(decided (K,) bool, start, end (K,) ψ in rad) of corner arcs against earlier moves, where the plan view
+    decides them (module docstring); start ≥ end (or NaN) where an arc decided here lies outside.
+
+    tip, d, axis (K, 3): the arc's tool tip, its edge's unit direction across the axis and the unit axis; big,
+    corner, top (K,): the tool's radius, corner radius and the arc's last ψ; c0, c1, p_axis (K, 3), p_big,
+    p_height, p_corner (K,): the earlier move and its tool."""
+    below, level_arc = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
+    start, end = np.full(tip.shape[0], np.nan), np.full(tip.shape[0], np.nan)
+    rows = np.flatnonzero(level_arc)
+    if rows.size:
+        start[rows], end[rows] = _arc_in_level(tip[rows] - c0[rows], c1[rows] - c0[rows], d[rows], axis[rows],
+                                               big[rows], corner[rows], top[rows])
+    return below | level_arc, start, end
+
+
+def _arc_in_level(g0, m, d, axis, big, corner, top):
+    """(start, end) ψ of arcs of tools at the level of an earlier move of the same tool (conditions linear in ρ;
+    module docstring): g0 the tip from c0 (across the axis), m the move."""
+    u, n, length = _frame(m, axis)
+    rim = big - corner
+    span = (rim, rim + corner * np.sin(top))
+    noise = _noise(g0, m, size=big)
+    parts = [_linear(row_dot(g, g), 2.0 * row_dot(g, d), span, 2.0 * big * noise) for g in (g0, g0 - m)]
+    along, side = row_dot(u, g0), row_dot(n, g0)
+    ud, nd = row_dot(u, d), np.clip(row_dot(n, d), -1.0, 1.0)
+    strip = _meet(_linear(-along, -ud, span, noise), _linear(along - length, ud, span, noise),
+                  _linear(side, nd - 1.0, span, noise), _linear(-side, -nd - 1.0, span, noise))
+    parts.append((np.where(length > 0.0, strip[0], np.inf), np.where(length > 0.0, strip[1], -np.inf)))
+    low, high = _joined(parts, span)
+    with np.errstate(invalid="ignore"):
+        start = np.arcsin(np.clip((low - rim) / corner, 0.0, 1.0))
+        end = np.arcsin(np.clip((high - rim) / corner, 0.0, 1.0))
+    start = np.where(low <= rim, 0.0, np.minimum(start, top))
+    end = np.where(high >= rim + corner * np.sin(top), top, end)
+    return start, np.where(low <= high, end, np.nan)
+
+
+def earlier_radius(h, big, corner):
+    """ρ_e(h) (K,): the radius of tools (big, corner (K,)) at height h (K,) above their bottom, within their
+    cutting height."""
+    with np.errstate(invalid="ignore"):
+        bent = big - corner + np.sqrt(np.maximum(corner * corner - (corner - h) ** 2, 0.0))
+    return np.where(h < corner, bent, big)
+
+
+def line_level_interval(origin, direction, c0, c1, axis, big, height, corner):
+    """(decided (K,) bool, enter, leave (K,) mm) of lines origin + l·direction (unit) in the solids of earlier
+    moves across their axis, where the plan view decides them: lines along the axis (straight sides) and
+    across it (end edges); NaN where a decided line misses the solid (module docstring)."""
+    moves = across(c0, c1, axis)
+    upright = moves & np.all(direction == axis, axis=1)
+    flat = moves & (row_dot(direction, axis) == 0.0)
+    enter, leave = np.full(origin.shape[0], np.nan), np.full(origin.shape[0], np.nan)
+    rows = np.flatnonzero(upright)
+    if rows.size:
+        enter[rows], leave[rows] = _side_in_move(origin[rows] - c0[rows], c1[rows] - c0[rows], axis[rows],
+                                                 big[rows], height[rows], corner[rows])
+    rows = np.flatnonzero(flat)
+    if rows.size:
+        enter[rows], leave[rows] = _end_in_move(origin[rows] - c0[rows], direction[rows], c1[rows] - c0[rows],
+                                                axis[rows], big[rows], height[rows], corner[rows])
+    return upright | flat, enter, leave
+
+
+def _side_in_move(q, m, axis, big, height, corner):
+    """(enter, leave) of lines along the axis from q (the origin from c0): module docstring."""
+    up = row_dot(q, axis)
+    g = q - up[:, None] * axis
+    u, _, length = _frame(m, axis)
+    t = np.clip(row_dot(g, u), 0.0, length)
+    gap = g - t[:, None] * u
+    dist = np.sqrt(row_dot(gap, gap))
+    reach = earlier_radius(height, big, corner)
+    # Compared exactly, as inprocess_swept's Newton entry from outside decides it.
+    on = dist <= reach
+    rim = big - corner
+    with np.errstate(invalid="ignore"):
+        lift = corner - np.sqrt(np.maximum(corner * corner - (dist - rim) ** 2, 0.0))
+    lift = np.where(dist <= rim, 0.0, np.minimum(lift, height))
+    return np.where(on, lift - up, np.nan), np.where(on, height - up, np.nan)
+
+
+def _end_in_move(q, direction, m, axis, big, height, corner):
+    """(enter, leave) of lines across the axis from q (the origin from c0): module docstring."""
+    h = row_dot(q, axis)
+    g0 = q - h[:, None] * axis
+    inside = (h >= 0.0) & (h <= height)
+    f = earlier_radius(np.clip(h, 0.0, height), big, corner)
+    u, n, length = _frame(m, axis)
+    dd = row_dot(direction, direction)
+    noise = _noise(q, m, size=big + height)
+    parts = []
+    for g in (g0, g0 - m):
+        # The disc's chord: half-length √(f² − p²) about the foot of the centre, p the centre's distance from the
+        # line; a line within rounding of tangent touches it at the foot.
+        foot = -row_dot(g, direction) / dd
+        cross = np.cross(g, direction)
+        p = np.sqrt(row_dot(cross, cross) / dd)
+        gap = f - p
+        half = np.where(gap > noise, np.sqrt(np.maximum(gap * (f + p), 0.0) / dd), 0.0)
+        meets = gap >= -noise
+        parts.append((np.where(meets, foot - half, np.inf), np.where(meets, foot + half, -np.inf)))
+    along, side = row_dot(u, g0), row_dot(n, g0)
+    ud, nd = row_dot(u, direction), row_dot(n, direction)
+    # Beyond this far along the line no point is within f of the segment.
+    far = np.sqrt(row_dot(g0, g0)) + length + f
+    span = (-far, far)
+    strip = _meet(_linear(-along, -ud, span, noise), _linear(along - length, ud, span, noise),
+                  _linear(side - f, nd, span, noise), _linear(-side - f, -nd, span, noise))
+    parts.append((np.where(length > 0.0, strip[0], np.inf), np.where(length > 0.0, strip[1], -np.inf)))
+    low, high = _joined(parts, span)
+    hit = inside & (low <= high)
+    return np.where(hit, low, np.nan), np.where(hit, high, np.nan)
