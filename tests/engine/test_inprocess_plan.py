@@ -12,8 +12,13 @@ of exactly its radius or of R − r (an edge running along the sweep's boundary)
 import numpy as np
 import pytest
 
+from abm_workbench.engine import Tool, Toolpath
+from abm_workbench.engine import inprocess
+from abm_workbench.engine import inprocess_arc_search as search
 from abm_workbench.engine.inprocess_plan import arc_level_intervals, line_level_interval
-from tests.engine.test_inprocess_corner import arc_point, batch_runs, in_swept
+
+from . import test_inprocess_corner_program as programs
+from .test_inprocess_corner import arc_point, batch_runs, in_swept
 
 EXACT = 1e-9  # mm of edge, away from tangent touches
 AXES = (np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
@@ -178,3 +183,43 @@ def test_moves_not_across_the_axis_are_left_to_the_general_solvers():
     decided, _, _ = line_level_interval(tip, np.tile([0.3, 0.4, 0.866], (4, 1)), c0, c1, axis, big, np.full(4, 10.0),
                                         corner)
     assert not decided.any()
+
+
+def z_level_program(ratio):
+    """Three passes of one D8 tool (corner radius ratio·R) at one z level, 4 mm apart (50 % stepover), back and
+    forth, then a pass 1 mm lower between the first two: z-level roughing, whose pairs the plan view decides."""
+    program = programs.Program()
+    tool = Tool(8.0, 2, 12.0, corner_radius=4.0 * ratio)
+    args = (tool.radius, tool.flute_length, tool.corner_radius)
+    program.add(programs.straight(-16, 16, -4.0, 3.0, 9), *args)
+    rows = [program.add(programs.straight(16, -16, 0.0, 3.0, 9), *args),
+            program.add(programs.straight(-16, 16, 4.0, 3.0, 9), *args),
+            program.add(programs.straight(16, -16, -2.0, 2.0, 9), *args)]
+    return program, tool, np.concatenate([r[[2, 5, 8]] for r in rows])
+
+
+@pytest.mark.parametrize("ratio", [0.25, 1.0])
+def test_z_level_program_against_the_reference(ratio, monkeypatch):
+    """A z-level program of a bull-nose and of a ball-end mill: engage_in_process (its pairs mostly in plan view)
+    against the brute-force reference of the whole program (length, LEP, UEP, end length to 1e-6 mm), and the share
+    of pairs the plan view decided (so that a change routing them to the general solvers shows)."""
+    counts = {"plan": 0, "general": 0}
+
+    def counted(key, function, decided=None):
+        def call(*args):
+            result = function(*args)
+            counts[key] += int(result[0].sum()) if decided else len(args[0])
+            return result
+        return call
+
+    monkeypatch.setattr(search, "arc_level_intervals", counted("plan", search.arc_level_intervals, True))
+    monkeypatch.setattr(search, "arc_swept_intervals", counted("general", search.arc_swept_intervals))
+    monkeypatch.setattr(inprocess, "line_level_interval", counted("plan", inprocess.line_level_interval, True))
+    monkeypatch.setattr(inprocess, "line_swept_interval", counted("general", inprocess.line_swept_interval))
+    program, tool, rows = z_level_program(ratio)
+    toolpath = Toolpath(program.array("cl")[rows], np.zeros(rows.size), np.zeros(rows.size))
+    got, changed, want, _, _ = programs.run(program, "staircase", tool, toolpath, rows, programs.PHI)
+    assert changed.sum() >= 6
+    assert not programs.mismatches(got, want)
+    share = counts["plan"] / (counts["plan"] + counts["general"])
+    assert share >= (0.95 if ratio < 1.0 else 0.8), counts
