@@ -156,9 +156,9 @@ class _Arcs:
     def plan(self, seg, level, index, pieces):
         """(K,) bool: the pairs (arc seg, hull index at `level`) the plan view decides (inprocess_plan.arc_kinds)."""
         tool = (np.full(seg.size, self.big), np.full(seg.size, self.radius))
-        below, at = arc_kinds(self.tip[seg], self.w[seg], *tool, *pieces.hulls(level, index),
-                              pieces.corners(level, index))
-        return below | at
+        below, at, steady = arc_kinds(self.tip[seg], self.w[seg], *tool, *pieces.hulls(level, index),
+                                      pieces.corners(level, index))
+        return below | at | steady
 
     def open(self):
         """(L,) bool: the arcs with something left."""

@@ -13,6 +13,10 @@ each of its cutting edges meets that solid in closed form (docs/ENGINE.md, "Plan
   (the discs at the ends, the strip along the segment) is bounded by conditions linear in ρ (the ρ² terms
   cancel). Then ψ = asin((ρ − R + r)/r). An arc whose whole height lies at or below the earlier bottom
   (the tip r or more below it, seen from the earlier move: level ≤ −r) meets it at most in a point.
+* a corner arc against an earlier tool whose radius is the same, R_e, at every height of the arc (a flat-end
+  mill, or a corner r_e at or below the arc's tip): inside where its plan line A + ρ·d lies within R_e of the
+  segment (as an end edge, below) and its height r·(1 − cos ψ) + level within the earlier tool's 0 … H_e
+  (ψ = acos of it, exact where the arc stands upright).
 * a straight side (a line along W): its distance D across W from the segment is constant, so it is inside
   where ρ_e(h) ≥ D: above h* = r_e − √(r_e² − (D − R_e + r_e)²) (0 for D ≤ R_e − r_e), up to H_e.
 * an end edge (a line across W at height h of the earlier move): inside where its distance from the segment
@@ -83,14 +87,17 @@ def _meet(*parts):
 
 
 def arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner):
-    """(below, level) (K,) bool: the (arc, earlier move) pairs arc_level_intervals decides, as outside (the arc
-    r or more below the move) and in closed form (at its level, the same tool); arguments as there."""
+    """(below, level, steady) (K,) bool: the (arc, earlier move) pairs arc_level_intervals decides: as outside
+    (the arc r or more below the move), in closed form at its level (the same tool), and in closed form where
+    the earlier tool's radius is the same at every height of the arc (a flat end, or its corner below the arc);
+    arguments as there."""
     same_axis = np.all(p_axis == axis, axis=1) & across(c0, c1, p_axis)
     level = row_dot(tip - c0, axis)
     below = same_axis & (level <= -corner)
-    level_arc = (same_axis & (level == 0.0) & (p_big == big) & (p_corner == corner) & (p_height >= corner)
-                 & (corner > 0.0))
-    return below, level_arc
+    bent = corner > 0.0
+    level_arc = same_axis & (level == 0.0) & (p_big == big) & (p_corner == corner) & (p_height >= corner) & bent
+    steady = same_axis & ~below & ~level_arc & bent & ((p_corner == 0.0) | (level >= p_corner))
+    return below, level_arc, steady
 
 
 def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner):
@@ -100,13 +107,20 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
     tip, d, axis (K, 3): the arc's tool tip, its edge's unit direction across the axis and the unit axis; big,
     corner, top (K,): the tool's radius, corner radius and the arc's last ψ; c0, c1, p_axis (K, 3), p_big,
     p_height, p_corner (K,): the earlier move and its tool."""
-    below, level_arc = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
+    below, level_arc, steady = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
     start, end = np.full(tip.shape[0], np.nan), np.full(tip.shape[0], np.nan)
     rows = np.flatnonzero(level_arc)
     if rows.size:
         start[rows], end[rows] = _arc_in_level(tip[rows] - c0[rows], c1[rows] - c0[rows], d[rows], axis[rows],
                                                big[rows], corner[rows], top[rows])
-    return below | level_arc, start, end
+    rows = np.flatnonzero(steady)
+    if rows.size:
+        q = tip[rows] - c0[rows]
+        level = row_dot(q, axis[rows])
+        start[rows], end[rows] = _arc_in_cylinder(q - level[:, None] * axis[rows], level, c1[rows] - c0[rows],
+                                                  d[rows], axis[rows], big[rows], corner[rows], top[rows],
+                                                  p_big[rows], p_height[rows])
+    return below | level_arc | steady, start, end
 
 
 def _arc_in_level(g0, m, d, axis, big, corner, top):
@@ -123,6 +137,28 @@ def _arc_in_level(g0, m, d, axis, big, corner, top):
                   _linear(side, nd - 1.0, span, noise), _linear(-side, -nd - 1.0, span, noise))
     parts.append((np.where(length > 0.0, strip[0], np.inf), np.where(length > 0.0, strip[1], -np.inf)))
     low, high = _joined(parts, span)
+    return _psi(low, high, rim, corner, top)
+
+
+def _arc_in_cylinder(g0, level, m, d, axis, big, corner, top, p_big, p_height):
+    """(start, end) ψ of arcs against earlier moves whose tool has the radius p_big at every height of the arc
+    (a flat end, or a corner below the arc; module docstring): the arc's points within p_big of the segment
+    across the axis (the plan line A + ρ·d, _stadium) and within the earlier tool's heights 0 … p_height. g0: the
+    tip from c0 across the axis; level: the tip's height above c0; m the move."""
+    start, end = _psi(*_stadium(g0, d, m, axis, p_big, _noise(g0, m, size=big + p_big)), big - corner, corner, top)
+    # The heights, a = r·(1 − cos ψ) above the tip, from −level (the earlier bottom) up to p_height − level.
+    low_a, high_a = -level, p_height - level
+    with np.errstate(invalid="ignore"):
+        start = np.maximum(start, np.where(low_a > 0.0, np.arccos(np.clip(1.0 - low_a / corner, -1.0, 1.0)), 0.0))
+        end = np.minimum(end, np.where(high_a < corner, np.arccos(np.clip(1.0 - high_a / corner, -1.0, 1.0)), top))
+    return start, np.where((high_a >= 0.0) & (start <= end), end, np.nan)
+
+
+def _psi(low, high, rim, corner, top):
+    """(start, end) ψ of the arcs' points at ρ = rim + r·sin ψ from low to high (ρ, mm), within 0 … top; end NaN
+    where low > high."""
+    low = np.maximum(low, rim)
+    high = np.minimum(high, rim + corner * np.sin(top))
     with np.errstate(invalid="ignore"):
         start = np.arcsin(np.clip((low - rim) / corner, 0.0, 1.0))
         end = np.arcsin(np.clip((high - rim) / corner, 0.0, 1.0))
@@ -179,12 +215,19 @@ def _side_in_move(q, m, axis, big, height, corner):
 def _end_in_move(q, direction, m, axis, big, height, corner):
     """(enter, leave) of lines across the axis from q (the origin from c0): module docstring."""
     h = row_dot(q, axis)
-    g0 = q - h[:, None] * axis
     inside = (h >= 0.0) & (h <= height)
     f = earlier_radius(np.clip(h, 0.0, height), big, corner)
+    low, high = _stadium(q - h[:, None] * axis, direction, m, axis, f, _noise(q, m, size=big + height))
+    hit = inside & (low <= high)
+    return np.where(hit, low, np.nan), np.where(hit, high, np.nan)
+
+
+def _stadium(g0, direction, m, axis, f, noise):
+    """(low, high) (K,): where the lines g0 + l·direction (across the axis, g0 from c0) lie within f (K,) of the
+    segments 0 … m (an empty one as low > high): each disc's chord and the strip's four linear conditions (module
+    docstring); noise (K,): the rounding within which a line is tangent, or runs along the strip's side."""
     u, n, length = _frame(m, axis)
     dd = row_dot(direction, direction)
-    noise = _noise(q, m, size=big + height)
     parts = []
     for g in (g0, g0 - m):
         # The disc's chord: half-length √(f² − p²) about the foot of the centre, p the centre's distance from the
@@ -204,6 +247,4 @@ def _end_in_move(q, direction, m, axis, big, height, corner):
     strip = _meet(_linear(-along, -ud, span, noise), _linear(along - length, ud, span, noise),
                   _linear(side - f, nd, span, noise), _linear(-side - f, -nd, span, noise))
     parts.append((np.where(length > 0.0, strip[0], np.inf), np.where(length > 0.0, strip[1], -np.inf)))
-    low, high = _joined(parts, span)
-    hit = inside & (low <= high)
-    return np.where(hit, low, np.nan), np.where(hit, high, np.nan)
+    return _joined(parts, span)

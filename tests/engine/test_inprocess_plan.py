@@ -97,6 +97,48 @@ def test_arcs_at_the_level_of_an_earlier_move(seed):
     assert hits >= 20
 
 
+@pytest.mark.parametrize("seed", [11, 12, 13])
+def test_arcs_against_earlier_tools_of_one_radius(seed):
+    """Corner arcs of bull-nose and ball-end mills against earlier moves of another tool whose radius is the same at
+    every height of the arc: flat-end mills at any level from r below the arc's tip up (their bottom or top cutting
+    the arc), and bull-nose mills whose corner lies below the arc: arc_level_intervals against the reference."""
+    rng = np.random.default_rng(seed)
+    cases = []
+    for trial in range(80):
+        axis, big, corner, _, tip, c0, move, d = _case(rng, trial, (0.1, 0.25, 0.5, 1.0), 1.0)
+        p_big = rng.uniform(0.5, 8.0)
+        if trial % 3:
+            p_corner, level = 0.0, rng.choice([0.0, rng.uniform(-0.95, 1.5) * corner])
+        else:
+            p_corner = rng.uniform(0.1, 1.0) * p_big
+            level = p_corner + rng.choice([0.0, rng.uniform(0.0, 2.0)])
+        p_height = rng.choice([rng.uniform(0.2, 1.5) * corner, 20.0])
+        cases.append((tip + level * axis, d, axis, big, corner, c0, move, p_big, p_corner, p_height))
+    tip, d, axis, big, corner, c0, move, p_big, p_corner, p_height = (np.array(column) for column in zip(*cases))
+    top = np.full(len(cases), 0.5 * np.pi)
+    decided, start, end = arc_level_intervals(tip, d, axis, big, corner, top, c0, c0 + move, axis, p_big, p_height,
+                                              p_corner)
+    # (A bull-nose's corner exactly at the arc's tip may come out a rounding below it, and is not decided here.)
+    assert decided.sum() >= 70
+    centre = tip + (big - corner)[:, None] * d + corner[:, None] * axis
+    extra = [[] if not b > a else [v + x for v in (a, b) for x in (-1e-9, 0.0, 1e-9)] for a, b in zip(start, end)]
+
+    def flag(edge, t):
+        return in_swept(arc_point(centre[edge], d[edge], axis[edge], corner[edge], t), c0[edge], move[edge],
+                        axis[edge], p_big[edge], p_corner[edge], p_height[edge])
+
+    want = batch_runs(flag, top, extra)
+    hits = 0
+    for k in np.flatnonzero(decided):
+        got = [(start[k], end[k])] if end[k] > start[k] else []
+        found = [(a, b) for a, b in want[k] if (b - a) * corner[k] > 1e-6]
+        hits += bool(found)
+        assert len(got) == len(found), (k, got, want[k])
+        for (a, b), (x, y) in zip(got, found):
+            assert abs(a - x) * corner[k] <= EXACT and abs(b - y) * corner[k] <= EXACT, (k, got, want[k])
+    assert hits >= 20
+
+
 def test_arc_below_an_earlier_move_meets_nothing():
     """An arc whose tool tip lies r or more below an earlier move across the axis is decided as outside; the
     reference finds no inside point on it."""
