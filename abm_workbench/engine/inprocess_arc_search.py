@@ -13,8 +13,9 @@ point at consecutive angles in clusters of up to CLUSTER, each cluster in PARTS 
 of the cluster over part j of the cluster's range of ψ), and a unit apart from all of a cluster's spheres is
 dropped for all its arcs; then each arc alone, what is left of it in PARTS equal parts, each in the capsule of its
 chord grown by its sagitta (not for the pairs the plan view decides in closed form, inprocess_plan, whose solve
-costs less than that test). An arc whose range closes takes no more units; most arcs of a program that went over them before close after a unit or two (docs/ENGINE.md,
-"Tools with a corner in the in-process stock", "The arcs' search").
+costs less than that test). An arc whose range closes takes no more units; most arcs of a program that went over
+them before close after a unit or two (docs/ENGINE.md, "Tools with a corner in the in-process stock", "The arcs'
+search").
 
 A unit is dropped for an arc only when it is surely apart from what is left of the arc at that time, and the range
 only narrows: so every unit that could remove something of what is left at the end is solved, and what is
