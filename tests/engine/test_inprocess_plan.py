@@ -4,9 +4,11 @@ geometry).
 
 The cases are those of three-axis and 3+2 programs: earlier moves across the axis (upright, or a horizontal
 spindle: a move's dot product with the axis exactly zero, as in a program's one z level), the current tool
-with the same axis at the same level (arcs), or at any level (sides and end edges); and the special placements
-real programs make: the tool at the end of the earlier move, on its line ahead of it, beside it at a stepover
-of exactly its radius or of R − r (an edge running along the sweep's boundary), moves of no length.
+with the same axis: its arcs at the level of the same tool, or at any level against a tool of one radius over
+the arc's heights; its sides and end edges at any level; and the special placements real programs make: the
+tool at the end of the earlier move, on its line ahead of it, beside it at a stepover of exactly its radius or
+of R − r (an edge running along the sweep's boundary), moves of no length. Last, a z-level program against the
+reference of the whole program.
 """
 
 import numpy as np
