@@ -64,6 +64,31 @@ def _case(rng, trial, ratios, short):
     return axis, big, corner, height, tip, c0, move, _across(axis, rng)
 
 
+def _check_arcs(tip, d, axis, big, corner, top, c0, move, earlier, decided, start, end):
+    """The decided arcs' intervals (start, end) against the reference (each arc's tool tip, d, axis, R, r and top;
+    the earlier moves c0 … c0 + move of the tools earlier = (R_e, r_e, H_e)), to EXACT mm of arc; at least 20 arcs
+    with something inside."""
+    centre = tip + (big - corner)[:, None] * d + corner[:, None] * axis
+    extra = [[] if not b > a else [v + x for v in (a, b) for x in (-1e-9, 0.0, 1e-9)] for a, b in zip(start, end)]
+    p_big, p_corner, p_height = earlier
+
+    def flag(edge, t):
+        return in_swept(arc_point(centre[edge], d[edge], axis[edge], corner[edge], t), c0[edge], move[edge],
+                        axis[edge], p_big[edge], p_corner[edge], p_height[edge])
+
+    want = batch_runs(flag, top, extra)
+    hits = 0
+    for k in np.flatnonzero(decided):
+        got = [(start[k], end[k])] if end[k] > start[k] else []
+        # A touch at one point (the reference's sliver thinner than what rounding decides) is no interval.
+        found = [(a, b) for a, b in want[k] if (b - a) * corner[k] > 1e-6]
+        hits += bool(found)
+        assert len(got) == len(found), (k, got, want[k])
+        for (a, b), (x, y) in zip(got, found):
+            assert abs(a - x) * corner[k] <= EXACT and abs(b - y) * corner[k] <= EXACT, (k, got, want[k])
+    assert hits >= 20
+
+
 @pytest.mark.parametrize("seed", [1, 2, 3, 4])
 def test_arcs_at_the_level_of_an_earlier_move(seed):
     """Corner arcs of bull-nose and ball-end mills (r/R 0.1 … 1) at the level of an earlier move of the same tool,
@@ -79,24 +104,7 @@ def test_arcs_at_the_level_of_an_earlier_move(seed):
     decided, start, end = arc_level_intervals(tip, d, axis, big, corner, top, c0, c0 + move, axis, big, height,
                                               corner)
     assert decided.all()
-    centre = tip + (big - corner)[:, None] * d + corner[:, None] * axis
-    extra = [[] if not b > a else [v + x for v in (a, b) for x in (-1e-9, 0.0, 1e-9)] for a, b in zip(start, end)]
-
-    def flag(edge, t):
-        return in_swept(arc_point(centre[edge], d[edge], axis[edge], corner[edge], t), c0[edge], move[edge],
-                        axis[edge], big[edge], corner[edge], height[edge])
-
-    want = batch_runs(flag, top, extra)
-    hits = 0
-    for k in np.flatnonzero(decided):
-        got = [(start[k], end[k])] if end[k] > start[k] else []
-        # A touch at one point (the reference's sliver thinner than what rounding decides) is no interval.
-        found = [(a, b) for a, b in want[k] if (b - a) * corner[k] > 1e-6]
-        hits += bool(found)
-        assert len(got) == len(found), (k, got, want[k])
-        for (a, b), (x, y) in zip(got, found):
-            assert abs(a - x) * corner[k] <= EXACT and abs(b - y) * corner[k] <= EXACT, (k, got, want[k])
-    assert hits >= 20
+    _check_arcs(tip, d, axis, big, corner, top, c0, move, (big, corner, height), decided, start, end)
 
 
 @pytest.mark.parametrize("seed", [11, 12, 13])
@@ -122,23 +130,7 @@ def test_arcs_against_earlier_tools_of_one_radius(seed):
                                               p_corner)
     # (A bull-nose's corner exactly at the arc's tip may come out a rounding below it, and is not decided here.)
     assert decided.sum() >= 70
-    centre = tip + (big - corner)[:, None] * d + corner[:, None] * axis
-    extra = [[] if not b > a else [v + x for v in (a, b) for x in (-1e-9, 0.0, 1e-9)] for a, b in zip(start, end)]
-
-    def flag(edge, t):
-        return in_swept(arc_point(centre[edge], d[edge], axis[edge], corner[edge], t), c0[edge], move[edge],
-                        axis[edge], p_big[edge], p_corner[edge], p_height[edge])
-
-    want = batch_runs(flag, top, extra)
-    hits = 0
-    for k in np.flatnonzero(decided):
-        got = [(start[k], end[k])] if end[k] > start[k] else []
-        found = [(a, b) for a, b in want[k] if (b - a) * corner[k] > 1e-6]
-        hits += bool(found)
-        assert len(got) == len(found), (k, got, want[k])
-        for (a, b), (x, y) in zip(got, found):
-            assert abs(a - x) * corner[k] <= EXACT and abs(b - y) * corner[k] <= EXACT, (k, got, want[k])
-    assert hits >= 20
+    _check_arcs(tip, d, axis, big, corner, top, c0, move, (p_big, p_corner, p_height), decided, start, end)
 
 
 def test_arc_below_an_earlier_move_meets_nothing():
