@@ -54,13 +54,12 @@ def _frame(m, axis):
     return u, n, length
 
 
-def _linear(a, b, span=None, slack=0.0):
+def _linear(a, b, span, slack):
     """(low, high) (K,): the ρ with a + b·ρ ≤ 0 (an empty one as low > high). span: (low, high) (K,) the range of
     ρ that matters; a condition within slack (K,) of holding over all of it holds everywhere (an edge running
     along that boundary to rounding)."""
-    if span is not None:
-        along = np.maximum(a + b * span[0], a + b * span[1]) <= slack
-        a, b = np.where(along, -np.inf, a), np.where(along, 0.0, b)
+    along = np.maximum(a + b * span[0], a + b * span[1]) <= slack
+    a, b = np.where(along, -np.inf, a), np.where(along, 0.0, b)
     with np.errstate(divide="ignore", invalid="ignore"):
         root = -a / np.where(b != 0.0, b, 1.0)
     low = np.where(b < 0.0, root, -np.inf)
