@@ -25,6 +25,7 @@ import numpy as np
 
 from .engagement import SURFACES
 from .inprocess_balls import BallParts
+from .inprocess_levels import LevelView, level_moves
 from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
 from .inprocess_plan import line_level_interval
@@ -194,6 +195,9 @@ class SweptPieces:
     mills throughout). The tool solid is then the cylinder of its radius and height with the bottom
     rim rounded by the corner radius (docs/ENGINE.md, "Tools with a corner in the in-process
     stock"); it lies inside the cylinder, so every bound made for the cylinder holds for it.
+    levels: the pieces of the program's z levels in plan (inprocess_levels.LevelView), None where it has
+    none; rest: the SweptPieces of its other cutting moves (None with levels None). Lines along the levels'
+    axis are searched in both; every other consumer takes these pieces whole.
     """
 
     c0: np.ndarray
@@ -233,6 +237,8 @@ class SweptPieces:
     corner: np.ndarray = None
     span_corner: np.ndarray = None
     chain_corner: np.ndarray = None
+    levels: LevelView = None
+    rest: "SweptPieces" = None
 
     def __post_init__(self):
         for name, like in (("corner", "radius"), ("span_corner", "span_radius"), ("chain_corner", "chain_radius")):
@@ -306,7 +312,7 @@ def _csr(count):
     return owner, np.arange(owner.size) - np.repeat(np.cumsum(count) - count, count)
 
 
-def swept_pieces(moves: ProgramMoves, tolerance=0.05):
+def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True):
     """The cutting moves of `moves` as constant-axis pieces in spans (SweptPieces).
 
     A move whose axis turns by Θ (rad) is cut into n ≥ Θ·ρ/tolerance sub-steps (ρ = the largest
@@ -316,6 +322,8 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     (exact: the hulls of consecutive parts of a straight move make up the hull of the move)
     and of at most _SPAN_PIECES sub-steps, each span a whole number of sub-steps, so that
     bounding volumes stay small and a span that comes near a line hands it few pieces.
+    With `levels`, the moves of the program's z levels (inprocess_levels.level_moves) also get their plan
+    view, and the other moves their own SweptPieces (levels, rest).
     """
     tolerance = float(tolerance)
     if not tolerance > 0.0:
@@ -348,9 +356,16 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05):
     s_corner = corner[span_of]
     chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner, s_corner)
     balls = BallParts(chains[-2], chains[-1], chains[2][chains[-3]])
+    view = rest = None
+    w, level = level_moves(moves) if levels else (None, None)
+    if w is not None:
+        view = LevelView(c0, c1, axis, radius[move], height[move], j[move], np.flatnonzero(level[j[move]]), w)
+        others = ProgramMoves(moves.cl, moves.axis, moves.cutting & ~level, moves.radius, moves.flute_length,
+                              moves.line, moves.corner_radius)
+        rest = swept_pieces(others, tolerance, levels=False)
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
                        s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, balls,
-                       tolerance, corner[move], s_corner, s_corner[chains[0]])
+                       tolerance, corner[move], s_corner, s_corner[chains[0]], view, rest)
 
 
 def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span, corner=None):
@@ -604,6 +619,60 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
     if line.size == 0 or pieces.move.size == 0:
         return _none()[:3]
     lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
+    if pieces.levels is not None:
+        return _level_removals(pieces, program_index, line, lo, hi, origins, directions, p)
+    return _searched_removals(pieces, program_index, line, lo, hi, origins, directions, p)
+
+
+def _level_removals(pieces, program_index, line, lo, hi, origins, directions, p):
+    """removal_intervals of a program with z levels: the lines along the levels' axis in plan view
+    (inprocess_levels) and then, those not removed whole, among the other moves (pieces.rest); the other
+    lines among all moves."""
+    view = pieces.levels
+    along = (_rows(directions, line) == view.w).all(axis=1)
+    parts = []
+    if (~along).any():
+        parts.append(_searched_removals(pieces, program_index, line[~along], lo[~along], hi[~along], origins,
+                                        directions, p))
+    mine = np.flatnonzero(along)
+    if mine.size:
+        at = line[mine]
+        seg, enter, leave = view.removals(_rows(origins, at), _rows(directions, at), lo[mine], hi[mine],
+                                          program_index[at // p] - 1)
+        envelope = np.stack([lo[mine], hi[mine]])
+        _narrow(envelope, seg, enter, leave)
+        dead = envelope[0] >= envelope[1]
+        alive = ~dead[seg]
+        parts.append((at[dead], lo[mine][dead], hi[mine][dead]))
+        parts.append((at[seg[alive]], enter[alive], leave[alive]))
+        if pieces.rest.move.size and not dead.all():
+            alive = np.flatnonzero(~dead)
+            alive = alive[_near_rest(pieces.rest, _rows(origins, at[alive]), _rows(directions, at[alive]),
+                                     lo[mine][alive], hi[mine][alive], program_index[at[alive] // p] - 1)]
+            parts.append(_searched_removals(pieces.rest, program_index, at[alive], lo[mine][alive], hi[mine][alive],
+                                            origins, directions, p))
+    return tuple(np.concatenate(part) for part in zip(*parts))
+
+
+def _near_rest(rest, origin, direction, lo, hi, before):
+    """(L,) bool: the lines' material lo … hi (L,) along origin + l·direction (L, 3) may meet a chain of `rest`
+    (a SweptPieces) that begins by program row before (L,): the segment's bounding sphere meets a ball of the
+    chain (the balls hold every point of their chains' hulls). The others need no search among them."""
+    near = np.zeros(origin.shape[0], dtype=bool)
+    for begin in range(0, origin.shape[0], _SPHERE_BLOCK):
+        part = slice(begin, begin + _SPHERE_BLOCK)
+        half = 0.5 * (hi[part] - lo[part])
+        centre = origin[part] + (lo[part] + half)[:, None] * direction[part]
+        i, ball = rest.tree.meeting(centre, half, int(before[part].max()))
+        i = i[rest.chain_move[rest.ball_chain[ball]] <= before[part][i]]
+        near[begin + i] = True
+    return near
+
+
+def _searched_removals(pieces, program_index, line, lo, hi, origins, directions, p):
+    """removal_intervals by the general search (the docstring's waves), lines (L,) not empty."""
+    if line.size == 0 or pieces.move.size == 0:
+        return _none()[:3]
     # Rows 0, 1: the envelope of each line's remaining material, narrowed as removals are found
     # (lo ≥ hi: nothing remains, the line is removed whole); rows 2, 3: lo, hi as given.
     envelope = np.stack([lo, hi, lo, hi])

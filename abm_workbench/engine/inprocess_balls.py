@@ -11,8 +11,11 @@ radius of the others: nine tenths of the pairs the tree gave were then dropped b
 Here the balls are put in parts, each with its own KD tree: by radius (classes 1.5 times apart),
 then by program order (runs of BLOCK balls). A query asks each part only within the largest
 sphere radius plus that part's largest ball radius, and skips the parts whose balls all belong to
-moves after the last one the spheres may meet. The pairs kept are those that meet exactly, the
-same set whatever the parts: every pair that meets lies within its part's distance. Lengths in mm.
+moves after the last one the spheres may meet, and those whose centres' bounding box lies farther
+than that distance from the spheres' centres' box (no centre of one can then be nearer a centre of
+the other: a real program's runs of moves sweep one area at a time, so most parts are skipped
+without a query). The pairs kept are those that meet exactly, the same set whatever the parts:
+every pair that meets lies within its part's distance. Lengths in mm.
 """
 
 import numpy as np
@@ -41,7 +44,8 @@ class BallParts:
         if (np.diff(move) < 0).any():
             raise ValueError("the balls must come in program order (move non-decreasing)")
         self.bound = bound
-        #: Per part: the balls (ascending indices), their largest radius, the first move, the tree.
+        #: Per part: the balls (ascending indices), their largest radius, the first move, the tree, and the
+        #: lower and upper corners of its centres' bounding box.
         self.parts = []
         if bound.size == 0:
             return
@@ -51,7 +55,9 @@ class BallParts:
             members = np.flatnonzero(grade == value)
             for begin in range(0, members.size, BLOCK):
                 balls = members[begin:begin + BLOCK]
-                self.parts.append((balls, float(bound[balls].max()), move[balls[0]], cKDTree(centre[balls])))
+                at = centre[balls]
+                self.parts.append((balls, float(bound[balls].max()), move[balls[0]], cKDTree(at), at.min(axis=0),
+                                   at.max(axis=0)))
 
     def __len__(self):
         return self.bound.size
@@ -68,10 +74,13 @@ class BallParts:
 
         spheres = cKDTree(centre)
         largest = float(radius.max())
-        for balls, bound, first, tree in self.parts:
+        low, high = centre.min(axis=0), centre.max(axis=0)
+        for balls, bound, first, tree, part_low, part_high in self.parts:
             if first > before:
                 continue
             reach = (largest + bound) * (1.0 + _MARGIN)
+            if np.linalg.norm(np.maximum(np.maximum(part_low - high, low - part_high), 0.0)) > reach:
+                continue
             near = spheres.sparse_distance_matrix(tree, reach, output_type="ndarray")
             i, ball = near["i"].astype(np.intp), balls[near["j"]]
             keep = near["v"] <= radius[i] + self.bound[ball]

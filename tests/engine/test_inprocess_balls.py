@@ -139,3 +139,22 @@ def test_apart_with_rise_drops_only_pairs_no_piece_reaches():
     enter, leave = line_hull_interval(a[seg], direction, *pieces.hulls("piece", piece))
     overlap = np.minimum(leave, length) - np.maximum(enter, 0.0)
     assert not (overlap > 0.0).any()
+
+
+def test_meeting_skips_far_parts_and_finds_every_pair():
+    """Balls laid out as a program lays them, one area after another (each part's balls in a 10 mm square of its
+    own): the spheres near one area meet the balls there only, and the parts whose boxes lie beyond reach are
+    skipped; the pairs are still every pair that meets (brute force)."""
+    rng = np.random.default_rng(11)
+    n = 6 * BLOCK
+    area = np.repeat(np.arange(6), BLOCK)
+    balls = rng.uniform(0.0, 10.0, (n, 3)) + np.stack([30.0 * area, np.zeros(n), np.zeros(n)], axis=1)
+    bound = rng.uniform(1.5, 2.0, n)
+    move = np.arange(n)
+    parts = BallParts(balls, bound, move)
+    centre = rng.uniform(0.0, 10.0, (200, 3)) + np.array([60.0, 0.0, 0.0])
+    centre[:20, 0] = 70.0 + rng.uniform(0.0, 4.0, 20)  # some between two areas
+    radius = rng.uniform(0.5, 3.0, 200)
+    i, ball = parts.meeting(centre, radius, 10 ** 9)
+    assert set(zip(i.tolist(), ball.tolist())) == brute_pairs(centre, radius, 10 ** 9, balls, bound, move)
+    assert set(area[ball].tolist()) == {2}

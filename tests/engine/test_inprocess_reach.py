@@ -48,20 +48,24 @@ def ends(intervals):
     return lep, uep
 
 
-def against_full(program, rows, fixed=False, tolerance=0.05):
-    """The engine at program `rows` (1° apart) against the full computation; returns changed (m,)."""
+def against_full(program, rows, fixed=False, tolerance=0.05, levels=(True, False)):
+    """The engine at program `rows` (1° apart) against the full computation, with the program's z levels in
+    plan view and without (every move to the general search: `levels`); returns changed (m,)."""
     d = program.as_dict()
     origins, directions = edge_lines(d, rows, PHI, fixed)
     flute = d["flute"][rows].max()
     stock_iv = inside_intervals(staircase(), origins, directions, flute)
-    pieces = swept_pieces(program.moves(), tolerance)
-    got, changed = inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)
-    want = full_computation(stock_iv, pieces, rows, origins, directions, PHI.size)
-    np.testing.assert_allclose(got.length, want.length, rtol=0, atol=SAME)
-    for mine, theirs in zip(ends(got), ends(want)):
-        np.testing.assert_allclose(mine, theirs, rtol=0, atol=SAME)
-    lost = (stock_iv.length - want.length).reshape(rows.size, PHI.size).max(axis=1)
-    assert np.array_equal(changed, lost > SAME)
+    want = None
+    for plan in levels:
+        pieces = swept_pieces(program.moves(), tolerance, levels=plan)
+        got, changed = inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)
+        if want is None:
+            want = full_computation(stock_iv, pieces, rows, origins, directions, PHI.size)
+        np.testing.assert_allclose(got.length, want.length, rtol=0, atol=SAME)
+        for mine, theirs in zip(ends(got), ends(want)):
+            np.testing.assert_allclose(mine, theirs, rtol=0, atol=SAME)
+        lost = (stock_iv.length - want.length).reshape(rows.size, PHI.size).max(axis=1)
+        assert np.array_equal(changed, lost > SAME)
     return changed
 
 

@@ -67,7 +67,7 @@ def intervals_of(program, rows, chunk=None):
     d = program.as_dict()
     origins, directions = edge_lines(d, rows, PHI, True)
     stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
-    pieces = swept_pieces(program.moves())
+    pieces = swept_pieces(program.moves(), levels=False)  # the general search (z levels would skip it)
     if chunk is None:
         return inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)[0]
     parts = []
@@ -112,7 +112,7 @@ def test_waves_against_full(spied, make, rigid):
     d = program.as_dict()
     origins, directions = edge_lines(d, rows, PHI, rigid)
     stock_iv = inside_intervals(staircase(), origins, directions, 12.0)
-    pieces = swept_pieces(program.moves())
+    pieces = swept_pieces(program.moves(), levels=False)  # the general search (z levels would skip it)
     assert pieces.chain_rigid.all() if rigid else not pieces.any_rigid
     got, changed = inprocess_intervals(stock_iv, pieces, rows, origins, directions, PHI.size)
     assert spied["waves"] == 1 and spied["guided"] > spied["astray"] > 0

@@ -1,0 +1,339 @@
+"""The level view of the in-process search: lines along the tool axis against the z levels of a program.
+
+Roughing programs cut most of their material in moves across the tool axis at a few heights: every
+move of a z level of a three-axis or 3+2 program. Such a move of a flat-end mill (axis w, its bottom
+at height z along w, flute length H, radius r) sweeps the stadium of its path in plan (the plane
+across w: the points within r of the path) times z … z + H along w. A line along w whose foot lies
+at plan point P is inside that volume over its whole height range where P lies in the stadium, and
+nowhere else: the question for such a line is a plan question, asked once per level, not once per
+move.
+
+Here the moves are grouped in levels (one axis for the whole program, the most common one; one
+bottom height z and one flute length H per level, at least MIN_MOVES moves). Consecutive pieces of a
+level with one radius make chains of up to CHAIN pieces, each bounded by its chord (first start to
+last end, in plan) and its slack: every piece end lies within the slack of the chord, so the path's
+distance from a point is the chord's within ± slack (the path runs from one end of the chord to the
+other, so every point of the chord is within the slack of it too). Each level gets a grid in plan.
+Per cell: the chain that comes first to hold the whole cell (chord within r − slack − half the
+cell's diagonal of its centre), and the chains that may reach into it (within r + slack + half the
+diagonal), by their first move. A line asks its levels in ascending z, from the lowest whose range
+reaches its material: in the cell of its foot, a chain that holds the cell and ends before the
+line's CL point answers yes; no chain reaching the cell that begins before it answers no; otherwise
+the chords of the chains reaching it are measured, and the pieces of the chains the chords leave in
+doubt (or that run past the CL point). Where the answer is yes the removal is that of one piece's
+hull as the closed form gives it (swept.line_hull_interval, as the general search solves it: the
+same numbers); a line whose material is covered up to its top needs no higher level (they start
+higher and add nothing below). Lengths in mm.
+"""
+
+import numpy as np
+
+from .swept import line_hull_interval, row_dot
+from .tolerances import LENGTH_EPS
+
+#: Moves of one level (axis, z, H) at least for it to get a grid; the others stay with the general search.
+MIN_MOVES = 16
+#: Cells per smallest tool radius of a level along each plan direction.
+CELLS_PER_RADIUS = 2
+#: Pieces per chain at most, and the largest slack of a chain as a share of its radius (a chain that
+#: bends more is cut in quarters, then in single pieces).
+CHAIN = 32
+CHAIN_SLACK = 0.25
+#: Cells of one level's grid at most, and per piece of the level at most (the cells are made larger
+#: beyond either): memory stays within some 16 bytes a cell whatever the levels' extent.
+MAX_CELLS = 1 << 20
+CELLS_PER_PIECE = 64
+#: Margin (mm) of the plan tests: a cell held "whole" is inside by more than this, a move that "may
+#: reach" a cell may be this much beyond it. Far above the rounding of the plan distances and the
+#: closed form's own slack (swept.FEASIBLE_EPS, 1e-9 mm), far below any length that matters.
+MARGIN = 1e-7
+#: A move index larger than any (none).
+_NONE = np.iinfo(np.int64).max
+
+
+def level_moves(moves):
+    """(axis (3,) or None, level (N,) bool): the rows j of a ProgramMoves whose cutting move into j belongs to
+    a level: a flat-end mill (corner radius 0) whose axis is the same at both ends and equal (bit for bit)
+    to the program's most common such axis w, with both ends at the same height along w (the dot products
+    equal bit for bit), in a group of at least MIN_MOVES such moves of the same height and flute length."""
+    n = len(moves)
+    level = np.zeros(n, dtype=bool)
+    j = np.flatnonzero(moves.cutting[1:]) + 1
+    j = j[(moves.axis[j] == moves.axis[j - 1]).all(axis=1) & (moves.corner_radius[j] == 0.0)]
+    if j.size == 0:
+        return None, level
+    axes, inverse, counts = np.unique(moves.axis[j], axis=0, return_inverse=True, return_counts=True)
+    w = axes[np.argmax(counts)]
+    j = j[inverse.reshape(-1) == np.argmax(counts)]
+    ww = np.broadcast_to(w, (j.size, 3))
+    z = row_dot(moves.cl[j], ww)
+    across = z == row_dot(moves.cl[j - 1], ww)
+    j, z = j[across], z[across]
+    if j.size == 0:
+        return None, level
+    _, inverse, counts = np.unique(np.stack([z, moves.flute_length[j]], axis=1), axis=0, return_inverse=True,
+                                   return_counts=True)
+    j = j[counts[inverse.reshape(-1)] >= MIN_MOVES]
+    if j.size == 0:
+        return None, level
+    level[j] = True
+    return w, level
+
+
+def _plan_distance(p, a, b):
+    """Distance (K,) in plan from points p (K, 2) to the segments a … b (K, 2) (a point where a = b)."""
+    d = b - a
+    dd = d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]
+    q = p - a
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = np.where(dd > 0.0, (q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) / np.where(dd > 0.0, dd, 1.0), 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    return np.hypot(q[:, 0] - t * d[:, 0], q[:, 1] - t * d[:, 1])
+
+
+class LevelView:
+    """The level pieces of a SweptPieces (flat-end hulls c0, c1 (P, 3), axis (P, 3), radius, height (P,),
+    move (P,) their program row, non-decreasing), of which those at `index` (K,) ascending form levels
+    about axis w (3,) (level_moves), in chains with a plan grid per level (module docstring)."""
+
+    def __init__(self, c0, c1, axis, radius, height, move, index, w):
+        self.hull = (c0, c1, axis, radius, height)
+        self.move = move
+        self.w = np.asarray(w, dtype=float)
+        # On a coordinate axis the closed form's interval of a line along w inside a level hull is
+        # −a0 … H − a0, a0 = (o − c0)·w, bit for bit (swept.line_hull_interval with u·w = 1, d·w = 0).
+        self.aligned = bool(np.count_nonzero(self.w) == 1)
+        helper = np.eye(3)[int(np.argmin(np.abs(self.w)))]
+        u = np.cross(self.w, helper)
+        self.u = u / np.linalg.norm(u)
+        self.v = np.cross(self.w, self.u)
+        index = np.asarray(index, dtype=np.intp)
+        z = row_dot(c0[index], np.broadcast_to(self.w, (index.size, 3)))
+        keys, level = np.unique(np.stack([z, height[index]], axis=1), axis=0, return_inverse=True)
+        level = level.reshape(-1)
+        self.z, self.h = keys[:, 0], keys[:, 1]
+        count = self.z.size
+        self.first = np.full(count, _NONE)
+        np.minimum.at(self.first, level, move[index])
+        self.a, self.b = self._plan(c0), self._plan(c1)
+        self._chains(index, level, radius)
+        self.origin = np.zeros((count, 2))
+        self.size = np.zeros(count)
+        self.shape = np.zeros((count, 2), dtype=np.int64)
+        self.offset = np.zeros(count + 1, dtype=np.int64)
+        parts = [self._grid(k, np.flatnonzero(self.chain_level == k)) for k in range(count)]
+        self.whole_move = np.concatenate([part[0] for part in parts])
+        self.whole_chain = np.concatenate([part[1] for part in parts])
+        cell = np.concatenate([part[2] + self.offset[k] for k, part in enumerate(parts)])
+        self.entry_chain = np.concatenate([part[3] for part in parts])
+        # Entries sorted by cell, then first move: the chains begun before a CL point are a prefix of its cell's.
+        self.scale = int(move.max()) + 2 if move.size else 2
+        self.key = cell * self.scale + self.chain_first_move[self.entry_chain]
+        self.start = np.searchsorted(cell, np.arange(int(self.offset[-1]) + 1))
+
+    def _plan(self, points):
+        """Plan coordinates (K, 2) of points (K, 3)."""
+        return np.stack([points @ self.u, points @ self.v], axis=1)
+
+    def _chains(self, index, level, radius):
+        """Chains of the level pieces `index` (level (K,) each): runs of consecutive pieces of one level and
+        radius cut in blocks of CHAIN, a block whose slack passes CHAIN_SLACK·r in quarters, then in pieces.
+        Sets chain_piece (the pieces of all chains, chain by chain), chain_start, chain_count, chain_level,
+        chain_a, chain_b (C, 2) the chords, chain_slack, chain_radius, chain_first_move, chain_last_move."""
+        n = index.size
+        new = np.ones(n, dtype=bool)
+        new[1:] = (np.diff(index) != 1) | (level[1:] != level[:-1]) | (radius[index[1:]] != radius[index[:-1]])
+        run = np.cumsum(new) - 1
+        rank = np.arange(n) - np.flatnonzero(new)[run]
+        todo = np.ones(n, dtype=bool)
+        heads, lengths, slacks = [], [], []
+        for size in (CHAIN, CHAIN // 4, 1):
+            at = np.flatnonzero(todo)
+            block = run[at] * (n + 1) + rank[at] // size
+            begin = np.flatnonzero(np.r_[True, block[1:] != block[:-1]])
+            length = np.diff(np.r_[begin, at.size])
+            head = at[begin]
+            slack = self._slack(index, head, length) if size > 1 else np.zeros(head.size)
+            good = slack <= CHAIN_SLACK * radius[index[head]]
+            heads.append(head[good])
+            lengths.append(length[good])
+            slacks.append(slack[good])
+            todo[at] = np.repeat(~good, length)
+            if not todo.any():
+                break
+        head, length, slack = (np.concatenate(part) for part in (heads, lengths, slacks))
+        order = np.argsort(head)
+        head, length = head[order], length[order]
+        self.chain_piece = index
+        self.chain_start, self.chain_count, self.chain_slack = head, length, slack[order]
+        self.chain_level = level[head]
+        first, last = index[head], index[head + length - 1]
+        self.chain_a, self.chain_b = self.a[first], self.b[last]
+        self.chain_radius = radius[first]
+        self.chain_first_move, self.chain_last_move = self.move[first], self.move[last]
+
+    def _slack(self, index, head, length):
+        """(C,) the largest plan distance of the piece ends of the blocks index[head … head + length − 1] from
+        their chords."""
+        owner = np.repeat(np.arange(head.size), length)
+        pos = head[owner] + np.arange(owner.size) - np.repeat(np.cumsum(length) - length, length)
+        piece = index[pos]
+        a, b = self.a[index[head]][owner], self.b[index[head + length - 1]][owner]
+        gap = np.maximum(_plan_distance(self.a[piece], a, b), _plan_distance(self.b[piece], a, b))
+        return np.maximum.reduceat(gap, np.cumsum(length) - length) if gap.size else np.zeros(0)
+
+    def _grid(self, k, chains):
+        """Level k's grid of its chains: (whole move, whole chain) per cell, and the entries (cell, chain)
+        sorted by cell and the chain's first move. Sets the level's origin, cell size, shape and next offset."""
+        a, b = self.chain_a[chains], self.chain_b[chains]
+        reach = self.chain_radius[chains] + self.chain_slack[chains]
+        low = np.minimum(a, b) - reach[:, None]
+        high = np.maximum(a, b) + reach[:, None]
+        origin = low.min(axis=0)
+        size = float(self.chain_radius[chains].min()) / CELLS_PER_RADIUS
+        extent = high.max(axis=0) - origin
+        shape = np.floor(extent / size).astype(np.int64) + 1
+        most = min(MAX_CELLS, max(4096, CELLS_PER_PIECE * int(self.chain_count[chains].sum())))
+        if shape.prod() > most:
+            size *= float(np.sqrt(shape.prod() / most)) * 1.01
+            shape = np.floor(extent / size).astype(np.int64) + 1
+        half = size * np.sqrt(0.5)
+        self.origin[k], self.size[k], self.shape[k] = origin, size, shape
+        self.offset[k + 1] = self.offset[k] + shape.prod()
+        first = np.clip(np.floor((low - half - origin) / size).astype(np.int64), 0, shape - 1)
+        last = np.clip(np.floor((high + half - origin) / size).astype(np.int64), 0, shape - 1)
+        span = last - first + 1
+        count = span[:, 0] * span[:, 1]
+        owner = np.repeat(np.arange(chains.size), count)
+        rank = np.arange(owner.size) - np.repeat(np.cumsum(count) - count, count)
+        ix = first[owner, 0] + rank % span[owner, 0]
+        iy = first[owner, 1] + rank // span[owner, 0]
+        centre = origin + (np.stack([ix, iy], axis=1) + 0.5) * size
+        gap = _plan_distance(centre, a[owner], b[owner]) - self.chain_radius[chains][owner]
+        slack = self.chain_slack[chains][owner]
+        cell = iy * shape[0] + ix
+        chain = chains[owner]
+        whole = gap <= -slack - half - MARGIN
+        cells = int(shape.prod())
+        whole_move = np.full(cells, _NONE)
+        whole_chain = np.full(cells, -1, dtype=np.intp)
+        if whole.any():
+            when = self.chain_last_move[chain[whole]]
+            order = np.lexsort((when, cell[whole]))
+            at, when, which = cell[whole][order], when[order], chain[whole][order]
+            head = np.r_[True, at[1:] != at[:-1]]
+            whole_move[at[head]], whole_chain[at[head]] = when[head], which[head]
+        near = gap <= slack + half + MARGIN
+        order = np.lexsort((self.chain_first_move[chain[near]], cell[near]))
+        return whole_move, whole_chain, cell[near][order], chain[near][order]
+
+    def removals(self, origin, direction, lo, hi, before):
+        """Removal intervals (line (K,), enter, leave (K,) mm) of the lines (origin (L, 3), direction (L, 3) = w)
+        inside the level moves of program row at most before (L,), those that overlap the line's material
+        lo … hi (L,) by more than LENGTH_EPS (as the general search keeps them); one or a few per line and
+        level."""
+        found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
+        if origin.shape[0] == 0 or self.z.size == 0:
+            return found[0]
+        height = origin @ self.w
+        plan = self._plan(origin)
+        tallest = float(self.h.max())
+        level = np.searchsorted(self.z, height + lo - tallest - MARGIN, side="left")
+        live = np.arange(origin.shape[0])
+        while live.size:
+            k = level[live]
+            going = k < self.z.size
+            live, k = live[going], k[going]
+            going = self.z[k] - height[live] <= hi[live] + MARGIN
+            live, k = live[going], k[going]
+            if live.size == 0:
+                break
+            ask = (self.first[k] <= before[live]) & (self.z[k] + self.h[k] - height[live] >= lo[live] - MARGIN)
+            line, enter, leave = self._solved(live[ask], k[ask], origin, direction, plan, before)
+            with np.errstate(invalid="ignore"):
+                hit = (np.minimum(leave, hi[line]) - np.maximum(enter, lo[line])) > LENGTH_EPS
+            found.append((line[hit], enter[hit], leave[hit]))
+            topped = np.zeros(origin.shape[0], dtype=bool)
+            topped[line[hit & (leave >= hi[line])]] = True
+            level[live] += 1
+            live = live[~topped[live]]
+        return tuple(np.concatenate(part) for part in zip(*found))
+
+    def _solved(self, line, k, origin, direction, plan, before):
+        """(line, enter, leave) (K,): each line's interval inside level k (K,) as the closed form gives it for
+        one piece that holds its foot (NaN where none does; every piece within MARGIN of the foot's distance
+        where its nearest lies on its radius up to MARGIN, so that the closed form's own slack decides)."""
+        at = plan[line]
+        cell_xy = np.floor((at - self.origin[k]) / self.size[k][:, None]).astype(np.int64)
+        inside = ((cell_xy >= 0) & (cell_xy < self.shape[k])).all(axis=1)
+        line, k, cell_xy = line[inside], k[inside], cell_xy[inside]
+        cell = self.offset[k] + cell_xy[:, 1] * self.shape[k, 0] + cell_xy[:, 0]
+        whole = self.whole_move[cell] <= before[line]
+        sure = [(line[whole], self.whole_chain[cell[whole]])]
+        line, cell = line[~whole], cell[~whole]
+        stop = np.searchsorted(self.key, cell * self.scale + before[line], side="right")
+        line, chain = _expand(line, self.start[cell], stop - self.start[cell])
+        chain = self.entry_chain[chain]
+        gap = _plan_distance(plan[line], self.chain_a[chain], self.chain_b[chain]) - self.chain_radius[chain]
+        slack = self.chain_slack[chain]
+        held = (gap < -slack - MARGIN) & (self.chain_last_move[chain] <= before[line])
+        sure.append((line[held], chain[held]))
+        doubt = ~held & (gap <= slack + MARGIN)
+        line_sure, chain_sure = (np.concatenate(part) for part in zip(*sure))
+        yes = np.zeros(origin.shape[0], dtype=bool)
+        yes[line_sure] = True
+        doubt &= ~yes[line]
+        # The pieces of the chains in doubt, those before the CL point, by their distance.
+        line, piece = self._pieces(line[doubt], chain[doubt])
+        piece_gap = _plan_distance(plan[line], self.a[piece], self.b[piece]) - self.hull[3][piece]
+        keep = (self.move[piece] <= before[line]) & (piece_gap <= MARGIN)
+        line, piece, piece_gap = line[keep], piece[keep], piece_gap[keep]
+        held = piece_gap < -MARGIN
+        yes[line[held]] = True
+        solve_line, solve_piece = [line[~yes[line]]], [piece[~yes[line]]]
+        # One piece per line held for sure: any of a chain held whole (the nearest, unless on a coordinate axis),
+        # or the first found.
+        first = np.r_[True, line[held][1:] != line[held][:-1]] if held.any() else np.zeros(0, dtype=bool)
+        chosen_line = np.concatenate([line_sure, line[held][first]])
+        chosen_piece = np.concatenate([self.chain_piece[self.chain_start[chain_sure]], piece[held][first]])
+        order = np.unique(chosen_line, return_index=True)[1]
+        chosen_line, chosen_piece = chosen_line[order], chosen_piece[order]
+        if self.aligned:
+            c0, _, _, _, h = self.hull
+            a0 = row_dot(origin[chosen_line] - c0[chosen_piece], np.broadcast_to(self.w, (chosen_line.size, 3)))
+            sure_part = (chosen_line, -a0, h[chosen_piece] - a0)
+        else:
+            chosen_line, chosen_piece = self._nearest(chosen_line, chosen_piece, line_sure, chain_sure, plan)
+            sure_part = (chosen_line, *line_hull_interval(origin[chosen_line], direction[chosen_line],
+                                                           *(part[chosen_piece] for part in self.hull)))
+        line, piece = np.concatenate(solve_line), np.concatenate(solve_piece)
+        enter, leave = line_hull_interval(origin[line], direction[line], *(part[piece] for part in self.hull))
+        return (np.concatenate([sure_part[0], line]), np.concatenate([sure_part[1], enter]),
+                np.concatenate([sure_part[2], leave]))
+
+    def _pieces(self, line, chain):
+        """(line, piece) (K,): every piece of the chains `chain` (n,) for its line (n,)."""
+        line, at = _expand(line, self.chain_start[chain], self.chain_count[chain])
+        return line, self.chain_piece[at]
+
+    def _nearest(self, line, piece, line_sure, chain_sure, plan):
+        """For the lines held whole by a chain (line_sure, chain_sure), their nearest piece of that chain in
+        plan in place of its first (line, piece (K,) one per line, line ascending)."""
+        if line_sure.size == 0:
+            return line, piece
+        owner, candidate = self._pieces(np.arange(line_sure.size), chain_sure)
+        gap = _plan_distance(plan[line_sure[owner]], self.a[candidate], self.b[candidate])
+        order = np.lexsort((gap, owner))
+        head = order[np.r_[True, owner[order][1:] != owner[order][:-1]]]
+        nearest = np.full(plan.shape[0], -1, dtype=np.intp)
+        nearest[line_sure[owner[head]]] = candidate[head]
+        return line, np.where(nearest[line] >= 0, nearest[line], piece)
+
+
+def _expand(owner, start, count):
+    """(owner, position) (Σ count,): for each owner (n,), the positions start … start + count − 1."""
+    count = np.maximum(count, 0)
+    total = int(count.sum())
+    mine = np.repeat(np.arange(owner.size), count)
+    position = np.repeat(start, count) + np.arange(total) - np.repeat(np.cumsum(count) - count, count)
+    return owner[mine], position
