@@ -76,6 +76,8 @@ _SEED_EVERY = 16
 _SOLVED = 4
 #: Spheres per KD query of _sphere_chains (bounds the memory of the pairs it finds).
 _SPHERE_BLOCK = 1024
+#: Lines per KD query of _near_rest (their material's spheres meet few balls: a program's few moves off its levels).
+_REST_BLOCK = 4096
 
 
 def _float_array(name, value, shape, copy=True):
@@ -648,24 +650,33 @@ def _level_removals(pieces, program_index, line, lo, hi, origins, directions, p)
         if pieces.rest.move.size and not dead.all():
             alive = np.flatnonzero(~dead)
             alive = alive[_near_rest(pieces.rest, _rows(origins, at[alive]), _rows(directions, at[alive]),
-                                     lo[mine][alive], hi[mine][alive], program_index[at[alive] // p] - 1)]
+                                     envelope[0, alive], envelope[1, alive], program_index[at[alive] // p] - 1)]
             parts.append(_searched_removals(pieces.rest, program_index, at[alive], lo[mine][alive], hi[mine][alive],
                                             origins, directions, p))
     return tuple(np.concatenate(part) for part in zip(*parts))
 
 
 def _near_rest(rest, origin, direction, lo, hi, before):
-    """(L,) bool: the lines' material lo … hi (L,) along origin + l·direction (L, 3) may meet a chain of `rest`
-    (a SweptPieces) that begins by program row before (L,): the segment's bounding sphere meets a ball of the
-    chain (the balls hold every point of their chains' hulls). The others need no search among them."""
+    """(L,) bool: the lines' material, within lo … hi (L,) along origin + l·direction (L, 3), may meet a chain of
+    `rest` (a SweptPieces) that begins by program row before (L,): the segment's bounding sphere meets a ball of
+    the chain (the balls hold every point of their chains' hulls), and the segment is not surely apart from the
+    chain's hull (the sure-miss test of the search, touches included). The others need no search among them."""
     near = np.zeros(origin.shape[0], dtype=bool)
-    for begin in range(0, origin.shape[0], _SPHERE_BLOCK):
-        part = slice(begin, begin + _SPHERE_BLOCK)
+    chains = rest.chain_first.size
+    for begin in range(0, origin.shape[0], _REST_BLOCK):
+        part = slice(begin, begin + _REST_BLOCK)
         half = 0.5 * (hi[part] - lo[part])
         centre = origin[part] + (lo[part] + half)[:, None] * direction[part]
         i, ball = rest.tree.meeting(centre, half, int(before[part].max()))
-        i = i[rest.chain_move[rest.ball_chain[ball]] <= before[part][i]]
-        near[begin + i] = True
+        pair = _distinct(i * chains + rest.ball_chain[ball], half.size * chains)
+        i, k = pair // chains, pair % chains
+        keep = rest.chain_move[k] <= before[part][i]
+        i, k = i[keep] + begin, k[keep]
+        a = origin[i] + lo[i][:, None] * direction[i]
+        b = origin[i] + hi[i][:, None] * direction[i]
+        keep = ~_apart(a, b, *rest.hulls("chain", k), rest.chain_slack[k], rest.chain_lean[k], touch=True,
+                       rise=rest.chain_rise[k])
+        near[i[keep]] = True
     return near
 
 

@@ -132,7 +132,13 @@ class LevelView:
         self.start = np.searchsorted(cell, np.arange(int(self.offset[-1]) + 1))
 
     def _plan(self, points):
-        """Plan coordinates (K, 2) of points (K, 3)."""
+        """Plan coordinates (K, 2) of points (K, 3) (on a coordinate axis, two of their coordinates: the same
+        numbers as the products with u and v, whose other components are 0)."""
+        if self.aligned:
+            columns = np.flatnonzero(self.w == 0.0)
+            plan = points[:, columns] * np.array([self.u[columns[0]] + self.v[columns[0]],
+                                                  self.u[columns[1]] + self.v[columns[1]]])
+            return plan if abs(self.u[columns[0]]) == 1.0 else plan[:, ::-1]
         return np.stack([points @ self.u, points @ self.v], axis=1)
 
     def _chains(self, index, level, radius):
@@ -171,6 +177,20 @@ class LevelView:
         self.chain_a, self.chain_b = self.a[first], self.b[last]
         self.chain_radius = radius[first]
         self.chain_first_move, self.chain_last_move = self.move[first], self.move[last]
+        # Each chain's quarters (runs of CHAIN // 4 of its pieces, the chain itself if no longer), bounded alike:
+        # a chain in doubt hands over its quarters, a quarter in doubt its pieces.
+        quarters = -(-length // (CHAIN // 4))
+        owner, rank = _expand(np.arange(head.size), np.zeros(head.size, dtype=np.intp), quarters)
+        self.chain_quarter = np.cumsum(quarters) - quarters
+        self.chain_quarters = quarters
+        self.quarter_start = head[owner] + rank * (CHAIN // 4)
+        self.quarter_count = np.minimum(head[owner] + length[owner] - self.quarter_start, CHAIN // 4)
+        self.quarter_slack = self._slack(index, self.quarter_start, self.quarter_count)
+        self.quarter_a = self.a[index[self.quarter_start]]
+        self.quarter_b = self.b[index[self.quarter_start + self.quarter_count - 1]]
+        self.quarter_radius = radius[index[self.quarter_start]]
+        self.quarter_first_move = self.move[index[self.quarter_start]]
+        self.quarter_last_move = self.move[index[self.quarter_start + self.quarter_count - 1]]
 
     def _slack(self, index, head, length):
         """(C,) the largest plan distance of the piece ends of the blocks index[head … head + length − 1] from
@@ -269,7 +289,8 @@ class LevelView:
         line, k, cell_xy = line[inside], k[inside], cell_xy[inside]
         cell = self.offset[k] + cell_xy[:, 1] * self.shape[k, 0] + cell_xy[:, 0]
         whole = self.whole_move[cell] <= before[line]
-        sure = [(line[whole], self.whole_chain[cell[whole]])]
+        chain = self.whole_chain[cell[whole]]
+        sure = [(line[whole], self.chain_start[chain], self.chain_count[chain])]
         line, cell = line[~whole], cell[~whole]
         stop = np.searchsorted(self.key, cell * self.scale + before[line], side="right")
         line, chain = _expand(line, self.start[cell], stop - self.start[cell])
@@ -277,57 +298,60 @@ class LevelView:
         gap = _plan_distance(plan[line], self.chain_a[chain], self.chain_b[chain]) - self.chain_radius[chain]
         slack = self.chain_slack[chain]
         held = (gap < -slack - MARGIN) & (self.chain_last_move[chain] <= before[line])
-        sure.append((line[held], chain[held]))
-        doubt = ~held & (gap <= slack + MARGIN)
-        line_sure, chain_sure = (np.concatenate(part) for part in zip(*sure))
+        sure.append((line[held], self.chain_start[chain[held]], self.chain_count[chain[held]]))
         yes = np.zeros(origin.shape[0], dtype=bool)
-        yes[line_sure] = True
-        doubt &= ~yes[line]
-        # The pieces of the chains in doubt, those before the CL point, by their distance.
-        line, piece = self._pieces(line[doubt], chain[doubt])
+        yes[line[held]] = True
+        yes[sure[0][0]] = True
+        doubt = ~held & (gap <= slack + MARGIN) & ~yes[line]
+        # The quarters of the chains in doubt, those begun before the CL point; then the pieces of the quarters
+        # in doubt, those before it.
+        line, quarter = _expand(line[doubt], self.chain_quarter[chain[doubt]], self.chain_quarters[chain[doubt]])
+        begun = self.quarter_first_move[quarter] <= before[line]
+        line, quarter = line[begun], quarter[begun]
+        gap = _plan_distance(plan[line], self.quarter_a[quarter], self.quarter_b[quarter])
+        gap -= self.quarter_radius[quarter]
+        slack = self.quarter_slack[quarter]
+        held = (gap < -slack - MARGIN) & (self.quarter_last_move[quarter] <= before[line])
+        sure.append((line[held], self.quarter_start[quarter[held]], self.quarter_count[quarter[held]]))
+        yes[line[held]] = True
+        doubt = ~held & (gap <= slack + MARGIN) & ~yes[line]
+        line, at = _expand(line[doubt], self.quarter_start[quarter[doubt]], self.quarter_count[quarter[doubt]])
+        piece = self.chain_piece[at]
         piece_gap = _plan_distance(plan[line], self.a[piece], self.b[piece]) - self.hull[3][piece]
         keep = (self.move[piece] <= before[line]) & (piece_gap <= MARGIN)
-        line, piece, piece_gap = line[keep], piece[keep], piece_gap[keep]
+        line, at, piece_gap = line[keep], at[keep], piece_gap[keep]
         held = piece_gap < -MARGIN
+        sure.append((line[held], at[held], np.ones(int(held.sum()), dtype=np.intp)))
         yes[line[held]] = True
-        solve_line, solve_piece = [line[~yes[line]]], [piece[~yes[line]]]
-        # One piece per line held for sure: any of a chain held whole (the nearest, unless on a coordinate axis),
-        # or the first found.
-        first = np.r_[True, line[held][1:] != line[held][:-1]] if held.any() else np.zeros(0, dtype=bool)
-        chosen_line = np.concatenate([line_sure, line[held][first]])
-        chosen_piece = np.concatenate([self.chain_piece[self.chain_start[chain_sure]], piece[held][first]])
-        order = np.unique(chosen_line, return_index=True)[1]
-        chosen_line, chosen_piece = chosen_line[order], chosen_piece[order]
+        solve_line, solve_piece = line[~yes[line]], self.chain_piece[at[~yes[line]]]
+        # One piece per line held for sure: the first of its run (any piece of the level gives the same numbers
+        # on a coordinate axis), else the run's piece nearest to it.
+        sure_line, sure_start, sure_count = (np.concatenate(part) for part in zip(*sure))
+        first = np.unique(sure_line, return_index=True)[1]
+        sure_line, sure_start, sure_count = sure_line[first], sure_start[first], sure_count[first]
         if self.aligned:
+            chosen = self.chain_piece[sure_start]
             c0, _, _, _, h = self.hull
-            a0 = row_dot(origin[chosen_line] - c0[chosen_piece], np.broadcast_to(self.w, (chosen_line.size, 3)))
-            sure_part = (chosen_line, -a0, h[chosen_piece] - a0)
+            a0 = row_dot(origin[sure_line] - c0[chosen], np.broadcast_to(self.w, (sure_line.size, 3)))
+            sure_part = (sure_line, -a0, h[chosen] - a0)
         else:
-            chosen_line, chosen_piece = self._nearest(chosen_line, chosen_piece, line_sure, chain_sure, plan)
-            sure_part = (chosen_line, *line_hull_interval(origin[chosen_line], direction[chosen_line],
-                                                           *(part[chosen_piece] for part in self.hull)))
-        line, piece = np.concatenate(solve_line), np.concatenate(solve_piece)
-        enter, leave = line_hull_interval(origin[line], direction[line], *(part[piece] for part in self.hull))
-        return (np.concatenate([sure_part[0], line]), np.concatenate([sure_part[1], enter]),
+            chosen = self._nearest(sure_line, sure_start, sure_count, plan)
+            sure_part = (sure_line, *line_hull_interval(origin[sure_line], direction[sure_line],
+                                                         *(part[chosen] for part in self.hull)))
+        enter, leave = line_hull_interval(origin[solve_line], direction[solve_line],
+                                          *(part[solve_piece] for part in self.hull))
+        return (np.concatenate([sure_part[0], solve_line]), np.concatenate([sure_part[1], enter]),
                 np.concatenate([sure_part[2], leave]))
 
-    def _pieces(self, line, chain):
-        """(line, piece) (K,): every piece of the chains `chain` (n,) for its line (n,)."""
-        line, at = _expand(line, self.chain_start[chain], self.chain_count[chain])
-        return line, self.chain_piece[at]
-
-    def _nearest(self, line, piece, line_sure, chain_sure, plan):
-        """For the lines held whole by a chain (line_sure, chain_sure), their nearest piece of that chain in
-        plan in place of its first (line, piece (K,) one per line, line ascending)."""
-        if line_sure.size == 0:
-            return line, piece
-        owner, candidate = self._pieces(np.arange(line_sure.size), chain_sure)
-        gap = _plan_distance(plan[line_sure[owner]], self.a[candidate], self.b[candidate])
+    def _nearest(self, line, start, count, plan):
+        """(K,) for each line (K,, distinct) the piece nearest to its foot in plan of its run of pieces
+        chain_piece[start … start + count − 1]."""
+        owner, at = _expand(np.arange(line.size), start, count)
+        candidate = self.chain_piece[at]
+        gap = _plan_distance(plan[line[owner]], self.a[candidate], self.b[candidate])
         order = np.lexsort((gap, owner))
-        head = order[np.r_[True, owner[order][1:] != owner[order][:-1]]]
-        nearest = np.full(plan.shape[0], -1, dtype=np.intp)
-        nearest[line_sure[owner[head]]] = candidate[head]
-        return line, np.where(nearest[line] >= 0, nearest[line], piece)
+        head = order[np.r_[True, owner[order][1:] != owner[order][:-1]]] if order.size else order
+        return candidate[head]
 
 
 def _expand(owner, start, count):
