@@ -139,7 +139,8 @@ class LevelView:
             plan = points[:, columns] * np.array([self.u[columns[0]] + self.v[columns[0]],
                                                   self.u[columns[1]] + self.v[columns[1]]])
             return plan if abs(self.u[columns[0]]) == 1.0 else plan[:, ::-1]
-        return np.stack([points @ self.u, points @ self.v], axis=1)
+        return np.stack([row_dot(points, np.broadcast_to(self.u, points.shape)),
+                         row_dot(points, np.broadcast_to(self.v, points.shape))], axis=1)
 
     def _chains(self, index, level, radius):
         """Chains of the level pieces `index` (level (K,) each): runs of consecutive pieces of one level and
@@ -255,7 +256,7 @@ class LevelView:
         found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
         if origin.shape[0] == 0 or self.z.size == 0:
             return found[0]
-        height = origin @ self.w
+        height = row_dot(origin, np.broadcast_to(self.w, origin.shape))  # not a matrix product: no BLAS threads
         plan = self._plan(origin)
         tallest = float(self.h.max())
         level = np.searchsorted(self.z, height + lo - tallest - MARGIN, side="left")
