@@ -39,10 +39,12 @@ CELLS_PER_RADIUS = 2
 #: bends more is cut in quarters, then in single pieces).
 CHAIN = 32
 CHAIN_SLACK = 0.25
-#: Cells of one level's grid at most, and per piece of the level at most (the cells are made larger
-#: beyond either): memory stays within some 16 bytes a cell whatever the levels' extent.
+#: Cells of one level's grid at most, and per piece of the level at most (at least MIN_CELLS; the cells
+#: are made larger beyond either): some 24 bytes a cell, so at most some 400 bytes a level piece whatever
+#: the levels' extent.
 MAX_CELLS = 1 << 20
-CELLS_PER_PIECE = 64
+CELLS_PER_PIECE = 16
+MIN_CELLS = 256
 #: Margin (mm) of the plan tests: a cell held "whole" is inside by more than this, a move that "may
 #: reach" a cell may be this much beyond it. Far above the rounding of the plan distances and the
 #: closed form's own slack (swept.FEASIBLE_EPS, 1e-9 mm), far below any length that matters.
@@ -214,9 +216,11 @@ class LevelView:
         size = float(self.chain_radius[chains].min()) / CELLS_PER_RADIUS
         extent = high.max(axis=0) - origin
         shape = np.floor(extent / size).astype(np.int64) + 1
-        most = min(MAX_CELLS, max(4096, CELLS_PER_PIECE * int(self.chain_count[chains].sum())))
+        most = min(MAX_CELLS, max(MIN_CELLS, CELLS_PER_PIECE * int(self.chain_count[chains].sum())))
         if shape.prod() > most:
-            size *= float(np.sqrt(shape.prod() / most)) * 1.01
+            size *= float(np.sqrt(shape.prod() / most))
+        while shape.prod() > most:  # the whole cells at the edges: a few steps at most
+            size *= 1.1
             shape = np.floor(extent / size).astype(np.int64) + 1
         half = size * np.sqrt(0.5)
         self.origin[k], self.size[k], self.shape[k] = origin, size, shape

@@ -13,7 +13,7 @@ from the top) each fail the reference tests here.
 import numpy as np
 
 from abm_workbench.engine.inprocess import swept_pieces, subtract, removal_intervals
-from abm_workbench.engine.inprocess_levels import MAX_CELLS, MIN_MOVES, LevelView, level_moves
+from abm_workbench.engine.inprocess_levels import CELLS_PER_PIECE, MIN_CELLS, MIN_MOVES, LevelView, level_moves
 from abm_workbench.engine.engagement import inside_intervals
 
 from .test_inprocess import PHI, Program, check, edge_lines, staircase, straight
@@ -147,10 +147,22 @@ def test_tilted_levels_against_the_reference():
 
 
 def test_grid_stays_bounded_on_a_long_level():
-    """A level 2 m long cut by a D 1 mm tool: its grid is coarsened to the cell bound, not 8 million cells."""
+    """A level 2 m long cut by a D 1 mm tool: its grid is coarsened to the cells allowed per piece (cells of r/2
+    would be 8 million), and still answers as the general search does."""
     program = Program()
-    program.add_pass(straight(0.0, 2000.0, 0.0, 5.0, 40), 0.5, 10.0)
-    program.add_pass(straight(2000.0, 0.0, 0.6, 5.0, 40), 0.5, 10.0)
-    view = swept_pieces(program.moves()).levels
+    program.add_pass(straight(-1000.0, 1000.0, 0.0, 5.0, 41), 0.5, 10.0)
+    rows = program.add_pass(straight(1000.0, -1000.0, 0.6, 5.0, 41), 0.5, 10.0)[19:21]  # x 50 and 0: in the stock
+    pieces = swept_pieces(program.moves())
+    view = pieces.levels
     assert isinstance(view, LevelView)
-    assert int(view.offset[-1]) <= MAX_CELLS
+    bound = max(MIN_CELLS, CELLS_PER_PIECE * view.chain_piece.size)
+    assert int(view.offset[-1]) <= bound < 8e6
+    d = program.as_dict()
+    origins, directions = edge_lines(d, rows, PHI)
+    stock = inside_intervals(staircase(), origins, directions, 10.0)
+    first = np.flatnonzero(np.r_[True, stock.rows[1:] != stock.rows[:-1]])
+    last = np.r_[first[1:], stock.rows.size] - 1
+    args = (rows, stock.rows[first], stock.start[first], stock.end[last], origins, directions, PHI.size)
+    got = [subtract(stock, *removal_intervals(p, *args)) for p in (pieces, swept_pieces(program.moves(), levels=False))]
+    np.testing.assert_allclose(got[0].length, got[1].length, rtol=0, atol=1e-9)
+    assert (got[0].length < stock.length).any()
