@@ -117,6 +117,13 @@ class LevelView:
         count = self.z.size
         self.first = np.full(count, _NONE)
         np.minimum.at(self.first, level, move[index])
+        # The smallest first move of every run of 2^j levels from each (a sparse table): a line skips the levels
+        # begun after its CL point (deeper levels of a program cut from the top down) in log2 steps.
+        self.table = [self.first]
+        while (1 << len(self.table)) <= count:
+            half = 1 << (len(self.table) - 1)
+            last = self.table[-1]
+            self.table.append(np.minimum(last, np.r_[last[half:], np.full(half, _NONE)]))
         self.a, self.b = self._plan(c0), self._plan(c1)
         self._chains(index, level, radius)
         self.origin = np.zeros((count, 2))
@@ -263,7 +270,7 @@ class LevelView:
         height = row_dot(origin, np.broadcast_to(self.w, origin.shape))  # not a matrix product: no BLAS threads
         plan = self._plan(origin)
         tallest = float(self.h.max())
-        level = np.searchsorted(self.z, height + lo - tallest - MARGIN, side="left")
+        level = self._begun(np.searchsorted(self.z, height + lo - tallest - MARGIN, side="left"), before)
         live = np.arange(origin.shape[0])
         while live.size:
             k = level[live]
@@ -280,9 +287,18 @@ class LevelView:
             found.append((line[hit], enter[hit], leave[hit]))
             topped = np.zeros(origin.shape[0], dtype=bool)
             topped[line[hit & (leave >= hi[line])]] = True
-            level[live] += 1
             live = live[~topped[live]]
+            level[live] = self._begun(level[live] + 1, before[live])
         return tuple(np.concatenate(part) for part in zip(*found))
+
+    def _begun(self, k, before):
+        """(K,) for each level index k (K,) the first level at or after it begun by program row before (K,)
+        (first ≤ before), or the number of levels where none is."""
+        levels = self.z.size
+        for j in reversed(range(len(self.table))):
+            skip = (k < levels) & (self.table[j][np.minimum(k, levels - 1)] > before)
+            k = np.where(skip, k + (1 << j), k)
+        return np.minimum(k, levels)
 
     def _solved(self, line, k, origin, direction, plan, before):
         """(line, enter, leave) (K,): each line's interval inside level k (K,) as the closed form gives it for

@@ -166,3 +166,17 @@ def test_grid_stays_bounded_on_a_long_level():
     got = [subtract(stock, *removal_intervals(p, *args)) for p in (pieces, swept_pieces(program.moves(), levels=False))]
     np.testing.assert_allclose(got[0].length, got[1].length, rtol=0, atol=1e-9)
     assert (got[0].length < stock.length).any()
+
+
+def test_levels_begun_before_a_cl_point():
+    """Levels cut out of height order (5, 3, 4, 2, 6 mm): for any level index and program row, the first level at
+    or after it begun by that row, against a loop over the levels."""
+    program = Program()
+    for z in (5.0, 3.0, 4.0, 2.0, 6.0):
+        program.add_pass(straight(10.0, 50.0, 0.0, z, MIN_MOVES + 1), 3.0, 10.0)
+    view = swept_pieces(program.moves()).levels
+    assert view.z.tolist() == [2.0, 3.0, 4.0, 5.0, 6.0]
+    k, before = np.meshgrid(np.arange(6), np.arange(-1, len(program.rows["cl"]) + 1))
+    k, before = k.ravel(), before.ravel()
+    want = [next((j for j in range(a, 5) if view.first[j] <= b), 5) for a, b in zip(k, before)]
+    np.testing.assert_array_equal(view._begun(k, before), want)
