@@ -615,7 +615,8 @@ def removal_intervals(pieces: SweptPieces, program_index, line, lo, hi, origins,
 
     Where many earlier moves come near the CL points, the lines are searched in waves: every
     _SEED_EVERY-th CL point in full, each other one first guided by the CL point of an earlier
-    wave nearest before it (_waves_searched).
+    wave nearest before it (_waves_searched). Where the program has z levels (pieces.levels), the lines
+    along their axis meet them in plan (inprocess_levels) and the other moves in that search.
     """
     line = np.asarray(line, dtype=np.intp).reshape(-1)
     if line.size == 0 or pieces.move.size == 0:

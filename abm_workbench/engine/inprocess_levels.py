@@ -19,8 +19,9 @@ cell's diagonal of its centre), and the chains that may reach into it (within r 
 diagonal), by their first move. A line asks its levels in ascending z, from the lowest whose range
 reaches its material: in the cell of its foot, a chain that holds the cell and ends before the
 line's CL point answers yes; no chain reaching the cell that begins before it answers no; otherwise
-the chords of the chains reaching it are measured, and the pieces of the chains the chords leave in
-doubt (or that run past the CL point). Where the answer is yes the removal is that of one piece's
+the chords of the chains reaching it are measured, then those of the quarters (runs of CHAIN // 4
+pieces) of the chains the chords leave in doubt (or that run past the CL point), then the pieces of
+the quarters still in doubt. Where the answer is yes the removal is that of one piece's
 hull as the closed form gives it (swept.line_hull_interval, as the general search solves it: the
 same numbers); a line whose material is covered up to its top needs no higher level (they start
 higher and add nothing below). Lengths in mm.
