@@ -223,13 +223,14 @@ class LevelView:
         origin = low.min(axis=0)
         size = float(self.chain_radius[chains].min()) / CELLS_PER_RADIUS
         extent = high.max(axis=0) - origin
-        shape = np.floor(extent / size).astype(np.int64) + 1
         most = min(MAX_CELLS, max(MIN_CELLS, CELLS_PER_PIECE * int(self.chain_count[chains].sum())))
-        if shape.prod() > most:
-            size *= float(np.sqrt(shape.prod() / most))
-        while shape.prod() > most:  # the whole cells at the edges: a few steps at most
+        # Counted in floating point (a tiny radius over a wide level would overflow integers).
+        count = float(np.prod(np.floor(extent / size) + 1.0))
+        if count > most:
+            size *= max(float(np.sqrt(count / most)), 1.0)
+        while float(np.prod(np.floor(extent / size) + 1.0)) > most:  # whole cells at the edges: a few steps
             size *= 1.1
-            shape = np.floor(extent / size).astype(np.int64) + 1
+        shape = np.floor(extent / size).astype(np.int64) + 1
         half = size * np.sqrt(0.5)
         self.origin[k], self.size[k], self.shape[k] = origin, size, shape
         self.offset[k + 1] = self.offset[k] + shape.prod()

@@ -180,3 +180,4 @@ def test_levels_begun_before_a_cl_point():
     k, before = k.ravel(), before.ravel()
     want = [next((j for j in range(a, 5) if view.first[j] <= b), 5) for a, b in zip(k, before)]
     np.testing.assert_array_equal(view._begun(k, before), want)
+
