@@ -361,8 +361,10 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True):
     view = rest = None
     w, level = level_moves(moves) if levels else (None, None)
     if w is not None:
-        view = LevelView(c0, c1, axis, radius[move], height[move], j[move], np.flatnonzero(level[j[move]]), w)
-        others = ProgramMoves(moves.cl, moves.axis, moves.cutting & ~level, moves.radius, moves.flute_length,
+        of_piece = level[j[move]]
+        index = np.flatnonzero(of_piece >= 0)
+        view = LevelView(c0, c1, axis, radius[move], height[move], j[move], index, of_piece[index], w)
+        others = ProgramMoves(moves.cl, moves.axis, moves.cutting & (level < 0), moves.radius, moves.flute_length,
                               moves.line, moves.corner_radius)
         rest = swept_pieces(others, tolerance, levels=False)
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,

@@ -34,6 +34,11 @@ from .tolerances import LENGTH_EPS
 
 #: Moves of one level (axis, z, H) at least for it to get a grid; the others stay with the general search.
 MIN_MOVES = 16
+#: Heights (mm) along the axis this near count as one: a move across the axis within it, a level's moves
+#: within it of the next; a level spans at most LEVEL_SPAN (else its moves stay with the general search).
+#: Both far above the rounding of points turned from a file's frame (some 10⁻¹² mm), far below MARGIN.
+LEVEL_TOLERANCE = 1e-9
+LEVEL_SPAN = 1e-8
 #: Cells per smallest tool radius of a level along each plan direction.
 CELLS_PER_RADIUS = 2
 #: Pieces per chain at most, and the largest slack of a chain as a share of its radius (a chain that
@@ -55,12 +60,14 @@ _NONE = np.iinfo(np.int64).max
 
 
 def level_moves(moves):
-    """(axis (3,) or None, level (N,) bool): the rows j of a ProgramMoves whose cutting move into j belongs to
-    a level: a flat-end mill (corner radius 0) whose axis is the same at both ends and equal (bit for bit)
-    to the program's most common such axis w, with both ends at the same height along w (the dot products
-    equal bit for bit), in a group of at least MIN_MOVES such moves of the same height and flute length."""
+    """(axis (3,) or None, level (N,) int): for the rows j of a ProgramMoves, the level (0, 1, …; −1 none) of the
+    cutting move into j: a flat-end mill (corner radius 0) whose axis is the same at both ends and equal (bit for
+    bit) to the program's most common such axis w, with both ends at the same height along w to LEVEL_TOLERANCE
+    (a 3+2 program's points, turned from the file's frame, round differently); levels by flute length and
+    height (heights LEVEL_TOLERANCE apart or nearer together, a level spanning at most LEVEL_SPAN), of at
+    least MIN_MOVES moves."""
     n = len(moves)
-    level = np.zeros(n, dtype=bool)
+    level = np.full(n, -1, dtype=np.intp)
     j = np.flatnonzero(moves.cutting[1:]) + 1
     j = j[(moves.axis[j] == moves.axis[j - 1]).all(axis=1) & (moves.corner_radius[j] == 0.0)]
     if j.size == 0:
@@ -69,17 +76,25 @@ def level_moves(moves):
     w = axes[np.argmax(counts)]
     j = j[inverse.reshape(-1) == np.argmax(counts)]
     ww = np.broadcast_to(w, (j.size, 3))
-    z = row_dot(moves.cl[j], ww)
-    across = z == row_dot(moves.cl[j - 1], ww)
-    j, z = j[across], z[across]
+    z0, z1 = row_dot(moves.cl[j - 1], ww), row_dot(moves.cl[j], ww)
+    across = np.abs(z1 - z0) <= LEVEL_TOLERANCE
+    j, low, high = j[across], np.minimum(z0, z1)[across], np.maximum(z0, z1)[across]
+    flute = moves.flute_length[j]
+    order = np.lexsort((low, flute))
+    j, low, high, flute = j[order], low[order], high[order], flute[order]
+    new = np.ones(j.size, dtype=bool)
+    new[1:] = (flute[1:] != flute[:-1]) | (low[1:] - low[:-1] > LEVEL_TOLERANCE)
+    group = np.cumsum(new) - 1
     if j.size == 0:
         return None, level
-    _, inverse, counts = np.unique(np.stack([z, moves.flute_length[j]], axis=1), axis=0, return_inverse=True,
-                                   return_counts=True)
-    j = j[counts[inverse.reshape(-1)] >= MIN_MOVES]
-    if j.size == 0:
+    size = np.bincount(group)
+    span = np.maximum.reduceat(high, np.flatnonzero(new)) - low[new]
+    keep = (size >= MIN_MOVES) & (span <= LEVEL_SPAN)
+    if not keep.any():
         return None, level
-    level[j] = True
+    number = np.cumsum(keep) - 1
+    mine = keep[group]
+    level[j[mine]] = number[group[mine]]
     return w, level
 
 
@@ -99,7 +114,7 @@ class LevelView:
     move (P,) their program row, non-decreasing), of which those at `index` (K,) ascending form levels
     about axis w (3,) (level_moves), in chains with a plan grid per level (module docstring)."""
 
-    def __init__(self, c0, c1, axis, radius, height, move, index, w):
+    def __init__(self, c0, c1, axis, radius, height, move, index, level, w):
         self.hull = (c0, c1, axis, radius, height)
         self.move = move
         self.w = np.asarray(w, dtype=float)
@@ -111,11 +126,21 @@ class LevelView:
         self.u = u / np.linalg.norm(u)
         self.v = np.cross(self.w, self.u)
         index = np.asarray(index, dtype=np.intp)
-        z = row_dot(c0[index], np.broadcast_to(self.w, (index.size, 3)))
-        keys, level = np.unique(np.stack([z, height[index]], axis=1), axis=0, return_inverse=True)
-        level = level.reshape(-1)
-        self.z, self.h = keys[:, 0], keys[:, 1]
-        count = self.z.size
+        ww = np.broadcast_to(self.w, (index.size, 3))
+        z0, z1 = row_dot(c0[index], ww), row_dot(c1[index], ww)
+        # Levels in ascending height: each its lowest piece end, its flute length, and whether every piece end
+        # lies at that height bit for bit (exact).
+        count = int(level.max()) + 1 if level.size else 0
+        self.z = np.full(count, np.inf)
+        np.minimum.at(self.z, level, np.minimum(z0, z1))
+        top = np.full(count, -np.inf)
+        np.maximum.at(top, level, np.maximum(z0, z1))
+        self.h = np.zeros(count)
+        self.h[level] = height[index]
+        self.exact = top == self.z
+        rank = np.argsort(self.z, kind="stable")
+        self.z, self.h, self.exact = self.z[rank], self.h[rank], self.exact[rank]
+        level = np.argsort(rank)[level]
         self.first = np.full(count, _NONE)
         np.minimum.at(self.first, level, move[index])
         # The smallest first move of every run of 2^j levels from each (a sparse table): a line skips the levels
@@ -306,6 +331,7 @@ class LevelView:
         """(line, enter, leave) (K,): each line's interval inside level k (K,) as the closed form gives it for
         one piece that holds its foot (NaN where none does; every piece within MARGIN of the foot's distance
         where its nearest lies on its radius up to MARGIN, so that the closed form's own slack decides)."""
+        line_in, k_in = line, k
         at = plan[line]
         cell_xy = np.floor((at - self.origin[k]) / self.size[k][:, None]).astype(np.int64)
         inside = ((cell_xy >= 0) & (cell_xy < self.shape[k])).all(axis=1)
@@ -347,24 +373,26 @@ class LevelView:
         sure.append((line[held], at[held], np.ones(int(held.sum()), dtype=np.intp)))
         yes[line[held]] = True
         solve_line, solve_piece = line[~yes[line]], self.chain_piece[at[~yes[line]]]
-        # One piece per line held for sure: the first of its run (any piece of the level gives the same numbers
-        # on a coordinate axis), else the run's piece nearest to it.
+        # One piece per line held for sure: the first of its run where the axis is a coordinate axis and the
+        # level exact (any piece of the level gives the same numbers), else the run's piece nearest to it.
         sure_line, sure_start, sure_count = (np.concatenate(part) for part in zip(*sure))
         first = np.unique(sure_line, return_index=True)[1]
         sure_line, sure_start, sure_count = sure_line[first], sure_start[first], sure_count[first]
+        fast = np.zeros(sure_line.size, dtype=bool)
         if self.aligned:
-            chosen = self.chain_piece[sure_start]
-            c0, _, _, _, h = self.hull
-            a0 = row_dot(origin[sure_line] - c0[chosen], np.broadcast_to(self.w, (sure_line.size, 3)))
-            sure_part = (sure_line, -a0, h[chosen] - a0)
-        else:
-            chosen = self._nearest(sure_line, sure_start, sure_count, plan)
-            sure_part = (sure_line, *line_hull_interval(origin[sure_line], direction[sure_line],
-                                                         *(part[chosen] for part in self.hull)))
-        enter, leave = line_hull_interval(origin[solve_line], direction[solve_line],
-                                          *(part[solve_piece] for part in self.hull))
-        return (np.concatenate([sure_part[0], solve_line]), np.concatenate([sure_part[1], enter]),
-                np.concatenate([sure_part[2], leave]))
+            of = np.zeros(origin.shape[0], dtype=np.intp)
+            of[line_in] = k_in
+            fast = self.exact[of[sure_line]]
+        chosen = self.chain_piece[sure_start[fast]]
+        c0, _, _, _, h = self.hull
+        a0 = row_dot(origin[sure_line[fast]] - c0[chosen], np.broadcast_to(self.w, (chosen.size, 3)))
+        slow = np.flatnonzero(~fast)
+        nearest = self._nearest(sure_line[slow], sure_start[slow], sure_count[slow], plan)
+        line = np.concatenate([sure_line[fast], sure_line[slow], solve_line])
+        piece = np.concatenate([nearest, solve_piece])
+        enter, leave = line_hull_interval(origin[line[fast.sum():]], direction[line[fast.sum():]],
+                                          *(part[piece] for part in self.hull))
+        return line, np.concatenate([-a0, enter]), np.concatenate([h[chosen] - a0, leave])
 
     def _nearest(self, line, start, count, plan):
         """(K,) for each line (K,, distinct) the piece nearest to its foot in plan of its run of pieces

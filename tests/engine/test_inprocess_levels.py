@@ -66,10 +66,11 @@ def test_level_moves_and_chains():
     assert w.tolist() == [0.0, 0.0, 1.0]
     d = program.as_dict()
     across = np.r_[False, (d["cl"][1:, 2] == d["cl"][:-1, 2]) & d["cutting"][1:]]
-    np.testing.assert_array_equal(level, across)  # every move of a level, no ramp, no rapid
+    np.testing.assert_array_equal(level >= 0, across)  # every move of a level, no ramp, no rapid
+    assert np.unique(level[across]).size == 5
     pieces = swept_pieces(moves)
     view = pieces.levels
-    assert view.aligned and view.z.size == 5
+    assert view.aligned and view.z.size == 5 and view.exact.all()
     assert pieces.rest.move.size == 3 * 11  # the ramps' moves alone
     # Every chain's pieces lie within its slack of its chord (measured here from the pieces' ends).
     for chain in range(view.chain_start.size):
@@ -144,6 +145,43 @@ def test_tilted_levels_against_the_reference():
     for later in rows[3:]:
         got, changed, _ = check(program, later[2:17:4], np.arange(5.0, 180.0, 10.0))
         assert changed.any()
+
+
+def turned_program():
+    """Two levels of zig-zag passes (D 6 mm, 40 % stepover) written in a file frame, then turned by 25° about y
+    and 10° about z and moved, as a 3+2 program's points are: the heights along the turned axis of one level's
+    points then differ in their last bits."""
+    a, b = np.radians(25.0), np.radians(10.0)
+    turn_y = np.array([[np.cos(a), 0.0, np.sin(a)], [0.0, 1.0, 0.0], [-np.sin(a), 0.0, np.cos(a)]])
+    turn_z = np.array([[np.cos(b), -np.sin(b), 0.0], [np.sin(b), np.cos(b), 0.0], [0.0, 0.0, 1.0]])
+    rotation = turn_z @ turn_y
+    shift = np.array([28.0, -2.0, 4.0])
+    program = Program()
+    rows = []
+    for depth in (-0.8, -2.0):
+        local = []
+        for i, y in enumerate(np.arange(-8.0, 8.01, 2.4)):
+            x = np.linspace(-9.0, 9.0, 10) * (1 if i % 2 == 0 else -1)
+            local.append(np.column_stack([x, np.full(x.size, y), np.full(x.size, depth)]))
+        points = np.concatenate(local) @ rotation.T + shift
+        rows.append(program.add_pass(points, 3.0, 10.0, np.tile(rotation[:, 2], (points.shape[0], 1))))
+    return program, rows
+
+
+def test_turned_levels_against_the_reference():
+    program, rows = turned_program()
+    d = program.as_dict()
+    w = d["axis"][rows[1][0]]
+    heights = d["cl"][rows[1]] @ w
+    assert np.unique(heights).size > 1  # not one height bit for bit
+    pieces = swept_pieces(program.moves())
+    view = pieces.levels
+    assert view is not None and not view.aligned and view.z.size == 2
+    assert np.isin(np.flatnonzero(d["cutting"]), view.move).mean() > 0.9
+    # CL points inside the rows (at a row's ends the feed turns across the rows, and lines there lie on the wall
+    # of the row before: ties the sampled reference splits into slivers).
+    got, changed, _ = check(program, rows[1][[3, 14, 25, 36, 46, 55, 64]], np.arange(5.0, 180.0, 10.0))
+    assert changed.mean() > 0.5
 
 
 def test_grid_stays_bounded_on_a_long_level():
