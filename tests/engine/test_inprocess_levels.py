@@ -4,7 +4,8 @@ Programs shaped like z-level roughing (zig-zag and offset passes at 40 % and exa
 short chords, a ramp between levels, a second tool, a level of another tool's flute length) are checked with
 test_inprocess.check: every edge line's material against the sampled stock minus the sampled swept volumes.
 Each test also asserts that the level view took the program's level moves, so that a change routing them back
-to the general search shows. A tilted axis (3+2, not a coordinate axis) takes the view's closed-form path.
+to the general search shows. A tilted axis (3+2, not a coordinate axis) takes the view's closed-form path, as
+does a program turned from a file's frame, whose heights along the axis differ in their last bits.
 Planted errors, tried by hand: a cell held whole without the half diagonal (`gap <= -slack - MARGIN`), a
 chain's slack left out of its chord test (`gap < -MARGIN`), and levels asked from the highest down (`level`
 from the top) each fail the reference tests here.
