@@ -111,8 +111,9 @@ def _plan_distance(p, a, b):
 
 class LevelView:
     """The level pieces of a SweptPieces (flat-end hulls c0, c1 (P, 3), axis (P, 3), radius, height (P,),
-    move (P,) their program row, non-decreasing), of which those at `index` (K,) ascending form levels
-    about axis w (3,) (level_moves), in chains with a plan grid per level (module docstring)."""
+    move (P,) their program row, non-decreasing), of which those at `index` (K,) ascending form the levels
+    `level` (K,) (0, 1, …, as level_moves numbers them) about axis w (3,), in chains with a plan grid per level
+    (module docstring)."""
 
     def __init__(self, c0, c1, axis, radius, height, move, index, level, w):
         self.hull = (c0, c1, axis, radius, height)
@@ -156,7 +157,9 @@ class LevelView:
         self.size = np.zeros(count)
         self.shape = np.zeros((count, 2), dtype=np.int64)
         self.offset = np.zeros(count + 1, dtype=np.int64)
-        parts = [self._grid(k, np.flatnonzero(self.chain_level == k)) for k in range(count)]
+        order = np.argsort(self.chain_level, kind="stable")
+        bounds = np.searchsorted(self.chain_level[order], np.arange(count + 1))
+        parts = [self._grid(k, order[bounds[k]:bounds[k + 1]]) for k in range(count)]
         self.whole_move = np.concatenate([part[0] for part in parts])
         self.whole_chain = np.concatenate([part[1] for part in parts])
         cell = np.concatenate([part[2] + self.offset[k] for k, part in enumerate(parts)])
