@@ -23,8 +23,8 @@ the chords of the chains reaching it are measured, then those of the quarters (r
 pieces) of the chains the chords leave in doubt (or that run past the CL point), then the pieces of
 the quarters still in doubt. Where the answer is yes the removal is that of one piece's
 hull as the closed form gives it (swept.line_hull_interval, as the general search solves it: the
-same numbers); a line whose material is covered up to its top needs no higher level (they start
-higher and add nothing below). Lengths in mm.
+same numbers); a line whose material is covered up to its top, from no higher than the next level's
+lowest end, needs no higher level (they start there or higher and add nothing below). Lengths in mm.
 """
 
 import numpy as np
@@ -315,8 +315,12 @@ class LevelView:
             with np.errstate(invalid="ignore"):
                 hit = (np.minimum(leave, hi[line]) - np.maximum(enter, lo[line])) > LENGTH_EPS
             found.append((line[hit], enter[hit], leave[hit]))
+            # Covered to its top from below the next level's lowest end: no later level adds anything.
+            of = np.zeros(origin.shape[0], dtype=np.intp)
+            of[live] = k
+            above = np.r_[self.z[1:], np.inf][of[line]] - height[line]
             topped = np.zeros(origin.shape[0], dtype=bool)
-            topped[line[hit & (leave >= hi[line])]] = True
+            topped[line[hit & (leave >= hi[line]) & (enter <= above)]] = True
             live = live[~topped[live]]
             level[live] = self._begun(level[live] + 1, before[live])
         return tuple(np.concatenate(part) for part in zip(*found))
