@@ -25,11 +25,12 @@ import numpy as np
 
 from .engagement import SURFACES
 from .inprocess_balls import BallParts
+from .inprocess_cover import narrow, run_starts
+from .inprocess_level_pairs import ends
 from .inprocess_levels import LevelView, level_moves
 from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
-from .inprocess_plan import line_level_interval
-from .inprocess_swept import line_swept_interval
+from .inprocess_plan import piece_line_interval
 from .intervals import EdgeIntervals
 from .swept import FEASIBLE_EPS, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
@@ -268,20 +269,6 @@ class SweptPieces:
         return tuple(_rows(getattr(self, prefix + name), index) for name in ("c0", "c1", "axis", "radius", "height"))
 
 
-def _run_starts(key):
-    """(start, count): where each run of equal values of key (K,) starts, and its length (both
-    (R,) intp; empty for K = 0). Without np.r_, whose per-call cost is several times that of
-    the comparison on the arrays met here."""
-    new = np.empty(key.size, dtype=bool)
-    new[:1] = True
-    np.not_equal(key[1:], key[:-1], out=new[1:])
-    start = new.nonzero()[0]
-    count = np.empty_like(start)
-    count[:-1] = start[1:] - start[:-1]
-    count[-1:] = key.size - start[-1:]
-    return start, count
-
-
 def _rows(table, index):
     """The rows index (K,) of table (N, …): ndarray.take, which gathers rows of an (N, 3) array
     about three times faster than table[index] (and without np.take's dispatch, 2 µs a call)."""
@@ -363,7 +350,7 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True):
     if w is not None:
         of_piece = level[j[move]]
         index = np.flatnonzero(of_piece >= 0)
-        view = LevelView(c0, c1, axis, radius[move], height[move], j[move], index, of_piece[index], w)
+        view = LevelView(c0, c1, axis, radius[move], height[move], corner[move], j[move], index, of_piece[index], w)
         others = ProgramMoves(moves.cl, moves.axis, moves.cutting & (level < 0), moves.radius, moves.flute_length,
                               moves.line, moves.corner_radius)
         rest = swept_pieces(others, tolerance, levels=False)
@@ -512,11 +499,11 @@ def _deep_inside(a, b, c0, c1, axis, radius, height, slack, corner):
     bent = np.flatnonzero(corner > 0.0)
     if bent.size:
         ends = (a[bent], b[bent])
-        narrow = (c0[bent], c1[bent], axis[bent], radius[bent] - corner[bent] - slack[bent], slack[bent],
-                  height[bent] - slack[bent])
+        inner = (c0[bent], c1[bent], axis[bent], radius[bent] - corner[bent] - slack[bent], slack[bent],
+                 height[bent] - slack[bent])
         upper = (c0[bent], c1[bent], axis[bent], radius[bent] - slack[bent], corner[bent] + slack[bent],
                  height[bent] - slack[bent])
-        inside[bent] = ((narrow[3] > 0.0) & _inside(ends, *narrow) | (upper[3] > 0.0) & _inside(ends, *upper))
+        inside[bent] = ((inner[3] > 0.0) & _inside(ends, *inner) | (upper[3] > 0.0) & _inside(ends, *upper))
     return inside
 
 
@@ -634,29 +621,41 @@ def _level_removals(pieces, program_index, line, lo, hi, origins, directions, p)
     (inprocess_levels) and then, those not removed whole, among the other moves (pieces.rest); the other
     lines among all moves."""
     view = pieces.levels
-    along = (_rows(directions, line) == view.w).all(axis=1)
+    direction = _rows(directions, line)
+    along = (direction == view.w).all(axis=1)
+    across = row_dot(direction, np.broadcast_to(view.w, direction.shape)) == 0.0
+    other = ~along & ~across
     parts = []
-    if (~along).any():
-        parts.append(_searched_removals(pieces, program_index, line[~along], lo[~along], hi[~along], origins,
+    if other.any():
+        parts.append(_searched_removals(pieces, program_index, line[other], lo[other], hi[other], origins,
                                         directions, p))
-    mine = np.flatnonzero(along)
-    if mine.size:
-        at = line[mine]
-        seg, enter, leave = view.removals(_rows(origins, at), _rows(directions, at), lo[mine], hi[mine],
-                                          program_index[at // p] - 1)
-        envelope = np.stack([lo[mine], hi[mine]])
-        _narrow(envelope, seg, enter, leave)
-        dead = envelope[0] >= envelope[1]
-        alive = ~dead[seg]
-        parts.append((at[dead], lo[mine][dead], hi[mine][dead]))
-        parts.append((at[seg[alive]], enter[alive], leave[alive]))
-        if pieces.rest.move.size and not dead.all():
-            alive = np.flatnonzero(~dead)
-            alive = alive[_near_rest(pieces.rest, _rows(origins, at[alive]), _rows(directions, at[alive]),
-                                     envelope[0, alive], envelope[1, alive], program_index[at[alive] // p] - 1)]
-            parts.append(_searched_removals(pieces.rest, program_index, at[alive], lo[mine][alive], hi[mine][alive],
-                                            origins, directions, p))
+    end_edges = functools.partial(ends, view)
+    for mine, ask in ((np.flatnonzero(along), view.removals), (np.flatnonzero(across), end_edges)):
+        if mine.size:
+            parts.extend(_in_levels(pieces, ask, program_index, line[mine], lo[mine], hi[mine], origins, directions,
+                                    p))
     return tuple(np.concatenate(part) for part in zip(*parts))
+
+
+def _in_levels(pieces, ask, program_index, at, lo, hi, origins, directions, p):
+    """Removal parts (line, enter, leave) of lines `at` along or across the levels' axis: the level view's answer
+    `ask` (LevelView.removals or inprocess_level_pairs.ends), then the search among the other moves for the lines it did not
+    remove whole whose material comes near them."""
+    parts = []
+    seg, enter, leave = ask(_rows(origins, at), _rows(directions, at), lo, hi, program_index[at // p] - 1, at // p)
+    envelope = np.stack([lo, hi])
+    narrow(envelope, seg, enter, leave)
+    dead = envelope[0] >= envelope[1]
+    alive = ~dead[seg]
+    parts.append((at[dead], lo[dead], hi[dead]))
+    parts.append((at[seg[alive]], enter[alive], leave[alive]))
+    if pieces.rest.move.size and not dead.all():
+        alive = np.flatnonzero(~dead)
+        alive = alive[_near_rest(pieces.rest, _rows(origins, at[alive]), _rows(directions, at[alive]),
+                                 envelope[0, alive], envelope[1, alive], program_index[at[alive] // p] - 1)]
+        parts.append(_searched_removals(pieces.rest, program_index, at[alive], lo[alive], hi[alive],
+                                        origins, directions, p))
+    return parts
 
 
 def _near_rest(rest, origin, direction, lo, hi, before):
@@ -810,7 +809,7 @@ class _Solved:
             return
         order = np.argsort(seg, kind="stable")
         seg, span = seg[order], span[order]
-        head, count = _run_starts(seg)
+        head, count = run_starts(seg)
         filled = (self.span[:, seg[head]] >= 0).sum(axis=0)
         place = np.arange(seg.size) - np.repeat(head, count) + np.repeat(filled, count)
         ok = place < _SOLVED
@@ -1215,9 +1214,9 @@ def _latest(seg, item):
     if (seg[1:] < seg[:-1]).any():
         order = np.argsort(seg, kind="stable")
         seg, item = seg[order], item[order]
-    start, count = _run_starts(seg)
+    start, count = run_starts(seg)
     hit = (item == np.repeat(np.maximum.reduceat(item, start), count)).nonzero()[0]
-    first = hit[_run_starts(seg[hit])[0]]
+    first = hit[run_starts(seg[hit])[0]]
     return first if order is None else order[first]
 
 def _closed_inside(level, seg, item, a, b, envelope, pieces):
@@ -1245,7 +1244,7 @@ class _Ranking:
     def __init__(self, owner, key):
         self.order = np.lexsort((key, owner))
         ranked = owner[self.order]
-        self.start, self.count = _run_starts(ranked)
+        self.start, self.count = run_starts(ranked)
 
     def first(self, open_, take):
         """(K,) bool: of each owner's rows with open_ (K,) True, the `take` first in the order."""
@@ -1291,34 +1290,18 @@ def _solved(seg, piece, envelope, origins, directions, pieces, whole=False):
             hit = (np.minimum(leave, envelope[3, s]) - np.maximum(enter, envelope[2, s])) > LENGTH_EPS
         span = pieces.chain_first[q[hit]] if whole else np.searchsorted(pieces.span_first, q[hit], side="right") - 1
         found.append((s[hit], enter[hit], leave[hit], span))
-        _narrow(envelope, *found[-1][:3])
+        narrow(envelope, *found[-1][:3])
     return tuple(np.concatenate(part) for part in zip(*found))
 
 
 def _line_interval(origin, direction, pieces, level, index):
     """(enter, leave) (K,) of the lines (origin, direction (K, 3)) in the hulls of pieces or chains `index`
-    (K,) at `level`: swept.line_hull_interval for flat-end tools (closed form), and
-    inprocess_swept.line_swept_interval for tools with a corner, in closed form where the plan view decides
-    (inprocess_plan.line_level_interval: moves across the axis, lines along or across it)."""
+    (K,) at `level`: inprocess_plan.piece_line_interval (closed forms for flat-end tools and where the plan view
+    decides, inprocess_swept.line_swept_interval for the others)."""
     hulls = pieces.hulls(level, index)
     if not pieces.any_corner:
         return line_hull_interval(origin, direction, *hulls)
-    corner = pieces.corners(level, index)
-    bent = corner > 0.0
-    if not bent.any():
-        return line_hull_interval(origin, direction, *hulls)
-    enter, leave = np.full(corner.size, np.nan), np.full(corner.size, np.nan)
-    flat = np.flatnonzero(~bent)
-    if flat.size:
-        enter[flat], leave[flat] = line_hull_interval(origin[flat], direction[flat], *(h[flat] for h in hulls))
-    bent = np.flatnonzero(bent)
-    plan, enter[bent], leave[bent] = line_level_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
-                                                         corner[bent])
-    bent = bent[~plan]
-    if bent.size:
-        enter[bent], leave[bent] = line_swept_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
-                                                       corner[bent])
-    return enter, leave
+    return piece_line_interval(origin, direction, *hulls, pieces.corners(level, index))
 
 
 def _extent(origin, direction, c0, c1, axis, radius, height):
@@ -1351,11 +1334,11 @@ def _smallest(owner, key, take):
     chosen = np.zeros(owner.size, dtype=bool)
     if owner.size == 0:
         return chosen
-    start, count = _run_starts(owner)
+    start, count = run_starts(owner)
     left = np.array(key, dtype=float)  # a copy: chosen rows become NaN, which fmin passes over
     for _ in range(take):
         hit = np.flatnonzero(left == np.repeat(np.fmin.reduceat(left, start), count))
-        first = hit[_run_starts(owner[hit])[0]]
+        first = hit[run_starts(owner[hit])[0]]
         chosen[first] = True
         left[first] = np.nan
     return chosen
@@ -1369,42 +1352,6 @@ def _across(x, c0, c1, axis):
     qd, dd = _dot_across(q, d, qw, dw), _dot_across(d, d, dw, dw)
     t = _unit(qd / np.where(dd > 0.0, dd, 1.0))
     return np.sqrt(np.maximum(_dot_across(q, q, qw, qw) - t * (2.0 * qd - t * dd), 0.0))
-
-
-def _narrow(envelope, seg, enter, leave):
-    """Narrow the envelopes (2, L) of segments `seg` (K,) by the removals [enter, leave] (K,):
-    lo moves up past the removals that cover it without a gap, hi down likewise."""
-    if seg.size == 0:
-        return
-    owners, low = _covered_from(envelope[0], seg, enter, leave)
-    envelope[0, owners] = low
-    owners, high = _covered_from(-envelope[1], seg, -leave, -enter)
-    envelope[1, owners] = -high
-
-
-def _covered_from(start, seg, enter, leave):
-    """(owners, reach): the segments seg (K,) holds once each, and how far from start[owner]
-    (start (L,)) the run of their intervals [enter, leave] (K,) covers without a gap (start
-    itself where none covers it): a sweep of each segment's intervals in order of enter."""
-    order = np.lexsort((enter, seg))
-    seg, enter, leave = seg[order], enter[order], leave[order]
-    head, count = _run_starts(seg)
-    owners = seg[head]
-    begin = start[owners]
-    if head.size == seg.size:  # one interval per segment
-        return owners, np.where(enter <= begin, np.maximum(begin, leave), begin)
-    owner = np.repeat(np.arange(owners.size), count)
-    rank = np.arange(seg.size) - np.repeat(head, count)
-    # Row j: the j-th interval of each owner (a column); reach[j]: how far the intervals before
-    # it cover from start, if they chain; enters past the last interval are +inf (a gap).
-    width = int(count.max()) + 1
-    enters = np.full((width, owners.size), np.inf)
-    reach = np.full((width, owners.size), -np.inf)
-    reach[0] = begin
-    enters[rank, owner], reach[rank + 1, owner] = enter, leave
-    np.maximum.accumulate(reach, axis=0, out=reach)
-    gap = np.argmax(enters > reach, axis=0)
-    return owners, reach[gap, np.arange(owners.size)]
 
 
 def subtract(stock: EdgeIntervals, rows, enter, leave):

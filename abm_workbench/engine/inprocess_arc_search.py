@@ -26,10 +26,11 @@ remove. Shapes: L arcs; ψ in radians, lengths in mm.
 
 import numpy as np
 
-from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _narrow, _seen_along, _span_pieces, \
+from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _seen_along, _span_pieces, \
     _sphere_chains
-from .inprocess_arc import arc_swept_intervals
-from .inprocess_plan import arc_kinds, arc_level_intervals
+from .inprocess_cover import narrow
+from .inprocess_level_pairs import arcs as level_arcs
+from .inprocess_plan import arc_kinds, arc_piece_intervals
 from .swept import row_dot
 from .tolerances import LENGTH_EPS
 
@@ -66,7 +67,35 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
     cl = line // p
     before = np.asarray(program_index, dtype=np.intp)[cl] - 1
     geometry = (centres, ds, ws, tips, radius, float(big), float(top))
-    found = [empty]
+    view = pieces.levels
+    if view is not None:
+        w, d = np.take(ws, line, axis=0), np.take(ds, line, axis=0)
+        level = (w == view.w).all(axis=1) & (row_dot(d, w) == 0.0)
+        found = [_searched(pieces, line[~level], lo[~level], hi[~level], cl[~level], before[~level], geometry)]
+        at = np.flatnonzero(level)
+        psi = (lo[at] / radius, hi[at] / radius)
+        arc, start, end = level_arcs(view, np.take(tips, line[at], axis=0), d[at], w[at],
+                                     np.take(centres, line[at], axis=0), *psi, before[at], cl[at], float(big), radius,
+                                     float(top))
+        envelope = np.stack(psi)
+        narrow(envelope, arc, start, end)
+        dead = envelope[0] >= envelope[1]
+        alive = ~dead[arc]
+        found.append((line[at[dead]], psi[0][dead] * radius, psi[1][dead] * radius))
+        found.append((line[at[arc[alive]]], start[alive] * radius, end[alive] * radius))
+        left = at[~dead]
+        if pieces.rest.move.size:
+            found.append(_searched(pieces.rest, line[left], lo[left], hi[left], cl[left], before[left], geometry))
+        return tuple(np.concatenate(part) for part in zip(*found))
+    return _searched(pieces, line, lo, hi, cl, before, geometry)
+
+
+def _searched(pieces, line, lo, hi, cl, before, geometry):
+    """arc_removal_intervals by the search (module docstring) among pieces, in blocks of whole CL points."""
+    found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
+    if line.size == 0 or pieces.move.size == 0:
+        return found[0]
+    radius = geometry[4]
     for begin, end in _blocks(cl):
         rows = slice(begin, end)
         found.append(_block(pieces, line[rows], lo[rows] / radius, hi[rows] / radius, cl[rows], before[rows],
@@ -174,23 +203,15 @@ class _Arcs:
         out = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
         for begin in range(0, seg.size, PAIR_BATCH):
             s, q = seg[begin:begin + PAIR_BATCH], index[begin:begin + PAIR_BATCH]
-            hulls, corners = pieces.hulls(level, q), pieces.corners(level, q)
             full = [np.full(s.size, v) for v in (self.big, self.radius, self.top)]
-            plan, start, end = arc_level_intervals(self.tip[s], self.d[s], self.w[s], *full, *hulls, corners)
-            pair = np.flatnonzero(plan & (end > start))
-            start, end = start[pair], end[pair]
-            rest = np.flatnonzero(~plan)
-            if rest.size:
-                found = arc_swept_intervals(self.centre[s[rest]], self.d[s[rest]], self.w[s[rest]], full[1][rest],
-                                            np.zeros(rest.size), full[2][rest], *(h[rest] for h in hulls),
-                                            corners[rest])
-                pair, start, end = np.r_[pair, rest[found[0]]], np.r_[start, found[1]], np.r_[end, found[2]]
+            pair, start, end = arc_piece_intervals(self.tip[s], self.d[s], self.w[s], self.centre[s], *full,
+                                                   *pieces.hulls(level, q), pieces.corners(level, q))
             owner = s[pair]
             overlap = (np.minimum(end, self.envelope[3, owner]) - np.maximum(start, self.envelope[2, owner]))
             hit = overlap * self.radius > LENGTH_EPS
             out.append((owner[hit], start[hit], end[hit]))
         found = tuple(np.concatenate(part) for part in zip(*out))
-        _narrow(self.envelope, *found)
+        narrow(self.envelope, *found)
         return found
 
 

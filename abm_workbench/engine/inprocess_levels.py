@@ -29,6 +29,8 @@ lowest end, needs no higher level (they start there or higher and add nothing be
 
 import numpy as np
 
+from .inprocess_level_pairs import MARGIN, expand, plan_distance, segment_distance, sides
+from .inprocess_plan import earlier_radius
 from .swept import line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
 
@@ -51,25 +53,21 @@ CHAIN_SLACK = 0.25
 MAX_CELLS = 1 << 20
 CELLS_PER_PIECE = 16
 MIN_CELLS = 256
-#: Margin (mm) of the plan tests: a cell held "whole" is inside by more than this, a move that "may
-#: reach" a cell may be this much beyond it. Far above the rounding of the plan distances and the
-#: closed form's own slack (swept.FEASIBLE_EPS, 1e-9 mm), far below any length that matters.
-MARGIN = 1e-7
 #: A move index larger than any (none).
 _NONE = np.iinfo(np.int64).max
 
 
 def level_moves(moves):
     """(axis (3,) or None, level (N,) int): for the rows j of a ProgramMoves, the level (0, 1, …; −1 none) of the
-    cutting move into j: a flat-end mill (corner radius 0) whose axis is the same at both ends and equal (bit for
-    bit) to the program's most common such axis w, with both ends at the same height along w to LEVEL_TOLERANCE
-    (a 3+2 program's points, turned from the file's frame, round differently); levels by flute length and
+    cutting move into j: a move whose axis is the same at both ends and equal (bit for bit) to the program's most
+    common such axis w, with both ends at the same height along w to LEVEL_TOLERANCE (a 3+2 program's points,
+    turned from the file's frame, round differently); levels by tool (flute length, radius, corner radius) and
     height (heights LEVEL_TOLERANCE apart or nearer together, a level spanning at most LEVEL_SPAN), of at
     least MIN_MOVES moves."""
     n = len(moves)
     level = np.full(n, -1, dtype=np.intp)
     j = np.flatnonzero(moves.cutting[1:]) + 1
-    j = j[(moves.axis[j] == moves.axis[j - 1]).all(axis=1) & (moves.corner_radius[j] == 0.0)]
+    j = j[(moves.axis[j] == moves.axis[j - 1]).all(axis=1)]
     if j.size == 0:
         return None, level
     axes, inverse, counts = np.unique(moves.axis[j], axis=0, return_inverse=True, return_counts=True)
@@ -79,11 +77,11 @@ def level_moves(moves):
     z0, z1 = row_dot(moves.cl[j - 1], ww), row_dot(moves.cl[j], ww)
     across = np.abs(z1 - z0) <= LEVEL_TOLERANCE
     j, low, high = j[across], np.minimum(z0, z1)[across], np.maximum(z0, z1)[across]
-    flute = moves.flute_length[j]
-    order = np.lexsort((low, flute))
-    j, low, high, flute = j[order], low[order], high[order], flute[order]
+    tool = np.stack([moves.flute_length[j], moves.radius[j], moves.corner_radius[j]])
+    order = np.lexsort((low, *tool))
+    j, low, high, tool = j[order], low[order], high[order], tool[:, order]
     new = np.ones(j.size, dtype=bool)
-    new[1:] = (flute[1:] != flute[:-1]) | (low[1:] - low[:-1] > LEVEL_TOLERANCE)
+    new[1:] = (tool[:, 1:] != tool[:, :-1]).any(axis=0) | (low[1:] - low[:-1] > LEVEL_TOLERANCE)
     group = np.cumsum(new) - 1
     if j.size == 0:
         return None, level
@@ -98,25 +96,15 @@ def level_moves(moves):
     return w, level
 
 
-def _plan_distance(p, a, b):
-    """Distance (K,) in plan from points p (K, 2) to the segments a … b (K, 2) (a point where a = b)."""
-    d = b - a
-    dd = d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]
-    q = p - a
-    with np.errstate(invalid="ignore", divide="ignore"):
-        t = np.where(dd > 0.0, (q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) / np.where(dd > 0.0, dd, 1.0), 0.0)
-    t = np.clip(t, 0.0, 1.0)
-    return np.hypot(q[:, 0] - t * d[:, 0], q[:, 1] - t * d[:, 1])
-
-
 class LevelView:
     """The level pieces of a SweptPieces (flat-end hulls c0, c1 (P, 3), axis (P, 3), radius, height (P,),
     move (P,) their program row, non-decreasing), of which those at `index` (K,) ascending form the levels
     `level` (K,) (0, 1, …, as level_moves numbers them) about axis w (3,), in chains with a plan grid per level
     (module docstring)."""
 
-    def __init__(self, c0, c1, axis, radius, height, move, index, level, w):
+    def __init__(self, c0, c1, axis, radius, height, corner, move, index, level, w):
         self.hull = (c0, c1, axis, radius, height)
+        self.corner = corner
         self.move = move
         self.w = np.asarray(w, dtype=float)
         # On a coordinate axis the closed form's interval of a line along w inside a level hull is
@@ -136,11 +124,12 @@ class LevelView:
         np.minimum.at(self.z, level, np.minimum(z0, z1))
         top = np.full(count, -np.inf)
         np.maximum.at(top, level, np.maximum(z0, z1))
-        self.h = np.zeros(count)
-        self.h[level] = height[index]
+        self.h, self.r, self.rc = np.zeros(count), np.zeros(count), np.zeros(count)
+        self.h[level], self.r[level], self.rc[level] = height[index], radius[index], corner[index]
         self.exact = top == self.z
         rank = np.argsort(self.z, kind="stable")
         self.z, self.h, self.exact = self.z[rank], self.h[rank], self.exact[rank]
+        self.r, self.rc = self.r[rank], self.rc[rank]
         level = np.argsort(rank)[level]
         self.first = np.full(count, _NONE)
         np.minimum.at(self.first, level, move[index])
@@ -151,7 +140,13 @@ class LevelView:
             half = 1 << (len(self.table) - 1)
             last = self.table[-1]
             self.table.append(np.minimum(last, np.r_[last[half:], np.full(half, _NONE)]))
-        self.a, self.b = self._plan(c0), self._plan(c1)
+        self.a, self.b = self.plan(c0), self.plan(c1)
+        # The last level piece of each program row's move (−1: none), and its level.
+        self.last = np.full(int(move.max()) + 1 if move.size else 0, -1, dtype=np.intp)
+        tail = np.r_[move[index][1:] != move[index][:-1], True] if index.size else np.zeros(0, dtype=bool)
+        self.last[move[index][tail]] = index[tail]
+        self.piece_level = np.full(c0.shape[0], -1, dtype=np.intp)
+        self.piece_level[index] = level
         self._chains(index, level, radius)
         self.origin = np.zeros((count, 2))
         self.size = np.zeros(count)
@@ -168,17 +163,6 @@ class LevelView:
         self.scale = int(move.max()) + 2 if move.size else 2
         self.key = cell * self.scale + self.chain_first_move[self.entry_chain]
         self.start = np.searchsorted(cell, np.arange(int(self.offset[-1]) + 1))
-
-    def _plan(self, points):
-        """Plan coordinates (K, 2) of points (K, 3) (on a coordinate axis, two of their coordinates: the same
-        numbers as the products with u and v, whose other components are 0)."""
-        if self.aligned:
-            columns = np.flatnonzero(self.w == 0.0)
-            plan = points[:, columns] * np.array([self.u[columns[0]] + self.v[columns[0]],
-                                                  self.u[columns[1]] + self.v[columns[1]]])
-            return plan if abs(self.u[columns[0]]) == 1.0 else plan[:, ::-1]
-        return np.stack([row_dot(points, np.broadcast_to(self.u, points.shape)),
-                         row_dot(points, np.broadcast_to(self.v, points.shape))], axis=1)
 
     def _chains(self, index, level, radius):
         """Chains of the level pieces `index` (level (K,) each): runs of consecutive pieces of one level and
@@ -215,11 +199,12 @@ class LevelView:
         first, last = index[head], index[head + length - 1]
         self.chain_a, self.chain_b = self.a[first], self.b[last]
         self.chain_radius = radius[first]
+        self.chain_rim = radius[first] - self.corner[first]
         self.chain_first_move, self.chain_last_move = self.move[first], self.move[last]
         # Each chain's quarters (runs of CHAIN // 4 of its pieces, the chain itself if no longer), bounded alike:
         # a chain in doubt hands over its quarters, a quarter in doubt its pieces.
         quarters = -(-length // (CHAIN // 4))
-        owner, rank = _expand(np.arange(head.size), np.zeros(head.size, dtype=np.intp), quarters)
+        owner, rank = expand(np.arange(head.size), np.zeros(head.size, dtype=np.intp), quarters)
         self.chain_quarter = np.cumsum(quarters) - quarters
         self.chain_quarters = quarters
         self.quarter_start = head[owner] + rank * (CHAIN // 4)
@@ -238,7 +223,7 @@ class LevelView:
         pos = head[owner] + np.arange(owner.size) - np.repeat(np.cumsum(length) - length, length)
         piece = index[pos]
         a, b = self.a[index[head]][owner], self.b[index[head + length - 1]][owner]
-        gap = np.maximum(_plan_distance(self.a[piece], a, b), _plan_distance(self.b[piece], a, b))
+        gap = np.maximum(plan_distance(self.a[piece], a, b), plan_distance(self.b[piece], a, b))
         return np.maximum.reduceat(gap, np.cumsum(length) - length) if gap.size else np.zeros(0)
 
     def _grid(self, k, chains):
@@ -271,11 +256,13 @@ class LevelView:
         ix = first[owner, 0] + rank % span[owner, 0]
         iy = first[owner, 1] + rank // span[owner, 0]
         centre = origin + (np.stack([ix, iy], axis=1) + 0.5) * size
-        gap = _plan_distance(centre, a[owner], b[owner]) - self.chain_radius[chains][owner]
+        distance = plan_distance(centre, a[owner], b[owner])
+        gap = distance - self.chain_radius[chains][owner]
         slack = self.chain_slack[chains][owner]
         cell = iy * shape[0] + ix
         chain = chains[owner]
-        whole = gap <= -slack - half - MARGIN
+        # Held whole: within the rim (the radius where a corner tool's bottom is flat; a flat-end mill's radius).
+        whole = distance - self.chain_rim[chains][owner] <= -slack - half - MARGIN
         cells = int(shape.prod())
         whole_move = np.full(cells, _NONE)
         whole_chain = np.full(cells, -1, dtype=np.intp)
@@ -289,16 +276,16 @@ class LevelView:
         order = np.lexsort((self.chain_first_move[chain[near]], cell[near]))
         return whole_move, whole_chain, cell[near][order], chain[near][order]
 
-    def removals(self, origin, direction, lo, hi, before):
+    def removals(self, origin, direction, lo, hi, before, group):
         """Removal intervals (line (K,), enter, leave (K,) mm) of the lines (origin (L, 3), direction (L, 3) = w)
         inside the level moves of program row at most before (L,), those that overlap the line's material
         lo … hi (L,) by more than LENGTH_EPS (as the general search keeps them); one or a few per line and
-        level."""
+        level (group (L,): the lines' CL points, for the levels of a tool with a corner, inprocess_level_pairs)."""
         found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
         if origin.shape[0] == 0 or self.z.size == 0:
             return found[0]
         height = row_dot(origin, np.broadcast_to(self.w, origin.shape))  # not a matrix product: no BLAS threads
-        plan = self._plan(origin)
+        plan = self.plan(origin)
         tallest = float(self.h.max())
         level = self._begun(np.searchsorted(self.z, height + lo - tallest - MARGIN, side="left"), before)
         live = np.arange(origin.shape[0])
@@ -311,7 +298,10 @@ class LevelView:
             if live.size == 0:
                 break
             ask = (self.first[k] <= before[live]) & (self.z[k] + self.h[k] - height[live] >= lo[live] - MARGIN)
-            line, enter, leave = self._solved(live[ask], k[ask], origin, direction, plan, before)
+            bent = self.rc[k] > 0.0
+            line, enter, leave = (np.concatenate(part) for part in zip(
+                self._solved(live[ask & ~bent], k[ask & ~bent], origin, direction, plan, before),
+                sides(self, live[ask & bent], k[ask & bent], group, origin, direction, plan, before)))
             with np.errstate(invalid="ignore"):
                 hit = (np.minimum(leave, hi[line]) - np.maximum(enter, lo[line])) > LENGTH_EPS
             found.append((line[hit], enter[hit], leave[hit]))
@@ -324,6 +314,112 @@ class LevelView:
             live = live[~topped[live]]
             level[live] = self._begun(level[live] + 1, before[live])
         return tuple(np.concatenate(part) for part in zip(*found))
+
+    def plan(self, points):
+        """Plan coordinates (K, 2) of points (K, 3) (on a coordinate axis, two of their coordinates: the same
+        numbers as the products with u and v, whose other components are 0)."""
+        if self.aligned:
+            columns = np.flatnonzero(self.w == 0.0)
+            plan = points[:, columns] * np.array([self.u[columns[0]] + self.v[columns[0]],
+                                                  self.u[columns[1]] + self.v[columns[1]]])
+            return plan if abs(self.u[columns[0]]) == 1.0 else plan[:, ::-1]
+        return np.stack([row_dot(points, np.broadcast_to(self.u, points.shape)),
+                         row_dot(points, np.broadcast_to(self.v, points.shape))], axis=1)
+
+    def levels_holding(self, origin, before):
+        """(line, k, h) (K,): the levels k begun by program row before (L,) whose height range holds the points
+        origin (L, 3) (h: the point's height above the level along w, within −MARGIN … H + MARGIN; in a level exact
+        on a coordinate axis, where h is the closed form's own number, within 0 … H)."""
+        height = row_dot(origin, np.broadcast_to(self.w, origin.shape))
+        first = np.searchsorted(self.z, height - float(self.h.max()) - MARGIN, side="left")
+        last = np.searchsorted(self.z, height + MARGIN, side="right")
+        line, k = expand(np.arange(origin.shape[0]), first, last - first)
+        h = height[line] - self.z[k]
+        exact = self.aligned & self.exact[k]
+        keep = (self.first[k] <= before[line]) & (h <= self.h[k] + MARGIN) & (~exact | ((h >= 0.0) & (h <= self.h[k])))
+        return line[keep], k[keep], h[keep]
+
+    def levels_meeting(self, origin, low, high, before):
+        """(line, k) (K,): the levels k begun by program row before (L,) whose height range meets low … high (L,)
+        above the points origin (L, 3) along w, to MARGIN."""
+        height = row_dot(origin, np.broadcast_to(self.w, origin.shape))
+        first = np.searchsorted(self.z, height + low - float(self.h.max()) - MARGIN, side="left")
+        last = np.searchsorted(self.z, height + high + MARGIN, side="right")
+        line, k = expand(np.arange(origin.shape[0]), first, last - first)
+        keep = (self.first[k] <= before[line]) & (self.z[k] + self.h[k] >= height[line] + low[line] - MARGIN)
+        return line[keep], k[keep]
+
+    def previous(self, k, before):
+        """(K,) the last piece of the move into program row before (K,) where that move belongs to level k (K,), else
+        −1: the piece an edge of the next CL point most likely lies in."""
+        piece = np.where((before >= 0) & (before < self.last.size), self.last[np.clip(before, 0, self.last.size - 1)],
+                         -1)
+        return np.where((piece >= 0) & (self.piece_level[np.maximum(piece, 0)] == k), piece, -1)
+
+    def rim_of(self, piece):
+        """(K,) the rim (radius less corner radius: where the tool's bottom is flat) of the tools of pieces (K,)."""
+        return self.hull[3][piece] - self.corner[piece]
+
+    def earlier_radius(self, k, h):
+        """(K,) the plan radius of level k's tool at height h (K,) above its bottom (clipped to 0 … H)."""
+        return earlier_radius(np.clip(h, 0.0, self.h[k]), self.r[k], self.rc[k])
+
+    def held(self, line, k, at, before):
+        """(K,) the chain that holds the whole grid cell of the plan points at (K, 2) in level k within its rim and
+        ends by program row before (K,), or −1."""
+        cell_xy = np.floor((at - self.origin[k]) / self.size[k][:, None])
+        inside = ((cell_xy >= 0) & (cell_xy < self.shape[k])).all(axis=1)
+        cell_xy = np.where(inside[:, None], cell_xy, 0).astype(np.int64)
+        cell = self.offset[k] + cell_xy[:, 1] * self.shape[k, 0] + cell_xy[:, 0]
+        return np.where(inside & (self.whole_move[cell] <= before), self.whole_chain[cell], -1)
+
+    def near_chains(self, query, k, a, b, before):
+        """(owner, chain) (K,): for the queries `query` (Q,, indices into k, a, b, before), the chains of level k[q]
+        begun by program row before[q] that the grid lists in the cells of the bounding box of a[q] … b[q] ((N, 2)
+        plan points; every chain with a piece within its radius of a point of that box), each once per query."""
+        kq = k[query]
+        size = self.size[kq][:, None]
+        shape = self.shape[kq]
+        aq, bq = a[query], b[query]
+        low = np.clip(np.floor((np.minimum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
+        high = np.clip(np.floor((np.maximum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
+        meets = ((high >= 0) & (low < shape)).all(axis=1)
+        low, high = np.maximum(low, 0), np.minimum(high, shape - 1)
+        span = np.where(meets[:, None], high - low + 1, 0)
+        count = span[:, 0] * span[:, 1]
+        where, rank = expand(np.arange(query.size), np.zeros(query.size, dtype=np.intp), count)
+        ix = low[where, 0] + rank % span[where, 0]
+        iy = low[where, 1] + rank // span[where, 0]
+        cell = self.offset[kq[where]] + iy * shape[where, 0] + ix
+        owner = query[where]
+        stop = np.searchsorted(self.key, cell * self.scale + before[owner], side="right")
+        owner, entry = expand(owner, self.start[cell], stop - self.start[cell])
+        chain = self.entry_chain[entry]
+        if count.size and count.max() > 1:  # a chain listed in several cells of a query once
+            chains = self.chain_start.size
+            pair = np.unique(owner * chains + chain)
+            owner, chain = pair // chains, pair % chains
+        return owner, chain
+
+    def quarters_near(self, owner, chain, a, b, reach, before):
+        """(owner, quarter, low) (K,): the quarters of the chains `chain` (K,) begun by program row before[owner] whose
+        chords lie within reach[owner] + slack + MARGIN of the plan segments a … b[owner] ((Q, 2); owner indexes the
+        queries' arrays), and low: that distance less the slack (no piece of the quarter is nearer)."""
+        owner, quarter = expand(owner, self.chain_quarter[chain], self.chain_quarters[chain])
+        keep = self.quarter_first_move[quarter] <= before[owner]
+        owner, quarter = owner[keep], quarter[keep]
+        ao = a[owner]
+        low = segment_distance(ao, ao if a is b else b[owner], self.quarter_a[quarter], self.quarter_b[quarter])
+        low -= self.quarter_slack[quarter]
+        keep = low <= reach[owner] + MARGIN
+        return owner[keep], quarter[keep], low[keep]
+
+    def quarter_pieces(self, owner, quarter, before):
+        """(owner, piece) (K,): the pieces of the quarters (K,) of program row at most before[owner]."""
+        owner, at = expand(owner, self.quarter_start[quarter], self.quarter_count[quarter])
+        piece = self.chain_piece[at]
+        keep = self.move[piece] <= before[owner]
+        return owner[keep], piece[keep]
 
     def _begun(self, k, before):
         """(K,) for each level index k (K,) the first level at or after it begun by program row before (K,)
@@ -349,9 +445,9 @@ class LevelView:
         sure = [(line[whole], self.chain_start[chain], self.chain_count[chain])]
         line, cell = line[~whole], cell[~whole]
         stop = np.searchsorted(self.key, cell * self.scale + before[line], side="right")
-        line, chain = _expand(line, self.start[cell], stop - self.start[cell])
+        line, chain = expand(line, self.start[cell], stop - self.start[cell])
         chain = self.entry_chain[chain]
-        gap = _plan_distance(plan[line], self.chain_a[chain], self.chain_b[chain]) - self.chain_radius[chain]
+        gap = plan_distance(plan[line], self.chain_a[chain], self.chain_b[chain]) - self.chain_radius[chain]
         slack = self.chain_slack[chain]
         held = (gap < -slack - MARGIN) & (self.chain_last_move[chain] <= before[line])
         sure.append((line[held], self.chain_start[chain[held]], self.chain_count[chain[held]]))
@@ -361,19 +457,19 @@ class LevelView:
         doubt = ~held & (gap <= slack + MARGIN) & ~yes[line]
         # The quarters of the chains in doubt, those begun before the CL point; then the pieces of the quarters
         # in doubt, those before it.
-        line, quarter = _expand(line[doubt], self.chain_quarter[chain[doubt]], self.chain_quarters[chain[doubt]])
+        line, quarter = expand(line[doubt], self.chain_quarter[chain[doubt]], self.chain_quarters[chain[doubt]])
         begun = self.quarter_first_move[quarter] <= before[line]
         line, quarter = line[begun], quarter[begun]
-        gap = _plan_distance(plan[line], self.quarter_a[quarter], self.quarter_b[quarter])
+        gap = plan_distance(plan[line], self.quarter_a[quarter], self.quarter_b[quarter])
         gap -= self.quarter_radius[quarter]
         slack = self.quarter_slack[quarter]
         held = (gap < -slack - MARGIN) & (self.quarter_last_move[quarter] <= before[line])
         sure.append((line[held], self.quarter_start[quarter[held]], self.quarter_count[quarter[held]]))
         yes[line[held]] = True
         doubt = ~held & (gap <= slack + MARGIN) & ~yes[line]
-        line, at = _expand(line[doubt], self.quarter_start[quarter[doubt]], self.quarter_count[quarter[doubt]])
+        line, at = expand(line[doubt], self.quarter_start[quarter[doubt]], self.quarter_count[quarter[doubt]])
         piece = self.chain_piece[at]
-        piece_gap = _plan_distance(plan[line], self.a[piece], self.b[piece]) - self.hull[3][piece]
+        piece_gap = plan_distance(plan[line], self.a[piece], self.b[piece]) - self.hull[3][piece]
         keep = (self.move[piece] <= before[line]) & (piece_gap <= MARGIN)
         line, at, piece_gap = line[keep], at[keep], piece_gap[keep]
         held = piece_gap < -MARGIN
@@ -394,28 +490,19 @@ class LevelView:
         c0, _, _, _, h = self.hull
         a0 = row_dot(origin[sure_line[fast]] - c0[chosen], np.broadcast_to(self.w, (chosen.size, 3)))
         slow = np.flatnonzero(~fast)
-        nearest = self._nearest(sure_line[slow], sure_start[slow], sure_count[slow], plan)
+        nearest = self.nearest(sure_line[slow], sure_start[slow], sure_count[slow], plan)
         line = np.concatenate([sure_line[fast], sure_line[slow], solve_line])
         piece = np.concatenate([nearest, solve_piece])
         enter, leave = line_hull_interval(origin[line[fast.sum():]], direction[line[fast.sum():]],
                                           *(part[piece] for part in self.hull))
         return line, np.concatenate([-a0, enter]), np.concatenate([h[chosen] - a0, leave])
 
-    def _nearest(self, line, start, count, plan):
+    def nearest(self, line, start, count, plan):
         """(K,) for each line (K,, distinct) the piece nearest to its foot in plan of its run of pieces
         chain_piece[start … start + count − 1]."""
-        owner, at = _expand(np.arange(line.size), start, count)
+        owner, at = expand(np.arange(line.size), start, count)
         candidate = self.chain_piece[at]
-        gap = _plan_distance(plan[line[owner]], self.a[candidate], self.b[candidate])
+        gap = plan_distance(plan[line[owner]], self.a[candidate], self.b[candidate])
         order = np.lexsort((gap, owner))
         head = order[np.r_[True, owner[order][1:] != owner[order][:-1]]] if order.size else order
         return candidate[head]
-
-
-def _expand(owner, start, count):
-    """(owner, position) (Σ count,): for each owner (n,), the positions start … start + count − 1."""
-    count = np.maximum(count, 0)
-    total = int(count.sum())
-    mine = np.repeat(np.arange(owner.size), count)
-    position = np.repeat(start, count) + np.arange(total) - np.repeat(np.cumsum(count) - count, count)
-    return owner[mine], position

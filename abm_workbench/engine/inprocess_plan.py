@@ -30,8 +30,9 @@ vectors and (K,) numbers; ψ in radians, lengths in mm.
 
 import numpy as np
 
-from .inprocess_arc import COINCIDENT
-from .swept import row_dot
+from .inprocess_arc import COINCIDENT, arc_swept_intervals
+from .inprocess_swept import line_swept_interval
+from .swept import line_hull_interval, row_dot
 
 
 def _noise(*vectors, size):
@@ -122,6 +123,22 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
     return below | level_arc | steady, start, end
 
 
+def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner):
+    """(pair, start, end) (K,): the (arc, piece) pairs (K inputs) whose piece removes part of the arc, and that part
+    in ψ (rad): arc_level_intervals where the plan view decides, inprocess_arc.arc_swept_intervals for the others
+    (each over the whole arc, 0 … top). tip, d, axis, centre (K, 3) and big, corner, top (K,) as there; c0, c1,
+    p_axis (K, 3), p_big, p_height, p_corner (K,): the earlier piece and its tool."""
+    plan, start, end = arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner)
+    pair = np.flatnonzero(plan & (end > start))
+    start, end = start[pair], end[pair]
+    rest = np.flatnonzero(~plan)
+    if rest.size:
+        found = arc_swept_intervals(centre[rest], d[rest], axis[rest], corner[rest], np.zeros(rest.size), top[rest],
+                                    c0[rest], c1[rest], p_axis[rest], p_big[rest], p_height[rest], p_corner[rest])
+        pair, start, end = np.r_[pair, rest[found[0]]], np.r_[start, found[1]], np.r_[end, found[2]]
+    return pair, start, end
+
+
 def _arc_in_level(g0, m, d, axis, big, corner, top):
     """(start, end) ψ of arcs of tools at the level of an earlier move of the same tool (conditions linear in ρ;
     module docstring): g0 the tip from c0 (across the axis), m the move."""
@@ -191,6 +208,29 @@ def line_level_interval(origin, direction, c0, c1, axis, big, height, corner):
         enter[rows], leave[rows] = _end_in_move(origin[rows] - c0[rows], direction[rows], c1[rows] - c0[rows],
                                                 axis[rows], big[rows], height[rows], corner[rows])
     return upright | flat, enter, leave
+
+
+def piece_line_interval(origin, direction, c0, c1, axis, big, height, corner):
+    """(enter, leave) (K,) mm of the lines origin + l·direction (unit, (K, 3)) in the solids swept by pieces (c0, c1,
+    axis (K, 3), big, height, corner (K,)), NaN where one misses: swept.line_hull_interval for flat-end tools (closed
+    form), line_level_interval where the plan view decides (moves across the axis, lines along or across it),
+    inprocess_swept.line_swept_interval for the others."""
+    bent = corner > 0.0
+    if not bent.any():
+        return line_hull_interval(origin, direction, c0, c1, axis, big, height)
+    enter, leave = np.full(corner.size, np.nan), np.full(corner.size, np.nan)
+    hulls = (c0, c1, axis, big, height)
+    flat = np.flatnonzero(~bent)
+    if flat.size:
+        enter[flat], leave[flat] = line_hull_interval(origin[flat], direction[flat], *(h[flat] for h in hulls))
+    bent = np.flatnonzero(bent)
+    plan, enter[bent], leave[bent] = line_level_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
+                                                         corner[bent])
+    bent = bent[~plan]
+    if bent.size:
+        enter[bent], leave[bent] = line_swept_interval(origin[bent], direction[bent], *(h[bent] for h in hulls),
+                                                       corner[bent])
+    return enter, leave
 
 
 def _side_in_move(q, m, axis, big, height, corner):

@@ -1,0 +1,281 @@
+"""The level view for tools with a corner: each edge against the level pieces near it in plan, nearest first.
+
+A bull-nose or ball-end mill moving across its axis at a level sweeps a solid whose radius in plan depends on the
+height above its bottom (ρ_e(h), inprocess_plan). So the level view's one plan question per line and level (the
+flat-end mill's, inprocess_levels) does not answer an edge here: a straight side's removal starts where the
+nearest piece's corner reaches it, an end edge's and a corner arc's removals are unions over the pieces near them.
+The view hands every edge the pieces near it instead, and each (edge, piece) pair is solved as the general search
+solves it (inprocess_plan's closed forms, inprocess_arc where those do not decide).
+
+The pieces near an edge are found once per CL point and level (group): the chains the grid lists in the cells of
+the box of all the group's edges in plan, then their quarters and pieces within reach of the box's middle (every
+piece that comes within reach of an edge of the group is among them: an earlier tool's points lie within its
+radius, its reach, of its path in plan), then per edge those within reach of its own plan segment. The pairs are
+solved nearest first in rounds of 1, 2, 4, … pieces per edge; after each round the edge's envelope (its material
+less what the removals found cover from either end without a gap, inprocess_cover.narrow) narrows, and a piece
+whose plan distance from what is left exceeds its reach is dropped, its removal lying in what is covered or
+beyond the material: the union of the removals over the material is that of all the pairs, so the lengths are
+those of the general search (whose removals are the same pairs' numbers). Lengths in mm, ψ in radians.
+"""
+
+import numpy as np
+
+from .inprocess_cover import narrow, run_starts
+from .inprocess_plan import arc_piece_intervals, piece_line_interval
+from .tolerances import LENGTH_EPS
+
+#: Margin (mm) of the plan tests: a cell held "whole" is inside by more than this, a piece that "may reach" an edge
+#: may be this much beyond it. Far above the rounding of the plan distances and the closed forms' own slack
+#: (swept.FEASIBLE_EPS, 1e-9 mm), far below any length that matters.
+MARGIN = 1e-7
+
+
+def expand(owner, start, count):
+    """(owner, position) (Σ count,): for each owner (n,), the positions start … start + count − 1."""
+    count = np.maximum(count, 0)
+    total = int(count.sum())
+    mine = np.repeat(np.arange(owner.size), count)
+    position = np.repeat(start, count) + np.arange(total) - np.repeat(np.cumsum(count) - count, count)
+    return owner[mine], position
+
+
+def plan_distance(p, a, b):
+    """Distance (K,) in plan from points p (K, 2) to the segments a … b (K, 2) (a point where a = b)."""
+    d = b - a
+    dd = d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]
+    q = p - a
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = np.where(dd > 0.0, (q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) / np.where(dd > 0.0, dd, 1.0), 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    return np.hypot(q[:, 0] - t * d[:, 0], q[:, 1] - t * d[:, 1])
+
+
+def segment_distance(p0, p1, a, b):
+    """Distance (K,) in plan between the segments p0 … p1 and a … b (K, 2) (either may be a point): 0 where they
+    cross, else the least of the four ends' distances from the other segment (p0 given as p1: its distance)."""
+    if p0 is p1:
+        return plan_distance(p0, a, b)
+    d = np.minimum(np.minimum(plan_distance(p0, a, b), plan_distance(p1, a, b)),
+                   np.minimum(plan_distance(a, p0, p1), plan_distance(b, p0, p1)))
+
+    def side(o, x, y):
+        return (x[:, 0] - o[:, 0]) * (y[:, 1] - o[:, 1]) - (x[:, 1] - o[:, 1]) * (y[:, 0] - o[:, 0])
+
+    cross = (side(a, b, p0) * side(a, b, p1) < 0.0) & (side(p0, p1, a) * side(p0, p1, b) < 0.0)
+    return np.where(cross, 0.0, d)
+
+
+def near_chains(view, group, k, a, b, reach, before):
+    """(query, chain, low, high) (K,): for the queries (Q,) (an edge in a level: group (Q,) its CL point, k its level,
+    a … b (Q, 2) its plan segment, reach (Q,) the largest plan distance at which a piece of that level can remove
+    anything of it, before (Q,) the last program row before its CL point), the chains of the level begun by then
+    whose chords come within reach + slack + MARGIN of the segment, found once per group and level (module
+    docstring); low, high: the chord's distance less and plus its slack (bounds of its pieces' distance)."""
+    if group.size == 0:
+        return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0)
+    key = group * view.z.size + k
+    order = np.argsort(key, kind="stable")
+    head, count = run_starts(key[order])
+    low = np.minimum.reduceat(np.minimum(a, b)[order], head)
+    high = np.maximum.reduceat(np.maximum(a, b)[order], head)
+    middle = 0.5 * (low + high)
+    wide = np.maximum.reduceat(reach[order], head) + 0.5 * np.hypot(*(high - low).T)
+    latest = np.maximum.reduceat(before[order], head)
+    owner, chain = view.near_chains(np.arange(head.size), k[order][head], low, high, latest)
+    keep = plan_distance(middle[owner], view.chain_a[chain], view.chain_b[chain]) - view.chain_slack[chain] \
+        <= wide[owner] + MARGIN
+    owner, chain = owner[keep], chain[keep]
+    # Each group's chains, handed to each of its queries.
+    first = np.searchsorted(owner, np.arange(head.size))
+    total = np.bincount(owner, minlength=head.size)
+    of = np.empty(key.size, dtype=np.intp)
+    of[order] = np.repeat(np.arange(head.size), count)
+    query, at = expand(np.arange(key.size), first[of], total[of])
+    chain = chain[at]
+    aq = a[query]
+    distance = segment_distance(aq, aq if a is b else b[query], view.chain_a[chain], view.chain_b[chain])
+    slack = view.chain_slack[chain]
+    keep = distance - slack <= reach[query] + MARGIN
+    return query[keep], chain[keep], (distance - slack)[keep], (distance + slack)[keep]
+
+
+def _least(query, value, size):
+    """(size,) the least value (K,) per query (K,) (inf where none)."""
+    least = np.full(size, np.inf)
+    np.minimum.at(least, query, value)
+    return least
+
+
+def nearest_pieces(view, group, k, at, bound, before, exact):
+    """(query, piece) (K,): for point queries (plan points at (Q, 2), otherwise as near_chains; bound (Q,) the
+    largest distance that matters), the pieces within bound (+ MARGIN) of the point; where exact (Q,), only those
+    within 2·MARGIN of the least such distance, by branch and bound: chains, then quarters, whose nearest piece
+    cannot come that near are dropped (a chain or quarter ending by then bounds the least by its distance plus its
+    slack)."""
+    query, chain, low, high = near_chains(view, group, k, at, at, bound, before)
+    done = exact[query] & (view.chain_last_move[chain] <= before[query])
+    best = np.minimum(bound, _least(query, np.where(done, high, np.inf), bound.size))
+    keep = low <= best[query] + 2.0 * MARGIN
+    query, quarter, low = view.quarters_near(query[keep], chain[keep], at, at, bound, before)
+    done = exact[query] & (view.quarter_last_move[quarter] <= before[query])
+    best = np.minimum(best, _least(query, np.where(done, low + 2.0 * view.quarter_slack[quarter], np.inf),
+                                   bound.size))
+    keep = low <= best[query] + 2.0 * MARGIN
+    query, piece = view.quarter_pieces(query[keep], quarter[keep], before)
+    gap = plan_distance(at[query], view.a[piece], view.b[piece])
+    best = np.minimum(best, _least(query, np.where(exact[query], gap, np.inf), bound.size))
+    keep = gap <= best[query] + 2.0 * MARGIN
+    return query[keep], piece[keep]
+
+
+def rounds(view, query, quarter, envelope, solve, segment, reach, before, skip):
+    """Removal parts [(query, enter, leave)] of the queries against the pieces of their quarters (query, quarter
+    (K,), nearest first per query), in rounds of 1, 2, 4, … quarters per query (module docstring): a quarter, and
+    then a piece, farther than reach + MARGIN in plan from what is left of its query's edge is dropped. envelope
+    (2, Q): each query's material (from, to; narrowed here); solve(query, piece) → (query, enter, leave) of the
+    pairs that remove something; segment(query, from, to) → the plan segment (a, b) (K, 2) of that part of the
+    query's edge; reach, before (Q,) as for near_chains; skip (Q,): a piece each query has been solved against."""
+    found = []
+    if query.size == 0:
+        return found
+    head, count = run_starts(query)
+    rank = np.arange(query.size) - np.repeat(head, count)
+    done, size = 0, 1
+    while done < count.max():
+        take = (rank >= done) & (rank < done + size)
+        q, qu = query[take], quarter[take]
+        keep = envelope[0, q] < envelope[1, q]
+        q, qu = q[keep], qu[keep]
+        a, b = segment(q, envelope[0, q], envelope[1, q])
+        keep = segment_distance(a, b, view.quarter_a[qu], view.quarter_b[qu]) - view.quarter_slack[qu] \
+            <= reach[q] + MARGIN
+        q, pc = view.quarter_pieces(q[keep], qu[keep], before)
+        keep = pc != skip[q]
+        q, pc = q[keep], pc[keep]
+        a, b = segment(q, envelope[0, q], envelope[1, q])
+        keep = segment_distance(a, b, view.a[pc], view.b[pc]) <= reach[q] + MARGIN
+        found.append(solve(q[keep], pc[keep]))
+        narrow(envelope, *found[-1])
+        done, size = done + size, 2 * size
+    return found
+
+
+def _hits(query, enter, leave, lo, hi, scale=1.0):
+    """(query, enter, leave) of the removals that overlap lo … hi (per query) by more than LENGTH_EPS (in mm: the
+    overlap times scale)."""
+    with np.errstate(invalid="ignore"):
+        hit = (np.minimum(leave, hi[query]) - np.maximum(enter, lo[query])) * scale > LENGTH_EPS
+    return query[hit], enter[hit], leave[hit]
+
+
+def _line_pairs(view, line, piece, origin, direction):
+    """(enter, leave) of lines (indices into origin, direction) in level pieces (inprocess_plan.piece_line_interval)."""
+    return piece_line_interval(origin[line], direction[line], *(part[piece] for part in view.hull), view.corner[piece])
+
+
+def sides(view, line, k, group, origin, direction, plan, before):
+    """(line, enter, leave) (K,): the intervals (NaN where none) of lines along w (indices line (L,) into origin,
+    direction (N, 3), plan (N, 2), before (N,); group (N,) their CL points) inside the pieces of levels k (L,) of a
+    tool with a corner, piece by piece: a side's removal runs from where the corner's radius reaches it (the
+    nearer the piece, the lower) to the top. A line whose foot a chain holds within its rim (the tool's flat
+    bottom) in a level exact on a coordinate axis takes that chain's nearest piece alone, and in such a level any
+    other line the pieces within 2·MARGIN of its nearest: every other piece's interval lies inside theirs."""
+    at = plan[line]
+    fast = view.aligned & view.exact[k]
+    alone = np.where(fast, view.held(line, k, at, before[line]), -1)
+    one = np.flatnonzero(alone >= 0)
+    nearest = view.nearest(line[one], view.chain_start[alone[one]], view.chain_count[alone[one]], plan)
+    # The piece into the previous CL point: where it holds the foot within its rim it is the answer alone; else its
+    # distance bounds the nearest's.
+    previous = np.where(alone < 0, view.previous(k, before[line]), -1)
+    has = np.flatnonzero(previous >= 0)
+    bound = view.r[k]
+    gap = plan_distance(at[has], view.a[previous[has]], view.b[previous[has]])
+    bound[has] = np.where(fast[has], np.minimum(bound[has], gap + 2.0 * MARGIN), bound[has])
+    inner = has[fast[has] & (gap < view.rim_of(previous[has]) - MARGIN)]
+    line_one = np.concatenate([line[one], line[inner]])
+    nearest = np.concatenate([nearest, previous[inner]])
+    rest = np.flatnonzero(alone < 0)
+    rest = rest[~np.isin(rest, inner)]
+    query, piece = nearest_pieces(view, group[line[rest]], k[rest], at[rest], bound[rest], before[line[rest]],
+                                  fast[rest])
+    line = np.concatenate([line_one, line[rest[query]]])
+    piece = np.concatenate([nearest, piece])
+    enter, leave = _line_pairs(view, line, piece, origin, direction)
+    return line, enter, leave
+
+
+def ends(view, origin, direction, lo, hi, before, group):
+    """Removal intervals (line (K,), enter, leave (K,) mm) of lines across w (origin, direction (L, 3), d·w = 0: the
+    end edges of a tool with a corner; group (L,) their CL points) inside the level moves of program row at most
+    before (L,), those overlapping the line's material lo … hi (L,) by more than LENGTH_EPS: in each level whose
+    height range holds the line, the pieces near its segment lo … hi in plan, within the earlier tool's radius at
+    that height (exactly that radius in a level exact on a coordinate axis, else the tool's radius), in rounds."""
+    none = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
+    if origin.shape[0] == 0:
+        return none
+    plan, toward = view.plan(origin), view.plan(direction)
+    line, k, h = view.levels_holding(origin, before)
+    exact = view.aligned & view.exact[k]
+    reach = np.where(exact, view.earlier_radius(k, h), view.r[k])
+
+    def solve(q, pc):
+        enter, leave = _line_pairs(view, line[q], pc, origin, direction)
+        return _hits(q, enter, leave, lo[line], hi[line])
+
+    def segment(q, start, end):
+        at = line[q]
+        return plan[at] + start[:, None] * toward[at], plan[at] + end[:, None] * toward[at]
+
+    found = _nearest_first(view, k, group[line], before[line], np.stack([lo[line], hi[line]]), reach, solve, segment)
+    return tuple(np.concatenate(part) for part in zip(none, *((line[q], e, x) for q, e, x in found)))
+
+
+def _nearest_first(view, k, group, before, envelope, reach, solve, segment):
+    """Removal parts [(query, enter, leave)] of the queries (an edge in level k (Q,); group, before (Q,) its CL point
+    and last earlier program row; envelope (2, Q) its material, narrowed here; reach, solve and segment as for
+    rounds): first each against the last piece of the move into its previous CL point where that lies in the level
+    (at a CL point of a pass it holds most of what the edges lost), then, for what is left, against the pieces near
+    it (near_pairs, found from the segments left: shorter than the edges), in rounds."""
+    previous = view.previous(k, before)
+    first = np.flatnonzero(previous >= 0)
+    found = [solve(first, previous[first])]
+    narrow(envelope, *found[0])
+    left = np.flatnonzero(envelope[0] < envelope[1])
+    a, b = segment(left, envelope[0, left], envelope[1, left])
+    query, chain, _, _ = near_chains(view, group[left], k[left], a, b, reach[left], before[left])
+    query, quarter, low = view.quarters_near(query, chain, a, b, reach[left], before[left])
+    order = np.lexsort((low, query))
+    return found + rounds(view, left[query[order]], quarter[order], envelope, solve, segment, reach, before, previous)
+
+
+def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top):
+    """Removal intervals (arc (K,), start, end (K,) ψ) of corner arcs (tip, d, w (L, 3) their tool tip, direction
+    across w and axis w, centre (L, 3); the tool's radius big, corner radius `radius`, last ψ top) inside the level moves of
+    program row at most before (L,) (group (L,) their CL points), those overlapping the arc's material lo … hi (L,)
+    (ψ) by more than LENGTH_EPS of arc length: in each level whose height range meets the arc's, the pieces within
+    that level's radius of the arc's plan segment (its points at ρ = big − radius + radius·sin ψ from the axis), in
+    rounds; each pair as the arcs' search solves it (inprocess_plan.arc_piece_intervals)."""
+    none = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
+    if tip.shape[0] == 0:
+        return none
+    plan, toward = view.plan(tip), view.plan(d)
+    rim = big - radius
+    line, k = view.levels_meeting(tip, radius * (1.0 - np.cos(lo)), radius * (1.0 - np.cos(hi)), before)
+    reach = view.r[k]
+
+    def segment(q, start, end):
+        at = line[q]
+        return (plan[at] + (rim + radius * np.sin(start))[:, None] * toward[at],
+                plan[at] + (rim + radius * np.sin(end))[:, None] * toward[at])
+
+    tool = (np.full(tip.shape[0], big), np.full(tip.shape[0], radius), np.full(tip.shape[0], top))
+
+    def solve(q, pc):
+        at = line[q]
+        pair, start, end = arc_piece_intervals(tip[at], d[at], w[at], centre[at], *(part[at] for part in tool),
+                                               *(part[pc] for part in view.hull), view.corner[pc])
+        return _hits(q[pair], start, end, lo[line], hi[line], radius)
+
+    found = _nearest_first(view, k, group[line], before[line], np.stack([lo[line], hi[line]]), reach, solve, segment)
+    return tuple(np.concatenate(part) for part in zip(none, *((line[q], e, x) for q, e, x in found)))
