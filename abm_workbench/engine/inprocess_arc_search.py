@@ -24,6 +24,8 @@ found may depend on the other arcs of the CL point in the call (the group's sphe
 remove. Shapes: L arcs; ψ in radians, lengths in mm.
 """
 
+import functools
+
 import numpy as np
 
 from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _seen_along, _span_pieces, \
@@ -74,9 +76,10 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
         found = [_searched(pieces, line[~level], lo[~level], hi[~level], cl[~level], before[~level], geometry)]
         at = np.flatnonzero(level)
         psi = (lo[at] / radius, hi[at] / radius)
+        screened = _Arcs(line[at], *psi, geometry)
         arc, start, end = level_arcs(view, np.take(tips, line[at], axis=0), d[at], w[at],
                                      np.take(centres, line[at], axis=0), *psi, before[at], cl[at], float(big), radius,
-                                     float(top))
+                                     float(top), functools.partial(_screen, screened))
         envelope = np.stack(psi)
         narrow(envelope, arc, start, end)
         dead = envelope[0] >= envelope[1]
@@ -88,6 +91,15 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
             found.append(_searched(pieces.rest, line[left], lo[left], hi[left], cl[left], before[left], geometry))
         return tuple(np.concatenate(part) for part in zip(*found))
     return _searched(pieces, line, lo, hi, cl, before, geometry)
+
+
+def _screen(arcs, seg, hulls, low, high):
+    """(K,) bool: the pairs (arc seg (K,) non-decreasing, earlier tool's hull: c0, c1, axis, radius, height, corner)
+    not surely apart (_Arcs.near) over the arcs' parts low … high (K,) ψ (per arc, the hull of its pairs' parts)."""
+    arcs.envelope[0, seg], arcs.envelope[1, seg] = np.inf, -np.inf
+    np.minimum.at(arcs.envelope[0], seg, low)
+    np.maximum.at(arcs.envelope[1], seg, high)
+    return arcs.near_hulls(seg, hulls)
 
 
 def _searched(pieces, line, lo, hi, cl, before, geometry):
@@ -139,6 +151,14 @@ class _Arcs:
         """(K,) bool: the pairs (arc seg (K,) non-decreasing, hull index at `level`) not surely apart: what is left
         of the arc in PARTS equal parts, each in the capsule of its chord grown by its sagitta, and the hull (a
         chain's grown by its slack and lean) apart from none of them (inprocess._apart)."""
+        hulls = pieces.hulls(level, index) + (pieces.corners(level, index),)
+        if level == "chain":
+            return self.near_hulls(seg, hulls, pieces.chain_slack[index], pieces.chain_lean[index])
+        return self.near_hulls(seg, hulls)
+
+    def near_hulls(self, seg, hulls, slack=None, lean=None):
+        """near for the hulls (c0, c1, axis, radius, height, corner) (K each) of the pairs, grown by slack and lean
+        (K,) where given."""
         if seg.size == 0:
             return np.zeros(0, dtype=bool)
         # The parts' ends per arc, then gathered for its pairs.
@@ -156,8 +176,9 @@ class _Arcs:
             if rows.size == 0:
                 break
             at = owner[rows]
-            near[rows] = _close(np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0), sag[at], level,
-                                index[rows], pieces)
+            grown = sag[at] if slack is None else sag[at] + slack[rows]
+            near[rows] = _close(np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0), grown,
+                                tuple(h[rows] for h in hulls), None if lean is None else lean[rows])
         return near
 
     def spheres(self, live, first):
@@ -290,7 +311,7 @@ def _clusters_near(arcs, units, live, first, group, pos, count, pieces):
                 break
             at = owner[chosen[rows]]
             point = centre[at, j]
-            close[rows] = _close(point, point, size[at, j], level, index[rows], pieces)
+            close[rows] = _close(point, point, *_grown(size[at, j], level, index[rows], pieces))
         near[chosen] = close
     return near
 
@@ -330,16 +351,21 @@ class _Units:
         self.start = np.cumsum(self.count) - self.count
 
 
-def _close(a, b, grown, level, hull, pieces):
-    """(K,) bool: the segments a … b (K, 3) grown by `grown` (K,) not surely apart from the hulls `hull` (K,) at
-    `level` (a chain's grown by its slack and lean): the flat cylinder's test (inprocess._apart), and where it
-    leaves a pair open and the tool has a corner, the corner's (_corner_apart)."""
-    hulls = pieces.hulls(level, hull)
-    lean = None
+def _grown(grown, level, index, pieces):
+    """(grown, hulls, lean) for _close of the hulls `index` (K,) at `level`: a chain's grown by its slack, with its
+    lean."""
+    hulls = pieces.hulls(level, index) + (pieces.corners(level, index),)
     if level == "chain":
-        grown, lean = grown + pieces.chain_slack[hull], pieces.chain_lean[hull]
-    close = ~_apart(a, b, *hulls, grown, lean)
-    corner = pieces.corners(level, hull)
+        return grown + pieces.chain_slack[index], hulls, pieces.chain_lean[index]
+    return grown, hulls, None
+
+
+def _close(a, b, grown, hulls, lean=None):
+    """(K,) bool: the segments a … b (K, 3) grown by `grown` (K,) not surely apart from the hulls (c0, c1, axis,
+    radius, height, corner) (K each; a chain's grown by its slack, and lean (K,) its lean): the flat cylinder's test
+    (inprocess._apart), and where it leaves a pair open and the tool has a corner, the corner's (_corner_apart)."""
+    corner = hulls[5]
+    close = ~_apart(a, b, *hulls[:5], grown, lean)
     bent = np.flatnonzero(close & (corner > 0.0))
     if bent.size:
         slack = grown[bent] if lean is None else grown[bent] + lean[bent] * np.hypot(hulls[3][bent], hulls[4][bent])

@@ -21,7 +21,8 @@ those of the general search (whose removals are the same pairs' numbers). Length
 import numpy as np
 
 from .inprocess_cover import narrow, run_starts
-from .inprocess_plan import arc_piece_intervals, piece_line_interval
+from .inprocess_plan import arc_kinds, arc_piece_intervals, piece_line_interval
+from .swept import row_dot
 from .tolerances import LENGTH_EPS
 
 #: Margin (mm) of the plan tests: a cell held "whole" is inside by more than this, a piece that "may reach" an edge
@@ -128,13 +129,17 @@ def nearest_pieces(view, group, k, at, bound, before, exact):
     return query[keep], piece[keep]
 
 
-def rounds(view, query, quarter, envelope, solve, segment, reach, before, skip):
+def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
     """Removal parts [(query, enter, leave)] of the queries against the pieces of their quarters (query, quarter
     (K,), nearest first per query), in rounds of 1, 2, 4, … quarters per query (module docstring): a quarter, and
-    then a piece, farther than reach + MARGIN in plan from what is left of its query's edge is dropped. envelope
-    (2, Q): each query's material (from, to; narrowed here); solve(query, piece) → (query, enter, leave) of the
-    pairs that remove something; segment(query, from, to) → the plan segment (a, b) (K, 2) of that part of the
-    query's edge; reach, before (Q,) as for near_chains; skip (Q,): a piece each query has been solved against."""
+    then a piece, farther than reach + MARGIN in plan from what is left of its query's edge is dropped; a straight
+    quarter (slack 0: its pieces run along its chord, and their union is the chord's hull) ending by then is solved
+    as that one hull. owner (Q,): each query's edge, envelope (2, L): each edge's material (from, to; narrowed
+    here); solve(query, hulls) → (query, enter, leave) of the pairs that remove something (hulls: c0, c1, axis,
+    radius, height, corner of each pair's earlier tool); segment(query, from, to) → (a, b, reach): the plan segment
+    a … b (K, 2) of that part of the query's edge and the plan distance reach (K,) beyond which no piece of the
+    level removes anything of it; before (Q,) as for near_chains; skip (Q,): a piece each query has been solved
+    against."""
     found = []
     if query.size == 0:
         return found
@@ -144,18 +149,23 @@ def rounds(view, query, quarter, envelope, solve, segment, reach, before, skip):
     while done < count.max():
         take = (rank >= done) & (rank < done + size)
         q, qu = query[take], quarter[take]
-        keep = envelope[0, q] < envelope[1, q]
+        keep = envelope[0, owner[q]] < envelope[1, owner[q]]
         q, qu = q[keep], qu[keep]
-        a, b = segment(q, envelope[0, q], envelope[1, q])
+        a, b, reach = segment(q, envelope[0, owner[q]], envelope[1, owner[q]])
         keep = segment_distance(a, b, view.quarter_a[qu], view.quarter_b[qu]) - view.quarter_slack[qu] \
-            <= reach[q] + MARGIN
-        q, pc = view.quarter_pieces(q[keep], qu[keep], before)
+            <= reach + MARGIN
+        q, qu = q[keep], qu[keep]
+        straight = (view.quarter_slack[qu] == 0.0) & (view.quarter_last_move[qu] <= before[q])
+        parts = [(q[straight], view.quarter_hulls(qu[straight]))]
+        q, pc = view.quarter_pieces(q[~straight], qu[~straight], before)
         keep = pc != skip[q]
         q, pc = q[keep], pc[keep]
-        a, b = segment(q, envelope[0, q], envelope[1, q])
-        keep = segment_distance(a, b, view.a[pc], view.b[pc]) <= reach[q] + MARGIN
-        found.append(solve(q[keep], pc[keep]))
-        narrow(envelope, *found[-1])
+        a, b, reach = segment(q, envelope[0, owner[q]], envelope[1, owner[q]])
+        keep = segment_distance(a, b, view.a[pc], view.b[pc]) <= reach + MARGIN
+        parts.append((q[keep], view.piece_hulls(pc[keep])))
+        q = np.concatenate([part[0] for part in parts])
+        found.append(solve(q, tuple(np.concatenate(h) for h in zip(*(part[1] for part in parts)))))
+        narrow(envelope, owner[found[-1][0]], *found[-1][1:])
         done, size = done + size, 2 * size
     return found
 
@@ -168,9 +178,10 @@ def _hits(query, enter, leave, lo, hi, scale=1.0):
     return query[hit], enter[hit], leave[hit]
 
 
-def _line_pairs(view, line, piece, origin, direction):
-    """(enter, leave) of lines (indices into origin, direction) in level pieces (inprocess_plan.piece_line_interval)."""
-    return piece_line_interval(origin[line], direction[line], *(part[piece] for part in view.hull), view.corner[piece])
+def _line_pairs(line, hulls, origin, direction):
+    """(enter, leave) of lines (indices into origin, direction) in hulls (c0, c1, axis, radius, height, corner: the
+    earlier tools', inprocess_plan.piece_line_interval)."""
+    return piece_line_interval(origin[line], direction[line], *hulls)
 
 
 def sides(view, line, k, group, origin, direction, plan, before):
@@ -201,7 +212,7 @@ def sides(view, line, k, group, origin, direction, plan, before):
                                   fast[rest])
     line = np.concatenate([line_one, line[rest[query]]])
     piece = np.concatenate([nearest, piece])
-    enter, leave = _line_pairs(view, line, piece, origin, direction)
+    enter, leave = _line_pairs(line, view.piece_hulls(piece), origin, direction)
     return line, enter, leave
 
 
@@ -219,63 +230,104 @@ def ends(view, origin, direction, lo, hi, before, group):
     exact = view.aligned & view.exact[k]
     reach = np.where(exact, view.earlier_radius(k, h), view.r[k])
 
-    def solve(q, pc):
-        enter, leave = _line_pairs(view, line[q], pc, origin, direction)
+    def solve(q, hulls):
+        enter, leave = _line_pairs(line[q], hulls, origin, direction)
         return _hits(q, enter, leave, lo[line], hi[line])
 
     def segment(q, start, end):
         at = line[q]
-        return plan[at] + start[:, None] * toward[at], plan[at] + end[:, None] * toward[at]
+        return plan[at] + start[:, None] * toward[at], plan[at] + end[:, None] * toward[at], reach[q]
 
-    found = _nearest_first(view, k, group[line], before[line], np.stack([lo[line], hi[line]]), reach, solve, segment)
+    found = _nearest_first(view, line, k, np.abs(h), group[line], before[line], np.stack([lo, hi]), solve, segment)
     return tuple(np.concatenate(part) for part in zip(none, *((line[q], e, x) for q, e, x in found)))
 
 
-def _nearest_first(view, k, group, before, envelope, reach, solve, segment):
-    """Removal parts [(query, enter, leave)] of the queries (an edge in level k (Q,); group, before (Q,) its CL point
-    and last earlier program row; envelope (2, Q) its material, narrowed here; reach, solve and segment as for
-    rounds): first each against the last piece of the move into its previous CL point where that lies in the level
-    (at a CL point of a pass it holds most of what the edges lost), then, for what is left, against the pieces near
-    it (near_pairs, found from the segments left: shorter than the edges), in rounds."""
+def _nearest_first(view, line, k, far, group, before, envelope, solve, segment):
+    """Removal parts [(query, enter, leave)] of the queries (edge line (Q,) in level k (Q,); far (Q,) how far the
+    level lies from the edge's tool along the axis: the nearest level first; group, before (Q,) the edge's CL point
+    and last earlier program row; envelope (2, L) each edge's material, narrowed here; solve and segment as for
+    rounds), level by level while an edge has material left: first against the last piece of the move into the
+    previous CL point where that lies in the level (at a CL point of a pass it holds most of what the edges lost),
+    then, for what is left, against the pieces near it (near_chains, found from the segments left: shorter than the
+    edges), in rounds."""
+    order = np.lexsort((far, line))
+    head, count = run_starts(line[order])
+    rank = np.empty(line.size, dtype=np.intp)
+    rank[order] = np.arange(line.size) - np.repeat(head, count)
     previous = view.previous(k, before)
-    first = np.flatnonzero(previous >= 0)
-    found = [solve(first, previous[first])]
-    narrow(envelope, *found[0])
-    left = np.flatnonzero(envelope[0] < envelope[1])
-    a, b = segment(left, envelope[0, left], envelope[1, left])
-    query, chain, _, _ = near_chains(view, group[left], k[left], a, b, reach[left], before[left])
-    query, quarter, low = view.quarters_near(query, chain, a, b, reach[left], before[left])
-    order = np.lexsort((low, query))
-    return found + rounds(view, left[query[order]], quarter[order], envelope, solve, segment, reach, before, previous)
+    found = []
+    for r in range(int(count.max()) if count.size else 0):
+        mine = np.flatnonzero((rank == r) & (envelope[0, line] < envelope[1, line]))
+        first = mine[previous[mine] >= 0]
+        found.append(solve(first, view.piece_hulls(previous[first])))
+        narrow(envelope, line[found[-1][0]], *found[-1][1:])
+        left = mine[envelope[0, line[mine]] < envelope[1, line[mine]]]
+        a, b, reach = segment(left, envelope[0, line[left]], envelope[1, line[left]])
+        query, chain, _, _ = near_chains(view, group[left], k[left], a, b, reach, before[left])
+        query, quarter, low = view.quarters_near(query, chain, a, b, reach, before[left])
+        order = np.lexsort((low, query))
+        found += rounds(view, left[query[order]], quarter[order], line, envelope, solve, segment, before, previous)
+    return found
 
 
-def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top):
+def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, screen=None):
     """Removal intervals (arc (K,), start, end (K,) ψ) of corner arcs (tip, d, w (L, 3) their tool tip, direction
     across w and axis w, centre (L, 3); the tool's radius big, corner radius `radius`, last ψ top) inside the level moves of
     program row at most before (L,) (group (L,) their CL points), those overlapping the arc's material lo … hi (L,)
     (ψ) by more than LENGTH_EPS of arc length: in each level whose height range meets the arc's, the pieces within
     that level's radius of the arc's plan segment (its points at ρ = big − radius + radius·sin ψ from the axis), in
-    rounds; each pair as the arcs' search solves it (inprocess_plan.arc_piece_intervals)."""
+    rounds; each pair as the arcs' search solves it (inprocess_plan.arc_piece_intervals). screen(arc, hulls, low,
+    high) (K,) → (K,) bool, if given: False for pairs whose earlier tool's hull (c0, c1, axis, radius, height,
+    corner) is surely apart from the arc's part low … high (ψ), asked of the pairs the plan view does not decide
+    (their solver costs more than that test)."""
     none = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))
     if tip.shape[0] == 0:
         return none
     plan, toward = view.plan(tip), view.plan(d)
     rim = big - radius
     line, k = view.levels_meeting(tip, radius * (1.0 - np.cos(lo)), radius * (1.0 - np.cos(hi)), before)
-    reach = view.r[k]
+    # The part of each arc within the level's heights (its bottom and top above the arc's tip, to MARGIN): nothing
+    # else of the arc can lie in that level's solids; the reach is the level tool's radius at the part's top.
+    height = row_dot(tip, np.broadcast_to(view.w, tip.shape))[line]
+    rise = view.z[k] - height
+    bottom, roof = rise - MARGIN, rise + view.h[k] + MARGIN
+    with np.errstate(invalid="ignore"):
+        first = np.where(bottom > 0.0, np.arccos(np.clip(1.0 - bottom / radius, -1.0, 1.0)), 0.0)
+        last = np.where(roof < radius * (1.0 - np.cos(top)), np.arccos(np.clip(1.0 - roof / radius, -1.0, 1.0)),
+                        top)
+    reach = view.earlier_radius(k, radius * (1.0 - np.cos(np.minimum(last, hi[line]))) - bottom) + MARGIN
+    # The same tool at a level at or above the arc's tip (exact on a coordinate axis: the closed form's heights):
+    # along the arc, a point's distance from a piece changes no faster than its distance ρ from the axis, and the
+    # earlier tool's radius at the point's height grows at least as fast, so a piece that removes something of a
+    # part of the arc holds its last point (docs/ENGINE.md, "The level view for tools with a corner").
+    same = view.aligned & view.exact[k] & (view.r[k] == big) & (view.rc[k] == radius) & (rise >= 0.0)
 
     def segment(q, start, end):
         at = line[q]
-        return (plan[at] + (rim + radius * np.sin(start))[:, None] * toward[at],
-                plan[at] + (rim + radius * np.sin(end))[:, None] * toward[at])
+        start, end = np.clip(start, first[q], last[q]), np.clip(end, first[q], last[q])
+        a = plan[at] + (rim + radius * np.sin(start))[:, None] * toward[at]
+        b = plan[at] + (rim + radius * np.sin(end))[:, None] * toward[at]
+        tight = same[q]
+        a[tight] = b[tight]
+        point = view.earlier_radius(k[q], radius * (1.0 - np.cos(end)) - rise[q] + MARGIN) + MARGIN
+        return a, b, np.where(tight, point, reach[q])
 
     tool = (np.full(tip.shape[0], big), np.full(tip.shape[0], radius), np.full(tip.shape[0], top))
 
-    def solve(q, pc):
+    def solve(q, hulls):
         at = line[q]
+        if screen is not None:
+            kinds = arc_kinds(tip[at], w[at], *(part[at] for part in tool[:2]), *hulls)
+            general = np.flatnonzero(~(kinds[0] | kinds[1] | kinds[2]))
+            keep = np.ones(q.size, dtype=bool)
+            keep[general] = screen(at[general], tuple(part[general] for part in hulls), envelope[0, at[general]],
+                                   envelope[1, at[general]])
+            q, at, hulls = q[keep], at[keep], tuple(part[keep] for part in hulls)
         pair, start, end = arc_piece_intervals(tip[at], d[at], w[at], centre[at], *(part[at] for part in tool),
-                                               *(part[pc] for part in view.hull), view.corner[pc])
+                                               *hulls)
         return _hits(q[pair], start, end, lo[line], hi[line], radius)
 
-    found = _nearest_first(view, k, group[line], before[line], np.stack([lo[line], hi[line]]), reach, solve, segment)
+    envelope = np.stack([lo, hi])
+    far = np.abs(view.z[k] - row_dot(tip, np.broadcast_to(view.w, tip.shape))[line])
+    found = _nearest_first(view, line, k, far, group[line], before[line], envelope, solve, segment)
     return tuple(np.concatenate(part) for part in zip(none, *((line[q], e, x) for q, e, x in found)))

@@ -356,6 +356,18 @@ class LevelView:
                          -1)
         return np.where((piece >= 0) & (self.piece_level[np.maximum(piece, 0)] == k), piece, -1)
 
+    def piece_hulls(self, piece):
+        """(c0, c1, axis, radius, height, corner) of the pieces (K,) (each (K, 3) or (K,))."""
+        return tuple(part[piece] for part in self.hull) + (self.corner[piece],)
+
+    def quarter_hulls(self, quarter):
+        """(c0, c1, axis, radius, height, corner) of one hull per quarter (K,): from its first piece's start to its
+        last piece's end, with its first piece's tool (the union of its pieces where these run along its chord)."""
+        first = self.chain_piece[self.quarter_start[quarter]]
+        last = self.chain_piece[self.quarter_start[quarter] + self.quarter_count[quarter] - 1]
+        c0, c1, axis, radius, height = self.hull
+        return c0[first], c1[last], axis[first], radius[first], height[first], self.corner[first]
+
     def rim_of(self, piece):
         """(K,) the rim (radius less corner radius: where the tool's bottom is flat) of the tools of pieces (K,)."""
         return self.hull[3][piece] - self.corner[piece]

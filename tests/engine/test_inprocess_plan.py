@@ -15,8 +15,7 @@ import numpy as np
 import pytest
 
 from abm_workbench.engine import Tool, Toolpath
-from abm_workbench.engine import inprocess
-from abm_workbench.engine import inprocess_arc_search as search
+from abm_workbench.engine import inprocess_plan as plan
 from abm_workbench.engine.inprocess_plan import arc_level_intervals, line_level_interval
 
 from . import test_inprocess_corner_program as programs
@@ -248,10 +247,9 @@ def test_z_level_program_against_the_reference(ratio, monkeypatch):
             return result
         return call
 
-    monkeypatch.setattr(search, "arc_level_intervals", counted("plan", search.arc_level_intervals, True))
-    monkeypatch.setattr(search, "arc_swept_intervals", counted("general", search.arc_swept_intervals))
-    monkeypatch.setattr(inprocess, "line_level_interval", counted("plan", inprocess.line_level_interval, True))
-    monkeypatch.setattr(inprocess, "line_swept_interval", counted("general", inprocess.line_swept_interval))
+    for name, key, decided in (("arc_level_intervals", "plan", True), ("arc_swept_intervals", "general", False),
+                               ("line_level_interval", "plan", True), ("line_swept_interval", "general", False)):
+        monkeypatch.setattr(plan, name, counted(key, getattr(plan, name), decided))
     program, tool, rows = z_level_program(ratio)
     toolpath = Toolpath(program.array("cl")[rows], np.zeros(rows.size), np.zeros(rows.size))
     got, changed, want, _, _ = programs.run(program, "staircase", tool, toolpath, rows, programs.PHI)
