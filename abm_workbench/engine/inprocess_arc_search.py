@@ -74,23 +74,33 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
         w, d = np.take(ws, line, axis=0), np.take(ds, line, axis=0)
         level = (w == view.w).all(axis=1) & (row_dot(d, w) == 0.0)
         found = [_searched(pieces, line[~level], lo[~level], hi[~level], cl[~level], before[~level], geometry)]
-        at = np.flatnonzero(level)
-        psi = (lo[at] / radius, hi[at] / radius)
-        screened = _Arcs(line[at], *psi, geometry)
-        arc, start, end = level_arcs(view, np.take(tips, line[at], axis=0), d[at], w[at],
-                                     np.take(centres, line[at], axis=0), *psi, before[at], cl[at], float(big), radius,
-                                     float(top), functools.partial(_screen, screened))
-        envelope = np.stack(psi)
-        narrow(envelope, arc, start, end)
-        dead = envelope[0] >= envelope[1]
-        alive = ~dead[arc]
-        found.append((line[at[dead]], psi[0][dead] * radius, psi[1][dead] * radius))
-        found.append((line[at[arc[alive]]], start[alive] * radius, end[alive] * radius))
-        left = at[~dead]
-        if pieces.rest.move.size:
-            found.append(_searched(pieces.rest, line[left], lo[left], hi[left], cl[left], before[left], geometry))
+        level = np.flatnonzero(level)
+        for begin, end in _blocks(cl[level]):
+            found += _in_levels(pieces, level[begin:end], line, lo, hi, cl, before, d, w, geometry)
         return tuple(np.concatenate(part) for part in zip(*found))
     return _searched(pieces, line, lo, hi, cl, before, geometry)
+
+
+def _in_levels(pieces, at, line, lo, hi, cl, before, d, w, geometry):
+    """Removal parts [(rows, enter, leave)] (mm of arc length) of the arcs line[at] (at: a block of whole CL points)
+    across the levels' axis: the level view (inprocess_level_pairs.arcs, the pairs it does not decide screened by
+    the sure-miss test of _Arcs), then the search among the other moves for those not removed whole."""
+    centres, _, _, tips, radius, big, top = geometry
+    psi = (lo[at] / radius, hi[at] / radius)
+    screened = _Arcs(line[at], *psi, geometry)
+    arc, start, end = level_arcs(pieces.levels, np.take(tips, line[at], axis=0), d[at], w[at],
+                                 np.take(centres, line[at], axis=0), *psi, before[at], cl[at], big, radius, top,
+                                 functools.partial(_screen, screened))
+    envelope = np.stack(psi)
+    narrow(envelope, arc, start, end)
+    dead = envelope[0] >= envelope[1]
+    alive = ~dead[arc]
+    found = [(line[at[dead]], psi[0][dead] * radius, psi[1][dead] * radius),
+             (line[at[arc[alive]]], start[alive] * radius, end[alive] * radius)]
+    left = at[~dead]
+    if pieces.rest.move.size:
+        found.append(_searched(pieces.rest, line[left], lo[left], hi[left], cl[left], before[left], geometry))
+    return found
 
 
 def _screen(arcs, seg, hulls, low, high):

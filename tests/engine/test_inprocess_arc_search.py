@@ -13,6 +13,7 @@ import dataclasses
 import numpy as np
 
 import abm_workbench.engine.inprocess_arc_search as search
+import abm_workbench.engine.inprocess_plan as plan
 from abm_workbench.engine import CutSettings, Tool, Toolpath
 from abm_workbench.engine.inprocess import _apart, swept_pieces
 from abm_workbench.engine.stocks import engage_in_process
@@ -52,7 +53,7 @@ def largest_arrays(monkeypatch, block, pairs):
     monkeypatch.setattr(search, "ARC_BLOCK", block)
     monkeypatch.setattr(search, "ROUND_PAIRS", pairs)
     monkeypatch.setattr(search, "_apart", counting("apart", search._apart))
-    monkeypatch.setattr(search, "arc_swept_intervals", counting("solve", search.arc_swept_intervals))
+    monkeypatch.setattr(plan, "arc_swept_intervals", counting("solve", plan.arc_swept_intervals))
     engagement = engage_in_process(STAIRCASE, tool, toolpath, PHI, pieces, rows)[0]
     return engagement, seen["apart"], seen["solve"], pieces
 

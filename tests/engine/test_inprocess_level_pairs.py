@@ -1,0 +1,199 @@
+"""The level view for tools with a corner (inprocess_level_pairs) against the independent references.
+
+Z-level programs of a bull-nose and a ball-end mill (zig-zag passes joined by half circles as chords, at 45 %
+stepover, levels closer than the ball's radius so that its arcs reach into the level above, a ramp between levels)
+are checked against the brute-force reference of the whole program (test_inprocess_corner_program: a sampled,
+bisected inside flag from the tools' profiles), and against the general search (levels=False) on many more CL
+points. Each asserts that the level view took the level moves' pairs, so that a change routing them back to the
+general search shows. Then the parts one by one: the arcs' bound (a piece that removes something of an arc's part
+holds the part's last point within the earlier tool's radius there) on random placements against the sampled
+swept solid, the branch and bound of the sides' nearest pieces against all pieces, and the plan distance of two
+segments against a fine sampling with its Lipschitz bound.
+Planted errors, tried by hand: the quarters' slack left out of the rounds' test, and the arcs' bound taken at the
+part's first point instead of its last, each fail the general-search tests here (the second the reference tests
+too).
+"""
+
+import numpy as np
+import pytest
+
+from abm_workbench.engine import Tool, Toolpath
+from abm_workbench.engine import inprocess_level_pairs as pairs
+from abm_workbench.engine.inprocess import swept_pieces
+from abm_workbench.engine.inprocess_level_pairs import nearest_pieces, segment_distance
+from abm_workbench.engine.stocks import in_process_runs
+
+from . import test_inprocess_corner_program as programs
+from .test_inprocess_corner import in_swept
+
+PHI = np.arange(0.0, 360.0, 30.0)
+
+
+def zigzag(z, y0, y1, step, x0=-16.0, x1=16.0):
+    """Points of passes along x at height z from y0 by `step` to y1, joined by half circles as 12 chords each (all
+    moved by programs.ODD, off the stock's round numbers)."""
+    points = []
+    ys = np.arange(y0, y1 + 1e-9, step)
+    for i, y in enumerate(ys):
+        a, b = (x0, x1) if i % 2 == 0 else (x1, x0)
+        points.append(programs.straight(a, b, y, z, 9))
+        if i + 1 < ys.size:
+            side = 1.0 if i % 2 == 0 else -1.0
+            t = np.linspace(-0.5 * np.pi, 0.5 * np.pi, 13)[1:] * side
+            points.append(np.stack([b + side * 0.5 * step * np.cos(t), y + 0.5 * step + 0.5 * step * np.sin(t),
+                                    np.full(t.size, z)], axis=1) + programs.ODD)
+    return np.concatenate(points)
+
+
+def level_program(ratio):
+    """A D4 tool of corner radius ratio·R over the staircase (tops 6, 10 and 4 mm): a ramp, then two levels 1.2 mm
+    apart (less than the ball's radius: its arcs reach into the level above), the second 0.7 mm across from the
+    first; 45 % stepover. (program, tool, rows of the second level)."""
+    program = programs.Program()
+    tool = Tool(4.0, 2, 12.0, corner_radius=2.0 * ratio)
+    args = (tool.radius, tool.flute_length, tool.corner_radius)
+    program.add(np.stack([np.linspace(-16.0, -6.0, 8), np.full(8, -9.0), np.linspace(7.0, 5.0, 8)], axis=1), *args)
+    program.add(zigzag(5.0, -9.0, 9.0, 1.8), *args)
+    rows = program.add(zigzag(3.8, -8.3, 8.0, 1.8), *args)
+    return program, tool, rows
+
+
+def counted(monkeypatch):
+    """Counts of the calls into the level view's three edge kinds."""
+    seen = {"sides": 0, "ends": 0, "arcs": 0}
+    for name in seen:
+        function = getattr(pairs, name)
+
+        def call(*args, _name=name, _function=function, **kwargs):
+            seen[_name] += 1
+            return _function(*args, **kwargs)
+        monkeypatch.setattr(pairs, name, call)
+    from abm_workbench.engine import inprocess, inprocess_arc_search, inprocess_levels
+    monkeypatch.setattr(inprocess, "ends", pairs.ends)
+    monkeypatch.setattr(inprocess_levels, "sides", pairs.sides)
+    monkeypatch.setattr(inprocess_arc_search, "level_arcs", pairs.arcs)
+    return seen
+
+
+@pytest.mark.parametrize("ratio", [0.25, 1.0])
+def test_corner_levels_against_the_reference(ratio, monkeypatch):
+    seen = counted(monkeypatch)
+    program, tool, rows = level_program(ratio)
+    pieces = swept_pieces(program.moves())
+    assert pieces.levels is not None and pieces.levels.z.size == 2 and pieces.levels.exact.all()
+    assert pieces.rest.move.size == 7  # the ramp alone
+    pick = rows[[14, 27, 40, 66, 93]]
+    toolpath = Toolpath(program.array("cl")[pick], np.zeros(pick.size), np.zeros(pick.size))
+    got, changed, want, _, _ = programs.run(program, "staircase", tool, toolpath, pick, PHI, pieces=pieces)
+    assert changed.all()
+    assert not programs.mismatches(got, want)
+    assert seen["sides"] and seen["arcs"] and (seen["ends"] or ratio == 1.0)
+
+
+@pytest.mark.parametrize("ratio", [0.25, 0.5, 1.0])
+def test_corner_levels_give_the_general_search_numbers(ratio):
+    """The peripheral edges' runs and the end edges' lengths with and without the level view, on every third CL
+    point of the second level at every 10° and on the pass sides (φ 90°, 270°), to 1e-9 mm."""
+    program, tool, rows = level_program(ratio)
+    moves = program.moves()
+    pick = rows[1::3]
+    toolpath = Toolpath(program.array("cl")[pick], np.zeros(pick.size), np.zeros(pick.size))
+    phi = np.r_[np.arange(0.0, 360.0, 10.0), 89.0, 91.0]
+    runs = [in_process_runs(programs.STAIRCASE, tool, toolpath, phi, swept_pieces(moves, levels=levels), pick)
+            for levels in (True, False)]
+    np.testing.assert_allclose(runs[0].length, runs[1].length, rtol=0, atol=1e-9)
+    assert (runs[0].length > 0.0).any()
+    ends = [programs.engine_ends(programs.STAIRCASE, tool, toolpath, phi, swept_pieces(moves, levels=levels), pick)
+            for levels in (True, False)]
+    for a, b in zip(ends[0]["end"], ends[1]["end"]):
+        np.testing.assert_allclose(np.sort(a), np.sort(b), rtol=0, atol=1e-9)
+
+
+def _profile_radius(h, big, corner):
+    """The plan radius of a tool (big, corner) at height h ≥ 0 above its bottom (its corner's, then big)."""
+    inside = np.clip(corner - h, 0.0, corner)
+    return big - corner + np.sqrt(corner * corner - inside * inside)
+
+
+@pytest.mark.parametrize("ratio", [0.2, 0.5, 1.0])
+def test_arc_bound_against_the_sampled_solid(ratio):
+    """For the same tool at the arc's level or above it (rise ≥ 0), every arc point inside a piece's swept solid
+    (sampled reference) at ψ ≤ ψ1 has the arc's point at ψ1 within the earlier tool's radius at ψ1's height of the
+    piece's path in plan: the bound the arcs' rounds and candidate search use (inprocess_level_pairs.arcs)."""
+    rng = np.random.default_rng(7)
+    big, flute = 3.0, 10.0
+    corner = ratio * big
+    checked = 0
+    for _ in range(120):
+        rise = rng.choice([0.0, rng.uniform(0.0, corner)])
+        c0 = np.array([*rng.uniform(-4.0, 4.0, 2), rise])
+        move = np.array([*rng.uniform(-3.0, 3.0, 2), 0.0]) * rng.choice([0.0, 1.0, 1.0])
+        angle = rng.uniform(0.0, 2.0 * np.pi)
+        d = np.array([np.cos(angle), np.sin(angle), 0.0])
+        psi = np.linspace(0.0, 0.5 * np.pi, 121)
+        plan = (big - corner + corner * np.sin(psi))[:, None] * d
+        points = plan + (corner * (1.0 - np.cos(psi)))[:, None] * np.array([0.0, 0.0, 1.0])
+        inside = in_swept(points, c0, move, np.array([0.0, 0.0, 1.0]), big, corner, flute)
+        if not inside.any():
+            continue
+        first = psi[np.argmax(inside)]
+        for psi1 in psi[psi >= first]:
+            at = (big - corner + corner * np.sin(psi1)) * d
+            gap = _point_segment(at[None, :2], c0[:2], (c0 + move)[:2])[0]
+            reach = _profile_radius(corner * (1.0 - np.cos(psi1)) - rise, big, corner)
+            assert gap <= reach + 1e-7, (rise, psi1, gap, reach)
+            checked += 1
+    assert checked > 300
+
+
+def _point_segment(p, a, b):
+    """Distance (n,) of points p (n, 2) from the segment a … b (2,) (a point where a = b), written here apart."""
+    d = b - a
+    t = np.clip(((p - a) @ d) / (d @ d), 0.0, 1.0) if d @ d > 0.0 else np.zeros(len(p))
+    return np.linalg.norm(p - a - t[:, None] * d, axis=1)
+
+
+def test_nearest_pieces_against_all_pieces():
+    """The sides' branch and bound keeps, for each point, the level's pieces of earlier moves nearest to it in plan
+    (within the bound, 2 mm; those within 1e-9 mm of the least distance over all of them, brute force), and none
+    farther than the least by more than 2·MARGIN."""
+    program, tool, rows = level_program(0.25)
+    view = swept_pieces(program.moves()).levels
+    rng = np.random.default_rng(3)
+    n = 400
+    at = np.stack([rng.uniform(-18.0, 18.0, n), rng.uniform(-11.0, 11.0, n)], axis=1)
+    k = rng.integers(0, view.z.size, n)
+    before = rng.choice(rows, n)
+    bound = np.full(n, 2.0)
+    query, piece = nearest_pieces(view, np.arange(n), k, at, bound, before, np.ones(n, dtype=bool))
+    level_piece = np.flatnonzero(view.piece_level >= 0)
+    found = 0
+    for i in range(n):
+        mine = level_piece[(view.piece_level[level_piece] == k[i]) & (view.move[level_piece] <= before[i])]
+        gap = np.array([_point_segment(at[i:i + 1], view.a[j], view.b[j])[0] for j in mine])
+        got = set(piece[query == i].tolist())
+        if not mine.size or gap.min() > bound[i] + 1e-7:
+            assert not got, i
+            continue
+        assert set(mine[gap <= gap.min() + 1e-9].tolist()) <= got, i
+        assert all(gap[mine == j][0] <= gap.min() + 2.0 * pairs.MARGIN + 1e-12 for j in got), i
+        found += 1
+    assert found > 50
+
+
+def test_segment_distance_against_sampling():
+    """The plan distance of two segments (crossing, parallel, collinear, degenerate) against the least distance of
+    4001 samples of one to the other segment: never above it, and below it by at most half the sample spacing."""
+    rng = np.random.default_rng(11)
+    cases = [rng.uniform(-2.0, 2.0, (4, 2)) for _ in range(200)]
+    cases += [np.array([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]]),  # collinear, apart
+              np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [3.0, 0.0]]),  # collinear, overlapping
+              np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]),  # parallel
+              np.array([[0.0, 0.0], [0.0, 0.0], [0.5, 0.5], [0.5, 0.5]]),  # two points
+              np.array([[-1.0, 0.0], [1.0, 0.0], [0.0, -1.0], [0.0, 1.0]])]  # crossing
+    for p0, p1, a, b in cases:
+        got = segment_distance(p0[None], p1[None], a[None], b[None])[0]
+        t = np.linspace(0.0, 1.0, 4001)[:, None]
+        sampled = _point_segment(p0 + t * (p1 - p0), a, b).min()
+        assert got <= sampled + 1e-12
+        assert got >= sampled - 0.5 * np.linalg.norm(p1 - p0) / 4000 - 1e-12
