@@ -188,32 +188,36 @@ def sides(view, line, k, group, origin, direction, plan, before):
     """(line, enter, leave) (K,): the intervals (NaN where none) of lines along w (indices line (L,) into origin,
     direction (N, 3), plan (N, 2), before (N,); group (N,) their CL points) inside the pieces of levels k (L,) of a
     tool with a corner, piece by piece: a side's removal runs from where the corner's radius reaches it (the
-    nearer the piece, the lower) to the top. A line whose foot a chain holds within its rim (the tool's flat
-    bottom) in a level exact on a coordinate axis takes that chain's nearest piece alone, and in such a level any
-    other line the pieces within 2·MARGIN of its nearest: every other piece's interval lies inside theirs."""
+    nearer the piece, the lower) to the top. In a level exact on a coordinate axis every piece gives the same top,
+    so a line whose foot lies within the rim (the tool's flat bottom) of a chain that holds its grid cell, or of the
+    piece into its previous CL point, takes the interval of lift 0 alone, and any other line the pieces within
+    2·MARGIN of its nearest (nearest_pieces): every other piece's interval lies inside theirs. In other levels each
+    piece within the level tool's radius gives its own."""
     at = plan[line]
     fast = view.aligned & view.exact[k]
     alone = np.where(fast, view.held(line, k, at, before[line]), -1)
     one = np.flatnonzero(alone >= 0)
-    nearest = view.nearest(line[one], view.chain_start[alone[one]], view.chain_count[alone[one]], plan)
-    # The piece into the previous CL point: where it holds the foot within its rim it is the answer alone; else its
-    # distance bounds the nearest's.
+    held = view.chain_piece[view.chain_start[alone[one]]]
+    # The piece into the previous CL point: where it holds the foot within its rim its interval is the answer; else
+    # its distance bounds the nearest's.
     previous = np.where(alone < 0, view.previous(k, before[line]), -1)
     has = np.flatnonzero(previous >= 0)
     bound = view.r[k]
     gap = plan_distance(at[has], view.a[previous[has]], view.b[previous[has]])
     bound[has] = np.where(fast[has], np.minimum(bound[has], gap + 2.0 * MARGIN), bound[has])
     inner = has[fast[has] & (gap < view.rim_of(previous[has]) - MARGIN)]
-    line_one = np.concatenate([line[one], line[inner]])
-    nearest = np.concatenate([nearest, previous[inner]])
     rest = np.flatnonzero(alone < 0)
     rest = rest[~np.isin(rest, inner)]
     query, piece = nearest_pieces(view, group[line[rest]], k[rest], at[rest], bound[rest], before[line[rest]],
                                   fast[rest])
-    line = np.concatenate([line_one, line[rest[query]]])
-    piece = np.concatenate([nearest, piece])
-    enter, leave = _line_pairs(line, view.piece_hulls(piece), origin, direction)
-    return line, enter, leave
+    solved = np.concatenate([line[inner], line[rest[query]]])
+    enter, leave = _line_pairs(solved, view.piece_hulls(np.concatenate([previous[inner], piece])), origin, direction)
+    # Held within the rim in a level exact on a coordinate axis: the closed form's interval of its nearest piece,
+    # lift 0 (inprocess_plan._side_in_move), from any piece of the level (all give the same heights).
+    c0, _, axis, _, height = view.hull
+    up = row_dot(origin[line[one]] - c0[held], axis[held])
+    return (np.concatenate([line[one], solved]), np.concatenate([0.0 - up, enter]),
+            np.concatenate([height[held] - up, leave]))
 
 
 def ends(view, origin, direction, lo, hi, before, group):

@@ -31,9 +31,7 @@ def engage_stock(stock, tool, toolpath, settings, *, progress=None):
 
     A tool with a corner radius goes to profile.profile_engagement. Every Engagement carries the end
     edge's engaged length (profile.end_lengths)."""
-    if not isinstance(stock, (Staircase, TerracedStock)):
-        raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
-    check_arguments(tool=tool, toolpath=toolpath, settings=settings)
+    _check(stock, tool, toolpath, settings)
     if tool.corner_radius > 0.0:
         return profile_engagement(stock, tool, toolpath, settings, progress=progress)
     if isinstance(stock, Staircase):
@@ -41,6 +39,13 @@ def engage_stock(stock, tool, toolpath, settings, *, progress=None):
     else:
         found = engage_terraced(stock, tool, toolpath, settings, progress=progress)
     return dataclasses.replace(found, end_length=end_lengths(stock, tool, toolpath, settings.phi))
+
+
+def _check(stock, tool, toolpath, settings):
+    """TypeError for a stock that is neither a Staircase nor a TerracedStock; the arguments' own checks."""
+    if not isinstance(stock, (Staircase, TerracedStock)):
+        raise TypeError(f"stock must be a Staircase or a TerracedStock, got {type(stock).__name__}")
+    check_arguments(tool=tool, toolpath=toolpath, settings=settings)
 
 
 def _engage_staircase(stock, tool, toolpath, settings, progress):
@@ -261,28 +266,32 @@ class _CornerEdges:
 def _corner_in_process(stock, tool, toolpath, settings, pieces, program_index):
     """engage_in_process for a tool with a corner: (Engagement, initial length (m, p), changed (m,)).
 
-    The stock's Engagement (profile.profile_engagement) first; each instant's engaged range of the
-    peripheral edge (from its LEP and UEP heights) bounds the search for removals on the corner arc and on
-    the straight side, the end edge's intervals in the stock bound it on the end edge. The CL points with a
-    removal get their edges' intervals in the stock less the removals; those that lost length on any edge
-    (changed) take that result in every per-instant and per-CL field, case "corner", with the end edge's
-    in-process length; the others keep the stock's Engagement."""
-    initial = engage_stock(stock, tool, toolpath, settings)
-    m, p = initial.shape
+    The peripheral and end edges' intervals in the stock are found once (as profile.profile_engagement finds them)
+    and give the stock's Engagement; each instant's engaged range of the peripheral edge (from its LEP and UEP
+    heights) bounds the search for removals on the corner arc and on the straight side, the end edge's intervals
+    in the stock bound it on the end edge. The CL points with a removal get their edges' intervals less the
+    removals; those that lost length on any edge (changed) take that result in every per-instant and per-CL field,
+    case "corner", with the end edge's in-process length; the others keep the stock's Engagement."""
+    _check(stock, tool, toolpath, settings)
+    m, p = len(toolpath), settings.phi.size
     program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
     if program_index.shape != (m,):
         raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
     phi = settings.phi
     edges = _CornerEdges(tool, toolpath, phi)
+    terraced = None if isinstance(stock, Staircase) else as_terraced(stock, tool.corner_radius)
+    inside = profile_intervals(stock, tool, toolpath, phi, terraced)
+    end = edges.end_lines()
+    end_inside = stock_intervals(stock, *end) if end is not None else None
+    initial = _profile_engagement(inside, toolpath, tool, settings,
+                                  None if end is None else end_inside.length.reshape(m, p))
     line = np.flatnonzero(initial.engaged.reshape(-1))
     total = edges.corner_length + max(tool.flute_length - tool.corner_radius, 0.0)
     lo = np.maximum(edges.s_of_height(initial.lep_l.reshape(-1)[line]) - _RANGE_SLACK, 0.0)
     hi = np.minimum(edges.s_of_height(initial.uep_l.reshape(-1)[line]) + _RANGE_SLACK, total)
     rows, enter, leave = edges.removals(pieces, program_index, line, lo, hi)
     found = [rows]
-    end = edges.end_lines()
     if end is not None:
-        end_inside = stock_intervals(stock, *end)
         first = np.flatnonzero(np.r_[True, end_inside.rows[1:] != end_inside.rows[:-1]]) if end_inside.rows.size \
             else end_inside.rows
         last = np.r_[first[1:], end_inside.rows.size] - 1
@@ -294,19 +303,13 @@ def _corner_in_process(stock, tool, toolpath, settings, pieces, program_index):
     touched = np.unique(np.concatenate(found) // p)
     if touched.size == 0:
         return initial, initial.length, changed
-    part = toolpath.rows(touched)
     local = np.searchsorted(touched, rows // p) * p + rows % p
-    inside = profile_intervals(stock, tool, part, phi, as_terraced(stock))
-    remaining = subtract(inside, local, enter, leave)
-    lost = remaining.length != inside.length
+    part_inside = inprocess_pass.cl_rows(inside, touched, p)
+    remaining = subtract(part_inside, local, enter, leave)
+    lost = remaining.length != part_inside.length
     end_length = None
     if end is not None:
-        keep = np.isin(end_inside.rows // p, touched)
-        from .intervals import EdgeIntervals
-        end_part = EdgeIntervals(touched.size * p, np.searchsorted(touched, end_inside.rows[keep] // p) * p
-                                 + end_inside.rows[keep] % p, *(getattr(end_inside, name)[keep] for name in (
-                                     "start", "end", "start_surface", "start_section", "start_wall", "end_surface",
-                                     "end_section", "end_wall")))
+        end_part = inprocess_pass.cl_rows(end_inside, touched, p)
         end_local = np.searchsorted(touched, end_rows // p) * p + end_rows % p
         end_remaining = subtract(end_part, end_local, end_enter, end_leave)
         lost |= end_remaining.length != end_part.length
@@ -315,6 +318,7 @@ def _corner_in_process(stock, tool, toolpath, settings, pieces, program_index):
     if not lost.any():
         return initial, initial.length, changed
     changed[touched[lost]] = True
+    part = toolpath.rows(touched)
     in_process = _profile_engagement(remaining, part, tool, settings, end_length)
     per_cl = {field.name: getattr(initial, field.name).copy() for field in dataclasses.fields(initial)
               if field.name not in ("phi", "h")}
