@@ -26,7 +26,7 @@ import numpy as np
 from .engagement import SURFACES
 from .inprocess_balls import BallParts
 from .inprocess_cover import narrow, run_starts
-from .inprocess_level_pairs import ends
+from .inprocess_level_pairs import GROUP, ends
 from .inprocess_levels import LevelView, level_moves
 from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
@@ -639,10 +639,11 @@ def _level_removals(pieces, program_index, line, lo, hi, origins, directions, p)
 
 def _in_levels(pieces, ask, program_index, at, lo, hi, origins, directions, p):
     """Removal parts (line, enter, leave) of lines `at` along or across the levels' axis: the level view's answer
-    `ask` (LevelView.removals or inprocess_level_pairs.ends), then the search among the other moves for the lines it did not
-    remove whole whose material comes near them."""
+    `ask` (LevelView.removals or inprocess_level_pairs.ends; GROUP consecutive lines share a candidate search),
+    then the search among the other moves for the lines it did not remove whole whose material comes near them."""
     parts = []
-    seg, enter, leave = ask(_rows(origins, at), _rows(directions, at), lo, hi, program_index[at // p] - 1, at // p)
+    seg, enter, leave = ask(_rows(origins, at), _rows(directions, at), lo, hi, program_index[at // p] - 1,
+                            at // GROUP)
     envelope = np.stack([lo, hi])
     narrow(envelope, seg, enter, leave)
     dead = envelope[0] >= envelope[1]
@@ -654,7 +655,7 @@ def _in_levels(pieces, ask, program_index, at, lo, hi, origins, directions, p):
         alive = alive[_near_rest(pieces.rest, _rows(origins, at[alive]), _rows(directions, at[alive]),
                                  envelope[0, alive], envelope[1, alive], program_index[at[alive] // p] - 1)]
         parts.append(_searched_removals(pieces.rest, program_index, at[alive], lo[alive], hi[alive],
-                                        origins, directions, p))
+                                        origins, directions, p, envelope[:, alive]))
     return parts
 
 
@@ -682,13 +683,14 @@ def _near_rest(rest, origin, direction, lo, hi, before):
     return near
 
 
-def _searched_removals(pieces, program_index, line, lo, hi, origins, directions, p):
-    """removal_intervals by the general search (the docstring's waves), lines (L,) not empty."""
+def _searched_removals(pieces, program_index, line, lo, hi, origins, directions, p, left=None):
+    """removal_intervals by the general search (the docstring's waves), lines (L,) not empty; left (from, to) (L,),
+    if given: what removals found elsewhere left of each line's material lo … hi, where the search starts."""
     if line.size == 0 or pieces.move.size == 0:
         return _none()[:3]
     # Rows 0, 1: the envelope of each line's remaining material, narrowed as removals are found
     # (lo ≥ hi: nothing remains, the line is removed whole); rows 2, 3: lo, hi as given.
-    envelope = np.stack([lo, hi, lo, hi])
+    envelope = np.stack([lo, hi, lo, hi] if left is None else [*left, lo, hi])
     state = (envelope, _rows(origins, line), _rows(directions, line), program_index[line // p] - 1, pieces)
     group, group_before = _line_groups(line, p, program_index)
     cl = line // p

@@ -31,7 +31,7 @@ import numpy as np
 from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _seen_along, _span_pieces, \
     _sphere_chains
 from .inprocess_cover import narrow
-from .inprocess_level_pairs import arcs as level_arcs
+from .inprocess_level_pairs import GROUP, arcs as level_arcs
 from .inprocess_plan import arc_kinds, arc_piece_intervals
 from .swept import row_dot
 from .tolerances import LENGTH_EPS
@@ -89,8 +89,8 @@ def _in_levels(pieces, at, line, lo, hi, cl, before, d, w, geometry):
     psi = (lo[at] / radius, hi[at] / radius)
     screened = _Arcs(line[at], *psi, geometry)
     arc, start, end = level_arcs(pieces.levels, np.take(tips, line[at], axis=0), d[at], w[at],
-                                 np.take(centres, line[at], axis=0), *psi, before[at], cl[at], big, radius, top,
-                                 functools.partial(_screen, screened))
+                                 np.take(centres, line[at], axis=0), *psi, before[at], line[at] // GROUP, big, radius,
+                                 top, functools.partial(_screen, screened))
     envelope = np.stack(psi)
     narrow(envelope, arc, start, end)
     dead = envelope[0] >= envelope[1]
@@ -99,7 +99,8 @@ def _in_levels(pieces, at, line, lo, hi, cl, before, d, w, geometry):
              (line[at[arc[alive]]], start[alive] * radius, end[alive] * radius)]
     left = at[~dead]
     if pieces.rest.move.size:
-        found.append(_searched(pieces.rest, line[left], lo[left], hi[left], cl[left], before[left], geometry))
+        found.append(_searched(pieces.rest, line[left], lo[left], hi[left], cl[left], before[left], geometry,
+                               envelope[:, ~dead]))
     return found
 
 
@@ -112,8 +113,10 @@ def _screen(arcs, seg, hulls, low, high):
     return arcs.near_hulls(seg, hulls)
 
 
-def _searched(pieces, line, lo, hi, cl, before, geometry):
-    """arc_removal_intervals by the search (module docstring) among pieces, in blocks of whole CL points."""
+def _searched(pieces, line, lo, hi, cl, before, geometry, left=None):
+    """arc_removal_intervals by the search (module docstring) among pieces, in blocks of whole CL points; left
+    (from, to) (L,) ψ, if given: what is left of each arc's material lo … hi (mm) by removals found elsewhere,
+    where the search starts (it keeps the removals that overlap lo … hi, as always)."""
     found = [(np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))]
     if line.size == 0 or pieces.move.size == 0:
         return found[0]
@@ -121,7 +124,7 @@ def _searched(pieces, line, lo, hi, cl, before, geometry):
     for begin, end in _blocks(cl):
         rows = slice(begin, end)
         found.append(_block(pieces, line[rows], lo[rows] / radius, hi[rows] / radius, cl[rows], before[rows],
-                            geometry))
+                            geometry, None if left is None else (left[0][rows], left[1][rows])))
     return tuple(np.concatenate(part) for part in zip(*found))
 
 
@@ -142,10 +145,10 @@ class _Arcs:
     """The arcs of a block: each one's geometry, the envelope of what is left of it (rows 0, 1: ψ from, to,
     narrowed as removals are found; rows 2, 3: the range as given) and its capsule."""
 
-    def __init__(self, line, lo, hi, geometry):
+    def __init__(self, line, lo, hi, geometry, left=None):
         centres, ds, ws, tips, self.radius, self.big, self.top = geometry
         self.centre, self.d, self.w, self.tip = (np.take(v, line, axis=0) for v in (centres, ds, ws, tips))
-        self.envelope = np.stack([lo, hi, lo, hi])
+        self.envelope = np.stack([lo, hi, lo, hi] if left is None else [*left, lo, hi])
 
     def capsule(self, seg):
         """(a, b, sagitta, middle) of what is left of the arcs seg: chord ends, a bound of the arc's distance
@@ -246,10 +249,10 @@ class _Arcs:
         return found
 
 
-def _block(pieces, line, lo, hi, cl, before, geometry):
+def _block(pieces, line, lo, hi, cl, before, geometry, left=None):
     """arc_removal_intervals of one block (lo, hi in ψ; cl, before (L,) each arc's CL point and last earlier
     program row): (rows, enter, leave) in mm of arc length."""
-    arcs = _Arcs(line, lo, hi, geometry)
+    arcs = _Arcs(line, lo, hi, geometry, left)
     first = np.flatnonzero(np.r_[True, cl[1:] != cl[:-1]])
     group = np.cumsum(np.r_[True, cl[1:] != cl[:-1]]) - 1
     units = _Units(arcs, group, first, before[first], pieces)

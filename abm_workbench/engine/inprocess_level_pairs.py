@@ -25,6 +25,8 @@ from .inprocess_plan import arc_kinds, arc_piece_intervals, piece_line_interval
 from .swept import row_dot
 from .tolerances import LENGTH_EPS
 
+#: Edges per group (consecutive rows, the angles of a CL point): a group's candidate pieces are searched once.
+GROUP = 16
 #: Margin (mm) of the plan tests: a cell held "whole" is inside by more than this, a piece that "may reach" an edge
 #: may be this much beyond it. Far above the rounding of the plan distances and the closed forms' own slack
 #: (swept.FEASIBLE_EPS, 1e-9 mm), far below any length that matters.
