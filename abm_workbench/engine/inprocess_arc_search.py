@@ -58,7 +58,9 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
     radius, big: the tool's corner radius and radius (mm); pieces, program_index and p as for
     inprocess.removal_intervals, whose rules these follow: removals overlapping lo … hi by more than LENGTH_EPS,
     one removal [lo, hi] for an arc covered whole (each (arc, piece) pair is solved over the whole arc, 0 … top,
-    whatever is left of it). See the module docstring for the search.
+    whatever is left of it). See the module docstring for the search. Where the program has z levels
+    (pieces.levels), the arcs across their axis meet them in plan (inprocess_level_pairs.arcs) and then, what is
+    left of them, the other moves (pieces.rest) in that search.
     """
     line = np.asarray(line, dtype=np.intp).reshape(-1)
     empty = (np.zeros(0, dtype=np.intp), np.zeros(0), np.zeros(0))

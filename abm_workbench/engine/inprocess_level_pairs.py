@@ -7,15 +7,19 @@ nearest piece's corner reaches it, an end edge's and a corner arc's removals are
 The view hands every edge the pieces near it instead, and each (edge, piece) pair is solved as the general search
 solves it (inprocess_plan's closed forms, inprocess_arc where those do not decide).
 
-The pieces near an edge are found once per CL point and level (group): the chains the grid lists in the cells of
-the box of all the group's edges in plan, then their quarters and pieces within reach of the box's middle (every
-piece that comes within reach of an edge of the group is among them: an earlier tool's points lie within its
-radius, its reach, of its path in plan), then per edge those within reach of its own plan segment. The pairs are
-solved nearest first in rounds of 1, 2, 4, … pieces per edge; after each round the edge's envelope (its material
-less what the removals found cover from either end without a gap, inprocess_cover.narrow) narrows, and a piece
-whose plan distance from what is left exceeds its reach is dropped, its removal lying in what is covered or
-beyond the material: the union of the removals over the material is that of all the pairs, so the lengths are
-those of the general search (whose removals are the same pairs' numbers). Lengths in mm, ψ in radians.
+The pieces near an edge are found once per group (GROUP consecutive edges: angles of one CL point) and level: the
+chains the grid lists in the cells of the box of the group's edges in plan, their chords within reach of the box
+(every piece that comes within reach of an edge of the group is among them: an earlier tool's points lie within
+its radius, its reach, of its path in plan), then per edge the chords, quarters and pieces within reach of its own
+plan segment. End edges and arcs take their levels nearest first, in each first the piece into the previous CL
+point, then their quarters nearest first in rounds of 1, 2, 4, … per edge; after each round the edge's envelope
+(its material less what the removals found cover from either end without a gap, inprocess_cover.narrow) narrows,
+and a quarter or piece whose plan distance from what is left exceeds its reach is dropped, its removal lying in
+what is covered or beyond the material: the union of the removals over the material is that of all the pairs, so
+the lengths are those of the general search (whose removals are the same pairs' numbers; a straight quarter is
+solved as its one hull, the union of its pieces). Straight sides take the nearest pieces alone (their removal
+starts lowest there), found by branch and bound. docs/ENGINE.md, "The level view for tools with a corner". Lengths
+in mm, ψ in radians.
 """
 
 import numpy as np
