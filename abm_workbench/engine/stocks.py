@@ -199,12 +199,19 @@ def in_process_runs(stock, tool, toolpath, phi_deg, pieces, program_index):
     phi = np.atleast_1d(np.asarray(phi_deg, dtype=float))
     program_index = np.asarray(program_index, dtype=np.intp).reshape(-1)
     edges = _CornerEdges(tool, toolpath, phi)
-    inside = profile_intervals(stock, tool, toolpath, phi)
+    inside = profile_intervals(stock, tool, toolpath, phi, _terraced(stock, tool))
     first = np.flatnonzero(np.r_[True, inside.rows[1:] != inside.rows[:-1]]) if inside.rows.size else inside.rows
     last = np.r_[first[1:], inside.rows.size] - 1
     rows, enter, leave = edges.removals(pieces, program_index, inside.rows[first], inside.start[first],
                                         inside.end[last])
     return subtract(inside, rows, enter, leave)
+
+
+def _terraced(stock, tool):
+    """The terraced form profile_intervals takes for a tool with a corner (as profile.profile_engagement makes it:
+    its curved pieces split at the corner radius), None for a Staircase: every in-process result of such a tool
+    starts from the same intervals as the stock's Engagement."""
+    return None if isinstance(stock, Staircase) else as_terraced(stock, tool.corner_radius)
 
 
 #: Ends of an edge's engaged range are widened by this (mm) where they come back from heights (the range
@@ -279,8 +286,7 @@ def _corner_in_process(stock, tool, toolpath, settings, pieces, program_index):
         raise ValueError(f"program_index must have shape ({m},), got {program_index.shape}")
     phi = settings.phi
     edges = _CornerEdges(tool, toolpath, phi)
-    terraced = None if isinstance(stock, Staircase) else as_terraced(stock, tool.corner_radius)
-    inside = profile_intervals(stock, tool, toolpath, phi, terraced)
+    inside = profile_intervals(stock, tool, toolpath, phi, _terraced(stock, tool))
     end = edges.end_lines()
     end_inside = stock_intervals(stock, *end) if end is not None else None
     initial = _profile_engagement(inside, toolpath, tool, settings,
