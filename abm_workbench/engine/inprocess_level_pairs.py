@@ -282,8 +282,8 @@ def _nearest_first(view, line, k, far, group, before, envelope, solve, segment):
 
 def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, screen=None):
     """Removal intervals (arc (K,), start, end (K,) ψ) of corner arcs (tip, d, w (L, 3) their tool tip, direction
-    across w and axis w, centre (L, 3); the tool's radius big, corner radius `radius`, last ψ top) inside the level moves of
-    program row at most before (L,) (group (L,) their CL points), those overlapping the arc's material lo … hi (L,)
+    across w and axis w, centre (L, 3); the tool's radius big, corner radius `radius`, last ψ top) inside the level
+    moves of program row at most before (L,) (group (L,) their CL points), those overlapping the arc's material lo … hi (L,)
     (ψ) by more than LENGTH_EPS of arc length: in each level whose height range meets the arc's, the pieces within
     that level's radius of the arc's plan segment (its points at ρ = big − radius + radius·sin ψ from the axis), in
     rounds; each pair as the arcs' search solves it (inprocess_plan.arc_piece_intervals). screen(arc, hulls, low,

@@ -14,19 +14,19 @@ level with one radius make chains of up to CHAIN pieces, each bounded by its cho
 last end, in plan) and its slack: every piece end lies within the slack of the chord, so the path's
 distance from a point is the chord's within ± slack (the path runs from one end of the chord to the
 other, so every point of the chord is within the slack of it too). Each level gets a grid in plan.
-Per cell: the chain that comes first to hold the whole cell (chord within r − slack − half the
-cell's diagonal of its centre, r less the tool's corner radius), and the chains that may reach into it (within r + slack + half the
-diagonal), by their first move. A line asks its levels in ascending z, from the lowest whose range
-reaches its material: in the cell of its foot, a chain that holds the cell and ends before the
-line's CL point answers yes; no chain reaching the cell that begins before it answers no; otherwise
-the chords of the chains reaching it are measured, then those of the quarters (runs of CHAIN // 4
-pieces) of the chains the chords leave in doubt (or that run past the CL point), then the pieces of
-the quarters still in doubt. Where the answer is yes the removal is that of one piece's
-hull as the closed form gives it (swept.line_hull_interval, as the general search solves it: the
-same numbers); a line whose material is covered up to its top, from no higher than the next level's
-lowest end, needs no higher level (they start there or higher and add nothing below). The levels of a
-tool with a corner answer a line, and the end edges and corner arcs of any tool, by the pairs of the
-pieces near them (inprocess_level_pairs), found through the same grid. Lengths in mm.
+Per cell: the chain that comes first to hold the whole cell (chord within r − slack − half the cell's
+diagonal of its centre, r less the tool's corner radius), and the chains that may reach into it (within
+r + slack + half the diagonal), by their first move. A line asks its levels in ascending z, from the
+lowest whose range reaches its material: in the cell of its foot, a chain that holds the cell and ends
+before the line's CL point answers yes; no chain reaching the cell that begins before it answers no;
+otherwise the chords of the chains reaching it are measured, then those of the quarters (runs of
+CHAIN // 4 pieces) of the chains the chords leave in doubt (or that run past the CL point), then the pieces of
+the quarters still in doubt. Where the answer is yes the removal is that of one piece's hull as the
+closed form gives it (swept.line_hull_interval, as the general search solves it: the same numbers); a
+line whose material is covered up to its top, from no higher than the next level's lowest end, needs no
+higher level (they start there or higher and add nothing below). The levels of a tool with a corner
+answer a line, and the end edges and corner arcs of any tool, by the pairs of the pieces near them
+(inprocess_level_pairs), found through the same grid. Lengths in mm.
 """
 
 import numpy as np
