@@ -222,9 +222,9 @@ class _Arcs:
     def plan(self, seg, level, index, pieces):
         """(K,) bool: the pairs (arc seg, hull index at `level`) the plan view decides (inprocess_plan.arc_kinds)."""
         tool = (np.full(seg.size, self.big), np.full(seg.size, self.radius))
-        below, at, steady = arc_kinds(self.tip[seg], self.w[seg], *tool, *pieces.hulls(level, index),
-                                      pieces.corners(level, index))
-        return below | at | steady
+        below, at, steady, above = arc_kinds(self.tip[seg], self.w[seg], *tool, *pieces.hulls(level, index),
+                                             pieces.corners(level, index))
+        return below | at | steady | above
 
     def open(self):
         """(L,) bool: the arcs with something left."""

@@ -314,13 +314,15 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
 
     def segment(q, start, end):
         at = line[q]
+        # What is left of the arc outside the level's heights: no piece of the level reaches it.
+        outside = (end < first[q]) | (start > last[q])
         start, end = np.clip(start, first[q], last[q]), np.clip(end, first[q], last[q])
         a = plan[at] + (rim + radius * np.sin(start))[:, None] * toward[at]
         b = plan[at] + (rim + radius * np.sin(end))[:, None] * toward[at]
         tight = same[q]
         a[tight] = b[tight]
         point = view.earlier_radius(k[q], radius * (1.0 - np.cos(end)) - rise[q] + MARGIN) + MARGIN
-        return a, b, np.where(tight, point, reach[q])
+        return a, b, np.where(outside, -np.inf, np.where(tight, point, reach[q]))
 
     tool = (np.full(tip.shape[0], big), np.full(tip.shape[0], radius), np.full(tip.shape[0], top))
 
@@ -328,7 +330,7 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
         at = line[q]
         if screen is not None:
             kinds = arc_kinds(tip[at], w[at], *(part[at] for part in tool[:2]), *hulls)
-            general = np.flatnonzero(~(kinds[0] | kinds[1] | kinds[2]))
+            general = np.flatnonzero(~np.any(kinds, axis=0))
             keep = np.ones(q.size, dtype=bool)
             keep[general] = screen(at[general], tuple(part[general] for part in hulls), envelope[0, at[general]],
                                    envelope[1, at[general]])

@@ -87,17 +87,19 @@ def _meet(*parts):
 
 
 def arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner):
-    """(below, level, steady) (K,) bool: the (arc, earlier move) pairs arc_level_intervals decides: as outside
-    (the arc r or more below the move), in closed form at its level (the same tool), and in closed form where
-    the earlier tool's radius is the same at every height of the arc (a flat end, or its corner below the arc);
-    arguments as there."""
+    """(below, level, steady, above) (K,) bool: the (arc, earlier move) pairs arc_level_intervals decides: as outside
+    (the arc r or more below the move), in closed form at its level (the same tool), in closed form where the
+    earlier tool's radius is the same at every height of the arc (a flat end, or its corner below the arc), and by
+    the monotone bisection of the same tool's level above the arc's tip (less than r above); arguments as there."""
     same_axis = np.all(p_axis == axis, axis=1) & across(c0, c1, p_axis)
     level = row_dot(tip - c0, axis)
     below = same_axis & (level <= -corner)
     bent = corner > 0.0
-    level_arc = same_axis & (level == 0.0) & (p_big == big) & (p_corner == corner) & (p_height >= corner) & bent
+    same_tool = (p_big == big) & (p_corner == corner) & (p_height >= corner) & bent
+    level_arc = same_axis & (level == 0.0) & same_tool
     steady = same_axis & ~below & ~level_arc & bent & ((p_corner == 0.0) | (level >= p_corner))
-    return below, level_arc, steady
+    above = same_axis & ~below & (level < 0.0) & same_tool
+    return below, level_arc, steady, above
 
 
 def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner):
@@ -107,8 +109,14 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
     tip, d, axis (K, 3): the arc's tool tip, its edge's unit direction across the axis and the unit axis; big,
     corner, top (K,): the tool's radius, corner radius and the arc's last ψ; c0, c1, p_axis (K, 3), p_big,
     p_height, p_corner (K,): the earlier move and its tool."""
-    below, level_arc, steady = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
+    below, level_arc, steady, above = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
     start, end = np.full(tip.shape[0], np.nan), np.full(tip.shape[0], np.nan)
+    rows = np.flatnonzero(above)
+    if rows.size:
+        q = tip[rows] - c0[rows]
+        rise = -row_dot(q, axis[rows])
+        start[rows], end[rows] = _arc_above(q + rise[:, None] * axis[rows], rise, c1[rows] - c0[rows], d[rows],
+                                            big[rows], corner[rows], top[rows])
     rows = np.flatnonzero(level_arc)
     if rows.size:
         start[rows], end[rows] = _arc_in_level(tip[rows] - c0[rows], c1[rows] - c0[rows], d[rows], axis[rows],
@@ -120,7 +128,7 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
         start[rows], end[rows] = _arc_in_cylinder(q - level[:, None] * axis[rows], level, c1[rows] - c0[rows],
                                                   d[rows], axis[rows], big[rows], corner[rows], top[rows],
                                                   p_big[rows], p_height[rows])
-    return below | level_arc | steady, start, end
+    return below | level_arc | steady | above, start, end
 
 
 def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner):
@@ -137,6 +145,41 @@ def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, 
                                     c0[rest], c1[rest], p_axis[rest], p_big[rest], p_height[rest], p_corner[rest])
         pair, start, end = np.r_[pair, rest[found[0]]], np.r_[start, found[1]], np.r_[end, found[2]]
     return pair, start, end
+
+
+#: Halvings of the monotone bisection of _arc_above (its bracket, at most π/2 wide, ends below 10⁻¹⁶ rad).
+ABOVE_STEPS = 60
+
+
+def _arc_above(g0, rise, m, d, big, corner, top):
+    """(start, end) ψ of arcs against the same tool's earlier move across the axis at a level rise (K,) above the
+    arc's tip, 0 < rise < r (g0: the tip from c0 across the axis; m the move). The arc's point at ψ stands at height
+    a = r·(1 − cos ψ), where the earlier tool's radius is ρ_e = R − r + √(r² − (r·cos ψ + rise)²) (from
+    ψ₀ = acos(1 − rise/r) on; below it the earlier tool is not there), at ρ = R − r + r·sin ψ from the axis. Its
+    distance from the segment less ρ_e is non-increasing in ψ (the distance changes no faster than ρ, ρ_e grows at
+    least as fast: docs/ENGINE.md, "The level view for tools with a corner"), so the removed part is a suffix
+    ψ* … top, ψ* found by bisection (ABOVE_STEPS halvings); NaN where the arc's top is outside."""
+    rim = big - corner
+
+    def gap(psi):
+        q = g0 + (rim + corner * np.sin(psi))[:, None] * d
+        length = row_dot(m, m)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            t = np.clip(np.where(length > 0.0, row_dot(q, m) / np.where(length > 0.0, length, 1.0), 0.0), 0.0, 1.0)
+        foot = q - t[:, None] * m
+        depth = corner * np.cos(psi) + rise
+        return np.sqrt(row_dot(foot, foot)) - rim - np.sqrt(np.maximum(corner * corner - depth * depth, 0.0))
+
+    first = np.minimum(np.arccos(np.clip(1.0 - rise / corner, -1.0, 1.0)), top)
+    low, high = first.copy(), top.copy()
+    inside_top = gap(high) <= 0.0
+    whole = gap(low) <= 0.0
+    for _ in range(ABOVE_STEPS):
+        middle = 0.5 * (low + high)
+        outside = gap(middle) > 0.0
+        low, high = np.where(outside, middle, low), np.where(outside, high, middle)
+    start = np.where(whole, first, high)
+    return np.where(inside_top, start, np.nan), np.where(inside_top, top, np.nan)
 
 
 def _arc_in_level(g0, m, d, axis, big, corner, top):

@@ -197,3 +197,37 @@ def test_segment_distance_against_sampling():
         sampled = _point_segment(p0 + t * (p1 - p0), a, b).min()
         assert got <= sampled + 1e-12
         assert got >= sampled - 0.5 * np.linalg.norm(p1 - p0) / 4000 - 1e-12
+
+
+@pytest.mark.parametrize("ratio", [0.2, 0.5, 1.0])
+def test_arc_against_the_same_tool_above(ratio):
+    """An arc against the same tool's move across the axis at a level 0 < rise < r above its tip (the kind the
+    plan view decides by its monotone bisection, inprocess_plan._arc_above): the removed part against the sampled
+    swept solid, at 241 points of the arc, away from the part's start by 1e-6 rad."""
+    from abm_workbench.engine.inprocess_plan import arc_level_intervals
+    rng = np.random.default_rng(5)
+    big, flute = 3.0, 10.0
+    corner = ratio * big
+    axis = np.array([0.0, 0.0, 1.0])
+    psi = np.linspace(0.0, 0.5 * np.pi, 241)
+    checked = 0
+    for _ in range(80):
+        rise = rng.uniform(0.02, 0.98) * corner
+        c0 = np.array([*rng.uniform(-4.0, 4.0, 2), rise])
+        move = np.array([*rng.uniform(-3.0, 3.0, 2), 0.0]) * rng.choice([0.0, 1.0, 1.0])
+        angle = rng.uniform(0.0, 2.0 * np.pi)
+        d = np.array([np.cos(angle), np.sin(angle), 0.0])
+        one = [np.array([v]) for v in (big, corner, 0.5 * np.pi)]
+        decided, start, end = arc_level_intervals(np.zeros((1, 3)), d[None], axis[None], *one, c0[None],
+                                                  (c0 + move)[None], axis[None], np.array([big]),
+                                                  np.array([flute]), np.array([corner]))
+        assert decided[0]
+        points = (big - corner + corner * np.sin(psi))[:, None] * d + (corner * (1.0 - np.cos(psi)))[:, None] * axis
+        inside = in_swept(points, c0, move, axis, big, corner, flute)
+        if np.isnan(end[0]) or not end[0] > start[0]:
+            assert not inside[psi < 0.5 * np.pi - 1e-6].any()
+            continue
+        clear = np.abs(psi - start[0]) > 1e-6
+        np.testing.assert_array_equal(inside[clear], (psi >= start[0])[clear])
+        checked += int(inside.any())
+    assert checked > 20
