@@ -25,13 +25,14 @@ PHI = CutSettings(0.1, 0.0, 0.0, 350.0, 10.0)  # 36 angles
 
 
 def ball_program():
-    """Five passes of a D8 ball-end mill across the staircase, 2.5 mm apart and each 0.4 mm lower, then a sixth
-    between the last two: (program, tool, rows of the sixth pass)."""
+    """Five passes of a D8 R3 bull-nose mill across the staircase, 2.5 mm apart and each 0.4 mm lower, then a sixth of
+    a D8 ball-end mill between the last two: (program, tool, rows of the sixth pass). The earlier tool is another
+    one, so the plan view decides none of the ball's arcs against it (inprocess_plan.arc_kinds): every pair goes
+    through the search's sure-miss tests and the arc solver checked here."""
     program = Program()
     tool = Tool(8.0, 2, 12.0, corner_radius=4.0)
     for k in range(5):
-        program.add(straight(-12, 12, -5.0 + 2.5 * k, 2.8 - 0.4 * k, 13), tool.radius, tool.flute_length,
-                    tool.corner_radius)
+        program.add(straight(-12, 12, -5.0 + 2.5 * k, 2.8 - 0.4 * k, 13), tool.radius, tool.flute_length, 3.0)
     rows = program.add(straight(-12, 12, 3.75, 1.0, 13), tool.radius, tool.flute_length, tool.corner_radius)
     return program, tool, rows
 
