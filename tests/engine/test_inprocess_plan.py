@@ -201,8 +201,9 @@ def test_sides_and_end_edges_against_earlier_moves(seed):
 
 
 def test_moves_not_across_the_axis_are_left_to_the_general_solvers():
-    """A move with a part along the axis (a ramp), another axis, or an arc at another level of a different tool is
-    not decided here."""
+    """A move with a part along the axis (a ramp), another axis, or an arc at another level of a different tool (a
+    level above of another corner radius, the same level of another radius) is not decided here; the same tool's
+    level above is (by the monotone bisection, inprocess_plan._arc_above)."""
     axis = np.tile([0.0, 0.0, 1.0], (4, 1))
     tilted = np.tile([0.0, 0.6, 0.8], (4, 1))
     tip = np.zeros((4, 3))
@@ -212,9 +213,13 @@ def test_moves_not_across_the_axis_are_left_to_the_general_solvers():
     other = np.array([axis[0], tilted[0], axis[0], axis[0]])
     big, corner = np.full(4, 3.0), np.full(4, 1.0)
     p_big = np.array([3.0, 3.0, 3.0, 2.5])
+    p_corner = np.array([1.0, 1.0, 0.8, 1.0])
+    decided, _, _ = arc_level_intervals(tip, d, axis, big, corner, np.full(4, 0.5 * np.pi), c0, c1, other, p_big,
+                                        np.full(4, 10.0), p_corner)
+    assert not decided.any()
     decided, _, _ = arc_level_intervals(tip, d, axis, big, corner, np.full(4, 0.5 * np.pi), c0, c1, other, p_big,
                                         np.full(4, 10.0), corner)
-    assert not decided.any()
+    assert decided.tolist() == [False, False, True, False]
     decided, _, _ = line_level_interval(tip, np.tile([0.3, 0.4, 0.866], (4, 1)), c0, c1, axis, big, np.full(4, 10.0),
                                         corner)
     assert not decided.any()
