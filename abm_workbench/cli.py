@@ -34,6 +34,7 @@ made before the results are streamed into them, and removed again when the comma
 """
 
 import argparse
+import contextlib
 import math
 import os
 import re
@@ -47,6 +48,7 @@ import numpy as np
 
 from .errors import InputError, ParameterError
 from .forces import COEFFICIENT_NAMES, MATERIALS
+from .formats import BEFORE_MOVES
 from .formats.cl import STEP, TOLERANCE
 from .jobs import BY_NAME, CUTTING, REQUIRED, WALL_MODELS, WALL_POINTS, option_words
 from .parallel import ChunkError
@@ -70,11 +72,14 @@ def main(argv=None):
     SIGTERM and SIGHUP stop a run as Ctrl-C does (the same clean-up: no temporary file, staging
     folder or newly made folder left), exit status 128 + the signal's number; from the first of
     them on, SIGINT, SIGTERM and SIGHUP are ignored until the clean-up is done, so a second signal
-    cannot cut it short. numpy's floating-point warnings are not printed.
+    cannot cut it short. Once the outputs start moving into place (formats.BEFORE_MOVES) the run is
+    finishing and the three are ignored, so that it cannot end with some outputs new and others old.
+    numpy's floating-point warnings are not printed.
     """
     previous = {}
     try:
         _stopping_signals(previous)
+        BEFORE_MOVES.append(_ignore_stops)
         return _main(argv)
     except KeyboardInterrupt as interrupt:
         _ignore_stops()
@@ -84,6 +89,8 @@ def main(argv=None):
         print(("\n" if sys.stderr.isatty() else "") + f"{PROG}: {words}", file=sys.stderr)
         return 128 + stop
     finally:
+        with contextlib.suppress(ValueError):
+            BEFORE_MOVES.remove(_ignore_stops)
         for number, handler in previous.items():
             signal.signal(number, handler)
 

@@ -96,6 +96,18 @@ def check_output_path(path):
                          f"at most {longest} are allowed here")
 
 
+#: Callables (no arguments) run right before staged outputs start moving into place (replacing, and
+#: report.staging.staged). The command line adds one that ignores stop signals from then on: a run whose
+#: outputs are moving is finishing, and stopped between two moves it would leave a mixed set.
+BEFORE_MOVES = []
+
+
+def before_moves():
+    """Run BEFORE_MOVES."""
+    for callback in BEFORE_MOVES:
+        callback()
+
+
 @contextlib.contextmanager
 def replacing(*paths):
     """Stage new versions of `paths`: yield a list of temporary paths, one per target.
@@ -103,13 +115,15 @@ def replacing(*paths):
     Each temporary file is created empty in its target's folder. When the block finishes,
     each is moved onto its target with os.replace; if the block raises anything (including
     KeyboardInterrupt), every temporary file is removed and the targets are left as they were.
-    Each final move is atomic; only a crash between two of them could leave a mixed set.
+    Each final move is atomic; the callables in BEFORE_MOVES run before the first (the command line
+    ignores stop signals from then on), so only a crash between two of them could leave a mixed set.
     """
     temporaries = []
     try:
         for path in paths:
-            temporaries.append(_new_temporary(os.fspath(path)))
+            _new_temporary(os.fspath(path), temporaries)
         yield list(temporaries)
+        before_moves()
         for temporary, path in zip(temporaries, paths):
             os.replace(temporary, path)
     except BaseException:
@@ -119,16 +133,17 @@ def replacing(*paths):
         raise
 
 
-def _new_temporary(path):
-    """Create an empty, hidden, uniquely named file beside `path` (permissions by umask)."""
+def _new_temporary(path, temporaries):
+    """Create an empty, hidden, uniquely named file beside `path` (permissions by umask), appended to the
+    list `temporaries` before it is created: a stop signal right after the file appears finds it listed."""
     folder, name = os.path.split(path)
     while True:
-        temporary = os.path.join(folder, f".{name}.{secrets.token_hex(6)}.tmp")
+        temporaries.append(os.path.join(folder, f".{name}.{secrets.token_hex(6)}.tmp"))
         try:
-            os.close(os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
-            return temporary
+            os.close(os.open(temporaries[-1], os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
+            return
         except FileExistsError:
-            continue
+            temporaries.pop()
 
 
 #: Memory a text file takes to read, in bytes per byte of the file: the text, its lines and their

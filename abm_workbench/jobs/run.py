@@ -378,7 +378,10 @@ def check_report_outputs(job, report, fcstd=None):
 
 @contextlib.contextmanager
 def output_folders(outputs):
-    """Make the missing folders of `outputs`; remove the ones made (if empty) when the block fails."""
+    """Make the missing folders of `outputs`; remove the ones made (if empty) when the block fails.
+
+    Each folder is listed before it is made (a stop signal can raise between any two steps: one right
+    after os.mkdir returned must still find it listed); one that appeared meanwhile is not ours."""
     made = []
     try:
         for path in outputs:
@@ -386,8 +389,11 @@ def output_folders(outputs):
             while not os.path.exists(folder):
                 folder, missing = os.path.dirname(folder), missing + [folder]
             for folder in reversed(missing):
-                os.mkdir(folder)
                 made.append(folder)
+                try:
+                    os.mkdir(folder)
+                except FileExistsError:
+                    made.pop()
         yield
     except BaseException:
         for folder in reversed(made):

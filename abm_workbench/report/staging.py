@@ -2,8 +2,10 @@
 
 import contextlib
 import os
+import secrets
 import shutil
-import tempfile
+
+from ..formats import before_moves
 
 
 @contextlib.contextmanager
@@ -15,21 +17,37 @@ def staged(path, *, folder=False):
     (folder=True): yields a new empty hidden folder beside `path`, renamed to `path` at the
     end; a folder already at `path` is moved aside first and then removed. If the block
     raises anything (KeyboardInterrupt too), the temporary folder is removed and `path` is
-    left as it was.
+    left as it was. formats.BEFORE_MOVES run before the final move.
     """
     path = os.path.abspath(os.fspath(path))
     parent, name = os.path.split(path)
-    temporary = tempfile.mkdtemp(prefix=f".{name}.", suffix=".tmp", dir=parent)
+    made = []
     try:
-        if folder:  # mkdtemp makes it private (0700); a report folder gets the usual permissions
+        temporary = _new_folder(parent, f".{name}.", ".tmp", made)
+        if folder:  # made private (0700); a report folder gets the usual permissions
             os.chmod(temporary, 0o777 & ~_umask())
         yield temporary if folder else os.path.join(temporary, name)
+        before_moves()
         if folder:
-            _swap_in(temporary, path)
+            _swap_in(temporary, path, made)
         else:
             os.replace(os.path.join(temporary, name), path)
     finally:
-        shutil.rmtree(temporary, ignore_errors=True)
+        for each in made:
+            shutil.rmtree(each, ignore_errors=True)
+
+
+def _new_folder(parent, prefix, suffix, made):
+    """Make a new private folder prefix + 12 hex digits + suffix in `parent`, appended to the list `made`
+    before it is made (a stop signal can raise between any two steps: one right after os.mkdir returned
+    must find it listed, to be removed)."""
+    while True:
+        made.append(os.path.join(parent, f"{prefix}{secrets.token_hex(6)}{suffix}"))
+        try:
+            os.mkdir(made[-1], 0o700)
+            return made[-1]
+        except FileExistsError:
+            made.pop()
 
 
 def _umask():
@@ -39,13 +57,18 @@ def _umask():
     return mask
 
 
-def _swap_in(new, path):
-    """Rename folder `new` to `path`, removing what was at `path` once the new one is in place."""
+def _swap_in(new, path, made):
+    """Rename folder `new` to `path`, removing what was at `path` once the new one is in place; the old one
+    waits in a folder listed in `made` meanwhile, and is moved back if anything (a stop signal) interrupts."""
     if not os.path.exists(path):
         os.replace(new, path)
         return
     parent, name = os.path.split(path)
-    aside = tempfile.mkdtemp(prefix=f".{name}.", suffix=".old", dir=parent)
-    os.replace(path, os.path.join(aside, name))
-    os.replace(new, path)
-    shutil.rmtree(aside, ignore_errors=True)
+    old = os.path.join(_new_folder(parent, f".{name}.", ".old", made), name)
+    try:
+        os.replace(path, old)
+        os.replace(new, path)
+    except BaseException:
+        if os.path.exists(old) and not os.path.exists(path):
+            os.replace(old, path)
+        raise

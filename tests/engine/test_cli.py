@@ -3,6 +3,7 @@
 import io
 import json
 import os
+import signal
 import subprocess
 import sys
 
@@ -222,6 +223,22 @@ def test_interrupt_while_writing_leaves_nothing(case, capsys, monkeypatch):
     status, _, err = run(BASE, capsys)
     assert (status, err) == (130, "abm: interrupted\n")
     assert len(written) == 1 and sorted(os.listdir(case)) == INPUTS
+
+
+@pytest.mark.parametrize("stop", [signal.SIGINT, signal.SIGHUP])
+def test_a_stop_signal_once_the_outputs_move_is_ignored(case, capsys, monkeypatch, stop):
+    """A signal between the moves of R.csv and R.summary.csv into place used to stop the run with R.csv new and
+    the summary missing: the run is finishing by then, and ends whole (status 0)."""
+    real = os.replace
+
+    def signalled(*args, **kwargs):
+        real(*args, **kwargs)
+        os.kill(os.getpid(), stop)
+
+    monkeypatch.setattr(os, "replace", signalled)
+    status, _, err = run(BASE, capsys)
+    assert (status, err) == (0, "")
+    assert sorted(os.listdir(case)) == sorted(INPUTS + ["R.csv", "R.summary.csv"])
 
 
 def test_interrupt_in_the_engine(case, capsys, monkeypatch):
