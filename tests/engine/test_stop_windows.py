@@ -74,7 +74,8 @@ def _fill(base):
 
 
 @pytest.mark.parametrize("write, written", [(_write_results, ["made/deeper/R.csv", "old.csv"]),
-                                            (_write_report, ["rep/index.html", "out.FCStd"])], ids=["results", "report"])
+                                            (_write_report, ["rep/index.html", "out.FCStd"])],
+                         ids=["results", "report"])
 def test_a_stop_after_any_step_leaves_the_folder_as_it_was(tmp_path, monkeypatch, write, written):
     steps = 0
     for n in range(1, 40):
