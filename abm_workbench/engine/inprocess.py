@@ -32,7 +32,7 @@ from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
 from .inprocess_plan import piece_line_interval
 from .intervals import EdgeIntervals
-from .swept import FEASIBLE_EPS, line_hull_interval, row_dot
+from .swept import FEASIBLE_EPS, clamp, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
 
 _MACHINED = SURFACES.index("machined")
@@ -507,15 +507,10 @@ def _deep_inside(a, b, c0, c1, axis, radius, height, slack, corner):
     return inside
 
 
-def _unit(x):
-    """x (K,) clamped to 0 … 1 (np.clip's overhead per call is several times this one's)."""
-    return np.minimum(np.maximum(x, 0.0), 1.0)
-
-
 def _point_distance(q, d):
     """(K,) distance from points q to the segments t·d, t ∈ [0, 1] ((K, 3) each, mm)."""
     dd = row_dot(d, d)
-    t = _unit(row_dot(q, d) / np.where(dd > 0.0, dd, 1.0))
+    t = clamp(row_dot(q, d) / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
     gap = q - t[:, None] * d
     return np.sqrt(row_dot(gap, gap))
 
@@ -535,11 +530,12 @@ def _seen_along(q, e, d, qw, ew, dw):
     b, g, h = _dot_across(e, d, ew, dw), _dot_across(d, d, dw, dw), _dot_across(q, q, qw, qw)
     safe_a, safe_g = np.where(a > 0.0, a, 1.0), np.where(g > 0.0, g, 1.0)
     denom = a * g - b * b
-    s = np.where(denom > 1e-12 * a * g, _unit((b * f - c * g) / np.where(denom > 0.0, denom, 1.0)), 0.0)
+    s = np.where(denom > 1e-12 * a * g, clamp((b * f - c * g) / np.where(denom > 0.0, denom, 1.0), 0.0, 1.0), 0.0)
     # A path seen as a point (g = 0: a move along the axis, a plunge) has t = 0 and s the point's projection.
     t = np.where(g > 0.0, (b * s + f) / safe_g, 0.0)
-    s = np.where((t < 0.0) | (g <= 0.0), _unit(-c / safe_a), np.where(t > 1.0, _unit((b - c) / safe_a), s))
-    t = _unit(t)
+    s = np.where((t < 0.0) | (g <= 0.0), clamp(-c / safe_a, 0.0, 1.0),
+                 np.where(t > 1.0, clamp((b - c) / safe_a, 0.0, 1.0), s))
+    t = clamp(t, 0.0, 1.0)
     # |q + s·e − t·d|² across w, expanded in the dot products.
     gap = h + 2.0 * s * c - 2.0 * t * f + s * s * a - 2.0 * s * t * b + t * t * g
     return np.sqrt(np.maximum(gap, 0.0))
@@ -1352,7 +1348,7 @@ def _across(x, c0, c1, axis):
     q, d = x - c0, c1 - c0
     qw, dw = row_dot(q, axis), row_dot(d, axis)
     qd, dd = _dot_across(q, d, qw, dw), _dot_across(d, d, dw, dw)
-    t = _unit(qd / np.where(dd > 0.0, dd, 1.0))
+    t = clamp(qd / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
     return np.sqrt(np.maximum(_dot_across(q, q, qw, qw) - t * (2.0 * qd - t * dd), 0.0))
 
 

@@ -26,7 +26,7 @@ import numpy as np
 
 from .inprocess_cover import narrow, run_starts
 from .inprocess_plan import arc_kinds, arc_piece_intervals, piece_line_interval
-from .swept import row_dot
+from .swept import clamp, row_dot
 from .tolerances import LENGTH_EPS
 
 #: Edges per group (consecutive rows, the angles of a CL point): a group's candidate pieces are searched once.
@@ -53,7 +53,7 @@ def plan_distance(p, a, b):
     q = p - a
     with np.errstate(invalid="ignore", divide="ignore"):
         t = np.where(dd > 0.0, (q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) / np.where(dd > 0.0, dd, 1.0), 0.0)
-    t = np.clip(t, 0.0, 1.0)
+    t = clamp(t, 0.0, 1.0)
     return np.hypot(q[:, 0] - t * d[:, 0], q[:, 1] - t * d[:, 1])
 
 
@@ -160,15 +160,15 @@ def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
         a, b, reach = segment(q, envelope[0, owner[q]], envelope[1, owner[q]])
         keep = segment_distance(a, b, view.quarter_a[qu], view.quarter_b[qu]) - view.quarter_slack[qu] \
             <= reach + MARGIN
-        q, qu = q[keep], qu[keep]
+        q, qu, a, b, reach = q[keep], qu[keep], a[keep], b[keep], reach[keep]
         straight = (view.quarter_slack[qu] == 0.0) & (view.quarter_last_move[qu] <= before[q])
         parts = [(q[straight], view.quarter_hulls(qu[straight]))]
-        q, pc = view.quarter_pieces(q[~straight], qu[~straight], before)
-        keep = pc != skip[q]
-        q, pc = q[keep], pc[keep]
-        a, b, reach = segment(q, envelope[0, owner[q]], envelope[1, owner[q]])
-        keep = segment_distance(a, b, view.a[pc], view.b[pc]) <= reach + MARGIN
-        parts.append((q[keep], view.piece_hulls(pc[keep])))
+        bent = np.flatnonzero(~straight)
+        row, pc = view.quarter_pieces(bent, qu[bent], before[q])  # (the segments are the quarters' rows')
+        keep = pc != skip[q[row]]
+        row, pc = row[keep], pc[keep]
+        keep = segment_distance(a[row], b[row], view.a[pc], view.b[pc]) <= reach[row] + MARGIN
+        parts.append((q[row[keep]], view.piece_hulls(pc[keep])))
         q = np.concatenate([part[0] for part in parts])
         found.append(solve(q, tuple(np.concatenate(h) for h in zip(*(part[1] for part in parts)))))
         narrow(envelope, owner[found[-1][0]], *found[-1][1:])
@@ -302,8 +302,8 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
     rise = view.z[k] - height
     bottom, roof = rise - MARGIN, rise + view.h[k] + MARGIN
     with np.errstate(invalid="ignore"):
-        first = np.where(bottom > 0.0, np.arccos(np.clip(1.0 - bottom / radius, -1.0, 1.0)), 0.0)
-        last = np.where(roof < radius * (1.0 - np.cos(top)), np.arccos(np.clip(1.0 - roof / radius, -1.0, 1.0)),
+        first = np.where(bottom > 0.0, np.arccos(clamp(1.0 - bottom / radius, -1.0, 1.0)), 0.0)
+        last = np.where(roof < radius * (1.0 - np.cos(top)), np.arccos(clamp(1.0 - roof / radius, -1.0, 1.0)),
                         top)
     reach = view.earlier_radius(k, radius * (1.0 - np.cos(np.minimum(last, hi[line]))) - bottom) + MARGIN
     # The same tool at a level at or above the arc's tip (exact on a coordinate axis: the closed form's heights):
@@ -316,7 +316,7 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
         at = line[q]
         # What is left of the arc outside the level's heights: no piece of the level reaches it.
         outside = (end < first[q]) | (start > last[q])
-        start, end = np.clip(start, first[q], last[q]), np.clip(end, first[q], last[q])
+        start, end = clamp(start, first[q], last[q]), clamp(end, first[q], last[q])
         a = plan[at] + (rim + radius * np.sin(start))[:, None] * toward[at]
         b = plan[at] + (rim + radius * np.sin(end))[:, None] * toward[at]
         tight = same[q]

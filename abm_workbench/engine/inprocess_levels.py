@@ -33,7 +33,7 @@ import numpy as np
 
 from .inprocess_level_pairs import MARGIN, expand, plan_distance, segment_distance, sides
 from .inprocess_plan import earlier_radius
-from .swept import line_hull_interval, row_dot
+from .swept import clamp, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
 
 #: Moves of one level (axis, z, H) at least for it to get a grid; the others stay with the general search.
@@ -249,8 +249,8 @@ class LevelView:
         half = size * np.sqrt(0.5)
         self.origin[k], self.size[k], self.shape[k] = origin, size, shape
         self.offset[k + 1] = self.offset[k] + shape.prod()
-        first = np.clip(np.floor((low - half - origin) / size).astype(np.int64), 0, shape - 1)
-        last = np.clip(np.floor((high + half - origin) / size).astype(np.int64), 0, shape - 1)
+        first = clamp(np.floor((low - half - origin) / size).astype(np.int64), 0, shape - 1)
+        last = clamp(np.floor((high + half - origin) / size).astype(np.int64), 0, shape - 1)
         span = last - first + 1
         count = span[:, 0] * span[:, 1]
         owner = np.repeat(np.arange(chains.size), count)
@@ -354,7 +354,7 @@ class LevelView:
     def previous(self, k, before):
         """(K,) the last piece of the move into program row before (K,) where that move belongs to level k (K,), else
         −1: the piece an edge of the next CL point most likely lies in."""
-        piece = np.where((before >= 0) & (before < self.last.size), self.last[np.clip(before, 0, self.last.size - 1)],
+        piece = np.where((before >= 0) & (before < self.last.size), self.last[clamp(before, 0, self.last.size - 1)],
                          -1)
         return np.where((piece >= 0) & (self.piece_level[np.maximum(piece, 0)] == k), piece, -1)
 
@@ -376,7 +376,7 @@ class LevelView:
 
     def earlier_radius(self, k, h):
         """(K,) the plan radius of level k's tool at height h (K,) above its bottom (clipped to 0 … H)."""
-        return earlier_radius(np.clip(h, 0.0, self.h[k]), self.r[k], self.rc[k])
+        return earlier_radius(clamp(h, 0.0, self.h[k]), self.r[k], self.rc[k])
 
     def held(self, line, k, at, before):
         """(K,) the chain that holds the whole grid cell of the plan points at (K, 2) in level k within its rim and
@@ -395,8 +395,8 @@ class LevelView:
         size = self.size[kq][:, None]
         shape = self.shape[kq]
         aq, bq = a[query], b[query]
-        low = np.clip(np.floor((np.minimum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
-        high = np.clip(np.floor((np.maximum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
+        low = clamp(np.floor((np.minimum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
+        high = clamp(np.floor((np.maximum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
         meets = ((high >= 0) & (low < shape)).all(axis=1)
         low, high = np.maximum(low, 0), np.minimum(high, shape - 1)
         span = np.where(meets[:, None], high - low + 1, 0)

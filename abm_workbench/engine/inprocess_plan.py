@@ -32,7 +32,7 @@ import numpy as np
 
 from .inprocess_arc import COINCIDENT, arc_swept_intervals
 from .inprocess_swept import line_swept_interval
-from .swept import line_hull_interval, row_dot
+from .swept import clamp, line_hull_interval, row_dot
 
 
 def _noise(*vectors, size):
@@ -147,8 +147,13 @@ def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, 
     return pair, start, end
 
 
-#: Halvings of the monotone bisection of _arc_above (its bracket, at most π/2 wide, ends below 10⁻¹⁶ rad).
-ABOVE_STEPS = 60
+#: _arc_above's bracket of ψ* ends at most this wide (rad; r·ABOVE_WIDTH mm along the arc, far below the rounding
+#: of the lengths), within ABOVE_STEPS evaluations: where it is more than half as wide as two steps before the next
+#: point bisects it, so from π/2 it takes at most 2 × 51 + 2; a false-position point is kept ABOVE_WIDTH / 4 (more than a rounding step of ψ ≤ π/2)
+#: inside the bracket, and after a short move of the inner end a probe twice as far beyond it closes the bracket
+#: there: about 15 where g is smooth near ψ*.
+ABOVE_WIDTH = 1e-15
+ABOVE_STEPS = 104
 
 
 def _arc_above(g0, rise, m, d, big, corner, top):
@@ -156,30 +161,57 @@ def _arc_above(g0, rise, m, d, big, corner, top):
     arc's tip, 0 < rise < r (g0: the tip from c0 across the axis; m the move). The arc's point at ψ stands at height
     a = r·(1 − cos ψ), where the earlier tool's radius is ρ_e = R − r + √(r² − (r·cos ψ + rise)²) (from
     ψ₀ = acos(1 − rise/r) on; below it the earlier tool is not there), at ρ = R − r + r·sin ψ from the axis. Its
-    distance from the segment less ρ_e is non-increasing in ψ (the distance changes no faster than ρ, ρ_e grows at
+    distance from the segment less ρ_e, g(ψ), is non-increasing (the distance changes no faster than ρ, ρ_e grows at
     least as fast: docs/ENGINE.md, "The level view for tools with a corner"), so the removed part is a suffix
-    ψ* … top, ψ* found by bisection (ABOVE_STEPS halvings); NaN where the arc's top is outside."""
+    ψ* … top, ψ* the first ψ where g ≤ 0, bracketed by false position (Illinois) guarded by bisection down to
+    ABOVE_WIDTH; NaN where the arc's top is outside."""
+    NUDGE = 0.25 * ABOVE_WIDTH
     rim = big - corner
+    length = row_dot(m, m)
+    inverse = np.where(length > 0.0, 1.0 / np.where(length > 0.0, length, 1.0), 0.0)
 
-    def gap(psi):
-        q = g0 + (rim + corner * np.sin(psi))[:, None] * d
-        length = row_dot(m, m)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            t = np.clip(np.where(length > 0.0, row_dot(q, m) / np.where(length > 0.0, length, 1.0), 0.0), 0.0, 1.0)
-        foot = q - t[:, None] * m
-        depth = corner * np.cos(psi) + rise
-        return np.sqrt(row_dot(foot, foot)) - rim - np.sqrt(np.maximum(corner * corner - depth * depth, 0.0))
+    def gap(psi, rows):
+        q = g0[rows] + (rim[rows] + corner[rows] * np.sin(psi))[:, None] * d[rows]
+        t = clamp(row_dot(q, m[rows]) * inverse[rows], 0.0, 1.0)
+        foot = q - t[:, None] * m[rows]
+        depth = corner[rows] * np.cos(psi) + rise[rows]
+        return np.sqrt(row_dot(foot, foot)) - rim[rows] - np.sqrt(np.maximum(corner[rows] ** 2 - depth * depth, 0.0))
 
-    first = np.minimum(np.arccos(np.clip(1.0 - rise / corner, -1.0, 1.0)), top)
-    low, high = first.copy(), top.copy()
-    inside_top = gap(high) <= 0.0
-    whole = gap(low) <= 0.0
+    every = np.arange(top.size)
+    first = np.minimum(np.arccos(clamp(1.0 - rise / corner, -1.0, 1.0)), top)
+    at_top, at_first = gap(top, every), gap(first, every)
+    start = np.where(at_first <= 0.0, first, top)
+    rows = np.flatnonzero((at_top <= 0.0) & (at_first > 0.0))
+    outer, inner, g_outer, g_inner = first[rows], top[rows], at_first[rows], at_top[rows]  # g_outer > 0 ≥ g_inner
+    back, earlier = np.full(rows.size, np.inf), np.full(rows.size, np.inf)  # the width one and two steps back
+    moved = np.zeros(rows.size, dtype=np.int8)
+    step = np.full(rows.size, np.inf)  # how far the last point moved the inner end (inf: it did not)
     for _ in range(ABOVE_STEPS):
-        middle = 0.5 * (low + high)
-        outside = gap(middle) > 0.0
-        low, high = np.where(outside, middle, low), np.where(outside, high, middle)
-    start = np.where(whole, first, high)
-    return np.where(inside_top, start, np.nan), np.where(inside_top, top, np.nan)
+        width = inner - outer
+        live = width > ABOVE_WIDTH
+        if not live.all():  # the arcs done leave the arrays
+            start[rows[~live]] = inner[~live]
+            rows, outer, inner, g_outer, g_inner, back, earlier, moved, step, width = (
+                part[live] for part in (rows, outer, inner, g_outer, g_inner, back, earlier, moved, step, width))
+            if rows.size == 0:
+                break
+        with np.errstate(invalid="ignore", divide="ignore"):
+            x = clamp(inner - g_inner * width / (g_inner - g_outer), outer + NUDGE, inner - NUDGE)
+        x = np.where((x > outer) & (x < inner), x, 0.5 * (outer + inner))
+        x = np.where(4.0 * step < width, inner - 2.0 * step, x)
+        x = np.where(width > 0.5 * earlier, 0.5 * (outer + inner), x)
+        g = gap(x, rows)
+        out = g > 0.0
+        # Illinois: an end kept twice in a row has its value halved, so that the next point moves past it.
+        g_inner = np.where(out, np.where(moved == 1, 0.5 * g_inner, g_inner), g)
+        g_outer = np.where(out, g, np.where(moved == -1, 0.5 * g_outer, g_outer))
+        step = np.where(out, np.inf, np.maximum(inner - x, NUDGE))
+        outer, inner = np.where(out, x, outer), np.where(out, inner, x)
+        moved = np.where(out, 1, -1).astype(np.int8)
+        back, earlier = width, back
+    start[rows] = inner
+    inside = at_top <= 0.0
+    return np.where(inside, start, np.nan), np.where(inside, top, np.nan)
 
 
 def _arc_in_level(g0, m, d, axis, big, corner, top):
@@ -191,7 +223,7 @@ def _arc_in_level(g0, m, d, axis, big, corner, top):
     noise = _noise(g0, m, size=big)
     parts = [_linear(row_dot(g, g), 2.0 * row_dot(g, d), span, 2.0 * big * noise) for g in (g0, g0 - m)]
     along, side = row_dot(u, g0), row_dot(n, g0)
-    ud, nd = row_dot(u, d), np.clip(row_dot(n, d), -1.0, 1.0)
+    ud, nd = row_dot(u, d), clamp(row_dot(n, d), -1.0, 1.0)
     strip = _meet(_linear(-along, -ud, span, noise), _linear(along - length, ud, span, noise),
                   _linear(side, nd - 1.0, span, noise), _linear(-side, -nd - 1.0, span, noise))
     parts.append((np.where(length > 0.0, strip[0], np.inf), np.where(length > 0.0, strip[1], -np.inf)))
@@ -208,8 +240,8 @@ def _arc_in_cylinder(g0, level, m, d, axis, big, corner, top, p_big, p_height):
     # The heights, a = r·(1 − cos ψ) above the tip, from −level (the earlier bottom) up to p_height − level.
     low_a, high_a = -level, p_height - level
     with np.errstate(invalid="ignore"):
-        start = np.maximum(start, np.where(low_a > 0.0, np.arccos(np.clip(1.0 - low_a / corner, -1.0, 1.0)), 0.0))
-        end = np.minimum(end, np.where(high_a < corner, np.arccos(np.clip(1.0 - high_a / corner, -1.0, 1.0)), top))
+        start = np.maximum(start, np.where(low_a > 0.0, np.arccos(clamp(1.0 - low_a / corner, -1.0, 1.0)), 0.0))
+        end = np.minimum(end, np.where(high_a < corner, np.arccos(clamp(1.0 - high_a / corner, -1.0, 1.0)), top))
     return start, np.where((high_a >= 0.0) & (start <= end), end, np.nan)
 
 
@@ -219,8 +251,8 @@ def _psi(low, high, rim, corner, top):
     low = np.maximum(low, rim)
     high = np.minimum(high, rim + corner * np.sin(top))
     with np.errstate(invalid="ignore"):
-        start = np.arcsin(np.clip((low - rim) / corner, 0.0, 1.0))
-        end = np.arcsin(np.clip((high - rim) / corner, 0.0, 1.0))
+        start = np.arcsin(clamp((low - rim) / corner, 0.0, 1.0))
+        end = np.arcsin(clamp((high - rim) / corner, 0.0, 1.0))
     start = np.where(low <= rim, 0.0, np.minimum(start, top))
     end = np.where(high >= rim + corner * np.sin(top), top, end)
     return start, np.where(low <= high, end, np.nan)
@@ -281,7 +313,7 @@ def _side_in_move(q, m, axis, big, height, corner):
     up = row_dot(q, axis)
     g = q - up[:, None] * axis
     u, _, length = _frame(m, axis)
-    t = np.clip(row_dot(g, u), 0.0, length)
+    t = clamp(row_dot(g, u), 0.0, length)
     gap = g - t[:, None] * u
     dist = np.sqrt(row_dot(gap, gap))
     reach = earlier_radius(height, big, corner)
@@ -298,7 +330,7 @@ def _end_in_move(q, direction, m, axis, big, height, corner):
     """(enter, leave) of lines across the axis from q (the origin from c0): module docstring."""
     h = row_dot(q, axis)
     inside = (h >= 0.0) & (h <= height)
-    f = earlier_radius(np.clip(h, 0.0, height), big, corner)
+    f = earlier_radius(clamp(h, 0.0, height), big, corner)
     low, high = _stadium(q - h[:, None] * axis, direction, m, axis, f, _noise(q, m, size=big + height))
     hit = inside & (low <= high)
     return np.where(hit, low, np.nan), np.where(hit, high, np.nan)

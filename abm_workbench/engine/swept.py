@@ -30,6 +30,12 @@ FEASIBLE_EPS = 1e-9
 SQUARED_EPS = 1e-24
 
 
+def clamp(x, low, high):
+    """x clamped to low … high (arrays or numbers; NaN stays NaN), as np.clip, whose checks per call cost
+    several times these two ufuncs on the short arrays of the in-process searches."""
+    return np.minimum(np.maximum(x, low), high)
+
+
 def row_dot(a, b):
     """Row-wise dot product of (P, 3) arrays: (P,), summed x, y, z in that order (column by
     column: two to three times faster than np.einsum on three columns)."""

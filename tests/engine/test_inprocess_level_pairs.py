@@ -231,3 +231,45 @@ def test_arc_against_the_same_tool_above(ratio):
         np.testing.assert_array_equal(inside[clear], (psi >= start[0])[clear])
         checked += int(inside.any())
     assert checked > 20
+
+
+@pytest.mark.parametrize("ratio", [0.2, 0.5, 1.0])
+def test_arc_above_finds_its_start_to_rounding(ratio):
+    """The start ψ* of an arc's part removed by the same tool above (inprocess_plan._arc_above, false position
+    guarded by bisection and probes) against ψ* bracketed from the sampled swept solid alone: 64 points of the
+    bracket a round, 9 rounds (a bracket of (π/2)/65⁹, 3·10⁻¹⁷ rad), within 10⁻¹² rad, on 30 random placements
+    where ψ* lies inside the arc."""
+    from abm_workbench.engine.inprocess_plan import arc_level_intervals
+    rng = np.random.default_rng(11)
+    big, flute = 3.0, 10.0
+    corner = ratio * big
+    axis = np.array([0.0, 0.0, 1.0])
+    found = 0
+    for _ in range(1000):
+        if found == 30:
+            break
+        rise = rng.uniform(0.02, 0.98) * corner
+        c0 = np.array([*rng.uniform(-2.0, 2.0, 2), rise])
+        move = np.array([*rng.uniform(-3.0, 3.0, 2), 0.0]) * rng.choice([0.0, 1.0, 1.0])
+        angle = rng.uniform(0.0, 2.0 * np.pi)
+        d = np.array([np.cos(angle), np.sin(angle), 0.0])
+        one = [np.array([v]) for v in (big, corner, 0.5 * np.pi)]
+        _, start, end = arc_level_intervals(np.zeros((1, 3)), d[None], axis[None], *one, c0[None],
+                                            (c0 + move)[None], axis[None], np.array([big]), np.array([flute]),
+                                            np.array([corner]))
+
+        def inside(psi):
+            points = (big - corner + corner * np.sin(psi))[:, None] * d + (corner * (1.0 - np.cos(psi)))[:, None] * axis
+            return in_swept(points, c0, move, axis, big, corner, flute)
+
+        low, high = np.arccos(1.0 - rise / corner), 0.5 * np.pi
+        if not inside(np.array([high]))[0] or inside(np.array([low]))[0] or np.isnan(end[0]):
+            continue  # nothing removed, or all of the arc from the earlier tool's bottom up: other tests
+        for _ in range(9):
+            psi = np.linspace(low, high, 66)[1:-1]
+            hit = inside(psi)
+            first = int(np.argmax(hit)) if hit.any() else psi.size
+            low, high = (psi[first - 1] if first else low), (psi[first] if first < psi.size else high)
+        assert abs(start[0] - high) <= 1e-12, (start[0], low, high)
+        found += 1
+    assert found == 30
