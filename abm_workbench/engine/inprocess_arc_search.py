@@ -241,7 +241,7 @@ class _Arcs:
             s, q = seg[begin:begin + PAIR_BATCH], index[begin:begin + PAIR_BATCH]
             full = [np.full(s.size, v) for v in (self.big, self.radius, self.top)]
             pair, start, end = arc_piece_intervals(self.tip[s], self.d[s], self.w[s], self.centre[s], *full,
-                                                   *pieces.hulls(level, q), pieces.corners(level, q))
+                                                   *pieces.hulls(level, q), pieces.corners(level, q), arc=s)
             owner = s[pair]
             overlap = (np.minimum(end, self.envelope[3, owner]) - np.maximum(start, self.envelope[2, owner]))
             hit = overlap * self.radius > LENGTH_EPS

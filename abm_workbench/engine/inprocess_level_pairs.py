@@ -340,7 +340,7 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
                                    envelope[1, at[general]])
             q, at, hulls = q[keep], at[keep], tuple(part[keep] for part in hulls)
         pair, start, end = arc_piece_intervals(tip[at], d[at], w[at], centre[at], *(part[at] for part in tool),
-                                               *hulls)
+                                               *hulls, arc=at)
         return _hits(q[pair], start, end, lo[line], hi[line], radius)
 
     envelope = np.stack([lo, hi])

@@ -31,6 +31,7 @@ vectors and (K,) numbers; ψ in radians, lengths in mm.
 import numpy as np
 
 from .inprocess_arc import COINCIDENT, arc_swept_intervals
+from .inprocess_cover import run_starts
 from .inprocess_swept import line_swept_interval
 from .swept import clamp, line_hull_interval, row_dot
 
@@ -102,13 +103,15 @@ def arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
     return below, level_arc, steady, above
 
 
-def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner):
+def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner, arc=None):
     """(decided (K,) bool, start, end (K,) ψ in rad) of corner arcs against earlier moves, where the plan view
     decides them (module docstring); start ≥ end (or NaN) where an arc decided here lies outside.
 
     tip, d, axis (K, 3): the arc's tool tip, its edge's unit direction across the axis and the unit axis; big,
     corner, top (K,): the tool's radius, corner radius and the arc's last ψ; c0, c1, p_axis (K, 3), p_big,
-    p_height, p_corner (K,): the earlier move and its tool."""
+    p_height, p_corner (K,): the earlier move and its tool. arc (K,) ints, if given, names each pair's arc: a pair
+    against the same tool above whose removed part lies within another's of the same arc may then come out NaN
+    (_arc_above; the union of each arc's parts is the same)."""
     below, level_arc, steady, above = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
     start, end = np.full(tip.shape[0], np.nan), np.full(tip.shape[0], np.nan)
     rows = np.flatnonzero(above)
@@ -116,7 +119,7 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
         q = tip[rows] - c0[rows]
         rise = -row_dot(q, axis[rows])
         start[rows], end[rows] = _arc_above(q + rise[:, None] * axis[rows], rise, c1[rows] - c0[rows], d[rows],
-                                            big[rows], corner[rows], top[rows])
+                                            big[rows], corner[rows], top[rows], None if arc is None else arc[rows])
     rows = np.flatnonzero(level_arc)
     if rows.size:
         start[rows], end[rows] = _arc_in_level(tip[rows] - c0[rows], c1[rows] - c0[rows], d[rows], axis[rows],
@@ -131,12 +134,15 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
     return below | level_arc | steady | above, start, end
 
 
-def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner):
+def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner,
+                        arc=None):
     """(pair, start, end) (K,): the (arc, piece) pairs (K inputs) whose piece removes part of the arc, and that part
     in ψ (rad): arc_level_intervals where the plan view decides, inprocess_arc.arc_swept_intervals for the others
     (each over the whole arc, 0 … top). tip, d, axis, centre (K, 3) and big, corner, top (K,) as there; c0, c1,
-    p_axis (K, 3), p_big, p_height, p_corner (K,): the earlier piece and its tool."""
-    plan, start, end = arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner)
+    p_axis (K, 3), p_big, p_height, p_corner (K,): the earlier piece and its tool; arc (K,), if given, each pair's
+    arc: the pairs may then leave out some whose part lies within another's (each arc's union the same)."""
+    plan, start, end = arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner,
+                                           arc)
     pair = np.flatnonzero(plan & (end > start))
     start, end = start[pair], end[pair]
     rest = np.flatnonzero(~plan)
@@ -156,7 +162,7 @@ ABOVE_WIDTH = 1e-15
 ABOVE_STEPS = 104
 
 
-def _arc_above(g0, rise, m, d, big, corner, top):
+def _arc_above(g0, rise, m, d, big, corner, top, arc=None):
     """(start, end) ψ of arcs against the same tool's earlier move across the axis at a level rise (K,) above the
     arc's tip, 0 < rise < r (g0: the tip from c0 across the axis; m the move). The arc's point at ψ stands at height
     a = r·(1 − cos ψ), where the earlier tool's radius is ρ_e = R − r + √(r² − (r·cos ψ + rise)²) (from
@@ -164,8 +170,11 @@ def _arc_above(g0, rise, m, d, big, corner, top):
     distance from the segment less ρ_e, g(ψ), is non-increasing (the distance changes no faster than ρ, ρ_e grows at
     least as fast: docs/ENGINE.md, "The level view for tools with a corner"), so the removed part is a suffix
     ψ* … top, ψ* the first ψ where g ≤ 0, bracketed by false position (Illinois) guarded by bisection down to
-    ABOVE_WIDTH; NaN where the arc's top is outside."""
-    NUDGE = 0.25 * ABOVE_WIDTH
+    ABOVE_WIDTH; NaN where the arc's top is outside. With arc (K,) (each pair's arc) only the least ψ* of an arc
+    matters (its pairs' parts all end at top): first the pairs removing the arc from the earlier tool's bottom up
+    (ψ* = ψ₀) and, of each other arc, its pair deepest inside at the top are solved; then of the other pairs only
+    those inside at their arc's least ψ* so far (g ≤ 0 there: ψ* no later) — the rest remove a part within it
+    (g > 0 there, g non-increasing and nothing below ψ₀: their ψ* lies later) and come out NaN."""
     rim = big - corner
     length = row_dot(m, m)
     inverse = np.where(length > 0.0, 1.0 / np.where(length > 0.0, length, 1.0), 0.0)
@@ -182,6 +191,33 @@ def _arc_above(g0, rise, m, d, big, corner, top):
     at_top, at_first = gap(top, every), gap(first, every)
     start = np.where(at_first <= 0.0, first, top)
     rows = np.flatnonzero((at_top <= 0.0) & (at_first > 0.0))
+    if arc is None or rows.size == 0:
+        _bracketed(gap, rows, first, top, at_first, at_top, start)
+    else:
+        key = arc[rows]
+        order = np.lexsort((at_top[rows], key))
+        lead = np.zeros(rows.size, dtype=bool)
+        lead[order[run_starts(key[order])[0]]] = True
+        least = np.full(arc.max() + 1, np.inf)
+        whole = np.flatnonzero((at_top <= 0.0) & (at_first <= 0.0))
+        np.minimum.at(least, arc[whole], first[whole])
+        lead &= np.isinf(least[key])
+        _bracketed(gap, rows[lead], first, top, at_first, at_top, start)
+        np.minimum.at(least, key[lead], start[rows[lead]])
+        rest = rows[~lead]
+        later = gap(least[arc[rest]], rest) > 0.0
+        _bracketed(gap, rest[~later], first, top, at_first, at_top, start)
+        start[rest[later]] = np.nan
+    inside = (at_top <= 0.0) & ~np.isnan(start)
+    return np.where(inside, start, np.nan), np.where(inside, top, np.nan)
+
+
+def _bracketed(gap, rows, first, top, at_first, at_top, start):
+    """Fill start[rows] with ψ* of _arc_above's pairs rows (g(first) > 0 ≥ g(top)): false position with probes and
+    guarded bisection (ABOVE_WIDTH, ABOVE_STEPS); gap(ψ, rows) is g of those rows."""
+    NUDGE = 0.25 * ABOVE_WIDTH
+    if rows.size == 0:
+        return
     outer, inner, g_outer, g_inner = first[rows], top[rows], at_first[rows], at_top[rows]  # g_outer > 0 ≥ g_inner
     back, earlier = np.full(rows.size, np.inf), np.full(rows.size, np.inf)  # the width one and two steps back
     moved = np.zeros(rows.size, dtype=np.int8)
@@ -210,8 +246,6 @@ def _arc_above(g0, rise, m, d, big, corner, top):
         moved = np.where(out, 1, -1).astype(np.int8)
         back, earlier = width, back
     start[rows] = inner
-    inside = at_top <= 0.0
-    return np.where(inside, start, np.nan), np.where(inside, top, np.nan)
 
 
 def _arc_in_level(g0, m, d, axis, big, corner, top):

@@ -273,3 +273,33 @@ def test_arc_above_finds_its_start_to_rounding(ratio):
         assert abs(start[0] - high) <= 1e-12, (start[0], low, high)
         found += 1
     assert found == 30
+
+
+def test_arc_above_leaves_out_only_parts_within_others():
+    """Given each pair's arc, _arc_above solves only the pairs that can hold an arc's least ψ*: per arc the union
+    of the parts (ψ* … top) is the same as with every pair solved, bit for bit, each part it does give is the same,
+    and parts are left out (an arc of 8 pieces of the level above, placed around it, two levels)."""
+    from abm_workbench.engine.inprocess_plan import arc_level_intervals
+    rng = np.random.default_rng(23)
+    big, corner, flute, arcs, per = 3.0, 3.0, 10.0, 200, 8
+    axis = np.tile([0.0, 0.0, 1.0], (arcs * per, 1))
+    angle = np.repeat(rng.uniform(0.0, 2.0 * np.pi, arcs), per)
+    d = np.stack([np.cos(angle), np.sin(angle), np.zeros(angle.size)], axis=1)
+    rise = np.repeat(rng.choice([0.4, 1.1], (arcs, 1)), per, axis=1).ravel() + rng.choice([0.0, 0.7], arcs * per)
+    c0 = np.column_stack([rng.uniform(-3.0, 3.0, (arcs * per, 2)), rise])
+    c1 = c0 + np.column_stack([rng.uniform(-1.0, 1.0, (arcs * per, 2)), np.zeros(arcs * per)])
+    one = [np.full(arcs * per, v) for v in (big, corner, 0.5 * np.pi)]
+    tool = [np.full(arcs * per, v) for v in (big, flute, corner)]
+    arc = np.repeat(np.arange(arcs), per)
+    every = arc_level_intervals(np.zeros((arcs * per, 3)), d, axis, *one, c0, c1, axis, *tool)
+    some = arc_level_intervals(np.zeros((arcs * per, 3)), d, axis, *one, c0, c1, axis, *tool, arc=arc)
+    assert every[0].all() and some[0].all()
+    given = ~np.isnan(some[2])
+    np.testing.assert_array_equal(some[1][given], every[1][given])
+    np.testing.assert_array_equal(some[2][given], every[2][given])
+    least = [np.full(arcs, np.inf), np.full(arcs, np.inf)]
+    for got, (_, start, _) in zip(least, (every, some)):
+        np.minimum.at(got, arc[~np.isnan(start)], start[~np.isnan(start)])
+    np.testing.assert_array_equal(least[0], least[1])
+    assert np.isfinite(least[0]).sum() > arcs // 4
+    assert (np.isnan(some[2]) & ~np.isnan(every[2])).sum() > arcs // 4
