@@ -199,12 +199,29 @@ def test_segment_distance_against_sampling():
         assert got >= sampled - 0.5 * np.linalg.norm(p1 - p0) / 4000 - 1e-12
 
 
+def _above_pair(rng, big, corner, flute, spread):
+    """A random arc (tip at the origin, axis z, its direction d across it) against the same tool's move c0 … c0 +
+    move at a level 0 < rise < r above its tip (c0 within ±spread in plan): (c0, move, d, decided, start, end), the
+    last three as inprocess_plan.arc_level_intervals gives them."""
+    from abm_workbench.engine.inprocess_plan import arc_level_intervals
+    axis = np.array([0.0, 0.0, 1.0])
+    rise = rng.uniform(0.02, 0.98) * corner
+    c0 = np.array([*rng.uniform(-spread, spread, 2), rise])
+    move = np.array([*rng.uniform(-3.0, 3.0, 2), 0.0]) * rng.choice([0.0, 1.0, 1.0])
+    angle = rng.uniform(0.0, 2.0 * np.pi)
+    d = np.array([np.cos(angle), np.sin(angle), 0.0])
+    one = [np.array([v]) for v in (big, corner, 0.5 * np.pi)]
+    decided, start, end = arc_level_intervals(np.zeros((1, 3)), d[None], axis[None], *one, c0[None],
+                                              (c0 + move)[None], axis[None], np.array([big]), np.array([flute]),
+                                              np.array([corner]))
+    return c0, move, d, decided[0], start[0], end[0]
+
+
 @pytest.mark.parametrize("ratio", [0.2, 0.5, 1.0])
 def test_arc_against_the_same_tool_above(ratio):
     """An arc against the same tool's move across the axis at a level 0 < rise < r above its tip (the kind the
     plan view decides by its monotone bisection, inprocess_plan._arc_above): the removed part against the sampled
     swept solid, at 241 points of the arc, away from the part's start by 1e-6 rad."""
-    from abm_workbench.engine.inprocess_plan import arc_level_intervals
     rng = np.random.default_rng(5)
     big, flute = 3.0, 10.0
     corner = ratio * big
@@ -212,23 +229,15 @@ def test_arc_against_the_same_tool_above(ratio):
     psi = np.linspace(0.0, 0.5 * np.pi, 241)
     checked = 0
     for _ in range(80):
-        rise = rng.uniform(0.02, 0.98) * corner
-        c0 = np.array([*rng.uniform(-4.0, 4.0, 2), rise])
-        move = np.array([*rng.uniform(-3.0, 3.0, 2), 0.0]) * rng.choice([0.0, 1.0, 1.0])
-        angle = rng.uniform(0.0, 2.0 * np.pi)
-        d = np.array([np.cos(angle), np.sin(angle), 0.0])
-        one = [np.array([v]) for v in (big, corner, 0.5 * np.pi)]
-        decided, start, end = arc_level_intervals(np.zeros((1, 3)), d[None], axis[None], *one, c0[None],
-                                                  (c0 + move)[None], axis[None], np.array([big]),
-                                                  np.array([flute]), np.array([corner]))
-        assert decided[0]
+        c0, move, d, decided, start, end = _above_pair(rng, big, corner, flute, 4.0)
+        assert decided
         points = (big - corner + corner * np.sin(psi))[:, None] * d + (corner * (1.0 - np.cos(psi)))[:, None] * axis
         inside = in_swept(points, c0, move, axis, big, corner, flute)
-        if np.isnan(end[0]) or not end[0] > start[0]:
+        if np.isnan(end) or not end > start:
             assert not inside[psi < 0.5 * np.pi - 1e-6].any()
             continue
-        clear = np.abs(psi - start[0]) > 1e-6
-        np.testing.assert_array_equal(inside[clear], (psi >= start[0])[clear])
+        clear = np.abs(psi - start) > 1e-6
+        np.testing.assert_array_equal(inside[clear], (psi >= start)[clear])
         checked += int(inside.any())
     assert checked > 20
 
@@ -239,7 +248,6 @@ def test_arc_above_finds_its_start_to_rounding(ratio):
     guarded by bisection and probes) against ψ* bracketed from the sampled swept solid alone: 64 points of the
     bracket a round, 9 rounds (a bracket of (π/2)/65⁹, 3·10⁻¹⁷ rad), within 10⁻¹² rad, on 30 random placements
     where ψ* lies inside the arc."""
-    from abm_workbench.engine.inprocess_plan import arc_level_intervals
     rng = np.random.default_rng(11)
     big, flute = 3.0, 10.0
     corner = ratio * big
@@ -248,29 +256,22 @@ def test_arc_above_finds_its_start_to_rounding(ratio):
     for _ in range(1000):
         if found == 30:
             break
-        rise = rng.uniform(0.02, 0.98) * corner
-        c0 = np.array([*rng.uniform(-2.0, 2.0, 2), rise])
-        move = np.array([*rng.uniform(-3.0, 3.0, 2), 0.0]) * rng.choice([0.0, 1.0, 1.0])
-        angle = rng.uniform(0.0, 2.0 * np.pi)
-        d = np.array([np.cos(angle), np.sin(angle), 0.0])
-        one = [np.array([v]) for v in (big, corner, 0.5 * np.pi)]
-        _, start, end = arc_level_intervals(np.zeros((1, 3)), d[None], axis[None], *one, c0[None],
-                                            (c0 + move)[None], axis[None], np.array([big]), np.array([flute]),
-                                            np.array([corner]))
+        c0, move, d, _, start, end = _above_pair(rng, big, corner, flute, 2.0)
+        rise = c0[2]
 
         def inside(psi):
             points = (big - corner + corner * np.sin(psi))[:, None] * d + (corner * (1.0 - np.cos(psi)))[:, None] * axis
             return in_swept(points, c0, move, axis, big, corner, flute)
 
         low, high = np.arccos(1.0 - rise / corner), 0.5 * np.pi
-        if not inside(np.array([high]))[0] or inside(np.array([low]))[0] or np.isnan(end[0]):
+        if not inside(np.array([high]))[0] or inside(np.array([low]))[0] or np.isnan(end):
             continue  # nothing removed, or all of the arc from the earlier tool's bottom up: other tests
         for _ in range(9):
             psi = np.linspace(low, high, 66)[1:-1]
             hit = inside(psi)
             first = int(np.argmax(hit)) if hit.any() else psi.size
             low, high = (psi[first - 1] if first else low), (psi[first] if first < psi.size else high)
-        assert abs(start[0] - high) <= 1e-12, (start[0], low, high)
+        assert abs(start - high) <= 1e-12, (start, low, high)
         found += 1
     assert found == 30
 
