@@ -154,10 +154,10 @@ def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, 
 
 
 #: _arc_above's bracket of ψ* ends at most this wide (rad; r·ABOVE_WIDTH mm along the arc, far below the rounding
-#: of the lengths), within ABOVE_STEPS evaluations: where it is more than half as wide as two steps before the next
-#: point bisects it, so from π/2 it takes at most 2 × 51 + 2; a false-position point is kept ABOVE_WIDTH / 4 (more than a rounding step of ψ ≤ π/2)
-#: inside the bracket, and after a short move of the inner end a probe twice as far beyond it closes the bracket
-#: there: about 15 where g is smooth near ψ*.
+#: of the lengths), within ABOVE_STEPS evaluations: where it is more than half as wide as two steps before, the
+#: next point bisects it, so from π/2 it takes at most 2 × 51 + 2; a false-position point is kept ABOVE_WIDTH / 4
+#: (more than a rounding step of ψ ≤ π/2) inside the bracket, and after a short move of the inner end a probe twice
+#: as far beyond it closes the bracket there: about 15 where g is smooth near ψ*.
 ABOVE_WIDTH = 1e-15
 ABOVE_STEPS = 104
 
