@@ -51,17 +51,37 @@ def plan_distance(p, a, b):
     d = b - a
     dd = d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]
     q = p - a
-    with np.errstate(invalid="ignore", divide="ignore"):
-        t = np.where(dd > 0.0, (q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) / np.where(dd > 0.0, dd, 1.0), 0.0)
-    t = clamp(t, 0.0, 1.0)
+    # Where a = b, d = 0 and so is the numerator: t = 0.
+    t = clamp((q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
     return np.hypot(q[:, 0] - t * d[:, 0], q[:, 1] - t * d[:, 1])
+
+
+def _point_distance(p, a, b):
+    """segment_distance where each first segment is the point p (K, 2): the same numbers, a quarter of the work."""
+    return np.minimum(plan_distance(p, a, b), np.minimum(np.hypot(a[:, 0] - p[:, 0], a[:, 1] - p[:, 1]),
+                                                         np.hypot(b[:, 0] - p[:, 0], b[:, 1] - p[:, 1])))
 
 
 def segment_distance(p0, p1, a, b):
     """Distance (K,) in plan between the segments p0 … p1 and a … b (K, 2) (either may be a point): 0 where they
-    cross, else the least of the four ends' distances from the other segment (p0 given as p1: its distance)."""
+    cross, else the least of the four ends' distances from the other segment (p0 given as p1: its distance). Rows
+    where p0 = p1 (an arc's last point, most rows of a ball's arcs) take the point's three distances alone."""
     if p0 is p1:
         return plan_distance(p0, a, b)
+    point = (p0[:, 0] == p1[:, 0]) & (p0[:, 1] == p1[:, 1])
+    if point.all():
+        return _point_distance(p0, a, b)
+    if point.any():
+        distance = np.empty(point.size)
+        distance[point] = _point_distance(p0[point], a[point], b[point])
+        rest = ~point
+        distance[rest] = _segment_distance(p0[rest], p1[rest], a[rest], b[rest])
+        return distance
+    return _segment_distance(p0, p1, a, b)
+
+
+def _segment_distance(p0, p1, a, b):
+    """segment_distance of segments p0 … p1 (K, 2) of length."""
     d = np.minimum(np.minimum(plan_distance(p0, a, b), plan_distance(p1, a, b)),
                    np.minimum(plan_distance(a, p0, p1), plan_distance(b, p0, p1)))
 
@@ -161,7 +181,11 @@ def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
         q, qu = query[take], quarter[take]
         keep = envelope[0, owner[q]] < envelope[1, owner[q]]
         q, qu = q[keep], qu[keep]
-        a, b, reach = segment(q, envelope[0, owner[q]], envelope[1, owner[q]])
+        # Each query's segment once (q comes grouped by query), handed to its quarters.
+        first, many = run_starts(q)
+        a, b, reach = segment(q[first], envelope[0, owner[q[first]]], envelope[1, owner[q[first]]])
+        mine = np.repeat(np.arange(first.size), many)
+        a, b, reach = a[mine], b[mine], reach[mine]
         keep = segment_distance(a, b, view.quarter_a[qu], view.quarter_b[qu]) - view.quarter_slack[qu] \
             <= reach + MARGIN
         q, qu, a, b, reach = q[keep], qu[keep], a[keep], b[keep], reach[keep]
@@ -332,15 +356,18 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
 
     def solve(q, hulls):
         at = line[q]
+        kinds = None
         if screen is not None:
             kinds = arc_kinds(tip[at], w[at], *(part[at] for part in tool[:2]), *hulls)
             general = np.flatnonzero(~np.any(kinds, axis=0))
-            keep = np.ones(q.size, dtype=bool)
-            keep[general] = screen(at[general], tuple(part[general] for part in hulls), envelope[0, at[general]],
-                                   envelope[1, at[general]])
-            q, at, hulls = q[keep], at[keep], tuple(part[keep] for part in hulls)
+            if general.size:
+                keep = np.ones(q.size, dtype=bool)
+                keep[general] = screen(at[general], tuple(part[general] for part in hulls), envelope[0, at[general]],
+                                       envelope[1, at[general]])
+                q, at = q[keep], at[keep]
+                hulls, kinds = (tuple(part[keep] for part in parts) for parts in (hulls, kinds))
         pair, start, end = arc_piece_intervals(tip[at], d[at], w[at], centre[at], *(part[at] for part in tool),
-                                               *hulls, arc=at)
+                                               *hulls, arc=at, kinds=kinds)
         return _hits(q[pair], start, end, lo[line], hi[line], radius)
 
     envelope = np.stack([lo, hi])

@@ -103,7 +103,8 @@ def arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
     return below, level_arc, steady, above
 
 
-def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner, arc=None):
+def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner, arc=None,
+                        kinds=None):
     """(decided (K,) bool, start, end (K,) ψ in rad) of corner arcs against earlier moves, where the plan view
     decides them (module docstring); start ≥ end (or NaN) where an arc decided here lies outside.
 
@@ -111,8 +112,9 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
     corner, top (K,): the tool's radius, corner radius and the arc's last ψ; c0, c1, p_axis (K, 3), p_big,
     p_height, p_corner (K,): the earlier move and its tool. arc (K,) ints, if given, names each pair's arc: a pair
     against the same tool above whose removed part lies within another's of the same arc may then come out NaN
-    (_arc_above; the union of each arc's parts is the same)."""
-    below, level_arc, steady, above = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
+    (_arc_above; the union of each arc's parts is the same). kinds: arc_kinds of these pairs, if known."""
+    below, level_arc, steady, above = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner) \
+        if kinds is None else kinds
     start, end = np.full(tip.shape[0], np.nan), np.full(tip.shape[0], np.nan)
     rows = np.flatnonzero(above)
     if rows.size:
@@ -135,14 +137,15 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
 
 
 def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner,
-                        arc=None):
+                        arc=None, kinds=None):
     """(pair, start, end) (K,): the (arc, piece) pairs (K inputs) whose piece removes part of the arc, and that part
     in ψ (rad): arc_level_intervals where the plan view decides, inprocess_arc.arc_swept_intervals for the others
     (each over the whole arc, 0 … top). tip, d, axis, centre (K, 3) and big, corner, top (K,) as there; c0, c1,
     p_axis (K, 3), p_big, p_height, p_corner (K,): the earlier piece and its tool; arc (K,), if given, each pair's
-    arc: the pairs may then leave out some whose part lies within another's (each arc's union the same)."""
+    arc: the pairs may then leave out some whose part lies within another's (each arc's union the same); kinds:
+    arc_kinds of the pairs, if known."""
     plan, start, end = arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner,
-                                           arc)
+                                           arc, kinds)
     pair = np.flatnonzero(plan & (end > start))
     start, end = start[pair], end[pair]
     rest = np.flatnonzero(~plan)
@@ -179,20 +182,24 @@ def _arc_above(g0, rise, m, d, big, corner, top, arc=None):
     length = row_dot(m, m)
     inverse = np.where(length > 0.0, 1.0 / np.where(length > 0.0, length, 1.0), 0.0)
 
-    def gap(psi, rows):
-        q = g0[rows] + (rim[rows] + corner[rows] * np.sin(psi))[:, None] * d[rows]
-        t = clamp(row_dot(q, m[rows]) * inverse[rows], 0.0, 1.0)
-        foot = q - t[:, None] * m[rows]
-        depth = corner[rows] * np.cos(psi) + rise[rows]
-        return np.sqrt(row_dot(foot, foot)) - rim[rows] - np.sqrt(np.maximum(corner[rows] ** 2 - depth * depth, 0.0))
+    def gather(rows):
+        return g0[rows], rim[rows], corner[rows], d[rows], m[rows], inverse[rows], rise[rows]
 
-    every = np.arange(top.size)
+    def gap(psi, pairs):
+        g0, rim, corner, d, m, inverse, rise = pairs
+        q = g0 + (rim + corner * np.sin(psi))[:, None] * d
+        t = clamp(row_dot(q, m) * inverse, 0.0, 1.0)
+        foot = q - t[:, None] * m
+        depth = corner * np.cos(psi) + rise
+        return np.sqrt(row_dot(foot, foot)) - rim - np.sqrt(np.maximum(corner ** 2 - depth * depth, 0.0))
+
+    every = (g0, rim, corner, d, m, inverse, rise)
     first = np.minimum(np.arccos(clamp(1.0 - rise / corner, -1.0, 1.0)), top)
     at_top, at_first = gap(top, every), gap(first, every)
     start = np.where(at_first <= 0.0, first, top)
     rows = np.flatnonzero((at_top <= 0.0) & (at_first > 0.0))
     if arc is None or rows.size == 0:
-        _bracketed(gap, rows, first, top, at_first, at_top, start)
+        _bracketed(gap, gather, rows, first, top, at_first, at_top, start)
     else:
         key = arc[rows]
         order = np.lexsort((at_top[rows], key))
@@ -202,22 +209,24 @@ def _arc_above(g0, rise, m, d, big, corner, top, arc=None):
         whole = np.flatnonzero((at_top <= 0.0) & (at_first <= 0.0))
         np.minimum.at(least, arc[whole], first[whole])
         lead &= np.isinf(least[key])
-        _bracketed(gap, rows[lead], first, top, at_first, at_top, start)
+        _bracketed(gap, gather, rows[lead], first, top, at_first, at_top, start)
         np.minimum.at(least, key[lead], start[rows[lead]])
         rest = rows[~lead]
-        later = gap(least[arc[rest]], rest) > 0.0
-        _bracketed(gap, rest[~later], first, top, at_first, at_top, start)
+        later = gap(least[arc[rest]], gather(rest)) > 0.0
+        _bracketed(gap, gather, rest[~later], first, top, at_first, at_top, start)
         start[rest[later]] = np.nan
     inside = (at_top <= 0.0) & ~np.isnan(start)
     return np.where(inside, start, np.nan), np.where(inside, top, np.nan)
 
 
-def _bracketed(gap, rows, first, top, at_first, at_top, start):
+def _bracketed(gap, gather, rows, first, top, at_first, at_top, start):
     """Fill start[rows] with ψ* of _arc_above's pairs rows (g(first) > 0 ≥ g(top)): false position with probes and
-    guarded bisection (ABOVE_WIDTH, ABOVE_STEPS); gap(ψ, rows) is g of those rows."""
+    guarded bisection (ABOVE_WIDTH, ABOVE_STEPS); gap(ψ, gather(rows)) is g of those rows (their data gathered
+    once, and again only as pairs finish)."""
     NUDGE = 0.25 * ABOVE_WIDTH
     if rows.size == 0:
         return
+    pairs = gather(rows)
     outer, inner, g_outer, g_inner = first[rows], top[rows], at_first[rows], at_top[rows]  # g_outer > 0 ≥ g_inner
     back, earlier = np.full(rows.size, np.inf), np.full(rows.size, np.inf)  # the width one and two steps back
     moved = np.zeros(rows.size, dtype=np.int8)
@@ -231,12 +240,13 @@ def _bracketed(gap, rows, first, top, at_first, at_top, start):
                 part[live] for part in (rows, outer, inner, g_outer, g_inner, back, earlier, moved, step, width))
             if rows.size == 0:
                 break
+            pairs = tuple(part[live] for part in pairs)
         with np.errstate(invalid="ignore", divide="ignore"):
             x = clamp(inner - g_inner * width / (g_inner - g_outer), outer + NUDGE, inner - NUDGE)
         x = np.where((x > outer) & (x < inner), x, 0.5 * (outer + inner))
         x = np.where(4.0 * step < width, inner - 2.0 * step, x)
         x = np.where(width > 0.5 * earlier, 0.5 * (outer + inner), x)
-        g = gap(x, rows)
+        g = gap(x, pairs)
         out = g > 0.0
         # Illinois: an end kept twice in a row has its value halved, so that the next point moves past it.
         g_inner = np.where(out, np.where(moved == 1, 0.5 * g_inner, g_inner), g)

@@ -199,6 +199,27 @@ def test_segment_distance_against_sampling():
         assert got >= sampled - 0.5 * np.linalg.norm(p1 - p0) / 4000 - 1e-12
 
 
+
+def test_segment_distance_of_points_among_segments():
+    """Rows whose first segment is a point (an arc's last point), alone, mixed with segments in one call, or all in
+    one call, give each row the same number as alone, the number of the general formula for two segments (bit for
+    bit: the level view's filters are unchanged by the point's shortcut), and that number is the point's distance
+    from the segment (against 4001 samples of the segment)."""
+    rng = np.random.default_rng(12)
+    p0, a, b = (rng.uniform(-2.0, 2.0, (300, 2)) for _ in range(3))
+    p1 = rng.uniform(-2.0, 2.0, (300, 2))
+    point = rng.random(300) < 0.6
+    p1[point] = p0[point]
+    a[:5] = b[:5]  # a few pieces without length
+    alone = np.array([segment_distance(p0[i:i + 1], p1[i:i + 1], a[i:i + 1], b[i:i + 1])[0] for i in range(300)])
+    assert np.array_equal(segment_distance(p0, p1.copy(), a, b), alone)
+    assert np.array_equal(segment_distance(p0[point], p1[point].copy(), a[point], b[point]), alone[point])
+    assert np.array_equal(pairs._segment_distance(p0, p1, a, b), alone)
+    t = np.linspace(0.0, 1.0, 4001)[:, None]
+    for i in np.flatnonzero(point):
+        sampled = np.hypot(*(p0[i] - (a[i] + t * (b[i] - a[i]))).T).min()
+        assert sampled - 1e-3 <= alone[i] <= sampled + 1e-12
+
 def _above_pair(rng, big, corner, flute, spread):
     """A random arc (tip at the origin, axis z, its direction d across it) against the same tool's move c0 … c0 +
     move at a level 0 < rise < r above its tip (c0 within ±spread in plan): (c0, move, d, decided, start, end), the
