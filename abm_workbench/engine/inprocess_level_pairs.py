@@ -164,7 +164,8 @@ def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
     (K,), nearest first per query), in rounds of 1, 2, 4, … quarters per query (module docstring): a quarter, and
     then a piece, farther than reach + MARGIN in plan from what is left of its query's edge is dropped; a straight
     quarter (slack 0: its pieces run along its chord, and their union is the chord's hull) ending by then is solved
-    as that one hull. owner (Q,): each query's edge, envelope (2, L): each edge's material (from, to; narrowed
+    as that one hull. In each round the nearest piece of each query is solved first, and the round's other pieces
+    only where they still come within reach of what is left after it. owner (Q,): each query's edge, envelope (2, L): each edge's material (from, to; narrowed
     here); solve(query, hulls) → (query, enter, leave) of the pairs that remove something (hulls: c0, c1, axis,
     radius, height, corner of each pair's earlier tool); segment(query, from, to) → (a, b, reach): the plan segment
     a … b (K, 2) of that part of the query's edge and the plan distance reach (K,) beyond which no piece of the
@@ -173,19 +174,29 @@ def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
     found = []
     if query.size == 0:
         return found
+
+    def left(q):
+        """The rows of q (K,, grouped by query) whose query has material left, and each one's segment (a, b) and
+        reach, each query's taken once."""
+        keep = np.flatnonzero(envelope[0, owner[q]] < envelope[1, owner[q]])
+        first, many = run_starts(q[keep])
+        a, b, reach = segment(q[keep][first], envelope[0, owner[q[keep][first]]], envelope[1, owner[q[keep][first]]])
+        mine = np.repeat(np.arange(first.size), many)
+        return keep, a[mine], b[mine], reach[mine]
+
+    def solved(parts):
+        q = np.concatenate([part[0] for part in parts])
+        found.append(solve(q, tuple(np.concatenate(h) for h in zip(*(part[1] for part in parts)))))
+        narrow(envelope, owner[found[-1][0]], *found[-1][1:])
+
     head, count = run_starts(query)
     rank = np.arange(query.size) - np.repeat(head, count)
     done, size = 0, 1
     while done < count.max():
         take = (rank >= done) & (rank < done + size)
         q, qu = query[take], quarter[take]
-        keep = envelope[0, owner[q]] < envelope[1, owner[q]]
+        keep, a, b, reach = left(q)
         q, qu = q[keep], qu[keep]
-        # Each query's segment once (q comes grouped by query), handed to its quarters.
-        first, many = run_starts(q)
-        a, b, reach = segment(q[first], envelope[0, owner[q[first]]], envelope[1, owner[q[first]]])
-        mine = np.repeat(np.arange(first.size), many)
-        a, b, reach = a[mine], b[mine], reach[mine]
         keep = segment_distance(a, b, view.quarter_a[qu], view.quarter_b[qu]) - view.quarter_slack[qu] \
             <= reach + MARGIN
         q, qu, a, b, reach = q[keep], qu[keep], a[keep], b[keep], reach[keep]
@@ -195,11 +206,20 @@ def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
         row, pc = view.quarter_pieces(bent, qu[bent], before[q])  # (the segments are the quarters' rows')
         keep = pc != skip[q[row]]
         row, pc = row[keep], pc[keep]
-        keep = segment_distance(a[row], b[row], view.a[pc], view.b[pc]) <= reach[row] + MARGIN
-        parts.append((q[row[keep]], view.piece_hulls(pc[keep])))
-        q = np.concatenate([part[0] for part in parts])
-        found.append(solve(q, tuple(np.concatenate(h) for h in zip(*(part[1] for part in parts)))))
-        narrow(envelope, owner[found[-1][0]], *found[-1][1:])
+        gap = segment_distance(a[row], b[row], view.a[pc], view.b[pc])
+        keep = gap <= reach[row] + MARGIN
+        pq, pc, gap = q[row[keep]], pc[keep], gap[keep]
+        # Of each query's pieces the nearest first (at an arc's last point the deepest, most often the one that
+        # removes most); the others only where they still come within reach of what is left after it.
+        order = np.lexsort((gap, pq))
+        lead = np.zeros(pq.size, dtype=bool)
+        lead[order[run_starts(pq[order])[0]]] = True
+        solved(parts + [(pq[lead], view.piece_hulls(pc[lead]))])
+        pq, pc = pq[~lead], pc[~lead]
+        keep, a, b, reach = left(pq)
+        pq, pc = pq[keep], pc[keep]
+        keep = segment_distance(a, b, view.a[pc], view.b[pc]) <= reach + MARGIN
+        solved([(pq[keep], view.piece_hulls(pc[keep]))])
         done, size = done + size, 2 * size
     return found
 
