@@ -160,23 +160,23 @@ def nearest_pieces(view, group, k, at, bound, before, exact):
 
 
 def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
-    """Removal parts [(query, enter, leave)] of the queries against the pieces of their quarters (query, quarter
-    (K,), nearest first per query), in rounds of 1, 2, 4, … quarters per query (module docstring): a quarter, and
-    then a piece, farther than reach + MARGIN in plan from what is left of its query's edge is dropped; a straight
-    quarter (slack 0: its pieces run along its chord, and their union is the chord's hull) ending by then is solved
-    as that one hull. In each round the nearest piece of each query is solved first, and the round's other pieces
-    only where they still come within reach of what is left after it. owner (Q,): each query's edge, envelope (2, L): each edge's material (from, to; narrowed
-    here); solve(query, hulls) → (query, enter, leave) of the pairs that remove something (hulls: c0, c1, axis,
-    radius, height, corner of each pair's earlier tool); segment(query, from, to) → (a, b, reach): the plan segment
-    a … b (K, 2) of that part of the query's edge and the plan distance reach (K,) beyond which no piece of the
-    level removes anything of it; before (Q,) as for near_chains; skip (Q,): a piece each query has been solved
-    against."""
+    """Removal parts [(query, enter, leave)] of the queries against the pieces of their quarters (query, quarter (K,),
+    nearest first per query), in rounds of 1, 2, 4, … quarters per query (module docstring): a quarter, and then a
+    piece, farther than reach + MARGIN in plan from what is left of its query's edge is dropped; a straight quarter
+    (slack 0: its pieces run along its chord, and their union is the chord's hull) ending by then is solved as that
+    one hull. In each round the nearest piece of each query is solved first, and the round's other pieces only where
+    they still come within reach of what is left after it. owner (Q,): each query's edge, envelope (2, L): each
+    edge's material (from, to; narrowed here); solve(query, hulls) → (query, enter, leave) of the pairs that remove
+    something (hulls: c0, c1, axis, radius, height, corner of each pair's earlier tool); segment(query, from, to) →
+    (a, b, reach): the plan segment a … b (K, 2) of that part of the query's edge and the plan distance reach (K,)
+    beyond which no piece of the level removes anything of it; before (Q,) as for near_chains; skip (Q,): a piece
+    each query has been solved against."""
     found = []
     if query.size == 0:
         return found
 
     def left(q):
-        """The rows of q (K,, grouped by query) whose query has material left, and each one's segment (a, b) and
+        """The rows of q (K,) (grouped by query) whose query has material left, and each one's segment (a, b) and
         reach, each query's taken once."""
         keep = np.flatnonzero(envelope[0, owner[q]] < envelope[1, owner[q]])
         first, many = run_starts(q[keep])
