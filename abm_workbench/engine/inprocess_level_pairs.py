@@ -244,23 +244,37 @@ def sides(view, line, k, group, origin, direction, plan, before):
     tool with a corner, piece by piece: a side's removal runs from where the corner's radius reaches it (the
     nearer the piece, the lower) to the top. In a level exact on a coordinate axis every piece gives the same top,
     so a line whose foot lies within the rim (the tool's flat bottom) of a chain that holds its grid cell, or of the
-    piece into its previous CL point, takes the interval of lift 0 alone, and any other line the pieces within
-    2·MARGIN of its nearest (nearest_pieces): every other piece's interval lies inside theirs. In other levels each
-    piece within the level tool's radius gives its own."""
+    piece into its previous CL point, takes the interval of lift 0 alone; a line whose origin stands at least the
+    level tool's corner radius above its bottom (its material lying at l ≥ 0), in a cell a chain holds within the
+    tool's radius, the interval from the corner's top up (inside it wherever the nearest piece's corner starts);
+    and any other line the pieces within 2·MARGIN of its nearest (nearest_pieces): every other piece's interval
+    lies inside theirs. In other levels each piece within the level tool's radius gives its own."""
     at = plan[line]
     fast = view.aligned & view.exact[k]
     alone = np.where(fast, view.held(line, k, at, before[line]), -1)
     one = np.flatnonzero(alone >= 0)
     held = view.chain_piece[view.chain_start[alone[one]]]
+    c0, _, axis, _, height = view.hull
+    # A line whose origin stands at least the level tool's corner radius above its bottom sees that tool's full
+    # radius R at every height: a chain holding its cell within R removes it from the corner's top up, wherever the
+    # nearest piece's corner would start its removal (lower). Its material lies at l ≥ 0 (from the origin up).
+    full = np.flatnonzero(fast & (alone < 0))
+    chain = view.held(line[full], k[full], at[full], before[line[full]], full=True)
+    full, chain = full[chain >= 0], chain[chain >= 0]
+    first = view.chain_piece[view.chain_start[chain]]
+    lift = row_dot(origin[line[full]] - c0[first], axis[first])
+    above = lift >= view.rc[k[full]]
+    full, first, lift = full[above], first[above], lift[above]
+    alone[full] = -2
     # The piece into the previous CL point: where it holds the foot within its rim its interval is the answer; else
     # its distance bounds the nearest's.
-    previous = np.where(alone < 0, view.previous(k, before[line]), -1)
+    previous = np.where(alone == -1, view.previous(k, before[line]), -1)
     has = np.flatnonzero(previous >= 0)
     bound = view.r[k]
     gap = plan_distance(at[has], view.a[previous[has]], view.b[previous[has]])
     bound[has] = np.where(fast[has], np.minimum(bound[has], gap + 2.0 * MARGIN), bound[has])
     inner = has[fast[has] & (gap < view.rim_of(previous[has]) - MARGIN)]
-    rest = np.flatnonzero(alone < 0)
+    rest = np.flatnonzero(alone == -1)
     rest = rest[~np.isin(rest, inner)]
     query, piece = nearest_pieces(view, group[line[rest]], k[rest], at[rest], bound[rest], before[line[rest]],
                                   fast[rest])
@@ -268,10 +282,10 @@ def sides(view, line, k, group, origin, direction, plan, before):
     enter, leave = _line_pairs(solved, view.piece_hulls(np.concatenate([previous[inner], piece])), origin, direction)
     # Held within the rim in a level exact on a coordinate axis: the closed form's interval of its nearest piece,
     # lift 0 (inprocess_plan._side_in_move), from any piece of the level (all give the same heights).
-    c0, _, axis, _, height = view.hull
     up = row_dot(origin[line[one]] - c0[held], axis[held])
-    return (np.concatenate([line[one], solved]), np.concatenate([0.0 - up, enter]),
-            np.concatenate([height[held] - up, leave]))
+    return (np.concatenate([line[one], line[full], solved]),
+            np.concatenate([0.0 - up, view.rc[k[full]] - lift, enter]),
+            np.concatenate([height[held] - up, height[first] - lift, leave]))
 
 
 def ends(view, origin, direction, lo, hi, before, group):

@@ -159,6 +159,11 @@ class LevelView:
         parts = [self._grid(k, order[bounds[k]:bounds[k + 1]]) for k in range(count)]
         self.whole_move = np.concatenate([part[0] for part in parts])
         self.whole_chain = np.concatenate([part[1] for part in parts])
+        # Cells held whole within the tool's full radius R (for a corner tool's sides above every level's corner,
+        # inprocess_level_pairs.sides); within the rim already where no level's tool has a corner.
+        bent = (self.rc > 0.0).any()
+        self.full_move = np.concatenate([part[4] for part in parts]) if bent else self.whole_move
+        self.full_chain = np.concatenate([part[5] for part in parts]) if bent else self.whole_chain
         cell = np.concatenate([part[2] + self.offset[k] for k, part in enumerate(parts)])
         self.entry_chain = np.concatenate([part[3] for part in parts])
         # Entries sorted by cell, then first move: the chains begun before a CL point are a prefix of its cell's.
@@ -263,20 +268,27 @@ class LevelView:
         slack = self.chain_slack[chains][owner]
         cell = iy * shape[0] + ix
         chain = chains[owner]
-        # Held whole: within the rim (the radius where a corner tool's bottom is flat; a flat-end mill's radius).
-        whole = distance - self.chain_rim[chains][owner] <= -slack - half - MARGIN
         cells = int(shape.prod())
-        whole_move = np.full(cells, _NONE)
-        whole_chain = np.full(cells, -1, dtype=np.intp)
-        if whole.any():
-            when = self.chain_last_move[chain[whole]]
-            order = np.lexsort((when, cell[whole]))
-            at, when, which = cell[whole][order], when[order], chain[whole][order]
-            head = np.r_[True, at[1:] != at[:-1]]
-            whole_move[at[head]], whole_chain[at[head]] = when[head], which[head]
+
+        def held(whole):
+            """(move, chain) per cell: of the chains holding it whole, the one that ends first (_NONE, −1: none)."""
+            whole_move = np.full(cells, _NONE)
+            whole_chain = np.full(cells, -1, dtype=np.intp)
+            if whole.any():
+                when = self.chain_last_move[chain[whole]]
+                order = np.lexsort((when, cell[whole]))
+                at, when, which = cell[whole][order], when[order], chain[whole][order]
+                head = np.r_[True, at[1:] != at[:-1]]
+                whole_move[at[head]], whole_chain[at[head]] = when[head], which[head]
+            return whole_move, whole_chain
+
+        # Held whole: within the rim (the radius where a corner tool's bottom is flat; a flat-end mill's radius),
+        # and within the full radius.
+        rim = held(distance - self.chain_rim[chains][owner] <= -slack - half - MARGIN)
+        full = held(gap <= -slack - half - MARGIN)
         near = gap <= slack + half + MARGIN
         order = np.lexsort((self.chain_first_move[chain[near]], cell[near]))
-        return whole_move, whole_chain, cell[near][order], chain[near][order]
+        return rim + (cell[near][order], chain[near][order]) + full
 
     def removals(self, origin, direction, lo, hi, before, group):
         """Removal intervals (line (K,), enter, leave (K,) mm) of the lines (origin (L, 3), direction (L, 3) = w)
@@ -378,14 +390,15 @@ class LevelView:
         """(K,) the plan radius of level k's tool at height h (K,) above its bottom (clipped to 0 … H)."""
         return earlier_radius(clamp(h, 0.0, self.h[k]), self.r[k], self.rc[k])
 
-    def held(self, line, k, at, before):
-        """(K,) the chain that holds the whole grid cell of the plan points at (K, 2) in level k within its rim and
-        ends by program row before (K,), or −1."""
+    def held(self, line, k, at, before, full=False):
+        """(K,) the chain that holds the whole grid cell of the plan points at (K, 2) in level k within its rim (within
+        its radius if full) and ends by program row before (K,), or −1."""
         cell_xy = np.floor((at - self.origin[k]) / self.size[k][:, None])
         inside = ((cell_xy >= 0) & (cell_xy < self.shape[k])).all(axis=1)
         cell_xy = np.where(inside[:, None], cell_xy, 0).astype(np.int64)
         cell = self.offset[k] + cell_xy[:, 1] * self.shape[k, 0] + cell_xy[:, 0]
-        return np.where(inside & (self.whole_move[cell] <= before), self.whole_chain[cell], -1)
+        move, chain = (self.full_move, self.full_chain) if full else (self.whole_move, self.whole_chain)
+        return np.where(inside & (move[cell] <= before), chain[cell], -1)
 
     def near_chains(self, query, k, a, b, before):
         """(owner, chain) (K,): for the queries `query` (Q,, indices into k, a, b, before), the chains of level k[q]

@@ -181,6 +181,57 @@ def test_nearest_pieces_against_all_pieces():
     assert found > 50
 
 
+
+@pytest.mark.parametrize("ratio", [0.25, 1.0])
+def test_sides_held_within_the_full_radius(ratio, monkeypatch):
+    """A side whose origin stands at least the level tool's corner radius above the level's bottom, in a grid cell
+    that a chain holds whole within the tool's radius R, is removed from the corner's top up without the search for
+    its nearest pieces: over its material (l ≥ 0) exactly what the nearest pieces remove (the same union, bit for
+    bit), and for many lines (a ball's rim R − r is 0: its sides were never held within the rim)."""
+    program, tool, rows = level_program(ratio)
+    view = swept_pieces(program.moves()).levels
+    rng = np.random.default_rng(5)
+    n = 3000
+    k = rng.integers(0, view.z.size, n)
+    # A third at the corner's top exactly (a side of the same tool at its own level), the others above and below.
+    lift = np.where(rng.random(n) < 1.0 / 3.0, view.rc[k], rng.uniform(-0.5, 2.5, n) * view.rc[k])
+    origin = np.stack([rng.uniform(-18.0, 18.0, n), rng.uniform(-11.0, 11.0, n), view.z[k] + lift], axis=1)
+    direction = np.broadcast_to(np.array([0.0, 0.0, 1.0]), (n, 3)).copy()
+    before = rng.choice(rows, n)
+    line = np.arange(n)
+
+    def covered(found):
+        """Per line, the part of 0 … 20 mm its intervals cover, as (start, end) runs."""
+        runs = []
+        for i in range(n):
+            mine = (found[0] == i) & (found[2] > 0.0)
+            spans = sorted(zip(np.maximum(found[1][mine], 0.0), found[2][mine]))
+            merged = []
+            for a, b in spans:
+                if merged and a <= merged[-1][1]:
+                    merged[-1][1] = max(merged[-1][1], b)
+                else:
+                    merged.append([a, b])
+            runs.append(merged)
+        return runs
+
+    held = view.held
+    taken = []
+
+    def counting(*args, full=False):
+        chain = held(*args, full=full)
+        if full:
+            taken.append(int((chain >= 0).sum()))
+        return chain
+
+    monkeypatch.setattr(view, "held", counting)
+    plan = view.plan(origin)
+    now = pairs.sides(view, line, k, line, origin, direction, plan, before)
+    monkeypatch.setattr(view, "held", lambda *args, full=False: np.full(args[0].size, -1) if full else held(*args))
+    searched = pairs.sides(view, line, k, line, origin, direction, plan, before)
+    assert covered(now) == covered(searched)
+    assert sum(taken) > 300
+
 def test_segment_distance_against_sampling():
     """The plan distance of two segments (crossing, parallel, collinear, degenerate) against the least distance of
     4001 samples of one to the other segment: never above it, and below it by at most half the sample spacing."""
