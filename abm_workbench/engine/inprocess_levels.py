@@ -270,7 +270,7 @@ class LevelView:
         chain = chains[owner]
         cells = int(shape.prod())
 
-        def held(whole):
+        def holders(whole):
             """(move, chain) per cell: of the chains holding it whole, the one that ends first (_NONE, −1: none)."""
             whole_move = np.full(cells, _NONE)
             whole_chain = np.full(cells, -1, dtype=np.intp)
@@ -284,8 +284,8 @@ class LevelView:
 
         # Held whole: within the rim (the radius where a corner tool's bottom is flat; a flat-end mill's radius),
         # and within the full radius.
-        rim = held(distance - self.chain_rim[chains][owner] <= -slack - half - MARGIN)
-        full = held(gap <= -slack - half - MARGIN)
+        rim = holders(distance - self.chain_rim[chains][owner] <= -slack - half - MARGIN)
+        full = holders(gap <= -slack - half - MARGIN)
         near = gap <= slack + half + MARGIN
         order = np.lexsort((self.chain_first_move[chain[near]], cell[near]))
         return rim + (cell[near][order], chain[near][order]) + full
