@@ -99,11 +99,28 @@ def _in_levels(pieces, at, line, lo, hi, cl, before, d, w, geometry):
     alive = ~dead[arc]
     found = [(line[at[dead]], psi[0][dead] * radius, psi[1][dead] * radius),
              (line[at[arc[alive]]], start[alive] * radius, end[alive] * radius)]
-    left = at[~dead]
-    if pieces.rest.move.size:
-        found.append(_searched(pieces.rest, line[left], lo[left], hi[left], cl[left], before[left], geometry,
-                               envelope[:, ~dead]))
+    left = np.flatnonzero(~dead)
+    if pieces.rest.move.size and left.size:
+        left = left[_near_rest(pieces.rest, tips, geometry[2], line[at[left]], cl[at[left]], before[at[left]], radius, big)]
+        found.append(_searched(pieces.rest, line[at[left]], lo[at[left]], hi[at[left]], cl[at[left]],
+                               before[at[left]], geometry, envelope[:, left]))
     return found
+
+
+def _near_rest(rest, tips, ws, line, cl, before, radius, big):
+    """(L,) bool: the arcs `line` (L,) whose CL point's sphere may meet a chain of `rest` (a SweptPieces) begun by
+    program row before (L,) (cl (L,) non-decreasing, each arc's CL point): the sphere of radius big about the corner's
+    centre height on the axis (tip + radius·w) holds every corner arc of the tool (a point at ψ lies
+    (big − radius + radius·sin ψ, −radius·cos ψ) from it across and along the axis: at most big away); a chain whose
+    balls all miss it, or whose hull is surely apart from it (the units' test, _Units), removes nothing of them."""
+    first = np.flatnonzero(np.r_[True, cl[1:] != cl[:-1]])
+    centre = np.take(tips, line[first], axis=0) + radius * np.take(ws, line[first], axis=0)
+    size = np.full(first.size, big * (1.0 + 1e-9) + 1e-9)
+    g, k = _sphere_chains(centre, size, before[first], rest)
+    keep = ~_apart(centre[g], centre[g], *rest.hulls("chain", k), rest.chain_slack[k] + size[g], rest.chain_lean[k])
+    near = np.zeros(first.size, dtype=bool)
+    near[g[keep]] = True
+    return np.repeat(near, np.diff(np.r_[first, cl.size]))
 
 
 def _screen(arcs, seg, hulls, low, high):
