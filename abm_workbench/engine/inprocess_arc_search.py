@@ -33,7 +33,7 @@ from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _seen_along,
 from .inprocess_cover import narrow
 from .inprocess_level_pairs import GROUP, arcs as level_arcs
 from .inprocess_plan import arc_kinds, arc_piece_intervals
-from .swept import row_dot
+from .swept import every_column, row_dot
 from .tolerances import LENGTH_EPS
 
 #: Arcs per block at most (whole CL points; a CL point with more arcs is a block alone).
@@ -74,7 +74,7 @@ def arc_removal_intervals(pieces, program_index, line, lo, hi, centres, ds, ws, 
     view = pieces.levels
     if view is not None:
         w, d = np.take(ws, line, axis=0), np.take(ds, line, axis=0)
-        level = (w == view.w).all(axis=1) & (row_dot(d, w) == 0.0)
+        level = every_column(w == view.w) & (row_dot(d, w) == 0.0)
         found = [_searched(pieces, line[~level], lo[~level], hi[~level], cl[~level], before[~level], geometry)]
         level = np.flatnonzero(level)
         for begin, end in _blocks(cl[level]):

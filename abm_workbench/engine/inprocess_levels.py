@@ -33,7 +33,7 @@ import numpy as np
 
 from .inprocess_level_pairs import MARGIN, expand, plan_distance, segment_distance, sides
 from .inprocess_plan import earlier_radius
-from .swept import clamp, line_hull_interval, row_dot
+from .swept import clamp, every_column, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
 
 #: Moves of one level (axis, z, H) at least for it to get a grid; the others stay with the general search.
@@ -394,7 +394,7 @@ class LevelView:
         """(K,) the chain that holds the whole grid cell of the plan points at (K, 2) in level k within its rim (within
         its radius if full) and ends by program row before (K,), or −1."""
         cell_xy = np.floor((at - self.origin[k]) / self.size[k][:, None])
-        inside = ((cell_xy >= 0) & (cell_xy < self.shape[k])).all(axis=1)
+        inside = every_column((cell_xy >= 0) & (cell_xy < self.shape[k]))
         cell_xy = np.where(inside[:, None], cell_xy, 0).astype(np.int64)
         cell = self.offset[k] + cell_xy[:, 1] * self.shape[k, 0] + cell_xy[:, 0]
         move, chain = (self.full_move, self.full_chain) if full else (self.whole_move, self.whole_chain)
@@ -410,7 +410,7 @@ class LevelView:
         aq, bq = a[query], b[query]
         low = clamp(np.floor((np.minimum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
         high = clamp(np.floor((np.maximum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
-        meets = ((high >= 0) & (low < shape)).all(axis=1)
+        meets = every_column((high >= 0) & (low < shape))
         low, high = np.maximum(low, 0), np.minimum(high, shape - 1)
         span = np.where(meets[:, None], high - low + 1, 0)
         count = span[:, 0] * span[:, 1]
@@ -464,7 +464,7 @@ class LevelView:
         line_in, k_in = line, k
         at = plan[line]
         cell_xy = np.floor((at - self.origin[k]) / self.size[k][:, None]).astype(np.int64)
-        inside = ((cell_xy >= 0) & (cell_xy < self.shape[k])).all(axis=1)
+        inside = every_column((cell_xy >= 0) & (cell_xy < self.shape[k]))
         line, k, cell_xy = line[inside], k[inside], cell_xy[inside]
         cell = self.offset[k] + cell_xy[:, 1] * self.shape[k, 0] + cell_xy[:, 0]
         whole = self.whole_move[cell] <= before[line]

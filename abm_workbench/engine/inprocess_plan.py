@@ -33,12 +33,17 @@ import numpy as np
 from .inprocess_arc import COINCIDENT, arc_swept_intervals
 from .inprocess_cover import run_starts
 from .inprocess_swept import line_swept_interval
-from .swept import clamp, line_hull_interval, row_dot
+from .swept import clamp, every_column, line_hull_interval, row_dot
 
 
 def _noise(*vectors, size):
     """(K,) COINCIDENT ulps of the largest coordinate of the vectors (K, 3) plus size (K,)."""
-    return COINCIDENT * np.spacing(sum(np.abs(v).max(axis=1) for v in vectors) + size)
+    return COINCIDENT * np.spacing(sum(_largest_column(np.abs(v)) for v in vectors) + size)
+
+
+def _largest_column(v):
+    """(K,) the largest of the three columns of v (K, 3) (np.max over axis 1, in a tenth of its time)."""
+    return np.maximum(np.maximum(v[:, 0], v[:, 1]), v[:, 2])
 
 
 def across(c0, c1, axis):
@@ -92,7 +97,7 @@ def arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner)
     (the arc r or more below the move), in closed form at its level (the same tool), in closed form where the
     earlier tool's radius is the same at every height of the arc (a flat end, or its corner below the arc), and by
     the monotone bisection of the same tool's level above the arc's tip (less than r above); arguments as there."""
-    same_axis = np.all(p_axis == axis, axis=1) & across(c0, c1, p_axis)
+    same_axis = every_column(p_axis == axis) & across(c0, c1, p_axis)
     level = row_dot(tip - c0, axis)
     below = same_axis & (level <= -corner)
     bent = corner > 0.0
@@ -315,7 +320,7 @@ def line_level_interval(origin, direction, c0, c1, axis, big, height, corner):
     moves across their axis, where the plan view decides them: lines along the axis (straight sides) and
     across it (end edges); NaN where a decided line misses the solid (module docstring)."""
     moves = across(c0, c1, axis)
-    upright = moves & np.all(direction == axis, axis=1)
+    upright = moves & every_column(direction == axis)
     flat = moves & (row_dot(direction, axis) == 0.0)
     enter, leave = np.full(origin.shape[0], np.nan), np.full(origin.shape[0], np.nan)
     rows = np.flatnonzero(upright)
