@@ -109,6 +109,31 @@ def test_corner_levels_give_the_general_search_numbers(ratio):
         np.testing.assert_allclose(np.sort(a), np.sort(b), rtol=0, atol=1e-9)
 
 
+@pytest.mark.parametrize("ratio", [0.25, 1.0])
+def test_arcs_beside_a_plunge_give_the_general_search_numbers(ratio):
+    """A plunge, then a pass at its bottom's level 1.5 R beside it: the arcs facing the plunge lose what it swept (the
+    lengths differ from the pass alone), found by the search among the moves off the levels after the level view
+    (whose CL points it takes only where their sphere meets such a move): the general search's numbers to 1e-9 mm
+    at every CL point of the pass, every 10°."""
+    tool = Tool(4.0, 2, 12.0, corner_radius=2.0 * ratio)
+    args = (tool.radius, tool.flute_length, tool.corner_radius)
+    phi = np.arange(0.0, 360.0, 10.0)
+    runs = []
+    for plunge in (True, False):
+        program = programs.Program()
+        if plunge:
+            program.add(np.array([[0.0, 0.0, 8.0], [0.0, 0.0, 3.8]]) + programs.ODD, *args)
+        rows = program.add(programs.straight(-8.0, 8.0, 1.5 * tool.radius, 3.8, 41), *args)[1:]
+        moves = program.moves()
+        toolpath = Toolpath(program.array("cl")[rows], np.zeros(rows.size), np.zeros(rows.size))
+        pieces = [swept_pieces(moves, levels=levels) for levels in (True, False)]
+        if plunge:
+            assert pieces[0].levels is not None and pieces[0].rest.move.size == 1
+        runs.append([in_process_runs(programs.STAIRCASE, tool, toolpath, phi, one, rows) for one in pieces])
+    np.testing.assert_allclose(runs[0][0].length, runs[0][1].length, rtol=0, atol=1e-9)
+    assert np.abs(runs[0][0].length - runs[1][0].length).max() > 0.1
+
+
 def _profile_radius(h, big, corner):
     """The plan radius of a tool (big, corner) at height h ≥ 0 above its bottom (its corner's, then big)."""
     inside = np.clip(corner - h, 0.0, corner)
