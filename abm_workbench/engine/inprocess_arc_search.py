@@ -87,7 +87,7 @@ def _in_levels(pieces, at, line, lo, hi, cl, before, d, w, geometry):
     """Removal parts [(rows, enter, leave)] (mm of arc length) of the arcs line[at] (at: a block of whole CL points)
     across the levels' axis: the level view (inprocess_level_pairs.arcs, the pairs it does not decide screened by
     the sure-miss test of _Arcs), then the search among the other moves for those not removed whole."""
-    centres, _, _, tips, radius, big, top = geometry
+    centres, _, ws, tips, radius, big, top = geometry
     psi = (lo[at] / radius, hi[at] / radius)
     screened = _Arcs(line[at], *psi, geometry)
     arc, start, end = level_arcs(pieces.levels, np.take(tips, line[at], axis=0), d[at], w[at],
@@ -101,9 +101,11 @@ def _in_levels(pieces, at, line, lo, hi, cl, before, d, w, geometry):
              (line[at[arc[alive]]], start[alive] * radius, end[alive] * radius)]
     left = np.flatnonzero(~dead)
     if pieces.rest.move.size and left.size:
-        left = left[_near_rest(pieces.rest, tips, geometry[2], line[at[left]], cl[at[left]], before[at[left]], radius, big)]
-        found.append(_searched(pieces.rest, line[at[left]], lo[at[left]], hi[at[left]], cl[at[left]],
-                               before[at[left]], geometry, envelope[:, left]))
+        mine = at[left]
+        left = left[_near_rest(pieces.rest, tips, ws, line[mine], cl[mine], before[mine], radius, big)]
+        mine = at[left]
+        found.append(_searched(pieces.rest, line[mine], lo[mine], hi[mine], cl[mine], before[mine], geometry,
+                               envelope[:, left]))
     return found
 
 
