@@ -5,12 +5,13 @@ FreeCAD itself, which translates them in the context of the command's name); wor
 tables go through :func:`noop` there and :func:`translate` where they are shown. All in the
 context :data:`CONTEXT` but the commands'.
 
-``/usr/bin/python3 -m abm_workbench.gui.i18n`` writes ``translations/ABM.ts``, the template a
-translator opens in Qt Linguist: every string literal passed to ``translate``, ``noop`` or
-``QT_TRANSLATE_NOOP`` in ``abm_workbench/gui`` (found by parsing the sources, as Qt's own
-``pylupdate`` does), and brings each translation ``translations/ABM_<language>.ts`` up to date with
-it (its translations kept, new texts added unfinished, texts gone dropped). ``make translations``
-does that and compiles each to ``ABM_<language>.qm`` with Qt's ``lrelease``.
+``/usr/bin/python3 -m abm_workbench.gui.i18n`` writes ``translations/ABM.ts``, the template a translator
+opens in Qt Linguist: every string literal passed to ``translate``, ``noop`` or ``QT_TRANSLATE_NOOP`` in
+``abm_workbench/gui`` (found by parsing the sources, as Qt's own ``pylupdate`` does), the templates of
+the engine's and readers' messages (context ``ABM_messages``, :mod:`.messages`) and the job parameters'
+labels (context ``ABM_parameters``), and brings each translation ``translations/ABM_<language>.ts`` up
+to date with it (its translations kept, new texts added unfinished, texts gone dropped). ``make
+translations`` does that and compiles each to ``ABM_<language>.qm`` with Qt's ``lrelease``.
 
 :func:`install` (InitGui.py) adds the folder with ``FreeCADGui.addLanguagePath``: FreeCAD loads the
 ``.qm`` of its language from there at start and again whenever the language is changed in the
@@ -25,8 +26,9 @@ import sys
 import xml.etree.ElementTree as ElementTree
 from xml.sax.saxutils import escape
 
-#: Translation context of the GUI's words.
+#: Translation context of the GUI's words, and of the job parameters' labels (jobs.PARAMETERS).
 CONTEXT = "ABM"
+PARAMETERS = "ABM_parameters"
 GUI = os.path.dirname(os.path.abspath(__file__))
 #: The translations folder and its template.
 FOLDER = os.path.join(os.path.dirname(os.path.dirname(GUI)), "translations")
@@ -36,10 +38,14 @@ TEMPLATE = os.path.join(FOLDER, "ABM.ts")
 def translate(text, context=CONTEXT, **values):
     """`text` in the user's language (as it is without a translation), its {placeholders} filled with
     `values` when given. A translation whose placeholders are not the text's (a translator's slip) is
-    not used: the text is shown untranslated rather than the GUI failing."""
-    from PySide import QtCore
-
-    translated = QtCore.QCoreApplication.translate(context, text)
+    not used: the text is shown untranslated rather than the GUI failing. Without Qt (FreeCAD headless,
+    whose checks of typed numbers the tests use) the text as it is."""
+    try:
+        from PySide import QtCore
+    except ImportError:
+        translated = text
+    else:
+        translated = QtCore.QCoreApplication.translate(context, text)
     if not values:
         return translated
     try:
@@ -84,6 +90,18 @@ def messages(folder=GUI):
                 add(strings[1] if called == "translate" and len(strings) > 1 and strings[1] else CONTEXT, strings[0])
             elif called == "QT_TRANSLATE_NOOP" and len(strings) == 2 and None not in strings:
                 add(strings[0], strings[1])
+    return found
+
+
+def catalogue():
+    """{context: [text, …]} of everything the template holds: the GUI's words (:func:`messages`), the
+    engine's and readers' message templates (messages.templates) and the job parameters' labels."""
+    from ..jobs.parameters import PARAMETERS as LABELLED
+    from .messages import CONTEXT as MESSAGES, templates
+
+    found = messages()
+    found[MESSAGES] = templates()
+    found[PARAMETERS] = list(dict.fromkeys(parameter.label for parameter in LABELLED))
     return found
 
 
@@ -134,7 +152,7 @@ def install():
 def main(path=TEMPLATE):
     """Write the template to `path` and bring the translations beside it up to date; 0."""
     os.makedirs(os.path.dirname(path), exist_ok=True)
-    found = messages()
+    found = catalogue()
     with open(path, "w", encoding="utf-8") as handle:
         handle.write(template(found))
     print(path)

@@ -17,15 +17,19 @@ import math
 import re
 
 from ..cad.freecad_env import FreeCAD
+from .i18n import noop, translate
 
 #: A number as typed: sign, digits with one decimal point "." (the locale's, put in its place), exponent;
 #: then its unit, if any: letters (mm, in, µm, rad) or a sign (°, ′, ″, ", ').
 _NUMBER = re.compile(r"([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*([^\W\d_]+|[°′″\"'])?", re.UNICODE)
-#: Each declared unit: FreeCAD's unit of its kind (None: a plain number), the kind in words, what to type.
+#: Each declared unit: FreeCAD's unit of its kind (None: a plain number), the message for text of another kind,
+#: what to type.
 KINDS = {
-    "mm": ("Length", "a length", "type a number, with a unit if you like (12 mm, 0.5 in)"),
-    "deg": ("Angle", "an angle", "type a number, with a unit if you like (10°, 0.2 rad)"),
-    None: (None, "a number", "type a number without a unit (4, 2.5)"),
+    "mm": ("Length", noop("“{typed}” is not a length: {hint}"),
+           noop("type a number, with a unit if you like (12 mm, 0.5 in)")),
+    "deg": ("Angle", noop("“{typed}” is not an angle: {hint}"),
+            noop("type a number, with a unit if you like (10°, 0.2 rad)")),
+    None: (None, noop("“{typed}” is not a number: {hint}"), noop("type a number without a unit (4, 2.5)")),
 }
 #: How declared units are written after a number.
 _WRITTEN = {"mm": " mm", "deg": "°"}
@@ -54,8 +58,8 @@ def read(typed, unit, point="."):
         return None
     other = "," if point == "." else "."
     if other in stripped:
-        raise Unreadable(f"“{stripped}” has a “{other}”: decimals take a “{point}” (12{point}5), thousands no "
-                         f"separator (1000)")
+        raise Unreadable(translate("“{typed}” has a “{other}”: decimals take a “{point}” (12{point}5), "
+                                   "thousands no separator (1000)", typed=stripped, other=other, point=point))
     match = _NUMBER.fullmatch(stripped.replace(point, "."))
     if match is None:
         raise _not_of_kind(stripped, unit)
@@ -64,9 +68,9 @@ def read(typed, unit, point="."):
     if written is not None:
         number *= _factor(written, unit, stripped)
     if math.isinf(number):
-        raise Unreadable(f"“{stripped}” is too large a number")
+        raise Unreadable(translate("“{typed}” is too large a number", typed=stripped))
     if number == 0 and re.search("[1-9]", digits.lower().split("e")[0]):
-        raise Unreadable(f"“{stripped}” is too small a number: it would be taken as 0")
+        raise Unreadable(translate("“{typed}” is too small a number: it would be taken as 0", typed=stripped))
     return number
 
 
@@ -81,7 +85,7 @@ def text(value, unit, point="."):
 
 def hint(unit):
     """What to type into a field of the declared `unit`, in words: 'type a number, with a unit if …'."""
-    return KINDS[unit][2]
+    return translate(KINDS[unit][2])
 
 
 def _factor(written, unit, stripped):
@@ -98,4 +102,4 @@ def _factor(written, unit, stripped):
 
 def _not_of_kind(stripped, unit):
     """Unreadable: “1x2” is not a length: type a number, …"""
-    return Unreadable(f"“{stripped}” is not {KINDS[unit][1]}: {hint(unit)}")
+    return Unreadable(translate(KINDS[unit][1], typed=stripped, hint=hint(unit)))

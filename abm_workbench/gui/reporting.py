@@ -3,16 +3,19 @@
 Messages go to the report view (``FreeCAD.Console.PrintError``) as ``ABM: <plain words>``: a bad
 parameter in its label's words (``jobs.label_words``), FreeCAD's own exceptions by their text; a
 message of the engine or a reader that names a command-line option (``--tool-table FILE``) names
-what the GUI has for it instead (:data:`OPTION_WORDS`, :func:`gui_words`).
+what the GUI has for it instead (:data:`OPTION_WORDS`, :func:`gui_words`). Messages of the engine and
+the readers are shown in the user's language where their template has a translation (:func:`localized`).
 """
 
 import re
 
 import FreeCAD
 
-from ..errors import ParameterError
-from ..jobs import label_words
+from ..errors import MissingParameter, ParameterError
+from ..jobs.parameters import BY_NAME
 from . import view_providers
+from .i18n import PARAMETERS, TEMPLATE, noop, translate
+from .messages import CONTEXT as MESSAGES, Catalogue
 
 #: Prefix of the workbench's lines in the report view.
 PROG = "ABM"
@@ -24,47 +27,72 @@ class CommandError(Exception):
 
 #: Command-line options that messages of the engine and the readers name, as the GUI names them.
 OPTION_WORDS = {
-    "tool-table": "the toolpath's ToolTable property",
-    "machine-units": "the toolpath's ToolTableUnits property",
-    "operation": "the toolpath's Operation property",
-    "helix": "the helix angle β",
-    "stock-model": "the engagement's StockModel property",
-    "cam-job": "a toolpath linked to the CAM Job",
-    "machine": "a machine file (not read by the GUI yet)",
-    "offsets": "work offsets (not read by the GUI yet)",
-    "walls": "the wall model",
-    "y-window": "the y window",
-    "forces": "Cutting forces",
-    "cl": "the CL points",
+    "tool-table": noop("the toolpath's ToolTable property"),
+    "machine-units": noop("the toolpath's ToolTableUnits property"),
+    "operation": noop("the toolpath's Operation property"),
+    "helix": noop("the helix angle β"),
+    "stock-model": noop("the engagement's StockModel property"),
+    "cam-job": noop("a toolpath linked to the CAM Job"),
+    "machine": noop("a machine file (not read by the GUI yet)"),
+    "offsets": noop("work offsets (not read by the GUI yet)"),
+    "walls": noop("the wall model"),
+    "y-window": noop("the y window"),
+    "forces": noop("Cutting forces"),
+    "cl": noop("the CL points"),
 }
 #: Whole phrases of the command line's messages, as the GUI says them.
-PHRASES = (("give the tool table (--tool-table FILE: ", "set the toolpath's ToolTable property ("),
-           ("choose one with --operation N", "choose one in the toolpath's Operation property"),
-           ("say them (--machine-units mm or inch)", "say them in the toolpath's ToolTableUnits property (mm or "
-                                                     "inch)"))
+PHRASES = (("give the tool table (--tool-table FILE: ", noop("set the toolpath's ToolTable property (")),
+           ("choose one with --operation N", noop("choose one in the toolpath's Operation property")),
+           ("say them (--machine-units mm or inch)", noop("say them in the toolpath's ToolTableUnits property (mm "
+                                                          "or inch)")))
 _OPTION = re.compile(r"--([a-z][a-z-]*)(?: [A-Z]+\b)?")
 
 
 def gui_words(text):
     """`text` with the command-line options it names (``--tool-table FILE``) put as the GUI names them."""
     for phrase, words in PHRASES:
-        text = text.replace(phrase, words)
+        text = text.replace(phrase, translate(words))
 
     def word(match):
         name = match.group(1)
-        return OPTION_WORDS.get(name, name.replace("-", " "))
+        return translate(OPTION_WORDS[name]) if name in OPTION_WORDS else name.replace("-", " ")
     return _OPTION.sub(word, text)
+
+
+_CATALOGUE = []
+
+
+def localized(text):
+    """`text`, a message of the engine, a reader or the job model, in the user's language where its
+    template has a translation (messages.Catalogue over the translation template), else as it is."""
+    if not _CATALOGUE:
+        try:
+            _CATALOGUE.append(Catalogue.from_ts(TEMPLATE))
+        except (OSError, SyntaxError):  # no template shipped (ElementTree's ParseError is a SyntaxError)
+            _CATALOGUE.append(Catalogue([]))
+    return _CATALOGUE[0].translated(text, lambda template: translate(template, MESSAGES))
+
+
+def parameter_words(error):
+    """A ParameterError in the user's words: its parameter's label, then what is wrong ('Tool diameter
+    must be positive, got -3 mm.'), after the file that gave the value where one did."""
+    parameter = BY_NAME.get(error.field)
+    label = translate(parameter.label, PARAMETERS) if parameter else error.field.replace("_", " ")
+    detail = (translate("is required: the toolpath file does not give it") if isinstance(error, MissingParameter)
+              else localized(error.detail))
+    text = f"{label[:1].upper()}{label[1:]} {detail}"
+    return f"{error.where}: {text}." if error.where else f"{text}."
 
 
 def message_of(error):
     """The text of `error` in the GUI's words: a ParameterError by its parameter's label, FreeCAD's own
-    exceptions by their dict's "sErrMsg", others as they say it; command-line options as the GUI names
-    them (:func:`gui_words`)."""
+    exceptions by their dict's "sErrMsg", others as they say it; in the user's language (localized) and
+    with command-line options as the GUI names them (:func:`gui_words`)."""
     if isinstance(error, ParameterError):
-        return gui_words(label_words(error))
+        return gui_words(parameter_words(error))
     if error.args and isinstance(error.args[0], dict) and "sErrMsg" in error.args[0]:
-        return gui_words(error.args[0]["sErrMsg"])
-    return gui_words(str(error))
+        return gui_words(localized(error.args[0]["sErrMsg"]))
+    return gui_words(localized(str(error)))
 
 
 def report_error(error, parent=None):

@@ -16,7 +16,7 @@ angle), the cutting-force settings (on / off, material or custom coefficients, i
 ``features.engagement.force_settings``, and the y window as ``features.engagement.y_window``
 checks it. A problem is a ParameterError naming its parameter: the parameter's field is marked
 (its declared property) and the problem shown at the top of the panel in plain words
-(``jobs.label_words``), and OK is disabled. The coefficient fields show the material's values,
+(``reporting.parameter_words``), and OK is disabled. The coefficient fields show the material's values,
 read-only, unless the material is custom. Fields the toolpath file fixes show its value, are
 read-only and say so.
 
@@ -55,11 +55,11 @@ import FreeCADGui
 from ..errors import InputError, MissingParameter, ParameterError
 from ..features.engagement import COEFFICIENT_PROPERTIES, MATERIAL_CHOICES, Y_WINDOWS, WALL_CHOICES, force_settings
 from ..forces import MATERIALS
-from ..jobs import BY_NAME, CUTTING, REQUIRED, label_words, resolve, tool_and_settings
+from ..jobs import BY_NAME, CUTTING, REQUIRED, resolve, tool_and_settings
 from . import numbers, preferences, state, view_providers, wrappers
-from .i18n import noop, translate
+from .i18n import PARAMETERS, noop, translate
 from .progress import busy
-from .reporting import CommandError, message_of, recompute_checked, report_error
+from .reporting import CommandError, message_of, parameter_words, recompute_checked, report_error
 
 #: Number fields: (property, label, declared unit: "mm", "deg" or None for a plain number, step of the arrows).
 FIELDS = (
@@ -277,13 +277,14 @@ class EngagementPanel:
             except numbers.Unreadable as error:
                 return f"{_words(name, label)}: {error}.", name
             if number is None and name not in REQUIRED_FIELDS:
-                return f"{_words(name, label)}: the field is empty: {numbers.hint(unit)}.", name
+                return translate("{field}: the field is empty: {hint}.", field=_words(name, label),
+                                 hint=numbers.hint(unit)), name
         return None, None
 
     def problem(self, values):
         """(message, field) of the first problem of `values`, or (None, None); marks what the file fixes."""
         if isinstance(self.hints, Exception):
-            return str(self.hints), None
+            return message_of(self.hints), None
         message, field = self.unreadable()
         if message is not None:
             return message, field
@@ -295,24 +296,24 @@ class EngagementPanel:
                 force_settings(values["Material"], values, (values["ImmersionStart"], values["ImmersionEnd"]))
         except MissingParameter as error:  # only an empty field leaves a required value missing here
             prop = BY_NAME[error.field].prop
-            return f"{_words(prop, prop)} is required: the field is empty.", prop
+            return translate("{field} is required: the field is empty.", field=_words(prop, prop)), prop
         except ParameterError as error:
             parameter = BY_NAME.get(error.field)
-            return label_words(error), parameter.prop if parameter is not None else None
+            return parameter_words(error), parameter.prop if parameter is not None else None
         message, field = self.unheld(values)
         if message is not None:
             return message, field
         stock = self.obj.Stock
         solid = stock is not None and stock.Proxy.is_solid(stock)
         if values["WallModel"] != "stock" and not solid:
-            return (f"The wall model {values['WallModel']} applies to a solid stock (STEP, BREP or FCStd), not to "
-                    f"{stock.Proxy.source_name(stock)}.", "WallModel")
+            return (translate("The wall model {model} applies to a solid stock (STEP, BREP or FCStd), not to "
+                              "{stock}.", model=values["WallModel"], stock=stock.Proxy.source_name(stock)), "WallModel")
         if values["YWindow"] in ("swept", "custom") and not solid:
-            return (f"The y window {values['YWindow']} applies to a solid stock (STEP, BREP or FCStd), not to "
-                    f"{stock.Proxy.source_name(stock)}.", "YWindow")
+            return (translate("The y window {window} applies to a solid stock (STEP, BREP or FCStd), not to "
+                              "{stock}.", window=values["YWindow"], stock=stock.Proxy.source_name(stock)), "YWindow")
         if values["YWindow"] == "custom" and not values["YWindowMin"] < values["YWindowMax"]:
-            return (f"The y window must start below its end: {values['YWindowMin']:g} mm to "
-                    f"{values['YWindowMax']:g} mm.", "YWindowMin")
+            return (translate("The y window must start below its end: {start} mm to {end} mm.",
+                              start=f"{values['YWindowMin']:g}", end=f"{values['YWindowMax']:g}"), "YWindowMin")
         return None, None
 
     def unheld(self, values):
@@ -321,8 +322,9 @@ class EngagementPanel:
         low, high = ANGLE_PROPERTY_RANGE
         for name, label, unit, _ in FIELDS + FORCE_FIELDS:
             if unit == "deg" and self.field(name).isEnabled() and not low <= values[name] <= high:
-                return (f"{_words(name, label)}: the engagement object holds angles within [{low:g}, {high:g}]°, "
-                        f"got {values[name]:g}°.", name)
+                return (translate("{field}: the engagement object holds angles within [{low}, {high}]°, got "
+                                  "{value}°.", field=_words(name, label), low=f"{low:g}", high=f"{high:g}",
+                                  value=f"{values[name]:g}"), name)
         return None, None
 
     def show_fixed(self, parameters):
@@ -601,7 +603,7 @@ def _property_value(obj, name):
 def _words(name, label):
     """The field `name` in messages: its parameter's label ('Tool diameter'), else its own `label`."""
     parameter = PARAMETER_OF.get(name)
-    words = parameter.label if parameter is not None else label
+    words = translate(parameter.label, PARAMETERS) if parameter is not None else translate(label)
     return f"{words[:1].upper()}{words[1:]}"
 
 

@@ -39,11 +39,11 @@ def test_the_gui_imports_freecads_pyside_never_pyside2():
 
 
 def test_the_translation_template_is_qt_linguists_format_and_up_to_date():
-    from abm_workbench.gui.i18n import TEMPLATE, messages, template
+    from abm_workbench.gui.i18n import TEMPLATE, catalogue, template
 
     with open(TEMPLATE, encoding="utf-8") as handle:
         text = handle.read()
-    assert text == template(messages()), "translations/ABM.ts is stale: /usr/bin/python3 -m abm_workbench.gui.i18n"
+    assert text == template(catalogue()), "translations/ABM.ts is stale: /usr/bin/python3 -m abm_workbench.gui.i18n"
     root = ElementTree.fromstring(text.split("\n", 2)[2])  # after the XML declaration and DOCTYPE
     assert root.tag == "TS"
     contexts = {context.findtext("name"): [message.findtext("source") for message in context.iter("message")]

@@ -1,6 +1,7 @@
 """The translations end to end: FreeCAD's language set to German, the workbench's labels in German
 (translations/ABM_de.qm, built by `make translations` from ABM_de.ts and loaded from the folder InitGui
-adds), the task panel opened by a double-click-free setEdit, the dock by the toolbar button."""
+adds), the task panel opened by a double-click-free setEdit, the dock by the toolbar button; typed
+numbers refused, a job model's check and a reader's error in German (gui.messages)."""
 
 from tests.conftest import ROOT
 from tests.gui.dialogs import DIALOGS
@@ -31,7 +32,19 @@ settle()
 panel = task_panel.shown()
 verdict["panel"] = sorted(label.text() for label in panel.form.findChildren(QtWidgets.QLabel))
 verdict["sections"] = [section.header.text() for section in panel.sections.values()]
+# typed numbers and the job model's checks, in German
+retype("PhiStep", "1x2")
+verdict["letters"] = panel.message.text()
+retype("PhiStep", "-3")
+verdict["negative"] = panel.message.text()
 click("Abbrechen")
+settle()
+# a reader's error in the report view, in German, its file and line kept
+report = window.findChild(QtWidgets.QDockWidget, "Report view").widget()
+start = len(report.toPlainText())
+commands.ImportToolpath().execute({bad!r})
+settle()
+verdict["report"] = report.toPlainText()[start:]
 """
 
 
@@ -39,7 +52,9 @@ def test_german_labels(tmp_path, run_gui):
     mods = tmp_path / "home" / ".local" / "share" / "FreeCAD" / "Mod"
     mods.mkdir(parents=True)
     (mods / "ABM").symlink_to(ROOT, target_is_directory=True)
-    verdict = run_gui(BODY.format(events=EVENTS, dialogs=DIALOGS))
+    bad = tmp_path / "kaputt.apt"
+    bad.write_text("CUTTER/6\nGOTO/1,2\n")
+    verdict = run_gui(BODY.format(events=EVENTS, dialogs=DIALOGS, bad=str(bad)))
     title, tab, about = verdict["dock"]
     assert title == "ABM-Eingriff" and tab == "Eingriff" and about.startswith("CL ") and "Schnitttiefe" in about
     assert "Durchmesser" in verdict["panel"] and "Wandmodell" in verdict["panel"]
@@ -51,3 +66,10 @@ def test_german_labels(tmp_path, run_gui):
     assert "gekrümmte Wand" in about or "Deckfläche" in about  # the segments' UEP surfaces in German
     assert verdict["sections"] == ["Werkzeug", "Schnitt", "Drehwinkel φ des Werkzeugs", "Rohteilmodell",
                                    "Schnittkräfte"]
+    assert verdict["letters"] == ("Schrittweite von φ: „1x2“ ist kein Winkel: eine Zahl eingeben, nach Wunsch mit "
+                                  "Einheit (10°, 0.2 rad)."), verdict["letters"]
+    assert verdict["negative"] == "Schrittweite von φ muss positiv sein, erhalten: -3°.", verdict["negative"]
+
+    assert f"{tmp_path / 'kaputt.apt'}:2: GOTO: " in verdict["report"] and "erhalten: 2" in verdict["report"], \
+        verdict["report"]
+    assert "got 2" not in verdict["report"]
