@@ -29,7 +29,7 @@ from PySide import QtCore, QtGui
 
 from .i18n import translate
 from .progress import busy
-from .reporting import CommandError, recompute_checked, report_error
+from .reporting import CommandError, message_of, recompute_checked, report_error
 
 #: Milliseconds the program slider must rest in another operation before the dock goes there.
 SETTLE_MS = 400
@@ -204,7 +204,7 @@ class ProgramRow(QtGui.QWidget):
         except Exception as error:  # noqa: BLE001 (reported; the dock stays on its engagement)
             report_error(error)
             self.where.setText(where_words(self.spans, self.slider.value()) + "; "
-                               + translate("not shown: {reason}", reason=str(error)))
+                               + translate("not shown: {reason}", reason=message_of(error)))
 
     def go_to(self, number, cl):
         """Show CL point `cl` of operation `number` in the dock: its engagement, else the dock's engagement
