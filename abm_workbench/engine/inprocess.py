@@ -32,7 +32,7 @@ from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
 from .inprocess_plan import piece_line_interval
 from .intervals import EdgeIntervals
-from .swept import FEASIBLE_EPS, clamp, line_hull_interval, row_dot
+from .swept import FEASIBLE_EPS, clamp, every_column, line_hull_interval, row_dot
 from .tolerances import LENGTH_EPS
 
 _MACHINED = SURFACES.index("machined")
@@ -79,6 +79,9 @@ _SOLVED = 4
 _SPHERE_BLOCK = 1024
 #: Lines per KD query of _near_rest (their material's spheres meet few balls: a program's few moves off its levels).
 _REST_BLOCK = 4096
+#: Balls per part of the other moves of a program with levels (inprocess_balls.BallParts): a ramp or plunge
+#: between levels in a part or two, so that a part above a line's material is skipped whole by its floor.
+_FLOOR_BLOCK = 64
 
 
 def _float_array(name, value, shape, copy=True):
@@ -301,7 +304,7 @@ def _csr(count):
     return owner, np.arange(owner.size) - np.repeat(np.cumsum(count) - count, count)
 
 
-def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True):
+def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True, floor_axis=None):
     """The cutting moves of `moves` as constant-axis pieces in spans (SweptPieces).
 
     A move whose axis turns by Θ (rad) is cut into n ≥ Θ·ρ/tolerance sub-steps (ρ = the largest
@@ -312,7 +315,8 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True):
     and of at most _SPAN_PIECES sub-steps, each span a whole number of sub-steps, so that
     bounding volumes stay small and a span that comes near a line hands it few pieces.
     With `levels`, the moves of the program's z levels (inprocess_levels.level_moves) also get their plan
-    view, and the other moves their own SweptPieces (levels, rest).
+    view, and the other moves their own SweptPieces (levels, rest), whose balls get floors along the levels'
+    axis (floor_axis: _floors) in parts of _FLOOR_BLOCK balls.
     """
     tolerance = float(tolerance)
     if not tolerance > 0.0:
@@ -344,7 +348,11 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True):
     first = np.cumsum(count) - count
     s_corner = corner[span_of]
     chains = _chains(j[span_of], s0, s1, s_axis, s_radius, s_height, c0, c1, axis, owner, s_corner)
-    balls = BallParts(chains[-2], chains[-1], chains[2][chains[-3]])
+    if floor_axis is None:
+        balls = BallParts(chains[-2], chains[-1], chains[2][chains[-3]])
+    else:
+        floor = _floors(c0, c1, axis, first[chains[0]], floor_axis)
+        balls = BallParts(chains[-2], chains[-1], chains[2][chains[-3]], floor[chains[-3]], _FLOOR_BLOCK)
     view = rest = None
     w, level = level_moves(moves) if levels else (None, None)
     if w is not None:
@@ -353,10 +361,22 @@ def swept_pieces(moves: ProgramMoves, tolerance=0.05, levels=True):
         view = LevelView(c0, c1, axis, radius[move], height[move], corner[move], j[move], index, of_piece[index], w)
         others = ProgramMoves(moves.cl, moves.axis, moves.cutting & (level < 0), moves.radius, moves.flute_length,
                               moves.line, moves.corner_radius)
-        rest = swept_pieces(others, tolerance, levels=False)
+        rest = swept_pieces(others, tolerance, levels=False, floor_axis=w)
     return SweptPieces(c0, c1, axis, radius[move], height[move], j[move], first, count, j[span_of], s0, s1, s_axis,
                        s_height, s_radius, slack, turn[span_of] / spans[span_of], *chains, balls,
                        tolerance, corner[move], s_corner, s_corner[chains[0]], view, rest)
+
+
+def _floors(c0, c1, axis, chain_start, w):
+    """(C,) each chain's floor along w (3,): the least height c·w of its pieces' bottom centres (c0, c1 (P, 3),
+    axis (P, 3), the chains' pieces from chain_start (C,) on, in order), below which its tools have no point
+    (every point of a tool lies 0 … H along its axis above its bottom centre); −inf for a chain with a piece
+    whose axis is not w (bit for bit)."""
+    if chain_start.size == 0:
+        return np.zeros(0)
+    ww = np.broadcast_to(w, c0.shape)
+    low = np.where(every_column(axis == w), np.minimum(row_dot(c0, ww), row_dot(c1, ww)), -np.inf)
+    return np.minimum.reduceat(low, chain_start)
 
 
 def _chains(span_move, s0, s1, s_axis, radius, height, c0, c1, axis, piece_span, corner=None):
@@ -649,15 +669,17 @@ def _in_levels(pieces, ask, program_index, at, lo, hi, origins, directions, p):
     if pieces.rest.move.size and not dead.all():
         alive = np.flatnonzero(~dead)
         alive = alive[_near_rest(pieces.rest, _rows(origins, at[alive]), _rows(directions, at[alive]),
-                                 envelope[0, alive], envelope[1, alive], program_index[at[alive] // p] - 1)]
+                                 envelope[0, alive], envelope[1, alive], program_index[at[alive] // p] - 1,
+                                 pieces.levels.w)]
         parts.append(_searched_removals(pieces.rest, program_index, at[alive], lo[alive], hi[alive],
                                         origins, directions, p, envelope[:, alive]))
     return parts
 
 
-def _near_rest(rest, origin, direction, lo, hi, before):
+def _near_rest(rest, origin, direction, lo, hi, before, w):
     """(L,) bool: the lines' material, within lo … hi (L,) along origin + l·direction (L, 3), may meet a chain of
-    `rest` (a SweptPieces) that begins by program row before (L,): the segment's bounding sphere meets a ball of
+    `rest` (a SweptPieces) that begins by program row before (L,): the chain's floor along w (3,) is not above
+    the segment's top (its pieces have no point below it, _floors), the segment's bounding sphere meets a ball of
     the chain (the balls hold every point of their chains' hulls), and the segment is not surely apart from the
     chain's hull (the sure-miss test of the search, touches included). The others need no search among them."""
     near = np.zeros(origin.shape[0], dtype=bool)
@@ -666,7 +688,10 @@ def _near_rest(rest, origin, direction, lo, hi, before):
         part = slice(begin, begin + _REST_BLOCK)
         half = 0.5 * (hi[part] - lo[part])
         centre = origin[part] + (lo[part] + half)[:, None] * direction[part]
-        i, ball = rest.tree.meeting(centre, half, int(before[part].max()))
+        ww = np.broadcast_to(w, centre.shape)
+        top = np.maximum(row_dot(origin[part] + lo[part][:, None] * direction[part], ww),
+                         row_dot(origin[part] + hi[part][:, None] * direction[part], ww))
+        i, ball = rest.tree.meeting(centre, half, int(before[part].max()), top)
         pair = _distinct(i * chains + rest.ball_chain[ball], half.size * chains)
         i, k = pair // chains, pair % chains
         keep = rest.chain_move[k] <= before[part][i]

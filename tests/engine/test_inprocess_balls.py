@@ -158,3 +158,60 @@ def test_meeting_skips_far_parts_and_finds_every_pair():
     i, ball = parts.meeting(centre, radius, 10 ** 9)
     assert set(zip(i.tolist(), ball.tolist())) == brute_pairs(centre, radius, 10 ** 9, balls, bound, move)
     assert set(area[ball].tolist()) == {2}
+
+
+@pytest.mark.parametrize("block", [BLOCK, 16])
+def test_meeting_below_a_floor_finds_every_pair_at_or_above_it(block):
+    """With floors (heights along z below which a ball's hull has no point; −inf for some) and the spheres'
+    tops, the pairs are those of brute force whose floor is not above the sphere's top; in parts of 16 balls,
+    parts whose floors all lie above every top are skipped without losing a pair (a part skipped by the
+    lowest top instead of the highest fails this)."""
+    rng = np.random.default_rng(11)
+    n = 700
+    balls = rng.uniform(0.0, 40.0, (n, 3))
+    bound = rng.uniform(1.5, 6.0, n)
+    move = np.arange(n)
+    # Floors fall in program order, as the ramps of a z-level program do; a tenth unknown.
+    floor = np.where(rng.random(n) < 0.1, -np.inf, 40.0 - 40.0 * move / n + rng.uniform(-2.0, 2.0, n))
+    parts = BallParts(balls, bound, move, floor, block)
+    centre = rng.uniform(0.0, 40.0, (400, 3))
+    radius = rng.uniform(0.2, 3.0, 400)
+    top = centre[:, 2] + radius
+    top[:5] = floor[np.isfinite(floor)][:5]  # tops exactly on a floor: a touch, kept
+    i, ball = parts.meeting(centre, radius, n, top)
+    assert len(set(zip(i.tolist(), ball.tolist()))) == i.size
+    want = {(a, b) for a, b in brute_pairs(centre, radius, n, balls, bound, move) if floor[b] <= top[a]}
+    assert set(zip(i.tolist(), ball.tolist())) == want
+    assert len(want) < len(brute_pairs(centre, radius, n, balls, bound, move))  # the floors do drop pairs
+
+
+def test_the_other_moves_floors_are_their_pieces_lowest_bottoms():
+    """A program with levels: its other moves (ramps between the levels, one leaning move) get, per chain, the
+    least height of their pieces' bottom centres along the levels' axis, −inf where a piece's axis is not it."""
+    from abm_workbench.engine.inprocess import _floors
+
+    cl, axis = [], []
+    for k, z in enumerate((6.0, 4.0)):
+        cl += [[0.0, 0.0, z + 2.0]] + [[x, 0.0, z + 2.0 - 2.0 * x / 30.0] for x in np.linspace(1.0, 30.0, 6)]
+        axis += [[0.0, 0.0, 1.0]] * 7
+        cl += [[30.0 - x, 5.0 + k, z] for x in np.linspace(0.0, 30.0, 20)]
+        axis += [[0.0, 0.0, 1.0]] * 20
+    cl += [[0.0, 20.0, 3.0], [5.0, 20.0, 2.5]]
+    axis += [[0.0, 0.0, 1.0], [0.0, np.sin(0.2), np.cos(0.2)]]
+    n = len(cl)
+    moves = ProgramMoves(np.array(cl), np.array(axis), np.r_[False, np.ones(n - 1, dtype=bool)], np.full(n, 3.0),
+                         np.full(n, 10.0), np.arange(n))
+    rest = swept_pieces(moves).rest
+    assert rest is not None and rest.chain_first.size >= 3
+    piece_start = rest.span_first[rest.chain_first]
+    piece_end = np.r_[piece_start[1:], rest.c0.shape[0]]
+    floor = _floors(rest.c0, rest.c1, rest.axis, piece_start, np.array([0.0, 0.0, 1.0]))
+    for c in range(piece_start.size):
+        mine = slice(piece_start[c], piece_end[c])
+        if (rest.axis[mine] == [0.0, 0.0, 1.0]).all():
+            assert floor[c] == min(rest.c0[mine, 2].min(), rest.c1[mine, 2].min())
+        else:
+            assert floor[c] == -np.inf
+    assert np.isinf(floor).any() and np.isfinite(floor).any()
+    # The balls carry their chain's floor.
+    np.testing.assert_array_equal(rest.tree.floor, floor[rest.ball_chain])
