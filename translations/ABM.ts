@@ -1205,7 +1205,7 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>centre, bound and move must have one row per ball</source>
+        <source>centre, bound, move and floor must have one row per ball</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

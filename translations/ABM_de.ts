@@ -1207,8 +1207,8 @@ fläche (mm²)</translation>
         <translation>spacing muss positiv sein, erhalten: {spacing}</translation>
     </message>
     <message>
-        <source>centre, bound and move must have one row per ball</source>
-        <translation>centre, bound und move müssen eine Zeile pro Kugel haben</translation>
+        <source>centre, bound, move and floor must have one row per ball</source>
+        <translation>centre, bound, move und floor müssen eine Zeile pro Kugel haben</translation>
     </message>
     <message>
         <source>the balls must come in program order (move non-decreasing)</source>
