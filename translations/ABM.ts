@@ -570,10 +570,6 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>is required: the toolpath file does not give it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Diameter</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2843,6 +2839,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>within {interval}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is required: the toolpath file does not give it</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -572,10 +572,6 @@ fläche (mm²)</translation>
         <translation>sie in der Eigenschaft ToolTableUnits der Werkzeugbahn angeben (mm oder inch)</translation>
     </message>
     <message>
-        <source>is required: the toolpath file does not give it</source>
-        <translation>ist erforderlich: die Werkzeugbahndatei enthält diesen Wert nicht</translation>
-    </message>
-    <message>
         <source>Diameter</source>
         <translation>Durchmesser</translation>
     </message>
@@ -2847,6 +2843,10 @@ fläche (mm²)</translation>
     <message>
         <source>within {interval}</source>
         <translation>im Bereich {interval}</translation>
+    </message>
+    <message>
+        <source>is required: the toolpath file does not give it</source>
+        <translation>ist erforderlich: die Werkzeugbahndatei enthält diesen Wert nicht</translation>
     </message>
 </context>
 <context>

@@ -17,6 +17,8 @@ import os
 import re
 import xml.etree.ElementTree as ElementTree
 
+from ..jobs.parameters import REQUIRED_WORDS
+
 #: Translation context of the engine's and readers' messages.
 CONTEXT = "ABM_messages"
 PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -26,9 +28,10 @@ SOURCES = ("engine", "formats", "jobs", "cad", "cam", "features", "report", "err
 #: Callees whose string arguments are messages: exception classes by their name's ending.
 _ENDINGS = ("Error", "Failed", "Exception")
 _PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_]*)\}")
-#: Words that messages carry as values, made where no exception is: the job model's ranges
-#: (jobs.Parameter.range_text: "must be {range}, got …").
-VALUES = ("positive", "above {low}", "at least {low}", "below {high}", "at most {high}", "within {interval}")
+#: Words that messages carry, made where no exception is: the job model's ranges (jobs.Parameter.range_text:
+#: "must be {range}, got …") and what a missing parameter says (jobs.label_words).
+VALUES = ("positive", "above {low}", "at least {low}", "below {high}", "at most {high}", "within {interval}",
+          REQUIRED_WORDS)
 #: Values within a message that are themselves messages are translated this many levels deep.
 DEPTH = 4
 

@@ -7,12 +7,13 @@ what the GUI has for it instead (:data:`OPTION_WORDS`, :func:`gui_words`). Messa
 the readers are shown in the user's language where their template has a translation (:func:`localized`).
 """
 
+import functools
 import re
 
 import FreeCAD
 
-from ..errors import MissingParameter, ParameterError
-from ..jobs.parameters import BY_NAME
+from ..errors import ParameterError
+from ..jobs.parameters import label_words
 from . import view_providers
 from .i18n import PARAMETERS, TEMPLATE, noop, translate
 from .messages import CONTEXT as MESSAGES, Catalogue
@@ -59,29 +60,25 @@ def gui_words(text):
     return _OPTION.sub(word, text)
 
 
-_CATALOGUE = []
+@functools.lru_cache(maxsize=1)
+def _catalogue():
+    """The messages' templates of the translation template (an empty catalogue where none is shipped)."""
+    try:
+        return Catalogue.from_ts(TEMPLATE)
+    except (OSError, SyntaxError):  # ElementTree's ParseError is a SyntaxError
+        return Catalogue([])
 
 
 def localized(text):
     """`text`, a message of the engine, a reader or the job model, in the user's language where its
     template has a translation (messages.Catalogue over the translation template), else as it is."""
-    if not _CATALOGUE:
-        try:
-            _CATALOGUE.append(Catalogue.from_ts(TEMPLATE))
-        except (OSError, SyntaxError):  # no template shipped (ElementTree's ParseError is a SyntaxError)
-            _CATALOGUE.append(Catalogue([]))
-    return _CATALOGUE[0].translated(text, lambda template: translate(template, MESSAGES))
+    return _catalogue().translated(text, lambda template: translate(template, MESSAGES))
 
 
 def parameter_words(error):
-    """A ParameterError in the user's words: its parameter's label, then what is wrong ('Tool diameter
-    must be positive, got -3 mm.'), after the file that gave the value where one did."""
-    parameter = BY_NAME.get(error.field)
-    label = translate(parameter.label, PARAMETERS) if parameter else error.field.replace("_", " ")
-    detail = (translate("is required: the toolpath file does not give it") if isinstance(error, MissingParameter)
-              else localized(error.detail))
-    text = f"{label[:1].upper()}{label[1:]} {detail}"
-    return f"{error.where}: {text}." if error.where else f"{text}."
+    """A ParameterError in the user's words (jobs.label_words, its label and detail translated): 'Tool
+    diameter must be positive, got -3 mm.'"""
+    return label_words(error, lambda label: translate(label, PARAMETERS), localized)
 
 
 def message_of(error):

@@ -157,12 +157,20 @@ def option_words(error):
     return f"{option}: {error.detail}"
 
 
-def label_words(error):
-    """A ParameterError in plain words for the GUI: 'Tool diameter must be positive, got -3 mm.'"""
+#: What a MissingParameter says in label_words.
+REQUIRED_WORDS = "is required: the toolpath file does not give it"
+
+
+def label_words(error, label=None, detail=None):
+    """A ParameterError in plain words for the GUI: 'Tool diameter must be positive, got -3 mm.' label, detail:
+    functions giving the words shown for the parameter's label and for what is wrong (a translation; without
+    them, as they are)."""
     parameter = BY_NAME.get(error.field)
-    label = parameter.label if parameter else error.field.replace("_", " ")
-    detail = "is required: the toolpath file does not give it" if isinstance(error, MissingParameter) else error.detail
-    text = f"{label[:1].upper()}{label[1:]} {detail}"
+    words = parameter.label if parameter else error.field.replace("_", " ")
+    words = label(words) if label and parameter else words
+    what = REQUIRED_WORDS if isinstance(error, MissingParameter) else error.detail
+    what = detail(what) if detail else what
+    text = f"{words[:1].upper()}{words[1:]} {what}"
     return f"{error.where}: {text}." if error.where else f"{text}."
 
 
