@@ -29,3 +29,9 @@ class MissingParameter(ParameterError):
 
     def __init__(self, field):
         super().__init__(field, "is required and given nowhere")
+
+
+def note(text):
+    """`text` unchanged: a message said to the user that no exception carries (a warning's words, a value
+    that is a phrase), marked so that the GUI's translation template holds it (gui.messages gathers it)."""
+    return text

@@ -558,6 +558,42 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>No such file or directory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Permission denied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Is a directory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not a directory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No space left on device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read-only file system</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File exists</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File name too long</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Too many levels of symbolic links</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>set the toolpath's ToolTable property (</source>
         <translation type="unfinished"></translation>
     </message>
@@ -849,6 +885,30 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>slanted top: a plane tilted {tilt}° from horizontal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overhang: a plane facing down, tilted {tilt}° from horizontal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wall not vertical: leans {value}°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>curved top: not a horizontal plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overhang: faces down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wall not vertical</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{value}, which has no exact B-spline form for the walls</source>
         <translation type="unfinished"></translation>
     </message>
@@ -921,6 +981,14 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>cannot read as {kind}: {value}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the reader ended with exit status {returncode} and no shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{path}: damaged or unreadable {kind} ({detail})</source>
         <translation type="unfinished"></translation>
     </message>
@@ -934,6 +1002,14 @@ cut (mm)</source>
     </message>
     <message>
         <source>{path}: {found} object with a solid named {name} (objects with solids: {names})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no object holds a solid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>several solids ({names}); choose one with --solid NAME</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1006,6 +1082,14 @@ cut (mm)</source>
     </message>
     <message>
         <source>{where}{value}: top face at z = {z} does not reach y = {y_probe}: a section must have one top across the y window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>more than one top face: {listed}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no top face</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1473,7 +1557,15 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{prop} {path} is missing; using {moved}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>no document: open or create a FreeCAD document first (FreeCAD.newDocument())</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (property {prop})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1493,6 +1585,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>results in the document not read ({error})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{path}: not the results saved with the document (recomputed since?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1506,6 +1602,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>{path}: not computed against the stock model {StockModelUsed}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>results not restored ({error}); recompute to compute them</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1525,8 +1625,7 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{Label}: cannot write results: {error}
-</source>
+        <source>cannot write results: {error}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1547,6 +1646,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>{Label}: CLPoint {CLPoint} is not a CL point of {Label_2} (0..{len_rows_1})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{outlined} of the {count} earlier pieces near CL point {CLPoint} are moves of a tool with a corner: they are cut as the hull of the flat-end cylinder of their radius, which holds their volume, so the view shows less stock beside the corner than is left (the engine and validate take their exact volumes)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1690,7 +1793,11 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{where}: {stripped} is not a {value}number (digits 0-9, optional sign, '.' and exponent)</source>
+        <source>{where}: {stripped} is not a finite number (digits 0-9, optional sign, '.' and exponent)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{where}: {stripped} is not a number (digits 0-9, optional sign, '.' and exponent)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1762,11 +1869,23 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{where}: unknown key{value} {names} (allowed: {allowed})</source>
+        <source>{where}: unknown keys {names} (allowed: {allowed})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{where}: unknown key {names} (allowed: {allowed})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{where}: missing key {missing_0}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every GOTO is a rapid move or a canned-cycle hole</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no GOTO record</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1838,7 +1957,19 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{count} milling operations; choose one with --operation N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no operation the engine can run: {refusals}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{source}: {reason}; operations: {listing}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{value}; the record is skipped (the engine does not need it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1871,6 +2002,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>the arc of the CIRCLE on line {circle_line}: {error}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the arc's {label} point is {off} mm off the circle of radius {radius} mm; the arc follows the points</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1914,7 +2049,23 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>the curve ({words}, degree {degree}) starts {gap} mm from the tool's position; the tool moves there in a straight line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{join_record_args} gives no axis i,j,k; the axis is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{join_record_args} gives no feed rate; the feed is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>feed rate must be positive, got {numbers_0}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>surface speed {speed} {surface} for {value} gives no spindle speed in rpm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1922,7 +2073,19 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{join_record_args}: cutter compensation in the control; the CL points are taken as the tool tip's centre as written (an offset the control adds, such as wear, is left out)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{join_record_args} gives no diameter; not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>diameter must be positive, got {numbers_0}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{join_record_args} is no flute length; not read</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1938,7 +2101,23 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{join_record_args} gives no angle; the table is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>angles read in radians, as CAMWorks writes them ({numbers_0} rad = {angle} deg)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>the table's angle {angle}° is beyond ±{MAX_ANGLE}°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no GOTO follows: the circle is not a move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation {number} mixes feeds per minute and per revolution; its feeds are reported as written, each in its own kind</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2046,6 +2225,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{source}:{first_line}: operation {number} mixes feeds per minute and per revolution; its feeds are reported as written, each in its own kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>an incremental R (G91) from a height not known yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2078,6 +2261,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>a surface speed with a tool of unknown diameter gives no spindle speed in rpm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>no T word has selected a tool to load</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2087,6 +2274,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>{code} loads tool {number}, which {tools_source} does not name (its tools: {known})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cutter compensation in the control; the moves are taken as the tool tip's path as written</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2286,6 +2477,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{name}: not a results archive: member {filename}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{where} is compressed; the archives written here store their arrays uncompressed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2350,6 +2545,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{name}: sections[{j}]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{where}: expected an object {"z_top": ...}, got {value}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2406,6 +2605,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{name}: slabs[{k}]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{where}: expected an object {"z_top": ..., "loops": [...]}, got {json_dumps_slab}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2458,7 +2661,11 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{where}: unknown column{value} {value_2}; known columns: {join_known}</source>
+        <source>{where}: unknown columns {names}; known columns: {listed}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{where}: unknown column {names}; known columns: {listed}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2494,6 +2701,18 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{source}:{line}: {word}: record not understood, ignored ({count} times)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{source}:{line}: {word}: record not understood, ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{source}: records that carry nothing the engine needs, ignored: {records}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{name}: unknown stock file type; expected .json, .step, .stp, .brep, .brp or .FCStd</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2515,6 +2734,30 @@ cut (mm)</source>
     </message>
     <message>
         <source>{name}: {key}: must be [start, end] in degrees, e.g. [0, 180]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{what}: its {holes} canned-cycle holes are not in the in-process stock (holes are not swept)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{what}: the file gives no diameter, so its {count} cutting moves are not in the in-process stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the tool's length in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the program's extent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{what}: the file gives no flute length: in the in-process stock it removes material with its whole length, {length} mm ({whence})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{what}: swept as a flat-end cylinder of its diameter in the in-process stock</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2586,6 +2829,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{source} gives {name} {file_value}, {where} {other}: using {file_value_2}, the value the toolpath was made for</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>is {helix}°, but helical flutes on a corner are not computed: a tool with a corner radius ({corner} mm) needs straight flutes (helix 0)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2594,7 +2841,19 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>a helical tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Z-map method</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>in-process is not available with {missing} yet: use initial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the in-process stock is not available with {missing} yet</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2602,7 +2861,15 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>the in-process stock sweeps the program's {curved} arcs and curves as the chords between their CL points, each within {tolerance} mm of the arc (at most {step} mm long)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{grid} mm gives the stock {cells} Z-map cells, more than the Z-map holds ({MAX_CELLS}): give a larger --grid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (the edge step is the grid's unless --edge-step is given)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2635,6 +2902,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>{report}: folder holds files but no report (index.html); it would be replaced as a whole: choose a new or empty folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> and {len_foreign_1} more</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2694,6 +2965,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{toolpath}: {model_note}; validating against the stock as given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{stock}: the boolean reference cannot build the stock's solid ({type}: {error})</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2715,6 +2990,18 @@ cut (mm)</source>
     </message>
     <message>
         <source>a FreeCAD document (.FCStd) is written for a FreeCAD CAM Job's program only, not for {toolpath}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{model_note}: the feeds are scheduled against the stock as given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> and {value} more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{value} CL points cannot keep the {kind} at or under {limit} {unit} at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

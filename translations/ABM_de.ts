@@ -560,6 +560,42 @@ fläche (mm²)</translation>
         <translation>die CL-Punkte</translation>
     </message>
     <message>
+        <source>No such file or directory</source>
+        <translation>Datei oder Verzeichnis nicht gefunden</translation>
+    </message>
+    <message>
+        <source>Permission denied</source>
+        <translation>Keine Berechtigung</translation>
+    </message>
+    <message>
+        <source>Is a directory</source>
+        <translation>Ist ein Verzeichnis</translation>
+    </message>
+    <message>
+        <source>Not a directory</source>
+        <translation>Ist kein Verzeichnis</translation>
+    </message>
+    <message>
+        <source>No space left on device</source>
+        <translation>Kein Speicherplatz mehr auf dem Gerät</translation>
+    </message>
+    <message>
+        <source>Read-only file system</source>
+        <translation>Schreibgeschütztes Dateisystem</translation>
+    </message>
+    <message>
+        <source>File exists</source>
+        <translation>Datei existiert bereits</translation>
+    </message>
+    <message>
+        <source>File name too long</source>
+        <translation>Dateiname zu lang</translation>
+    </message>
+    <message>
+        <source>Too many levels of symbolic links</source>
+        <translation>Zu viele Ebenen symbolischer Verknüpfungen</translation>
+    </message>
+    <message>
         <source>set the toolpath's ToolTable property (</source>
         <translation>die Eigenschaft ToolTable der Werkzeugbahn setzen (</translation>
     </message>
@@ -851,6 +887,30 @@ fläche (mm²)</translation>
         <translation>eine OffsetSurface, die einen Zylinder auf seine Achse schrumpfen lässt</translation>
     </message>
     <message>
+        <source>slanted top: a plane tilted {tilt}° from horizontal</source>
+        <translation>schräge Oberseite: eine um {tilt}° gegen die Waagerechte geneigte Ebene</translation>
+    </message>
+    <message>
+        <source>overhang: a plane facing down, tilted {tilt}° from horizontal</source>
+        <translation>Überhang: eine nach unten weisende Ebene, um {tilt}° gegen die Waagerechte geneigt</translation>
+    </message>
+    <message>
+        <source>wall not vertical: leans {value}°</source>
+        <translation>Wand nicht senkrecht: neigt sich um {value}°</translation>
+    </message>
+    <message>
+        <source>curved top: not a horizontal plane</source>
+        <translation>gekrümmte Oberseite: keine waagerechte Ebene</translation>
+    </message>
+    <message>
+        <source>overhang: faces down</source>
+        <translation>Überhang: weist nach unten</translation>
+    </message>
+    <message>
+        <source>wall not vertical</source>
+        <translation>Wand nicht senkrecht</translation>
+    </message>
+    <message>
         <source>{value}, which has no exact B-spline form for the walls</source>
         <translation>{value}, ohne exakte B-Spline-Form für die Wände</translation>
     </message>
@@ -923,6 +983,14 @@ fläche (mm²)</translation>
         <translation>{path}: beschädigte oder unlesbare {kind}-Datei (keine Form nach {timeout} s)</translation>
     </message>
     <message>
+        <source>cannot read as {kind}: {value}</source>
+        <translation>nicht als {kind} lesbar: {value}</translation>
+    </message>
+    <message>
+        <source>the reader ended with exit status {returncode} and no shape</source>
+        <translation>der Leser endete mit dem Exit-Status {returncode} und ohne Form</translation>
+    </message>
+    <message>
         <source>{path}: damaged or unreadable {kind} ({detail})</source>
         <translation>{path}: beschädigte oder unlesbare {kind}-Datei ({detail})</translation>
     </message>
@@ -937,6 +1005,14 @@ fläche (mm²)</translation>
     <message>
         <source>{path}: {found} object with a solid named {name} (objects with solids: {names})</source>
         <translation>{path}: {found} Objekt(e) mit einem Volumenkörper namens {name} (Objekte mit Volumenkörpern: {names})</translation>
+    </message>
+    <message>
+        <source>no object holds a solid</source>
+        <translation>kein Objekt enthält einen Volumenkörper</translation>
+    </message>
+    <message>
+        <source>several solids ({names}); choose one with --solid NAME</source>
+        <translation>mehrere Volumenkörper ({names}); wählen Sie einen mit --solid NAME</translation>
     </message>
     <message>
         <source>walls must be 'exact' or 'quintic', got {walls}</source>
@@ -1009,6 +1085,14 @@ fläche (mm²)</translation>
     <message>
         <source>{where}{value}: top face at z = {z} does not reach y = {y_probe}: a section must have one top across the y window</source>
         <translation>{where}{value}: Deckfläche bei z = {z} reicht nicht bis y = {y_probe}: ein Abschnitt muss über das ganze y-Fenster eine einzige Oberseite haben</translation>
+    </message>
+    <message>
+        <source>more than one top face: {listed}</source>
+        <translation>mehr als eine Deckfläche: {listed}</translation>
+    </message>
+    <message>
+        <source>no top face</source>
+        <translation>keine Deckfläche</translation>
     </message>
     <message>
         <source>{where}section {j} (x {x_probe_j} to {x_probe_j_1} at y = {y_probe}) has {what}</source>
@@ -1475,8 +1559,16 @@ fläche (mm²)</translation>
         <translation>{name} muss eine positive Zahl in mm sein, erhalten: {value}</translation>
     </message>
     <message>
+        <source>{prop} {path} is missing; using {moved}</source>
+        <translation>{prop} {path} fehlt; {moved} wird verwendet</translation>
+    </message>
+    <message>
         <source>no document: open or create a FreeCAD document first (FreeCAD.newDocument())</source>
         <translation>kein Dokument: zuerst ein FreeCAD-Dokument öffnen oder anlegen (FreeCAD.newDocument())</translation>
+    </message>
+    <message>
+        <source> (property {prop})</source>
+        <translation> (Eigenschaft {prop})</translation>
     </message>
     <message>
         <source>WallModel {walls} applies to a solid stock (.step, .stp, .brep, .brp, .FCStd), not to {value}</source>
@@ -1495,6 +1587,10 @@ fläche (mm²)</translation>
         <translation>{Label}: {value} (Eigenschaft {prop}).</translation>
     </message>
     <message>
+        <source>results in the document not read ({error})</source>
+        <translation>Ergebnisse im Dokument nicht gelesen ({error})</translation>
+    </message>
+    <message>
         <source>{path}: not the results saved with the document (recomputed since?)</source>
         <translation>{path}: nicht die mit dem Dokument gespeicherten Ergebnisse (inzwischen neu berechnet?)</translation>
     </message>
@@ -1509,6 +1605,10 @@ fläche (mm²)</translation>
     <message>
         <source>{path}: not computed against the stock model {StockModelUsed}</source>
         <translation>{path}: nicht gegen das Rohteilmodell {StockModelUsed} berechnet</translation>
+    </message>
+    <message>
+        <source>results not restored ({error}); recompute to compute them</source>
+        <translation>Ergebnisse nicht wiederhergestellt ({error}); berechnen Sie neu, um sie zu erhalten</translation>
     </message>
     <message>
         <source>{Label}: {role} must link an ABM {role_2} object</source>
@@ -1527,10 +1627,8 @@ fläche (mm²)</translation>
         <translation>{value}: das y-Fenster {low}..{high} mm verfehlt den y-Bereich des Rohteils {YMin}..{YMax} mm</translation>
     </message>
     <message>
-        <source>{Label}: cannot write results: {error}
-</source>
-        <translation>{Label}: Ergebnisse können nicht geschrieben werden: {error}
-</translation>
+        <source>cannot write results: {error}</source>
+        <translation>Ergebnisse können nicht geschrieben werden: {error}</translation>
     </message>
     <message>
         <source>create_engagement: unknown setting {unknown_0} (known: {join_SETTINGS})</source>
@@ -1551,6 +1649,10 @@ fläche (mm²)</translation>
     <message>
         <source>{Label}: CLPoint {CLPoint} is not a CL point of {Label_2} (0..{len_rows_1})</source>
         <translation>{Label}: CLPoint {CLPoint} ist kein CL-Punkt von {Label_2} (0..{len_rows_1})</translation>
+    </message>
+    <message>
+        <source>{outlined} of the {count} earlier pieces near CL point {CLPoint} are moves of a tool with a corner: they are cut as the hull of the flat-end cylinder of their radius, which holds their volume, so the view shows less stock beside the corner than is left (the engine and validate take their exact volumes)</source>
+        <translation>{outlined} der {count} früheren Stücke nahe CL-Punkt {CLPoint} sind Bewegungen eines Werkzeugs mit Eckenradius: sie werden als Hülle des Schaftfräser-Zylinders ihres Radius abgezogen, die ihr Volumen enthält, daher zeigt die Ansicht neben der Ecke weniger Rohteil, als übrig ist (der Rechenkern und die Validierung nehmen ihre genauen Volumen)</translation>
     </message>
     <message>
         <source>{Label}: the linked object has no shape</source>
@@ -1693,8 +1795,12 @@ fläche (mm²)</translation>
         <translation>die Kräfte eines {kind}-Fräsers erfordern die Eingriffsabschnitte jeder Schneide entlang ihres Eckenradius, nicht nur ihre Schnittlängen: lengths_at (etwa die des Zwischenrohteils) kann sie nicht liefern; stattdessen runs_at übergeben</translation>
     </message>
     <message>
-        <source>{where}: {stripped} is not a {value}number (digits 0-9, optional sign, '.' and exponent)</source>
-        <translation>{where}: {stripped} ist keine {value}Zahl (Ziffern 0-9, optionales Vorzeichen, '.' und Exponent)</translation>
+        <source>{where}: {stripped} is not a finite number (digits 0-9, optional sign, '.' and exponent)</source>
+        <translation>{where}: {stripped} ist keine endliche Zahl (Ziffern 0-9, optionales Vorzeichen, '.' und Exponent)</translation>
+    </message>
+    <message>
+        <source>{where}: {stripped} is not a number (digits 0-9, optional sign, '.' and exponent)</source>
+        <translation>{where}: {stripped} ist keine Zahl (Ziffern 0-9, optionales Vorzeichen, '.' und Exponent)</translation>
     </message>
     <message>
         <source>{where}: {number} is too large (at most {MAX_MAGNITUDE} in magnitude)</source>
@@ -1765,12 +1871,24 @@ fläche (mm²)</translation>
         <translation>{where}: muss eine endliche Zahl sein, erhalten: {value}</translation>
     </message>
     <message>
-        <source>{where}: unknown key{value} {names} (allowed: {allowed})</source>
-        <translation>{where}: unbekannt: Key{value} {names} (erlaubt: {allowed})</translation>
+        <source>{where}: unknown keys {names} (allowed: {allowed})</source>
+        <translation>{where}: unbekannte Schlüssel {names} (erlaubt: {allowed})</translation>
+    </message>
+    <message>
+        <source>{where}: unknown key {names} (allowed: {allowed})</source>
+        <translation>{where}: unbekannter Schlüssel {names} (erlaubt: {allowed})</translation>
     </message>
     <message>
         <source>{where}: missing key {missing_0}</source>
         <translation>{where}: fehlender Schlüssel {missing_0}</translation>
+    </message>
+    <message>
+        <source>every GOTO is a rapid move or a canned-cycle hole</source>
+        <translation>jedes GOTO ist eine Eilgangbewegung oder eine Bohrung eines Bohrzyklus</translation>
+    </message>
+    <message>
+        <source>no GOTO record</source>
+        <translation>kein GOTO-Datensatz</translation>
     </message>
     <message>
         <source>{name}:{last_line}: end of file and no cutting move ({reason})</source>
@@ -1841,8 +1959,20 @@ fläche (mm²)</translation>
         <translation>{source}: keine Operation: die Datei enthält keine Bewegungen</translation>
     </message>
     <message>
+        <source>{count} milling operations; choose one with --operation N</source>
+        <translation>{count} Fräsoperationen; wählen Sie eine mit --operation N</translation>
+    </message>
+    <message>
+        <source>no operation the engine can run: {refusals}</source>
+        <translation>keine Operation, die der Rechenkern ausführen kann: {refusals}</translation>
+    </message>
+    <message>
         <source>{source}: {reason}; operations: {listing}</source>
         <translation>{source}: {reason}; Operationen: {listing}</translation>
+    </message>
+    <message>
+        <source>{value}; the record is skipped (the engine does not need it)</source>
+        <translation>{value}; der Datensatz wird übersprungen (der Rechenkern braucht ihn nicht)</translation>
     </message>
     <message>
         <source>argument {position} {arg} is not a number</source>
@@ -1875,6 +2005,10 @@ fläche (mm²)</translation>
     <message>
         <source>the arc of the CIRCLE on line {circle_line}: {error}</source>
         <translation>der Bogen des CIRCLE in Zeile {circle_line}: {error}</translation>
+    </message>
+    <message>
+        <source>the arc's {label} point is {off} mm off the circle of radius {radius} mm; the arc follows the points</source>
+        <translation>der {label} Punkt des Bogens liegt {off} mm neben dem Kreis mit Radius {radius} mm; der Bogen folgt den Punkten</translation>
     </message>
     <message>
         <source>needs xc,yc,zc,i,j,k[,r], got {count} number(s)</source>
@@ -1917,16 +2051,44 @@ fläche (mm²)</translation>
         <translation>die Kontrollpunkte mischen x,y,z und x,y,z,w</translation>
     </message>
     <message>
+        <source>the curve ({words}, degree {degree}) starts {gap} mm from the tool's position; the tool moves there in a straight line</source>
+        <translation>die Kurve ({words}, Grad {degree}) beginnt {gap} mm von der Position des Werkzeugs entfernt; das Werkzeug fährt geradlinig dorthin</translation>
+    </message>
+    <message>
+        <source>{join_record_args} gives no axis i,j,k; the axis is kept</source>
+        <translation>{join_record_args} gibt keine Achse i,j,k an; die Achse bleibt</translation>
+    </message>
+    <message>
+        <source>{join_record_args} gives no feed rate; the feed is kept</source>
+        <translation>{join_record_args} gibt keinen Vorschub an; der Vorschub bleibt</translation>
+    </message>
+    <message>
         <source>feed rate must be positive, got {numbers_0}</source>
         <translation>die Vorschubgeschwindigkeit muss positiv sein, erhalten: {numbers_0}</translation>
+    </message>
+    <message>
+        <source>surface speed {speed} {surface} for {value} gives no spindle speed in rpm</source>
+        <translation>Schnittgeschwindigkeit {speed} {surface} für {value} ergibt keine Drehzahl in U/min</translation>
     </message>
     <message>
         <source>expected MM or INCHES, got {join_record_args}</source>
         <translation>erwartet: MM oder INCHES, erhalten: {join_record_args}</translation>
     </message>
     <message>
+        <source>{join_record_args}: cutter compensation in the control; the CL points are taken as the tool tip's centre as written (an offset the control adds, such as wear, is left out)</source>
+        <translation>{join_record_args}: Fräserradiuskorrektur in der Steuerung; die CL-Punkte werden wie geschrieben als Mittelpunkt der Werkzeugspitze genommen (ein Versatz, den die Steuerung hinzufügt, etwa für Verschleiß, bleibt unberücksichtigt)</translation>
+    </message>
+    <message>
+        <source>{join_record_args} gives no diameter; not read</source>
+        <translation>{join_record_args} gibt keinen Durchmesser an; nicht gelesen</translation>
+    </message>
+    <message>
         <source>diameter must be positive, got {numbers_0}</source>
         <translation>der Durchmesser muss positiv sein, erhalten: {numbers_0}</translation>
+    </message>
+    <message>
+        <source>{join_record_args} is no flute length; not read</source>
+        <translation>{join_record_args} ist keine Schneidenlänge; nicht gelesen</translation>
     </message>
     <message>
         <source>needs 9 numbers (origin, X axis, Y axis), got {count}</source>
@@ -1941,8 +2103,24 @@ fläche (mm²)</translation>
         <translation>kein Koordinatensystem: {frame}</translation>
     </message>
     <message>
+        <source>{join_record_args} gives no angle; the table is kept</source>
+        <translation>{join_record_args} gibt keinen Winkel an; der Tisch bleibt</translation>
+    </message>
+    <message>
+        <source>angles read in radians, as CAMWorks writes them ({numbers_0} rad = {angle} deg)</source>
+        <translation>Winkel im Bogenmaß gelesen, wie CAMWorks sie schreibt ({numbers_0} rad = {angle} Grad)</translation>
+    </message>
+    <message>
         <source>the table's angle {angle}° is beyond ±{MAX_ANGLE}°</source>
         <translation>der Tischwinkel {angle}° liegt außerhalb von ±{MAX_ANGLE}°</translation>
+    </message>
+    <message>
+        <source>no GOTO follows: the circle is not a move</source>
+        <translation>kein GOTO folgt: der Kreis ist keine Bewegung</translation>
+    </message>
+    <message>
+        <source>operation {number} mixes feeds per minute and per revolution; its feeds are reported as written, each in its own kind</source>
+        <translation>Operation {number} mischt Vorschübe pro Minute und pro Umdrehung; ihre Vorschübe werden wie geschrieben ausgegeben, jeder in seiner eigenen Art</translation>
     </message>
     <message>
         <source>{source}: only a CL (APT) program can be written back with new feeds</source>
@@ -2049,6 +2227,10 @@ fläche (mm²)</translation>
         <translation>{letter} ist in einem Satz doppelt angegeben</translation>
     </message>
     <message>
+        <source>{source}:{first_line}: operation {number} mixes feeds per minute and per revolution; its feeds are reported as written, each in its own kind</source>
+        <translation>{source}:{first_line}: Operation {number} mischt Vorschübe pro Minute und pro Umdrehung; ihre Vorschübe werden wie geschrieben ausgegeben, jeder in seiner eigenen Art</translation>
+    </message>
+    <message>
         <source>an incremental R (G91) from a height not known yet</source>
         <translation>ein inkrementelles R (G91) ab einer noch nicht bekannten Höhe</translation>
     </message>
@@ -2081,6 +2263,10 @@ fläche (mm²)</translation>
         <translation>ein Vorschub kann nicht negativ sein</translation>
     </message>
     <message>
+        <source>a surface speed with a tool of unknown diameter gives no spindle speed in rpm</source>
+        <translation>eine Schnittgeschwindigkeit mit einem Werkzeug unbekannten Durchmessers ergibt keine Drehzahl in U/min</translation>
+    </message>
+    <message>
         <source>no T word has selected a tool to load</source>
         <translation>keine T-Adresse hat ein zu ladendes Werkzeug ausgewählt</translation>
     </message>
@@ -2091,6 +2277,10 @@ fläche (mm²)</translation>
     <message>
         <source>{code} loads tool {number}, which {tools_source} does not name (its tools: {known})</source>
         <translation>{code} lädt Werkzeug {number}, das {tools_source} nicht nennt (dort genannte Werkzeuge: {known})</translation>
+    </message>
+    <message>
+        <source>cutter compensation in the control; the moves are taken as the tool tip's path as written</source>
+        <translation>Fräserradiuskorrektur in der Steuerung; die Bewegungen werden wie geschrieben als Bahn der Werkzeugspitze genommen</translation>
     </message>
     <message>
         <source>L{kind} is not read (only L2: a work offset written whole)</source>
@@ -2289,6 +2479,10 @@ fläche (mm²)</translation>
         <translation>{name}: kein Ergebnisarchiv: der Eintrag {filename} ist kein .npy-Array</translation>
     </message>
     <message>
+        <source>{name}: not a results archive: member {filename}</source>
+        <translation>{name}: kein Ergebnisarchiv: Eintrag {filename}</translation>
+    </message>
+    <message>
         <source>{where} is compressed; the archives written here store their arrays uncompressed</source>
         <translation>{where} ist komprimiert; die hier geschriebenen Archive speichern ihre Arrays unkomprimiert</translation>
     </message>
@@ -2353,6 +2547,10 @@ fläche (mm²)</translation>
         <translation>{name}: sections muss eine nicht leere Liste von Abschnitten sein, erhalten: {value}</translation>
     </message>
     <message>
+        <source>{name}: sections[{j}]</source>
+        <translation>{name}: sections[{j}]</translation>
+    </message>
+    <message>
         <source>{where}: expected an object {"z_top": ...}, got {value}</source>
         <translation>{where}: erwartet: ein Objekt {"z_top": ...}, erhalten: {value}</translation>
     </message>
@@ -2409,6 +2607,10 @@ fläche (mm²)</translation>
         <translation>{where}.degree: muss eine ganze Zahl sein, erhalten: {value}</translation>
     </message>
     <message>
+        <source>{name}: slabs[{k}]</source>
+        <translation>{name}: slabs[{k}]</translation>
+    </message>
+    <message>
         <source>{where}: expected an object {"z_top": ..., "loops": [...]}, got {json_dumps_slab}</source>
         <translation>{where}: erwartet wurde ein Objekt {"z_top": ..., "loops": [...]}, erhalten: {json_dumps_slab}</translation>
     </message>
@@ -2461,8 +2663,12 @@ fläche (mm²)</translation>
         <translation>{where}: doppelte Spalte {duplicate_0}</translation>
     </message>
     <message>
-        <source>{where}: unknown column{value} {value_2}; known columns: {join_known}</source>
-        <translation>{where}: unbekannte Spalte{value} {value_2}; bekannte Spalten: {join_known}</translation>
+        <source>{where}: unknown columns {names}; known columns: {listed}</source>
+        <translation>{where}: unbekannte Spalten {names}; bekannte Spalten: {listed}</translation>
+    </message>
+    <message>
+        <source>{where}: unknown column {names}; known columns: {listed}</source>
+        <translation>{where}: unbekannte Spalte {names}; bekannte Spalten: {listed}</translation>
     </message>
     <message>
         <source>{where}: give the tool orientation as theta_a, theta_b or as i, j, k, not both</source>
@@ -2497,6 +2703,18 @@ fläche (mm²)</translation>
         <translation>muss eine positive ganze Anzahl von CL-Punkten sein, erhalten: {every}</translation>
     </message>
     <message>
+        <source>{source}:{line}: {word}: record not understood, ignored ({count} times)</source>
+        <translation>{source}:{line}: {word}: Datensatz nicht verstanden, ignoriert ({count}-mal)</translation>
+    </message>
+    <message>
+        <source>{source}:{line}: {word}: record not understood, ignored</source>
+        <translation>{source}:{line}: {word}: Datensatz nicht verstanden, ignoriert</translation>
+    </message>
+    <message>
+        <source>{source}: records that carry nothing the engine needs, ignored: {records}</source>
+        <translation>{source}: Datensätze ohne etwas, das der Rechenkern braucht, ignoriert: {records}</translation>
+    </message>
+    <message>
         <source>{name}: unknown stock file type; expected .json, .step, .stp, .brep, .brp or .FCStd</source>
         <translation>{name}: unbekannter Rohteil-Dateityp; erwartet: .json, .step, .stp, .brep, .brp oder .FCStd</translation>
     </message>
@@ -2519,6 +2737,30 @@ fläche (mm²)</translation>
     <message>
         <source>{name}: {key}: must be [start, end] in degrees, e.g. [0, 180]</source>
         <translation>{name}: {key}: muss [start, end] in Grad sein, z. B. [0, 180]</translation>
+    </message>
+    <message>
+        <source>{what}: its {holes} canned-cycle holes are not in the in-process stock (holes are not swept)</source>
+        <translation>{what}: ihre {holes} Bohrungen aus Bohrzyklen sind nicht im Zwischenrohteil (Bohrungen werden nicht überstrichen)</translation>
+    </message>
+    <message>
+        <source>{what}: the file gives no diameter, so its {count} cutting moves are not in the in-process stock</source>
+        <translation>{what}: die Datei gibt keinen Durchmesser an, daher sind ihre {count} Schnittbewegungen nicht im Zwischenrohteil</translation>
+    </message>
+    <message>
+        <source>the tool's length in the file</source>
+        <translation>die Länge des Werkzeugs in der Datei</translation>
+    </message>
+    <message>
+        <source>the program's extent</source>
+        <translation>die Ausdehnung des Programms</translation>
+    </message>
+    <message>
+        <source>{what}: the file gives no flute length: in the in-process stock it removes material with its whole length, {length} mm ({whence})</source>
+        <translation>{what}: die Datei gibt keine Schneidenlänge an: im Zwischenrohteil entfernt es Material mit seiner ganzen Länge, {length} mm ({whence})</translation>
+    </message>
+    <message>
+        <source>{what}: swept as a flat-end cylinder of its diameter in the in-process stock</source>
+        <translation>{what}: im Zwischenrohteil als Schaftfräser-Zylinder seines Durchmessers überstrichen</translation>
     </message>
     <message>
         <source>{source}: the in-process stock cannot sweep the program: {error}; the stock model initial (the stock as given) can</source>
@@ -2589,6 +2831,10 @@ fläche (mm²)</translation>
         <translation>muss größer als der Eingriffsbeginn {low}° sein, erhalten: {high}°</translation>
     </message>
     <message>
+        <source>{source} gives {name} {file_value}, {where} {other}: using {file_value_2}, the value the toolpath was made for</source>
+        <translation>{source} gibt {name} {file_value} an, {where} {other}: {file_value_2} wird verwendet, der Wert, für den die Werkzeugbahn erstellt wurde</translation>
+    </message>
+    <message>
         <source>is {helix}°, but helical flutes on a corner are not computed: a tool with a corner radius ({corner} mm) needs straight flutes (helix 0)</source>
         <translation>ist {helix}°, aber Schneiden mit Drall am Eckenradius werden nicht berechnet: ein Werkzeug mit Eckenradius ({corner} mm) braucht gerade Schneiden (helix 0)</translation>
     </message>
@@ -2597,16 +2843,36 @@ fläche (mm²)</translation>
         <translation>muss einer der Werte {value} sein, erhalten: {stock_model}</translation>
     </message>
     <message>
+        <source>a helical tool</source>
+        <translation>einem Werkzeug mit Drallwinkel</translation>
+    </message>
+    <message>
+        <source>the Z-map method</source>
+        <translation>der Z-Map-Methode</translation>
+    </message>
+    <message>
         <source>in-process is not available with {missing} yet: use initial</source>
         <translation>in-process ist mit {missing} noch nicht verfügbar: verwenden Sie initial</translation>
+    </message>
+    <message>
+        <source>the in-process stock is not available with {missing} yet</source>
+        <translation>das Zwischenrohteil ist mit {missing} noch nicht verfügbar</translation>
     </message>
     <message>
         <source>must be a positive number of mm, got {sweep_tolerance}</source>
         <translation>muss eine positive Zahl in mm sein, erhalten: {sweep_tolerance}</translation>
     </message>
     <message>
+        <source>the in-process stock sweeps the program's {curved} arcs and curves as the chords between their CL points, each within {tolerance} mm of the arc (at most {step} mm long)</source>
+        <translation>das Zwischenrohteil überstreicht die {curved} Bögen und Kurven des Programms als Sehnen zwischen ihren CL-Punkten, jede innerhalb von {tolerance} mm vom Bogen (höchstens {step} mm lang)</translation>
+    </message>
+    <message>
         <source>{grid} mm gives the stock {cells} Z-map cells, more than the Z-map holds ({MAX_CELLS}): give a larger --grid</source>
         <translation>{grid} mm ergibt für das Rohteil {cells} Z-Map-Zellen, mehr als die Z-Map fasst ({MAX_CELLS}): geben Sie ein größeres --grid an</translation>
+    </message>
+    <message>
+        <source> (the edge step is the grid's unless --edge-step is given)</source>
+        <translation> (die Schrittweite entlang der Schneide ist die des Rasters, außer --edge-step ist angegeben)</translation>
     </message>
     <message>
         <source>an edge step of {edge_step} mm samples the {flute_length} mm flute at {along} points{default}, {p} angles x {along_2} = {p_along} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
@@ -2639,6 +2905,10 @@ fläche (mm²)</translation>
     <message>
         <source>{report}: folder holds files but no report (index.html); it would be replaced as a whole: choose a new or empty folder</source>
         <translation>{report}: der Ordner enthält Dateien, aber keinen Bericht (index.html); er würde als Ganzes ersetzt: wählen Sie einen neuen oder leeren Ordner</translation>
+    </message>
+    <message>
+        <source> and {len_foreign_1} more</source>
+        <translation> und {len_foreign_1} weitere</translation>
     </message>
     <message>
         <source>{report}: folder holds {foreign_0}{more}, which no report writes; an older report there is replaced as a whole, which would delete it: choose a new or empty folder, or move it away</source>
@@ -2697,6 +2967,10 @@ fläche (mm²)</translation>
         <translation>ist mit Schneidkanten mit Drall (--helix, --flute) noch nicht verfügbar</translation>
     </message>
     <message>
+        <source>{toolpath}: {model_note}; validating against the stock as given</source>
+        <translation>{toolpath}: {model_note}; es wird gegen das Rohteil wie gegeben validiert</translation>
+    </message>
+    <message>
         <source>{stock}: the boolean reference cannot build the stock's solid ({type}: {error})</source>
         <translation>{stock}: die boolesche Referenz kann den Volumenkörper des Rohteils nicht erzeugen ({type}: {error})</translation>
     </message>
@@ -2719,6 +2993,18 @@ fläche (mm²)</translation>
     <message>
         <source>a FreeCAD document (.FCStd) is written for a FreeCAD CAM Job's program only, not for {toolpath}</source>
         <translation>ein FreeCAD-Dokument (.FCStd) wird nur für das Programm eines FreeCAD-CAM-Jobs geschrieben, nicht für {toolpath}</translation>
+    </message>
+    <message>
+        <source>{model_note}: the feeds are scheduled against the stock as given</source>
+        <translation>{model_note}: die Vorschübe werden gegen das Rohteil wie gegeben geplant</translation>
+    </message>
+    <message>
+        <source> and {value} more</source>
+        <translation> und {value} weitere</translation>
+    </message>
+    <message>
+        <source>{value} CL points cannot keep the {kind} at or under {limit} {unit} at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
+        <translation>{value} CL-Punkte können {kind} bei keinem Vorschub ab dem Mindestvorschub auf höchstens {limit} {unit} halten; sie erhalten den Mindestvorschub: {shown}{more}</translation>
     </message>
     <message>
         <source>{toolpath}: {operation_label}: the dressup's feeds are per minute and need a spindle speed (its tool controller's, or give the spindle speed)</source>

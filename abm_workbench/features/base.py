@@ -72,6 +72,23 @@ class RecomputeFailed(InputError, metaclass=_Named):
                 sys.tracebacklimit = _Named.previous
 
 
+#: What puts the features' printed messages into the user's language (see :func:`localize_with`).
+_LOCALIZER = [str]
+
+
+def localize_with(function):
+    """Let `function(text)` put the messages the features print into the user's language: the GUI gives its
+    own (gui.reporting.localized) as it is imported; headless they are printed as they are. The features
+    import no GUI module."""
+    _LOCALIZER[0] = function
+
+
+def tell(obj, message, kind="Warning"):
+    """Print `message` about `obj` to the report view as ``<label>: <message>`` (``FreeCAD.Console.Print<kind>``:
+    Warning, Message or Error), in the user's language where the GUI runs (:func:`localize_with`)."""
+    getattr(FreeCAD.Console, f"Print{kind}")(f"{obj.Label}: {_LOCALIZER[0](message)}\n")
+
+
 #: How FreeCAD names a failed recompute of an engagement in the report view ("ABM: <message>").
 PROG = "ABM"
 
@@ -127,7 +144,7 @@ def repoint_relative(obj):
     if not os.path.isfile(moved):
         return False
     setattr(obj, prop, moved)
-    FreeCAD.Console.PrintMessage(f"{obj.Label}: {prop} {path} is missing; using {moved}\n")
+    tell(obj, f"{prop} {path} is missing; using {moved}", "Message")
     return True
 
 

@@ -89,7 +89,7 @@ from ..jobs.job import Prepared
 from ..jobs.parameters import SWEEP_TOLERANCE
 from ..jobs.run import STOCK_MODELS, check_model, in_part_frame, in_process_sweep
 from .base import PROP_OUTPUT as _PROP_OUTPUT, READ_ONLY, FeatureProxy, add_properties, document_or_active
-from .base import PROG, RecomputeFailed, remember_relative  # noqa: F401 (RecomputeFailed: its home was here)
+from .base import PROG, RecomputeFailed, remember_relative, tell  # noqa: F401 (RecomputeFailed: its home was here)
 from .stored import InProcess, PassForces, read_archive, read_engagement, read_forces, read_in_process, write_archive
 from .stored import write_results_csv
 from .stock import StockFeature
@@ -315,7 +315,7 @@ class EngagementFeature(FeatureProxy):
                              "same frame?)")
         warnings = [*hints.messages(), *parameters.conflicts, *([model_note] if model_note else [])]
         for message in warnings:
-            FreeCAD.Console.PrintWarning(f"{obj.Label}: {message}\n")
+            tell(obj, message)
         if model is not None:
             forces = pass_forces_of(staircase, tool, toolpath, settings, model, engine_result, in_process=sweep)
             self._forces = PassForces.of(forces)
@@ -483,7 +483,7 @@ class EngagementFeature(FeatureProxy):
         try:
             digest, result, forces, in_process = read_archive(path)
         except InputError as error:
-            FreeCAD.Console.PrintWarning(f"{obj.Label}: results in the document not read ({error})\n")
+            tell(obj, f"results in the document not read ({error})")
             return False
         if digest != obj.ResultsDigest or result.length.size != obj.Instants:
             return False
@@ -515,7 +515,7 @@ class EngagementFeature(FeatureProxy):
             if (in_process is not None) != (obj.StockModelUsed == STOCK_MODELS[0]):
                 raise InputError(f"{path}: not computed against the stock model {obj.StockModelUsed}")
         except (InputError, OSError) as error:
-            FreeCAD.Console.PrintWarning(f"{obj.Label}: results not restored ({error}); recompute to compute them\n")
+            tell(obj, f"results not restored ({error}); recompute to compute them")
             # FreeCAD 0.20 clears touched flags at the end of a restore and tells Python observers
             # nothing after that but the document's activation: the observer touches it then.
             self._stale = True
@@ -836,7 +836,7 @@ class _SaveObserver:
                 try:
                     obj.Proxy.save_results(obj)
                 except Exception as error:  # noqa: BLE001 (the save itself must go on)
-                    FreeCAD.Console.PrintError(f"{obj.Label}: cannot write results: {error}\n")
+                    tell(obj, f"cannot write results: {error}", "Error")
 
     def slotActivateDocument(self, doc):
         for obj in doc.Objects:

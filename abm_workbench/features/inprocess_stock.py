@@ -31,12 +31,11 @@ import time
 
 import numpy as np
 
-from ..cad.freecad_env import FreeCAD
 from ..cad.inprocess_boolean import cut_and_removed, hulls_near
 from ..engine.inprocess import swept_pieces
 from ..errors import InputError
 from ..jobs.inputs import program_moves
-from .base import PROP_OUTPUT, FeatureProxy, add_properties, document_or_active, failing_in_words
+from .base import PROP_OUTPUT, FeatureProxy, add_properties, document_or_active, failing_in_words, tell
 
 #: Default sub-step (mm) of five-axis moves at the tool's rim for the view.
 VIEW_TOLERANCE = 0.5
@@ -118,11 +117,10 @@ class InProcessStockFeature(FeatureProxy):
             hulls = hulls_near((moves, pieces), row, near)
             shape, removed, outlined = boolean_call(cut_and_removed, stock_shape, hulls)
             if outlined:
-                FreeCAD.Console.PrintWarning(
-                    f"{obj.Label}: {outlined} of the {len(hulls['radius'])} earlier pieces near CL point "
-                    f"{obj.CLPoint} are moves of a tool with a corner: they are cut as the hull of the flat-end "
-                    "cylinder of their radius, which holds their volume, so the view shows less stock beside the "
-                    "corner than is left (the engine and validate take their exact volumes)\n")
+                tell(obj, f"{outlined} of the {len(hulls['radius'])} earlier pieces near CL point {obj.CLPoint} are "
+                     "moves of a tool with a corner: they are cut as the hull of the flat-end cylinder of their "
+                     "radius, which holds their volume, so the view shows less stock beside the corner than is left "
+                     "(the engine and validate take their exact volumes)")
             seconds = time.perf_counter() - started
             self._last = (key, shape, removed, seconds)
         obj.Shape = shape

@@ -49,9 +49,10 @@ def parse_number(text, where):
     """
     stripped = text.strip()
     if not _NUMBER.fullmatch(stripped):
-        infinite = stripped.lower().lstrip("+-") in ("nan", "inf", "infinity")
-        raise InputError(f"{where}: {stripped!r} is not a {'finite ' if infinite else ''}number "
-                         "(digits 0-9, optional sign, '.' and exponent)")
+        if stripped.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+            raise InputError(f"{where}: {stripped!r} is not a finite number (digits 0-9, optional sign, '.' and "
+                             "exponent)")
+        raise InputError(f"{where}: {stripped!r} is not a number (digits 0-9, optional sign, '.' and exponent)")
     return checked_magnitude(float(stripped), where)
 
 
@@ -311,7 +312,8 @@ def check_keys(data, required, optional, where):
     if unknown:
         names = ", ".join(repr(key) for key in unknown)
         allowed = ", ".join(repr(key) for key in (*required, *optional))
-        raise InputError(f"{where}: unknown key{'s' if len(unknown) > 1 else ''} {names} (allowed: {allowed})")
+        raise InputError(f"{where}: unknown keys {names} (allowed: {allowed})" if len(unknown) > 1
+                         else f"{where}: unknown key {names} (allowed: {allowed})")
     missing = [key for key in required if key not in data]
     if missing:
         raise InputError(f"{where}: missing key {missing[0]!r}")

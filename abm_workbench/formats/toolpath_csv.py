@@ -278,10 +278,9 @@ def _columns(header, where):
         raise InputError(f"{where}: duplicate column {duplicate[0]!r}")
     unknown = [column for column in header if column not in known]
     if unknown:
-        raise InputError(
-            f"{where}: unknown column{'s' if len(unknown) > 1 else ''} "
-            f"{', '.join(map(repr, unknown))}; known columns: {', '.join(known)}"
-        )
+        names, listed = ", ".join(map(repr, unknown)), ", ".join(known)
+        raise InputError(f"{where}: unknown columns {names}; known columns: {listed}" if len(unknown) > 1
+                         else f"{where}: unknown column {names}; known columns: {listed}")
     columns = set(header)
     if columns & set(_AXIS) and columns & set(_ANGLES):
         raise InputError(f"{where}: give the tool orientation as theta_a, theta_b or as i, j, k, not both")

@@ -95,18 +95,69 @@ def templates(package=PACKAGE, sources=SOURCES):
             tree = ast.parse(handle.read(), path)
         raised = {id(call) for node in ast.walk(tree) if isinstance(node, ast.Raise) and node.exc is not None
                   for call in ast.walk(node.exc) if isinstance(call, ast.Call)}
-        calls = [node for node in ast.walk(tree) if isinstance(node, ast.Call)]
-        for node in sorted(calls, key=lambda call: (call.lineno, call.col_offset)):
-            callee = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
-            if not callee.endswith(_ENDINGS) and id(node) not in raised:
-                continue
-            for argument in node.args:
-                # a conditional message (f"… a number" if … else f"…"): both
-                for branch in (argument.body, argument.orelse) if isinstance(argument, ast.IfExp) else (argument,):
-                    text = template_of(branch)
-                    if text is not None:
-                        found.setdefault(text, None)
-    return list(found) + [text for text in VALUES if text not in found]
+        for scope in [tree] + [node for node in ast.walk(tree) if isinstance(node, _FUNCTIONS)]:
+            assigned = _assigned(scope)
+            for node in _own(scope):
+                if isinstance(node, ast.Call) and _says(node, raised):
+                    for argument in node.args:
+                        for branch in _messages(argument, assigned):
+                            found.setdefault((path, branch.lineno, branch.col_offset), template_of(branch))
+    ordered = dict.fromkeys(found[place] for place in sorted(found) if found[place] is not None)
+    return list(ordered) + [text for text in VALUES if text not in ordered]
+
+
+_FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)
+#: Callees whose string arguments are messages said without an exception: the readers' and the job model's
+#: warnings (``self.warn(line, word, f"…")``, ``warn(f"…")``), the features' report-view lines
+#: (features.base.tell) and the phrases marked as messages (errors.note).
+_SAYERS = ("warn", "warn_once", "_warn", "tell", "note")
+#: Lists whose appended strings are messages: warnings, notes and parameter conflicts collected to be said.
+_LISTS = ("warnings", "notes", "conflicts")
+
+
+def _own(scope):
+    """The nodes of `scope` (a module or function node) that are not within a function defined in it."""
+    pending = list(ast.iter_child_nodes(scope))
+    while pending:
+        node = pending.pop()
+        yield node
+        if not isinstance(node, _FUNCTIONS):
+            pending.extend(ast.iter_child_nodes(node))
+
+
+def _assigned(scope):
+    """{name: [value node, …]} of the plain assignments ``name = …`` of `scope`'s own code."""
+    found = {}
+    for node in _own(scope):
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name):
+            found.setdefault(node.targets[0].id, []).append(node.value)
+    return found
+
+
+def _says(call, raised):
+    """Whether the arguments of `call` are messages: an exception's (by its name's ending), a call within a
+    raise statement, a warning's or note's (:data:`_SAYERS`), or a string appended to a list of them."""
+    callee = call.func.attr if isinstance(call.func, ast.Attribute) else getattr(call.func, "id", "")
+    if callee.endswith(_ENDINGS) or callee in _SAYERS or id(call) in raised:
+        return True
+    owner = getattr(call.func, "value", None)
+    return callee == "append" and (getattr(owner, "id", None) or getattr(owner, "attr", None)) in _LISTS
+
+
+def _messages(node, assigned, depth=2):
+    """The string and f-string nodes a message argument `node` is made of: both branches of a conditional
+    (``f"… a number" if … else f"…"``), and what a local name it is, or an f-string holds as a value, was
+    assigned in the same function (``reason = "…"`` before ``raise …(f"{where}: {reason}")``), `depth` names
+    deep."""
+    if isinstance(node, ast.IfExp):
+        return _messages(node.body, assigned, depth) + _messages(node.orelse, assigned, depth)
+    if isinstance(node, ast.Name):
+        return [part for value in assigned.get(node.id, ()) if depth > 0
+                for part in _messages(value, assigned, depth - 1)]
+    if isinstance(node, ast.JoinedStr):
+        return [node] + [part for value in node.values if isinstance(value, ast.FormattedValue)
+                         and isinstance(value.value, ast.Name) for part in _messages(value.value, assigned, depth)]
+    return [node] if isinstance(node, ast.Constant) and isinstance(node.value, str) else []
 
 
 #: Messages longer than this (characters) are shown as they are: the matching's time grows with the length.

@@ -49,13 +49,14 @@ class ProgressDialog:
         QtGui.QApplication.processEvents()
 
     def __call__(self, done, total):
+        from .i18n import translate
         from .validate import Cancelled
 
         self.dialog.setMaximum(total)
         self.dialog.setValue(done)
         QtGui.QApplication.processEvents()
         if self.dialog.wasCanceled():
-            raise Cancelled("validation cancelled: nothing written")
+            raise Cancelled(translate("validation cancelled: nothing written"))
 
     def close(self):
         """Hide the dialog and let it go (out of the main window at once: Qt deletes it later)."""

@@ -7,12 +7,14 @@ what the GUI has for it instead (:data:`OPTION_WORDS`, :func:`gui_words`). Messa
 the readers are shown in the user's language where their template has a translation (:func:`localized`).
 """
 
+import errno
 import functools
 import re
 
 import FreeCAD
 
 from ..errors import ParameterError
+from ..features import base as features_base
 from ..jobs.parameters import label_words
 from . import view_providers
 from .i18n import PARAMETERS, TEMPLATE, noop, translate
@@ -47,6 +49,20 @@ PHRASES = (("give the tool table (--tool-table FILE: ", noop("set the toolpath's
            ("say them (--machine-units mm or inch)", noop("say them in the toolpath's ToolTableUnits property (mm "
                                                           "or inch)")))
 _OPTION = re.compile(r"--([a-z][a-z-]*)(?: [A-Z]+\b)?")
+#: The operating system's words for the common file errors (as Linux's C library says them, which Python puts
+#: in an OSError's text: "[Errno 2] No such file or directory: 'x'"), by their number.
+OS_WORDS = {
+    errno.ENOENT: noop("No such file or directory"),
+    errno.EACCES: noop("Permission denied"),
+    errno.EISDIR: noop("Is a directory"),
+    errno.ENOTDIR: noop("Not a directory"),
+    errno.ENOSPC: noop("No space left on device"),
+    errno.EROFS: noop("Read-only file system"),
+    errno.EEXIST: noop("File exists"),
+    errno.ENAMETOOLONG: noop("File name too long"),
+    errno.ELOOP: noop("Too many levels of symbolic links"),
+}
+_ERRNO = re.compile(r"\[Errno (\d+)\] ([^:\n]+)")
 
 
 def gui_words(text):
@@ -60,6 +76,18 @@ def gui_words(text):
     return _OPTION.sub(word, text)
 
 
+def os_words(text):
+    """`text` with the operating system's words of each file error it holds (``[Errno 2] No such file or
+    directory``) in the user's language, where they are exactly those of :data:`OS_WORDS` for their number; the
+    number, the file's name and the rest as they are."""
+    def word(match):
+        number, words = int(match.group(1)), match.group(2)
+        if OS_WORDS.get(number) != words:
+            return match.group(0)
+        return f"[Errno {number}] {translate(words)}"
+    return _ERRNO.sub(word, text)
+
+
 @functools.lru_cache(maxsize=1)
 def _catalogue():
     """The messages' templates of the translation template (an empty catalogue where none is shipped)."""
@@ -70,9 +98,13 @@ def _catalogue():
 
 
 def localized(text):
-    """`text`, a message of the engine, a reader or the job model, in the user's language where its
-    template has a translation (messages.Catalogue over the translation template), else as it is."""
-    return _catalogue().translated(text, lambda template: translate(template, MESSAGES))
+    """`text`, a message of the engine, a reader, the job model or the features, in the user's language where
+    its template has a translation (messages.Catalogue over the translation template), else as it is; the
+    operating system's file errors in it too (:func:`os_words`)."""
+    return os_words(_catalogue().translated(text, lambda template: translate(template, MESSAGES)))
+
+
+features_base.localize_with(localized)  # the features' report-view lines (features.base.tell)
 
 
 def parameter_words(error):

@@ -126,14 +126,14 @@ class PathHints:
     def messages(self):
         """Every warning, each record kind not understood, and the records ignored (one line), as text
         for warnings."""
-        unknown = [
-            f"{self.source}:{line}: {word}: record not understood, ignored"
-            + (f" ({count} times)" if count > 1 else "")
-            for word, line, count in self.unknown
-        ]
-        ignored = [f"{self.source}: records that carry nothing the engine needs, ignored: " + ", ".join(
-            f"{word} ({count})" for word, _, count in self.ignored)] if self.ignored else []
-        return list(self.warnings) + unknown + ignored
+        warnings = list(self.warnings)
+        for word, line, count in self.unknown:
+            warnings.append(f"{self.source}:{line}: {word}: record not understood, ignored ({count} times)" if count > 1
+                            else f"{self.source}:{line}: {word}: record not understood, ignored")
+        if self.ignored:
+            records = ", ".join(f"{word} ({count})" for word, _, count in self.ignored)
+            warnings.append(f"{self.source}: records that carry nothing the engine needs, ignored: {records}")
+        return warnings
 
 
 def load_stock(path, *, walls="exact", wall_points="chebyshev", y_window=None, frame=None, solid=None, shape=None):

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..engine import Staircase, flute_engagement, zmap_engage
 from ..engine.stocks import engage_in_process, engage_stock, in_process_lengths, in_process_runs
-from ..errors import InputError, ParameterError
+from ..errors import InputError, ParameterError, note
 from ..formats import check_output_path, replacing, results_npz
 from ..formats.results_columns import chunk_columns
 from ..formats.results_csv import chunk_texts, summary_path, write_chunks
@@ -88,11 +88,11 @@ def in_process_sweep(prepared, method="abm", warn=None):
         raise ParameterError("stock_model", f"must be one of {', '.join(STOCK_MODELS)}, got {job.stock_model!r}")
     if job.stock_model == "initial":
         return None, ""
-    missing = "a helical tool" if tool.helix else "the Z-map method" if method != "abm" else None
+    missing = note("a helical tool") if tool.helix else note("the Z-map method") if method != "abm" else None
     if missing is not None:
         if job.stock_model == "in-process":
             raise ParameterError("stock_model", f"in-process is not available with {missing} yet: use initial")
-        return None, f"the in-process stock is not available with {missing} yet"
+        return None, note(f"the in-process stock is not available with {missing} yet")
     if not (np.isfinite(job.sweep_tolerance) and job.sweep_tolerance > 0.0):
         raise ParameterError("sweep_tolerance", f"must be a positive number of mm, got {job.sweep_tolerance:g}")
     hints = prepared.hints
@@ -104,8 +104,8 @@ def in_process_sweep(prepared, method="abm", warn=None):
         notes.append(f"the in-process stock sweeps the program's {curved} arcs and curves as the chords between "
                      f"their CL points, each within {job.tolerance:g} mm of the arc (at most {job.step:g} mm long)")
     check_sweep(moves, job.sweep_tolerance, job.toolpath)
-    for note in notes if warn is not None else ():
-        warn(f"{job.toolpath}: {note}")
+    for noted in notes if warn is not None else ():
+        warn(f"{job.toolpath}: {noted}")
     return (swept_pieces(moves, job.sweep_tolerance), rows), ""
 
 

@@ -4,6 +4,7 @@ the same placeholders, and real errors of the readers and the job model, raised 
 by their template and shown in German with their values unchanged. In the running GUI: test_german.py."""
 
 import re
+from types import SimpleNamespace
 
 import pytest
 
@@ -83,3 +84,76 @@ def test_real_errors_are_found_by_their_template_and_shown_in_german(tmp_path):
         # the values (the file's name, the numbers) are all still there
         for value in re.findall(r"[\w.-]*\d[\w.-]*|[\w-]+\.(?:json|apt|txt)", text):
             assert value in shown, (value, text, shown)
+
+
+@pytest.fixture
+def reporting(monkeypatch):
+    """gui.reporting with ABM_de.ts's German in place of Qt's translator (no GUI runs here)."""
+    import abm_workbench.cad.freecad_env  # noqa: F401 (FreeCAD on the path)
+    from abm_workbench.gui import reporting
+
+    monkeypatch.setattr(reporting, "translate", lambda text, context="ABM": GERMAN.get((context, text), text))
+    return reporting
+
+
+def test_warnings_the_features_print_reach_the_report_view_in_german(reporting, monkeypatch):
+    from abm_workbench.features import base
+    from abm_workbench.jobs.inputs import PathHints
+
+    printed = []
+    monkeypatch.setattr(base.FreeCAD, "Console", SimpleNamespace(PrintWarning=printed.append))
+    hints = PathHints("a.apt", unknown=(("PPRINT", 12, 3), ("SPINDL", 14, 1)), ignored=(("COOLNT", 4, 2),))
+    engagement = SimpleNamespace(Label="Engagement")
+    for message in hints.messages():
+        base.tell(engagement, message)
+    base.tell(engagement, f"results not restored ({InputError('r.csv: no such file')}); recompute to compute them")
+    assert printed[:3] == ["Engagement: a.apt:12: PPRINT: Datensatz nicht verstanden, ignoriert (3-mal)\n",
+                           "Engagement: a.apt:14: SPINDL: Datensatz nicht verstanden, ignoriert\n",
+                           "Engagement: a.apt: Datensätze ohne etwas, das der Rechenkern braucht, ignoriert: "
+                           "COOLNT (2)\n"]
+    assert printed[3].startswith("Engagement: Ergebnisse nicht wiederhergestellt (r.csv: ")
+    assert "no such file" not in printed[3] and printed[3].endswith("berechnen Sie neu, um sie zu erhalten\n")
+
+
+def test_a_message_built_in_a_variable_before_its_raise_is_shown_in_german(reporting, tmp_path):
+    from abm_workbench.formats.apt import load_apt
+    from abm_workbench.jobs.run import in_process_sweep
+
+    program = tmp_path / "no_moves.apt"
+    program.write_text("CUTTER/6\nFEDRAT/100\n")
+    with pytest.raises(InputError) as caught:
+        load_apt(str(program))
+    shown = reporting.message_of(caught.value)
+    assert shown.startswith(f"{program}:2: ") and shown.endswith("(kein GOTO-Datensatz)"), shown
+    # a phrase given as a value (the tool the in-process stock is not there for yet) is translated too
+    prepared = SimpleNamespace(job=SimpleNamespace(stock_model=None), tool=SimpleNamespace(helix=30.0))
+    assert reporting.localized(in_process_sweep(prepared)[1]) == \
+        "das Zwischenrohteil ist mit einem Werkzeug mit Drallwinkel noch nicht verfügbar"
+
+
+def test_singular_and_plural_are_whole_phrases_in_each_language():
+    from abm_workbench.formats import check_keys, parse_number
+
+    messages = Catalogue(templates())
+    one = _raised(lambda: check_keys({"a": 1, "tool": 2}, ("a",), (), "job.json"))
+    two = _raised(lambda: check_keys({"a": 1, "tool": 2, "mill": 3}, ("a",), (), "job.json"))
+    assert (one, two) == ("job.json: unknown key 'tool' (allowed: 'a')",
+                          "job.json: unknown keys 'tool', 'mill' (allowed: 'a')")
+    assert messages.translated(one, german) == "job.json: unbekannter Schlüssel 'tool' (erlaubt: 'a')"
+    assert messages.translated(two, german) == "job.json: unbekannte Schlüssel 'tool', 'mill' (erlaubt: 'a')"
+    assert messages.translated(_raised(lambda: parse_number("nan", "a.csv:3")), german) == \
+        "a.csv:3: 'nan' ist keine endliche Zahl (Ziffern 0-9, optionales Vorzeichen, '.' und Exponent)"
+
+
+def test_the_operating_systems_file_errors_are_in_german_with_their_file(reporting, tmp_path):
+    missing = tmp_path / "stock.json"
+    with pytest.raises(OSError) as caught:
+        open(missing, encoding="utf-8")
+    assert reporting.message_of(caught.value) == f"[Errno 2] Datei oder Verzeichnis nicht gefunden: '{missing}'"
+    with pytest.raises(OSError) as caught:
+        open(tmp_path, encoding="utf-8")
+    assert reporting.message_of(caught.value) == f"[Errno 21] Ist ein Verzeichnis: '{tmp_path}'"
+    # within another message too; words that are not the system's exact ones for the number stay as they are
+    assert reporting.localized(f"a.FCStd: cannot write: [Errno 28] No space left on device: '{missing}'") == \
+        f"a.FCStd: cannot write: [Errno 28] Kein Speicherplatz mehr auf dem Gerät: '{missing}'"
+    assert reporting.localized("[Errno 2] Is a directory: 'x'") == "[Errno 2] Is a directory: 'x'"

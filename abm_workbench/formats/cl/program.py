@@ -207,5 +207,6 @@ class Program:
         if milling:
             reason = f"{len(milling)} milling operations; choose one with --operation N"
         else:
-            reason = "no operation the engine can run: " + "; ".join(op.refusal() for op in self.operations)
+            refusals = "; ".join(op.refusal() for op in self.operations)
+            reason = f"no operation the engine can run: {refusals}"
         raise OperationChoiceError(f"{self.source}: {reason}; operations: {listing}", self.operations)
