@@ -1949,6 +1949,30 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>a milling tool the ABM engine does not compute yet (it computes flat-end, bull-nose and ball-end mills)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a turning program, not milling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a milling tool (the ABM engine computes flat-end, bull-nose and ball-end mills)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation {number}: {what}: {reason}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation {number}: no cutting moves ({holes} canned-cycle hole positions)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation {number}: no cutting moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{source}: operation {n}: the program has operations 1 to {count}</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1951,6 +1951,30 @@ fläche (mm²)</translation>
         <translation>{source}:{first_line}: {self_label}: keine Schnittbewegungen</translation>
     </message>
     <message>
+        <source>a milling tool the ABM engine does not compute yet (it computes flat-end, bull-nose and ball-end mills)</source>
+        <translation>ein Fräswerkzeug, das der ABM-Rechenkern noch nicht berechnet (er berechnet Schaft-, Torus- und Kugelfräser)</translation>
+    </message>
+    <message>
+        <source>a turning program, not milling</source>
+        <translation>ein Drehprogramm, kein Fräsen</translation>
+    </message>
+    <message>
+        <source>not a milling tool (the ABM engine computes flat-end, bull-nose and ball-end mills)</source>
+        <translation>kein Fräswerkzeug (der ABM-Rechenkern berechnet Schaft-, Torus- und Kugelfräser)</translation>
+    </message>
+    <message>
+        <source>operation {number}: {what}: {reason}</source>
+        <translation>Operation {number}: {what}: {reason}</translation>
+    </message>
+    <message>
+        <source>operation {number}: no cutting moves ({holes} canned-cycle hole positions)</source>
+        <translation>Operation {number}: keine Schnittbewegungen ({holes} Bohrpositionen aus Bohrzyklen)</translation>
+    </message>
+    <message>
+        <source>operation {number}: no cutting moves</source>
+        <translation>Operation {number}: keine Schnittbewegungen</translation>
+    </message>
+    <message>
         <source>{source}: operation {n}: the program has operations 1 to {count}</source>
         <translation>{source}: Operation {n}: das Programm hat die Operationen 1 bis {count}</translation>
     </message>

@@ -12,7 +12,7 @@ import numpy as np
 
 from ...engine import Toolpath
 from ...engine.feed import feed_frame, inclinations
-from ...errors import CLPointError, InputError
+from ...errors import CLPointError, InputError, note
 from .frames import IDENTITY, engine_frame
 from .tools import ToolSpec
 
@@ -147,11 +147,12 @@ class Operation:
                 reason = "a turning program, not milling"
             else:
                 reason = "not a milling tool (the ABM engine computes flat-end, bull-nose and ball-end mills)"
-            return f"operation {self.number}: {what}: {reason}"
+            return note(f"operation {self.number}: {what}: {reason}")
         if len(self.lines) == 0:
             holes = len(self.cycle_points) if self.cycle_points is not None else 0
-            extra = f" ({holes} canned-cycle hole positions)" if holes else ""
-            return f"operation {self.number}: no cutting moves{extra}"
+            if holes:
+                return note(f"operation {self.number}: no cutting moves ({holes} canned-cycle hole positions)")
+            return note(f"operation {self.number}: no cutting moves")
         return None
 
     def summary(self):
