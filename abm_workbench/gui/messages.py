@@ -3,7 +3,9 @@
 The engine, the readers and the job model word their errors in English, with their values filled in by
 f-strings (``f"{path}: line {line}: {detail}"``). Their templates are gathered from the sources
 (:func:`templates`: every string or f-string that holds a phrase, passed to an exception such as
-``InputError`` or to a call within a ``raise`` statement, such as a reader's ``self.error(record, …)``)
+``InputError`` or to a call within a ``raise`` statement, such as a reader's ``self.error(record, …)``, to a
+warning or note (``warn``, ``features.base.tell``, ``errors.note``) or appended to a list of warnings, notes or
+conflicts; and what a local name such a message is, or holds as a value, was assigned in the same function)
 into the translation template's context :data:`CONTEXT`, each value a named placeholder (``{path}``, named
 after the f-string's expression). The GUI finds the template a message was made from
 (:class:`Catalogue`: the template's words in order, its values in between) and shows the translation
@@ -78,7 +80,8 @@ def template_of(node):
 
 
 def templates(package=PACKAGE, sources=SOURCES):
-    """[template, …] of the messages passed to exceptions, or to calls within raise statements, in the
+    """[template, …] of the messages passed to exceptions, to calls within raise statements or to warnings
+    and notes (:func:`_says`), with the strings their local names were assigned (:func:`_messages`), in the
     `sources` (files or folders) of `package`, in the order of the files and lines, each once; then
     :data:`VALUES`."""
     paths = []
