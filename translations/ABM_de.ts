@@ -21,7 +21,7 @@
     </message>
     <message>
         <source>select a FreeCAD CAM Job, or operations of one</source>
-        <translation>einen FreeCAD-CAM-Job oder Operationen eines Jobs auswählen</translation>
+        <translation>wählen Sie einen FreeCAD-CAM-Job oder Operationen eines Jobs aus</translation>
     </message>
     <message>
         <source>no operation has moves</source>
@@ -37,7 +37,7 @@
     </message>
     <message>
         <source>{operation}: {controller} gives no {value} (set it in its toolbit, or in Edit → Preferences → ABM)</source>
-        <translation>{operation}: {controller} gibt keinen Wert für {value} an (im Toolbit festlegen oder unter Bearbeiten → Einstellungen → ABM)</translation>
+        <translation>{operation}: {controller} gibt keinen Wert für {value} an (legen Sie ihn im Toolbit fest oder unter Bearbeiten → Einstellungen → ABM)</translation>
     </message>
     <message>
         <source>{operation}: not in the program of {job} (inactive, or no moves)</source>
@@ -97,19 +97,19 @@
     </message>
     <message>
         <source>{file} holds several operations: choose the one to compute (the toolpath's Operation; change it later in the property editor)</source>
-        <translation>{file} enthält mehrere Operationen: die zu berechnende wählen (Operation der Werkzeugbahn; später im Eigenschafteneditor änderbar)</translation>
+        <translation>{file} enthält mehrere Operationen: wählen Sie die zu berechnende (Operation der Werkzeugbahn; später im Eigenschafteneditor änderbar)</translation>
     </message>
     <message>
         <source>{count} {nouns} selected: select one {noun}</source>
-        <translation>{count} {nouns} ausgewählt: nur ein Objekt vom Typ {noun} auswählen</translation>
+        <translation>{count} {nouns} ausgewählt: wählen Sie nur ein Objekt vom Typ {noun} aus</translation>
     </message>
     <message>
         <source>no {noun} in the document: import one first</source>
-        <translation>kein Objekt vom Typ {noun} im Dokument: zuerst eines importieren</translation>
+        <translation>kein Objekt vom Typ {noun} im Dokument: importieren Sie zuerst eines</translation>
     </message>
     <message>
         <source>{count} {nouns} in the document: select the one to use</source>
-        <translation>{count} {nouns} im Dokument: das zu verwendende auswählen</translation>
+        <translation>{count} {nouns} im Dokument: wählen Sie das zu verwendende aus</translation>
     </message>
     <message>
         <source>Validating {label} at {count} CL points against booleans…</source>
@@ -137,7 +137,7 @@
     </message>
     <message>
         <source>{label}: compute it first (recompute the document)</source>
-        <translation>{label}: zuerst berechnen (Dokument neu berechnen)</translation>
+        <translation>{label}: berechnen Sie es zuerst (berechnen Sie das Dokument neu)</translation>
     </message>
     <message>
         <source>{file}: not imported: it works in inches, and the units of the tool table {table} were not said</source>
@@ -313,7 +313,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>no forces: turn Cutting forces on in the engagement's task panel and recompute</source>
-        <translation>keine Kräfte: Schnittkräfte in der Aufgabenansicht des Eingriffs einschalten und neu berechnen</translation>
+        <translation>keine Kräfte: schalten Sie Schnittkräfte in der Aufgabenansicht des Eingriffs ein und berechnen Sie neu</translation>
     </message>
     <message>
         <source>depth of cut</source>
@@ -329,11 +329,11 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>{label}: no results (recompute it)</source>
-        <translation>{label}: keine Ergebnisse (neu berechnen)</translation>
+        <translation>{label}: keine Ergebnisse (berechnen Sie es neu)</translation>
     </message>
     <message>
         <source>No engagement: select one and use Inspect engagement</source>
-        <translation>Kein Eingriff: einen auswählen und „Eingriff untersuchen“ verwenden</translation>
+        <translation>Kein Eingriff: wählen Sie einen aus und verwenden Sie „Eingriff untersuchen“</translation>
     </message>
     <message>
         <source>CL {cl}: depth of cut {depth} mm, max length of cut {length} mm; segments</source>
@@ -369,7 +369,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>Show in-process stock: inspect an engagement first (Inspect engagement), then choose its CL point in the dock</source>
-        <translation>Zwischenrohteil zeigen: zuerst einen Eingriff untersuchen („Eingriff untersuchen“), dann seinen CL-Punkt im Dock wählen</translation>
+        <translation>Zwischenrohteil zeigen: untersuchen Sie zuerst einen Eingriff („Eingriff untersuchen“), dann wählen Sie seinen CL-Punkt im Dock</translation>
     </message>
     <message>
         <source>In-process stock at CL {cl}: cancelled</source>
@@ -381,7 +381,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>type a number, with a unit if you like (12 mm, 0.5 in)</source>
-        <translation>eine Zahl eingeben, nach Wunsch mit Einheit (12 mm, 0.5 in)</translation>
+        <translation>geben Sie eine Zahl ein, nach Wunsch mit Einheit (12 mm, 0.5 in)</translation>
     </message>
     <message>
         <source>“{typed}” is not an angle: {hint}</source>
@@ -389,7 +389,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>type a number, with a unit if you like (10°, 0.2 rad)</source>
-        <translation>eine Zahl eingeben, nach Wunsch mit Einheit (10°, 0.2 rad)</translation>
+        <translation>geben Sie eine Zahl ein, nach Wunsch mit Einheit (10°, 0.2 rad)</translation>
     </message>
     <message>
         <source>“{typed}” is not a number: {hint}</source>
@@ -397,7 +397,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>type a number without a unit (4, 2.5)</source>
-        <translation>eine Zahl ohne Einheit eingeben (4, 2.5)</translation>
+        <translation>geben Sie eine Zahl ohne Einheit ein (4, 2.5)</translation>
     </message>
     <message>
         <source>“{typed}” has a “{other}”: decimals take a “{point}” (12{point}5), thousands no separator (1000)</source>
@@ -489,7 +489,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>no engagement of operation {number} of {job}: select the Job and use Engage CAM job</source>
-        <translation>kein Eingriff für Operation {number} von {job}: den Job auswählen und „CAM-Job eingreifen lassen“ verwenden</translation>
+        <translation>kein Eingriff für Operation {number} von {job}: wählen Sie den Job aus und verwenden Sie „CAM-Job eingreifen lassen“</translation>
     </message>
     <message>
         <source>not computed: {reason}</source>
@@ -597,15 +597,15 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>set the toolpath's ToolTable property (</source>
-        <translation>die Eigenschaft ToolTable der Werkzeugbahn setzen (</translation>
+        <translation>setzen Sie die Eigenschaft ToolTable der Werkzeugbahn (</translation>
     </message>
     <message>
         <source>choose one in the toolpath's Operation property</source>
-        <translation>eine in der Eigenschaft Operation der Werkzeugbahn wählen</translation>
+        <translation>wählen Sie eine in der Eigenschaft Operation der Werkzeugbahn</translation>
     </message>
     <message>
         <source>say them in the toolpath's ToolTableUnits property (mm or inch)</source>
-        <translation>sie in der Eigenschaft ToolTableUnits der Werkzeugbahn angeben (mm oder inch)</translation>
+        <translation>geben Sie sie in der Eigenschaft ToolTableUnits der Werkzeugbahn an (mm oder inch)</translation>
     </message>
     <message>
         <source>Diameter</source>
@@ -1564,7 +1564,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>no document: open or create a FreeCAD document first (FreeCAD.newDocument())</source>
-        <translation>kein Dokument: zuerst ein FreeCAD-Dokument öffnen oder anlegen (FreeCAD.newDocument())</translation>
+        <translation>kein Dokument: öffnen oder erstellen Sie zuerst ein FreeCAD-Dokument (FreeCAD.newDocument())</translation>
     </message>
     <message>
         <source> (property {prop})</source>
@@ -1660,7 +1660,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>{Label}: no stock source: set SourceObject or SourceFile</source>
-        <translation>{Label}: keine Rohteilquelle: SourceObject oder SourceFile setzen</translation>
+        <translation>{Label}: keine Rohteilquelle: setzen Sie SourceObject oder SourceFile</translation>
     </message>
     <message>
         <source>walls must be one of {WALL_MODELS}, got {walls}</source>
@@ -1708,7 +1708,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>{Label}: no toolpath file: set File</source>
-        <translation>{Label}: keine Werkzeugbahndatei: File setzen</translation>
+        <translation>{Label}: keine Werkzeugbahndatei: setzen Sie File</translation>
     </message>
     <message>
         <source>{Label}: the CAM operation {operation} is not in the program of {Label_2} (inactive, or no moves)</source>
@@ -1716,7 +1716,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>{Label}: {path} holds several operations ({listing}): set the toolpath's Operation property to the number of the one to compute</source>
-        <translation>{Label}: {path} enthält mehrere Operationen ({listing}): die Eigenschaft Operation der Werkzeugbahn auf die Nummer der zu berechnenden Operation setzen</translation>
+        <translation>{Label}: {path} enthält mehrere Operationen ({listing}): setzen Sie die Eigenschaft Operation der Werkzeugbahn auf die Nummer der zu berechnenden Operation</translation>
     </message>
     <message>
         <source>ktc must be positive, got {ktc}</source>
@@ -1788,11 +1788,11 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>give lengths_at or runs_at, not both</source>
-        <translation>lengths_at oder runs_at angeben, nicht beides</translation>
+        <translation>geben Sie lengths_at oder runs_at an, nicht beides</translation>
     </message>
     <message>
         <source>the forces of a {kind} mill need each flute's engaged runs along its corner, not only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at instead</source>
-        <translation>die Kräfte eines {kind}-Fräsers erfordern die Eingriffsabschnitte jeder Schneide entlang ihres Eckenradius, nicht nur ihre Schnittlängen: lengths_at (etwa die des Zwischenrohteils) kann sie nicht liefern; stattdessen runs_at übergeben</translation>
+        <translation>die Kräfte eines {kind}-Fräsers erfordern die Eingriffsabschnitte jeder Schneide entlang ihres Eckenradius, nicht nur ihre Schnittlängen: lengths_at (etwa die des Zwischenrohteils) kann sie nicht liefern; übergeben Sie stattdessen runs_at</translation>
     </message>
     <message>
         <source>{where}: {stripped} is not a finite number (digits 0-9, optional sign, '.' and exponent)</source>
@@ -1808,19 +1808,19 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>an output path is empty; give a file name</source>
-        <translation>ein Ausgabepfad ist leer; einen Dateinamen angeben</translation>
+        <translation>ein Ausgabepfad ist leer; geben Sie einen Dateinamen an</translation>
     </message>
     <message>
         <source>{text}: is a folder; give a file name for the output</source>
-        <translation>{text}: ist ein Ordner; einen Dateinamen für die Ausgabe angeben</translation>
+        <translation>{text}: ist ein Ordner; geben Sie einen Dateinamen für die Ausgabe an</translation>
     </message>
     <message>
         <source>{text}: is a symbolic link (to {os_readlink_text}); it would be replaced by the output: give the file's own path</source>
-        <translation>{text}: ist ein symbolischer Link (auf {os_readlink_text}); er würde durch die Ausgabe ersetzt: den eigentlichen Pfad der Datei angeben</translation>
+        <translation>{text}: ist ein symbolischer Link (auf {os_readlink_text}); er würde durch die Ausgabe ersetzt: geben Sie den eigentlichen Pfad der Datei an</translation>
     </message>
     <message>
         <source>{text}: is {value}, not a file; it would be replaced by the output: give a file name</source>
-        <translation>{text}: ist {value}, keine Datei; es würde durch die Ausgabe ersetzt: einen Dateinamen angeben</translation>
+        <translation>{text}: ist {value}, keine Datei; es würde durch die Ausgabe ersetzt: geben Sie einen Dateinamen an</translation>
     </message>
     <message>
         <source>{text}: the file name is {count} bytes long; at most {longest} are allowed here</source>
@@ -1832,7 +1832,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>{name}: is {kind_mode}, not a file; give the {what} file itself</source>
-        <translation>{name}: ist {kind_mode}, keine Datei; die {what}-Datei selbst angeben</translation>
+        <translation>{name}: ist {kind_mode}, keine Datei; geben Sie die {what}-Datei selbst an</translation>
     </message>
     <message>
         <source>{name}: is {value}, not a file; give the input file itself</source>
@@ -2272,15 +2272,15 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>an arc needs its end: the axis words of its plane (the start's, for a full circle)</source>
-        <translation>ein Bogen braucht seinen Endpunkt: die Achsadressen seiner Ebene (die des Startpunkts, für einen Vollkreis)</translation>
+        <translation>ein Bogen braucht seinen Endpunkt: die Achsen-Wörter seiner Ebene (die des Startpunkts, für einen Vollkreis)</translation>
     </message>
     <message>
         <source>an axis word with no motion in force (G0, G1, G2, G3 or a hole cycle)</source>
-        <translation>eine Achsadresse ohne aktive Bewegungsart (G0, G1, G2, G3 oder ein Bohrzyklus)</translation>
+        <translation>ein Achsen-Wort ohne aktive Bewegungsart (G0, G1, G2, G3 oder ein Bohrzyklus)</translation>
     </message>
     <message>
         <source>needs a {letter} word</source>
-        <translation>erfordert eine {letter}-Adresse</translation>
+        <translation>erfordert ein {letter}-Wort</translation>
     </message>
     <message>
         <source>a feed cannot be negative</source>
@@ -2292,7 +2292,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>no T word has selected a tool to load</source>
-        <translation>keine T-Adresse hat ein zu ladendes Werkzeug ausgewählt</translation>
+        <translation>kein T-Wort hat ein zu ladendes Werkzeug ausgewählt</translation>
     </message>
     <message>
         <source>{code} loads tool {number}, and no tool table names it: give the tool table (--tool-table FILE: a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
@@ -2320,7 +2320,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>a rotary axis word, and no machine file names the kinematics: give --machine FILE (docs/GCODE.md)</source>
-        <translation>eine Drehachsen-Adresse, und keine Maschinendatei nennt die Kinematik: geben Sie --machine FILE an (docs/GCODE.md)</translation>
+        <translation>ein Drehachsen-Wort, und keine Maschinendatei nennt die Kinematik: geben Sie --machine FILE an (docs/GCODE.md)</translation>
     </message>
     <message>
         <source>the machine {kinematics} has no {letter} axis (its rotary axes: {value})</source>
@@ -2340,7 +2340,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>a feed move to a point whose {join_unknown} is not known yet (no {unknown_0} word since the start or the last G28 / G30)</source>
-        <translation>eine Vorschubbewegung zu einem Punkt, dessen {join_unknown} noch nicht bekannt ist (keine {unknown_0}-Adresse seit dem Anfang oder dem letzten G28 / G30)</translation>
+        <translation>eine Vorschubbewegung zu einem Punkt, dessen {join_unknown} noch nicht bekannt ist (kein {unknown_0}-Wort seit dem Anfang oder dem letzten G28 / G30)</translation>
     </message>
     <message>
         <source>an arc that also turns a rotary axis is not read</source>
@@ -2364,7 +2364,7 @@ fläche (mm²)</translation>
     </message>
     <message>
         <source>inverse time feed (G93) needs an F word on every feed move</source>
-        <translation>Vorschub in inverser Zeit (G93) erfordert eine F-Adresse in jeder Vorschubbewegung</translation>
+        <translation>Vorschub in inverser Zeit (G93) erfordert ein F-Wort in jeder Vorschubbewegung</translation>
     </message>
     <message>
         <source>hole cycles are read in the XY plane (G17) only</source>

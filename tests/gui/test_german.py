@@ -66,8 +66,8 @@ def test_german_labels(tmp_path, run_gui):
     assert "gekrümmte Wand" in about or "Deckfläche" in about  # the segments' UEP surfaces in German
     assert verdict["sections"] == ["Werkzeug", "Schnitt", "Drehwinkel φ des Werkzeugs", "Rohteilmodell",
                                    "Schnittkräfte"]
-    assert verdict["letters"] == ("Schrittweite von φ: „1x2“ ist kein Winkel: eine Zahl eingeben, nach Wunsch mit "
-                                  "Einheit (10°, 0.2 rad)."), verdict["letters"]
+    assert verdict["letters"] == ("Schrittweite von φ: „1x2“ ist kein Winkel: geben Sie eine Zahl ein, nach "
+                                  "Wunsch mit Einheit (10°, 0.2 rad)."), verdict["letters"]
     assert verdict["negative"] == "Schrittweite von φ muss positiv sein, erhalten: -3°.", verdict["negative"]
 
     assert f"{tmp_path / 'kaputt.apt'}:2: GOTO: " in verdict["report"] and "erhalten: 2" in verdict["report"], \

@@ -157,3 +157,11 @@ def test_the_operating_systems_file_errors_are_in_german_with_their_file(reporti
     assert reporting.localized(f"a.FCStd: cannot write: [Errno 28] No space left on device: '{missing}'") == \
         f"a.FCStd: cannot write: [Errno 28] Kein Speicherplatz mehr auf dem Gerät: '{missing}'"
     assert reporting.localized("[Errno 2] Is a directory: 'x'") == "[Errno 2] Is a directory: 'x'"
+
+
+def test_a_g_code_word_is_a_wort_in_every_german_message():
+    words = [text for text in templates() if re.search(r"\b(?:[A-Z]|\{\w+\}|axis) words?\b", text)]
+    assert len(words) >= 5
+    # "Wort" (a letter and its number, DIN 66025), never "Adresse" (the letter alone)
+    wrong = [german(text) for text in words if "Adresse" in german(text) or not re.search("Wort|Wörter", german(text))]
+    assert wrong == []
