@@ -1,5 +1,5 @@
 """Registers the ABM workbench with FreeCAD's GUI (its commands are imported on activation), its
-preferences page and its translations folder.
+preferences page, its translations folder and the features' report-view lines in the user's language.
 
 FreeCAD executes this file with separate globals and locals: the class and its methods cannot
 see names imported at the top, so each method imports what it uses.
@@ -43,8 +43,9 @@ install_observer()
 
 # Edit -> Preferences -> ABM (its icon: resources/icons/preferences-abm.svg, which FreeCAD finds by the
 # group's name), and the translations (translations/ABM_<language>.qm, loaded again when the language changes).
-from abm_workbench.gui import i18n, preferences  # noqa: E402
+from abm_workbench.gui import i18n, preferences, reporting  # noqa: E402
 
 FreeCADGui.addIconPath(preferences.ICONS)
 FreeCADGui.addPreferencePage(preferences.PreferencesPage, "ABM")
 i18n.install()
+reporting.install()  # the features' report-view lines in the user's language

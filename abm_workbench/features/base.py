@@ -78,8 +78,8 @@ _LOCALIZER = [str]
 
 def localize_with(function):
     """Let `function(text)` put the messages the features print into the user's language: the GUI gives its
-    own (gui.reporting.localized) as it is imported; headless they are printed as they are. The features
-    import no GUI module."""
+    own (gui.reporting.localized, by gui.reporting.install as FreeCAD starts); headless they are printed as
+    they are. The features import no GUI module."""
     _LOCALIZER[0] = function
 
 

@@ -104,7 +104,10 @@ def localized(text):
     return os_words(_catalogue().translated(text, lambda template: translate(template, MESSAGES)))
 
 
-features_base.localize_with(localized)  # the features' report-view lines (features.base.tell)
+def install():
+    """Let the features print their warnings and notes in the user's language (features.base.tell through
+    :func:`localized`); InitGui.py calls it as FreeCAD starts, before documents are restored."""
+    features_base.localize_with(localized)
 
 
 def parameter_words(error):

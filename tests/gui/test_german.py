@@ -1,7 +1,8 @@
 """The translations end to end: FreeCAD's language set to German, the workbench's labels in German
 (translations/ABM_de.qm, built by `make translations` from ABM_de.ts and loaded from the folder InitGui
 adds), the task panel opened by a double-click-free setEdit, the dock by the toolbar button; typed
-numbers refused, a job model's check and a reader's error in German (gui.messages)."""
+numbers refused, a job model's check, a reader's error, a feature's printed warning and a system file error
+in German (gui.messages, gui.reporting)."""
 
 from tests.conftest import ROOT
 from tests.gui.dialogs import DIALOGS
@@ -45,6 +46,14 @@ start = len(report.toPlainText())
 commands.ImportToolpath().execute({bad!r})
 settle()
 verdict["report"] = report.toPlainText()[start:]
+# a feature's warning (features.base.tell, its localizer installed by InitGui.py) and a system file error
+from abm_workbench.features.base import tell
+from abm_workbench.gui.reporting import report_error
+start = len(report.toPlainText())
+tell(FreeCAD.ActiveDocument.getObject("Engagement"), "results in the document not read (r.abm: no such file)")
+report_error(FileNotFoundError(2, "No such file or directory", {bad!r}))
+settle()
+verdict["printed"] = report.toPlainText()[start:]
 """
 
 
@@ -73,3 +82,5 @@ def test_german_labels(tmp_path, run_gui):
     assert f"{tmp_path / 'kaputt.apt'}:2: GOTO: " in verdict["report"] and "erhalten: 2" in verdict["report"], \
         verdict["report"]
     assert "got 2" not in verdict["report"]
+    assert "Ergebnisse im Dokument nicht gelesen (r.abm: " in verdict["printed"], verdict["printed"]
+    assert f"[Errno 2] Datei oder Verzeichnis nicht gefunden: '{bad}'" in verdict["printed"], verdict["printed"]

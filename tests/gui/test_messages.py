@@ -88,11 +88,15 @@ def test_real_errors_are_found_by_their_template_and_shown_in_german(tmp_path):
 
 @pytest.fixture
 def reporting(monkeypatch):
-    """gui.reporting with ABM_de.ts's German in place of Qt's translator (no GUI runs here)."""
+    """gui.reporting with ABM_de.ts's German in place of Qt's translator (no GUI runs here), installed for the
+    features' report-view lines as InitGui.py installs it."""
     import abm_workbench.cad.freecad_env  # noqa: F401 (FreeCAD on the path)
+    from abm_workbench.features import base
     from abm_workbench.gui import reporting
 
     monkeypatch.setattr(reporting, "translate", lambda text, context="ABM": GERMAN.get((context, text), text))
+    monkeypatch.setattr(base, "_LOCALIZER", list(base._LOCALIZER))
+    reporting.install()
     return reporting
 
 
