@@ -4,7 +4,9 @@ Messages go to the report view (``FreeCAD.Console.PrintError``) as ``ABM: <plain
 parameter in its label's words (``jobs.label_words``), FreeCAD's own exceptions by their text; a
 message of the engine or a reader that names a command-line option (``--tool-table FILE``) names
 what the GUI has for it instead (:data:`OPTION_WORDS`, :func:`gui_words`). Messages of the engine and
-the readers are shown in the user's language where their template has a translation (:func:`localized`).
+the readers are shown in the user's language where their template has a translation (:func:`localized`), the
+operating system's words of the common file errors too (:func:`os_words`); :func:`install` lets the features
+print their warnings and notes that way.
 """
 
 import errno
