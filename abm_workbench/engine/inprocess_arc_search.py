@@ -33,7 +33,7 @@ from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _seen_along,
 from .inprocess_cover import narrow
 from .inprocess_level_pairs import GROUP, arcs as level_arcs
 from .inprocess_plan import arc_kinds, arc_piece_intervals
-from .swept import every_column, row_dot
+from .swept import every_column, row_dot, rows
 from .tolerances import LENGTH_EPS
 
 #: Arcs per block at most (whole CL points; a CL point with more arcs is a block alone).
@@ -90,7 +90,7 @@ def _in_levels(pieces, at, line, lo, hi, cl, before, d, w, geometry):
     centres, _, ws, tips, radius, big, top = geometry
     psi = (lo[at] / radius, hi[at] / radius)
     screened = _Arcs(line[at], *psi, geometry)
-    arc, start, end = level_arcs(pieces.levels, np.take(tips, line[at], axis=0), d[at], w[at],
+    arc, start, end = level_arcs(pieces.levels, np.take(tips, line[at], axis=0), rows(d, at), rows(w, at),
                                  np.take(centres, line[at], axis=0), *psi, before[at], line[at] // GROUP, big, radius,
                                  top, functools.partial(_screen, screened))
     envelope = np.stack(psi)
@@ -176,7 +176,7 @@ class _Arcs:
         from the chord, the arc's middle point."""
         low, high = self.envelope[0, seg], self.envelope[1, seg]
         mid = 0.5 * (low + high)
-        centre, d, w = self.centre[seg], self.d[seg], self.w[seg]
+        centre, d, w = (rows(part, seg) for part in (self.centre, self.d, self.w))
         points = [centre + self.radius * (np.sin(t)[:, None] * d - np.cos(t)[:, None] * w) for t in (low, high, mid)]
         sag = self.radius * (1.0 - np.cos(0.5 * np.maximum(high - low, 0.0)))
         return points[0], points[1], sag * (1.0 + 1e-9) + 1e-12, points[2]
@@ -201,18 +201,18 @@ class _Arcs:
         low, high = self.envelope[0, arc], self.envelope[1, arc]
         step = (high - low) / PARTS
         sag = self.radius * (1.0 - np.cos(0.5 * np.maximum(step, 0.0))) * (1.0 + 1e-9) + 1e-12
-        centre, d, w = self.centre[arc], self.d[arc], self.w[arc]
+        centre, d, w = (rows(part, arc) for part in (self.centre, self.d, self.w))
         ends = [centre + self.radius * (np.sin(t)[:, None] * d - np.cos(t)[:, None] * w)
                 for t in (low + j * step for j in range(PARTS + 1))]
         near = np.zeros(seg.size, dtype=bool)
         for j in range(PARTS):
-            rows = np.flatnonzero(~near)
-            if rows.size == 0:
+            open_ = np.flatnonzero(~near)
+            if open_.size == 0:
                 break
-            at = owner[rows]
-            grown = sag[at] if slack is None else sag[at] + slack[rows]
-            near[rows] = _close(np.take(ends[j], at, axis=0), np.take(ends[j + 1], at, axis=0), grown,
-                                tuple(h[rows] for h in hulls), None if lean is None else lean[rows])
+            at = owner[open_]
+            grown = sag[at] if slack is None else sag[at] + slack[open_]
+            near[open_] = _close(rows(ends[j], at), rows(ends[j + 1], at), grown,
+                                 tuple(rows(h, open_) for h in hulls), None if lean is None else lean[open_])
         return near
 
     def spheres(self, live, first):
@@ -225,7 +225,7 @@ class _Arcs:
         high = np.maximum.reduceat(self.envelope[1, live], first)
         owner = np.repeat(np.arange(first.size), count)
         step = (high - low) / PARTS
-        centre, d, w = self.centre[live], self.d[live], self.w[live]
+        centre, d, w = (rows(part, live) for part in (self.centre, self.d, self.w))
         ends = [centre + self.radius * (np.sin(t)[:, None] * d - np.cos(t)[:, None] * w)
                 for t in ((low + j * step)[owner] for j in range(PARTS + 1))]
         middle, size = np.zeros((first.size, PARTS, 3)), np.zeros((first.size, PARTS))
@@ -241,7 +241,7 @@ class _Arcs:
     def plan(self, seg, level, index, pieces):
         """(K,) bool: the pairs (arc seg, hull index at `level`) the plan view decides (inprocess_plan.arc_kinds)."""
         tool = (np.full(seg.size, self.big), np.full(seg.size, self.radius))
-        below, at, steady, above = arc_kinds(self.tip[seg], self.w[seg], *tool, *pieces.hulls(level, index),
+        below, at, steady, above = arc_kinds(rows(self.tip, seg), rows(self.w, seg), *tool, *pieces.hulls(level, index),
                                              pieces.corners(level, index))
         return below | at | steady | above
 
@@ -259,8 +259,9 @@ class _Arcs:
         for begin in range(0, seg.size, PAIR_BATCH):
             s, q = seg[begin:begin + PAIR_BATCH], index[begin:begin + PAIR_BATCH]
             full = [np.full(s.size, v) for v in (self.big, self.radius, self.top)]
-            pair, start, end = arc_piece_intervals(self.tip[s], self.d[s], self.w[s], self.centre[s], *full,
-                                                   *pieces.hulls(level, q), pieces.corners(level, q), arc=s)
+            arc = (rows(part, s) for part in (self.tip, self.d, self.w, self.centre))
+            pair, start, end = arc_piece_intervals(*arc, *full, *pieces.hulls(level, q), pieces.corners(level, q),
+                                                   arc=s)
             owner = s[pair]
             overlap = (np.minimum(end, self.envelope[3, owner]) - np.maximum(start, self.envelope[2, owner]))
             hit = overlap * self.radius > LENGTH_EPS

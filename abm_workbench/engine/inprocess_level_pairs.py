@@ -26,7 +26,7 @@ import numpy as np
 
 from .inprocess_cover import narrow, run_starts
 from .inprocess_plan import arc_kinds, arc_piece_intervals, piece_line_interval
-from .swept import clamp, row_dot
+from .swept import clamp, kept, row_dot, rows
 from .tolerances import LENGTH_EPS
 
 #: Edges per group (consecutive rows, the angles of a CL point): a group's candidate pieces are searched once.
@@ -40,10 +40,9 @@ MARGIN = 1e-7
 def expand(owner, start, count):
     """(owner, position) (Σ count,): for each owner (n,), the positions start … start + count − 1."""
     count = np.maximum(count, 0)
-    mine = np.repeat(np.arange(owner.size), count)
     # Each owner's start less the number of positions before its own: plus the running index, its positions.
     shift = start - (np.cumsum(count) - count)
-    return owner[mine], shift[mine] + np.arange(mine.size)
+    return np.repeat(owner, count), np.repeat(shift, count) + np.arange(int(count.sum()))
 
 
 def norm(x, y):
@@ -110,27 +109,27 @@ def near_chains(view, group, k, a, b, reach, before):
     key = group * view.z.size + k
     order = np.argsort(key, kind="stable")
     head, count = run_starts(key[order])
-    low = np.minimum.reduceat(np.minimum(a, b)[order], head)
-    high = np.maximum.reduceat(np.maximum(a, b)[order], head)
+    low = np.minimum.reduceat(rows(np.minimum(a, b), order), head)
+    high = np.maximum.reduceat(rows(np.maximum(a, b), order), head)
     middle = 0.5 * (low + high)
-    wide = np.maximum.reduceat(reach[order], head) + 0.5 * np.hypot(*(high - low).T)
-    latest = np.maximum.reduceat(before[order], head)
-    owner, chain = view.near_chains(np.arange(head.size), k[order][head], low, high, latest)
-    keep = plan_distance(middle[owner], view.chain_a[chain], view.chain_b[chain]) - view.chain_slack[chain] \
-        <= wide[owner] + MARGIN
-    owner, chain = owner[keep], chain[keep]
+    wide = np.maximum.reduceat(rows(reach, order), head) + 0.5 * np.hypot(*(high - low).T)
+    latest = np.maximum.reduceat(rows(before, order), head)
+    owner, chain = view.near_chains(np.arange(head.size), rows(rows(k, order), head), low, high, latest)
+    keep = plan_distance(rows(middle, owner), rows(view.chain_a, chain), rows(view.chain_b, chain)) \
+        - rows(view.chain_slack, chain) <= rows(wide, owner) + MARGIN
+    owner, chain = kept(keep, owner, chain)
     # Each group's chains, handed to each of its queries.
     first = np.searchsorted(owner, np.arange(head.size))
     total = np.bincount(owner, minlength=head.size)
     of = np.empty(key.size, dtype=np.intp)
     of[order] = np.repeat(np.arange(head.size), count)
-    query, at = expand(np.arange(key.size), first[of], total[of])
-    chain = chain[at]
-    aq = a[query]
-    distance = segment_distance(aq, aq if a is b else b[query], view.chain_a[chain], view.chain_b[chain])
-    slack = view.chain_slack[chain]
-    keep = distance - slack <= reach[query] + MARGIN
-    return query[keep], chain[keep], (distance - slack)[keep], (distance + slack)[keep]
+    query, at = expand(np.arange(key.size), rows(first, of), rows(total, of))
+    chain = rows(chain, at)
+    aq = rows(a, query)
+    distance = segment_distance(aq, aq if a is b else rows(b, query), rows(view.chain_a, chain),
+                                rows(view.chain_b, chain))
+    slack = rows(view.chain_slack, chain)
+    return kept(distance - slack <= rows(reach, query) + MARGIN, query, chain, distance - slack, distance + slack)
 
 
 def _least(query, value, size):
@@ -151,19 +150,18 @@ def nearest_pieces(view, group, k, at, bound, before, exact):
     cannot come that near are dropped (a chain or quarter ending by then bounds the least by its distance plus its
     slack)."""
     query, chain, low, high = near_chains(view, group, k, at, at, bound, before)
-    done = exact[query] & (view.chain_last_move[chain] <= before[query])
+    done = rows(exact, query) & (rows(view.chain_last_move, chain) <= rows(before, query))
     best = np.minimum(bound, _least(query, np.where(done, high, np.inf), bound.size))
-    keep = low <= best[query] + 2.0 * MARGIN
-    query, quarter, low = view.quarters_near(query[keep], chain[keep], at, at, bound, before)
-    done = exact[query] & (view.quarter_last_move[quarter] <= before[query])
-    best = np.minimum(best, _least(query, np.where(done, low + 2.0 * view.quarter_slack[quarter], np.inf),
+    query, chain = kept(low <= rows(best, query) + 2.0 * MARGIN, query, chain)
+    query, quarter, low = view.quarters_near(query, chain, at, at, bound, before)
+    done = rows(exact, query) & (rows(view.quarter_last_move, quarter) <= rows(before, query))
+    best = np.minimum(best, _least(query, np.where(done, low + 2.0 * rows(view.quarter_slack, quarter), np.inf),
                                    bound.size))
-    keep = low <= best[query] + 2.0 * MARGIN
-    query, piece = view.quarter_pieces(query[keep], quarter[keep], before)
-    gap = plan_distance(at[query], view.a[piece], view.b[piece])
-    best = np.minimum(best, _least(query, np.where(exact[query], gap, np.inf), bound.size))
-    keep = gap <= best[query] + 2.0 * MARGIN
-    return query[keep], piece[keep]
+    query, quarter = kept(low <= rows(best, query) + 2.0 * MARGIN, query, quarter)
+    query, piece = view.quarter_pieces(query, quarter, before)
+    gap = plan_distance(rows(at, query), rows(view.a, piece), rows(view.b, piece))
+    best = np.minimum(best, _least(query, np.where(rows(exact, query), gap, np.inf), bound.size))
+    return kept(gap <= rows(best, query) + 2.0 * MARGIN, query, piece)
 
 
 def _first_least(key, value):
@@ -196,47 +194,45 @@ def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
     def left(q):
         """The rows of q (K,) (grouped by query) whose query has material left, and each one's segment (a, b) and
         reach, each query's taken once."""
-        edge = owner[q]
-        keep = np.flatnonzero(envelope[0, edge] < envelope[1, edge])
-        first, many = run_starts(q[keep])
-        one = keep[first]
-        a, b, reach = segment(q[one], envelope[0, edge[one]], envelope[1, edge[one]])
+        edge = rows(owner, q)
+        keep = np.flatnonzero(rows(envelope[0], edge) < rows(envelope[1], edge))
+        first, many = run_starts(rows(q, keep))
+        one = rows(keep, first)
+        edge = rows(edge, one)
+        a, b, reach = segment(rows(q, one), rows(envelope[0], edge), rows(envelope[1], edge))
         mine = np.repeat(np.arange(first.size), many)
-        return keep, a[mine], b[mine], reach[mine]
+        return keep, rows(a, mine), rows(b, mine), rows(reach, mine)
 
     def solved(parts):
         q = np.concatenate([part[0] for part in parts])
         found.append(solve(q, tuple(np.concatenate(h) for h in zip(*(part[1] for part in parts)))))
-        narrow(envelope, owner[found[-1][0]], *found[-1][1:])
+        narrow(envelope, rows(owner, found[-1][0]), *found[-1][1:])
 
     head, count = run_starts(query)
     rank = np.arange(query.size) - np.repeat(head, count)
     done, size = 0, 1
     while done < count.max():
-        take = (rank >= done) & (rank < done + size)
-        q, qu = query[take], quarter[take]
+        q, qu = kept((rank >= done) & (rank < done + size), query, quarter)
         keep, a, b, reach = left(q)
-        q, qu = q[keep], qu[keep]
-        keep = segment_distance(a, b, view.quarter_a[qu], view.quarter_b[qu]) - view.quarter_slack[qu] \
-            <= reach + MARGIN
-        q, qu, a, b, reach = q[keep], qu[keep], a[keep], b[keep], reach[keep]
-        straight = (view.quarter_slack[qu] == 0.0) & (view.quarter_last_move[qu] <= before[q])
+        q, qu = rows(q, keep), rows(qu, keep)
+        slack = rows(view.quarter_slack, qu)
+        keep = segment_distance(a, b, rows(view.quarter_a, qu), rows(view.quarter_b, qu)) - slack <= reach + MARGIN
+        q, qu, a, b, reach, slack = kept(keep, q, qu, a, b, reach, slack)
+        straight = (slack == 0.0) & (rows(view.quarter_last_move, qu) <= rows(before, q))
         parts = [(q[straight], view.quarter_hulls(qu[straight]))]
         bent = np.flatnonzero(~straight)
-        row, pc = view.quarter_pieces(bent, qu[bent], before[q])  # (the segments are the quarters' rows')
-        keep = pc != skip[q[row]]
-        row, pc = row[keep], pc[keep]
-        gap = segment_distance(a[row], b[row], view.a[pc], view.b[pc])
-        keep = gap <= reach[row] + MARGIN
-        pq, pc, gap = q[row[keep]], pc[keep], gap[keep]
+        row, pc = view.quarter_pieces(bent, rows(qu, bent), rows(before, q))  # (the segments are the quarters')
+        row, pc = kept(pc != rows(skip, rows(q, row)), row, pc)
+        gap = segment_distance(rows(a, row), rows(b, row), rows(view.a, pc), rows(view.b, pc))
+        pq, pc, gap = kept(gap <= rows(reach, row) + MARGIN, rows(q, row), pc, gap)
         # Of each query's pieces the nearest first (at an arc's last point the deepest, most often the one that
         # removes most); the others only where they still come within reach of what is left after it.
         lead = _first_least(pq, gap)
         solved(parts + [(pq[lead], view.piece_hulls(pc[lead]))])
-        pq, pc = pq[~lead], pc[~lead]
+        pq, pc = kept(~lead, pq, pc)
         keep, a, b, reach = left(pq)
-        pq, pc = pq[keep], pc[keep]
-        keep = segment_distance(a, b, view.a[pc], view.b[pc]) <= reach + MARGIN
+        pq, pc = rows(pq, keep), rows(pc, keep)
+        keep = segment_distance(a, b, rows(view.a, pc), rows(view.b, pc)) <= reach + MARGIN
         solved([(pq[keep], view.piece_hulls(pc[keep]))])
         done, size = done + size, 2 * size
     return found
@@ -246,14 +242,14 @@ def _hits(query, enter, leave, lo, hi, scale=1.0):
     """(query, enter, leave) of the removals that overlap lo … hi (per query) by more than LENGTH_EPS (in mm: the
     overlap times scale)."""
     with np.errstate(invalid="ignore"):
-        hit = (np.minimum(leave, hi[query]) - np.maximum(enter, lo[query])) * scale > LENGTH_EPS
-    return query[hit], enter[hit], leave[hit]
+        hit = (np.minimum(leave, rows(hi, query)) - np.maximum(enter, rows(lo, query))) * scale > LENGTH_EPS
+    return kept(hit, query, enter, leave)
 
 
 def _line_pairs(line, hulls, origin, direction):
     """(enter, leave) of lines (indices into origin, direction) in hulls (c0, c1, axis, radius, height, corner: the
     earlier tools', inprocess_plan.piece_line_interval)."""
-    return piece_line_interval(origin[line], direction[line], *hulls)
+    return piece_line_interval(rows(origin, line), rows(direction, line), *hulls)
 
 
 def sides(view, line, k, group, origin, direction, plan, before):
@@ -267,7 +263,7 @@ def sides(view, line, k, group, origin, direction, plan, before):
     tool's radius, the interval from the corner's top up (inside it wherever the nearest piece's corner starts);
     and any other line the pieces within 2·MARGIN of its nearest (nearest_pieces): every other piece's interval
     lies inside theirs. In other levels each piece within the level tool's radius gives its own."""
-    at = plan[line]
+    at = rows(plan, line)
     fast = view.aligned & view.exact[k]
     alone = np.where(fast, view.held(line, k, at, before[line]), -1)
     one = np.flatnonzero(alone >= 0)
@@ -277,10 +273,10 @@ def sides(view, line, k, group, origin, direction, plan, before):
     # radius R at every height: a chain holding its cell within R removes it from the corner's top up, wherever the
     # nearest piece's corner would start its removal (lower). Its material lies at l ≥ 0 (from the origin up).
     full = np.flatnonzero(fast & (alone < 0))
-    chain = view.held(line[full], k[full], at[full], before[line[full]], full=True)
-    full, chain = full[chain >= 0], chain[chain >= 0]
+    chain = view.held(line[full], k[full], rows(at, full), before[line[full]], full=True)
+    full, chain = kept(chain >= 0, full, chain)
     first = view.chain_piece[view.chain_start[chain]]
-    lift = row_dot(origin[line[full]] - c0[first], axis[first])
+    lift = row_dot(rows(origin, line[full]) - rows(c0, first), rows(axis, first))
     above = lift >= view.rc[k[full]]
     full, first, lift = full[above], first[above], lift[above]
     alone[full] = -2
@@ -289,18 +285,18 @@ def sides(view, line, k, group, origin, direction, plan, before):
     previous = np.where(alone == -1, view.previous(k, before[line]), -1)
     has = np.flatnonzero(previous >= 0)
     bound = view.r[k]
-    gap = plan_distance(at[has], view.a[previous[has]], view.b[previous[has]])
+    gap = plan_distance(rows(at, has), rows(view.a, previous[has]), rows(view.b, previous[has]))
     bound[has] = np.where(fast[has], np.minimum(bound[has], gap + 2.0 * MARGIN), bound[has])
     inner = has[fast[has] & (gap < view.rim_of(previous[has]) - MARGIN)]
     rest = np.flatnonzero(alone == -1)
     rest = rest[~np.isin(rest, inner)]
-    query, piece = nearest_pieces(view, group[line[rest]], k[rest], at[rest], bound[rest], before[line[rest]],
+    query, piece = nearest_pieces(view, group[line[rest]], k[rest], rows(at, rest), bound[rest], before[line[rest]],
                                   fast[rest])
     solved = np.concatenate([line[inner], line[rest[query]]])
     enter, leave = _line_pairs(solved, view.piece_hulls(np.concatenate([previous[inner], piece])), origin, direction)
     # Held within the rim in a level exact on a coordinate axis: the closed form's interval of its nearest piece,
     # lift 0 (inprocess_plan._side_in_move), from any piece of the level (all give the same heights).
-    up = row_dot(origin[line[one]] - c0[held], axis[held])
+    up = row_dot(rows(origin, line[one]) - rows(c0, held), rows(axis, held))
     return (np.concatenate([line[one], line[full], solved]),
             np.concatenate([0.0 - up, view.rc[k[full]] - lift, enter]),
             np.concatenate([height[held] - up, height[first] - lift, leave]))
@@ -319,14 +315,16 @@ def ends(view, origin, direction, lo, hi, before, group):
     line, k, h = view.levels_holding(origin, before)
     exact = view.aligned & view.exact[k]
     reach = np.where(exact, view.earlier_radius(k, h), view.r[k])
+    material = rows(lo, line), rows(hi, line)
 
     def solve(q, hulls):
-        enter, leave = _line_pairs(line[q], hulls, origin, direction)
-        return _hits(q, enter, leave, lo[line], hi[line])
+        enter, leave = _line_pairs(rows(line, q), hulls, origin, direction)
+        return _hits(q, enter, leave, *material)
 
     def segment(q, start, end):
-        at = line[q]
-        return plan[at] + start[:, None] * toward[at], plan[at] + end[:, None] * toward[at], reach[q]
+        at = rows(line, q)
+        plan_at, toward_at = rows(plan, at), rows(toward, at)
+        return plan_at + start[:, None] * toward_at, plan_at + end[:, None] * toward_at, rows(reach, q)
 
     found = _nearest_first(view, line, k, np.abs(h), group[line], before[line], np.stack([lo, hi]), solve, segment)
     return tuple(np.concatenate(part) for part in zip(none, *((line[q], e, x) for q, e, x in found)))
@@ -347,19 +345,22 @@ def _nearest_first(view, line, k, far, group, before, envelope, solve, segment):
     previous = view.previous(k, before)
     found = []
     for r in range(int(count.max()) if count.size else 0):
-        mine = np.flatnonzero((rank == r) & (envelope[0, line] < envelope[1, line]))
-        first = mine[previous[mine] >= 0]
-        found.append(solve(first, view.piece_hulls(previous[first])))
-        narrow(envelope, line[found[-1][0]], *found[-1][1:])
-        left = mine[envelope[0, line[mine]] < envelope[1, line[mine]]]
-        a, b, reach = segment(left, envelope[0, line[left]], envelope[1, line[left]])
+        mine = np.flatnonzero((rank == r) & (rows(envelope[0], line) < rows(envelope[1], line)))
+        first = rows(mine, np.flatnonzero(rows(previous, mine) >= 0))
+        found.append(solve(first, view.piece_hulls(rows(previous, first))))
+        narrow(envelope, rows(line, found[-1][0]), *found[-1][1:])
+        edge = rows(line, mine)
+        left = rows(mine, np.flatnonzero(rows(envelope[0], edge) < rows(envelope[1], edge)))
+        edge = rows(line, left)
+        a, b, reach = segment(left, rows(envelope[0], edge), rows(envelope[1], edge))
         # What is left of an edge outside the level's heights (reach −inf): no piece of the level reaches it.
-        live = reach > -np.inf
-        left, a, b, reach = left[live], a[live], b[live], reach[live]
-        query, chain, _, _ = near_chains(view, group[left], k[left], a, b, reach, before[left])
-        query, quarter, low = view.quarters_near(query, chain, a, b, reach, before[left])
+        left, a, b, reach = kept(reach > -np.inf, left, a, b, reach)
+        mine = rows(before, left)
+        query, chain, _, _ = near_chains(view, rows(group, left), rows(k, left), a, b, reach, mine)
+        query, quarter, low = view.quarters_near(query, chain, a, b, reach, mine)
         order = np.lexsort((low, query))
-        found += rounds(view, left[query[order]], quarter[order], line, envelope, solve, segment, before, previous)
+        found += rounds(view, rows(left, rows(query, order)), rows(quarter, order), line, envelope, solve, segment,
+                        before, previous)
     return found
 
 
@@ -394,28 +395,32 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
     # earlier tool's radius at the point's height grows at least as fast, so a piece that removes something of a
     # part of the arc holds its last point (docs/ENGINE.md, "The level view for tools with a corner").
     same = view.aligned & view.exact[k] & (view.r[k] == big) & (view.rc[k] == radius) & (rise >= 0.0)
+    material = rows(lo, line), rows(hi, line)
 
     def segment(q, start, end):
-        at = line[q]
+        at = rows(line, q)
         # What is left of the arc outside the level's heights: no piece of the level reaches it.
-        outside = (end < first[q]) | (start > last[q])
-        start, end = clamp(start, first[q], last[q]), clamp(end, first[q], last[q])
-        b = plan[at] + (rim + radius * np.sin(end))[:, None] * toward[at]
+        low, high = rows(first, q), rows(last, q)
+        outside = (end < low) | (start > high)
+        start, end = clamp(start, low, high), clamp(end, low, high)
+        plan_at, toward_at = rows(plan, at), rows(toward, at)
+        b = plan_at + (rim + radius * np.sin(end))[:, None] * toward_at
         # Of an arc against the same tool, its last point alone (a = b), within the earlier radius there.
-        tight = same[q]
+        tight = rows(same, q)
         a, wide = b.copy(), np.flatnonzero(~tight)
-        a[wide] = plan[at[wide]] + (rim + radius * np.sin(start[wide]))[:, None] * toward[at[wide]]
-        near = reach[q]
+        a[wide] = rows(plan_at, wide) + (rim + radius * np.sin(rows(start, wide)))[:, None] * rows(toward_at, wide)
+        near = rows(reach, q)
         point = np.flatnonzero(tight)
-        mine = q[point]
-        near[point] = view.earlier_radius(k[mine], radius * (1.0 - np.cos(end[point])) - rise[mine] + MARGIN) + MARGIN
+        mine = rows(q, point)
+        near[point] = view.earlier_radius(rows(k, mine), radius * (1.0 - np.cos(rows(end, point)))
+                                          - rows(rise, mine) + MARGIN) + MARGIN
         near[outside] = -np.inf
         return a, b, near
 
     tool = (np.full(tip.shape[0], big), np.full(tip.shape[0], radius), np.full(tip.shape[0], top))
 
     def solve(q, hulls):
-        at = line[q]
+        at = rows(line, q)
         kinds = None
         if screen is not None:
             kinds = arc_kinds(tip[at], w[at], *(part[at] for part in tool[:2]), *hulls)
@@ -426,9 +431,9 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
                                        envelope[1, at[general]])
                 q, at = q[keep], at[keep]
                 hulls, kinds = (tuple(part[keep] for part in parts) for parts in (hulls, kinds))
-        pair, start, end = arc_piece_intervals(tip[at], d[at], w[at], centre[at], *(part[at] for part in tool),
-                                               *hulls, arc=at, kinds=kinds)
-        return _hits(q[pair], start, end, lo[line], hi[line], radius)
+        pair, start, end = arc_piece_intervals(rows(tip, at), rows(d, at), rows(w, at), rows(centre, at),
+                                               *(rows(part, at) for part in tool), *hulls, arc=at, kinds=kinds)
+        return _hits(rows(q, pair), start, end, *material, radius)
 
     envelope = np.stack([lo, hi])
     far = np.abs(view.z[k] - row_dot(tip, np.broadcast_to(view.w, tip.shape))[line])

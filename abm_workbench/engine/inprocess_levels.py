@@ -33,7 +33,7 @@ import numpy as np
 
 from .inprocess_level_pairs import MARGIN, expand, plan_distance, segment_distance, sides
 from .inprocess_plan import earlier_radius
-from .swept import clamp, every_column, line_hull_interval, row_dot
+from .swept import clamp, every_column, kept, line_hull_interval, row_dot, rows
 from .tolerances import LENGTH_EPS
 
 #: Moves of one level (axis, z, H) at least for it to get a grid; the others stay with the general search.
@@ -372,15 +372,17 @@ class LevelView:
 
     def piece_hulls(self, piece):
         """(c0, c1, axis, radius, height, corner) of the pieces (K,) (each (K, 3) or (K,))."""
-        return tuple(part[piece] for part in self.hull) + (self.corner[piece],)
+        return tuple(rows(part, piece) for part in self.hull) + (rows(self.corner, piece),)
 
     def quarter_hulls(self, quarter):
         """(c0, c1, axis, radius, height, corner) of one hull per quarter (K,): from its first piece's start to its
         last piece's end, with its first piece's tool (the union of its pieces where these run along its chord)."""
-        first = self.chain_piece[self.quarter_start[quarter]]
-        last = self.chain_piece[self.quarter_start[quarter] + self.quarter_count[quarter] - 1]
+        start = rows(self.quarter_start, quarter)
+        first = rows(self.chain_piece, start)
+        last = rows(self.chain_piece, start + rows(self.quarter_count, quarter) - 1)
         c0, c1, axis, radius, height = self.hull
-        return c0[first], c1[last], axis[first], radius[first], height[first], self.corner[first]
+        return (rows(c0, first), rows(c1, last), rows(axis, first), rows(radius, first), rows(height, first),
+                rows(self.corner, first))
 
     def rim_of(self, piece):
         """(K,) the rim (radius less corner radius: where the tool's bottom is flat) of the tools of pieces (K,)."""
@@ -393,21 +395,22 @@ class LevelView:
     def held(self, line, k, at, before, full=False):
         """(K,) the chain that holds the whole grid cell of the plan points at (K, 2) in level k within its rim (within
         its radius if full) and ends by program row before (K,), or −1."""
-        cell_xy = np.floor((at - self.origin[k]) / self.size[k][:, None])
-        inside = every_column((cell_xy >= 0) & (cell_xy < self.shape[k]))
+        shape = rows(self.shape, k)
+        cell_xy = np.floor((at - rows(self.origin, k)) / rows(self.size, k)[:, None])
+        inside = every_column((cell_xy >= 0) & (cell_xy < shape))
         cell_xy = np.where(inside[:, None], cell_xy, 0).astype(np.int64)
-        cell = self.offset[k] + cell_xy[:, 1] * self.shape[k, 0] + cell_xy[:, 0]
+        cell = rows(self.offset, k) + cell_xy[:, 1] * shape[:, 0] + cell_xy[:, 0]
         move, chain = (self.full_move, self.full_chain) if full else (self.whole_move, self.whole_chain)
-        return np.where(inside & (move[cell] <= before), chain[cell], -1)
+        return np.where(inside & (rows(move, cell) <= before), rows(chain, cell), -1)
 
     def near_chains(self, query, k, a, b, before):
         """(owner, chain) (K,): for the queries `query` (Q,, indices into k, a, b, before), the chains of level k[q]
         begun by program row before[q] that the grid lists in the cells of the bounding box of a[q] … b[q] ((N, 2)
         plan points; every chain with a piece within its radius of a point of that box), each once per query."""
-        kq = k[query]
-        size = self.size[kq][:, None]
-        shape = self.shape[kq]
-        aq, bq = a[query], b[query]
+        kq = rows(k, query)
+        size = rows(self.size, kq)[:, None]
+        shape = rows(self.shape, kq)
+        aq, bq = rows(a, query), rows(b, query)
         low = clamp(np.floor((np.minimum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
         high = clamp(np.floor((np.maximum(aq, bq) - self.origin[kq]) / size), -1.0, shape).astype(np.int64)
         meets = every_column((high >= 0) & (low < shape))
@@ -415,13 +418,15 @@ class LevelView:
         span = np.where(meets[:, None], high - low + 1, 0)
         count = span[:, 0] * span[:, 1]
         where, rank = expand(np.arange(query.size), np.zeros(query.size, dtype=np.intp), count)
-        ix = low[where, 0] + rank % span[where, 0]
-        iy = low[where, 1] + rank // span[where, 0]
-        cell = self.offset[kq[where]] + iy * shape[where, 0] + ix
-        owner = query[where]
-        stop = np.searchsorted(self.key, cell * self.scale + before[owner], side="right")
-        owner, entry = expand(owner, self.start[cell], stop - self.start[cell])
-        chain = self.entry_chain[entry]
+        low, span, shape = rows(low, where), rows(span[:, 0], where), rows(shape[:, 0], where)
+        ix = low[:, 0] + rank % span
+        iy = low[:, 1] + rank // span
+        cell = rows(self.offset, rows(kq, where)) + iy * shape + ix
+        owner = rows(query, where)
+        stop = np.searchsorted(self.key, cell * self.scale + rows(before, owner), side="right")
+        start = rows(self.start, cell)
+        owner, entry = expand(owner, start, stop - start)
+        chain = rows(self.entry_chain, entry)
         if count.size and count.max() > 1:  # a chain listed in several cells of a query once
             chains = self.chain_start.size
             pair = np.unique(owner * chains + chain)
@@ -432,21 +437,19 @@ class LevelView:
         """(owner, quarter, low) (K,): the quarters of the chains `chain` (K,) begun by program row before[owner] whose
         chords lie within reach[owner] + slack + MARGIN of the plan segments a … b[owner] ((Q, 2); owner indexes the
         queries' arrays), and low: that distance less the slack (no piece of the quarter is nearer)."""
-        owner, quarter = expand(owner, self.chain_quarter[chain], self.chain_quarters[chain])
-        keep = self.quarter_first_move[quarter] <= before[owner]
-        owner, quarter = owner[keep], quarter[keep]
-        ao = a[owner]
-        low = segment_distance(ao, ao if a is b else b[owner], self.quarter_a[quarter], self.quarter_b[quarter])
-        low -= self.quarter_slack[quarter]
-        keep = low <= reach[owner] + MARGIN
-        return owner[keep], quarter[keep], low[keep]
+        owner, quarter = expand(owner, rows(self.chain_quarter, chain), rows(self.chain_quarters, chain))
+        owner, quarter = kept(rows(self.quarter_first_move, quarter) <= rows(before, owner), owner, quarter)
+        ao = rows(a, owner)
+        low = segment_distance(ao, ao if a is b else rows(b, owner), rows(self.quarter_a, quarter),
+                               rows(self.quarter_b, quarter))
+        low -= rows(self.quarter_slack, quarter)
+        return kept(low <= rows(reach, owner) + MARGIN, owner, quarter, low)
 
     def quarter_pieces(self, owner, quarter, before):
         """(owner, piece) (K,): the pieces of the quarters (K,) of program row at most before[owner]."""
-        owner, at = expand(owner, self.quarter_start[quarter], self.quarter_count[quarter])
-        piece = self.chain_piece[at]
-        keep = self.move[piece] <= before[owner]
-        return owner[keep], piece[keep]
+        owner, at = expand(owner, rows(self.quarter_start, quarter), rows(self.quarter_count, quarter))
+        piece = rows(self.chain_piece, at)
+        return kept(rows(self.move, piece) <= rows(before, owner), owner, piece)
 
     def _begun(self, k, before):
         """(K,) for each level index k (K,) the first level at or after it begun by program row before (K,)

@@ -33,7 +33,7 @@ import numpy as np
 from .inprocess_arc import COINCIDENT, arc_swept_intervals
 from .inprocess_cover import run_starts
 from .inprocess_swept import line_swept_interval
-from .swept import clamp, every_column, line_hull_interval, row_dot
+from .swept import clamp, every_column, line_hull_interval, row_cross, row_dot, rows
 
 
 def _noise(*vectors, size):
@@ -57,7 +57,7 @@ def _frame(m, axis):
     length = np.sqrt(row_dot(m, m))
     safe = np.where(length > 0.0, length, 1.0)
     u = m / safe[:, None]
-    n = np.cross(axis, u)
+    n = row_cross(axis, u)
     return u, n, length
 
 
@@ -121,24 +121,31 @@ def arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p
     below, level_arc, steady, above = arc_kinds(tip, axis, big, corner, c0, c1, p_axis, p_big, p_height, p_corner) \
         if kinds is None else kinds
     start, end = np.full(tip.shape[0], np.nan), np.full(tip.shape[0], np.nan)
-    rows = np.flatnonzero(above)
-    if rows.size:
-        q = tip[rows] - c0[rows]
-        rise = -row_dot(q, axis[rows])
-        start[rows], end[rows] = _arc_above(q + rise[:, None] * axis[rows], rise, c1[rows] - c0[rows], d[rows],
-                                            big[rows], corner[rows], top[rows], None if arc is None else arc[rows])
-    rows = np.flatnonzero(level_arc)
-    if rows.size:
-        start[rows], end[rows] = _arc_in_level(tip[rows] - c0[rows], c1[rows] - c0[rows], d[rows], axis[rows],
-                                               big[rows], corner[rows], top[rows])
-    rows = np.flatnonzero(steady)
-    if rows.size:
-        q = tip[rows] - c0[rows]
-        level = row_dot(q, axis[rows])
-        start[rows], end[rows] = _arc_in_cylinder(q - level[:, None] * axis[rows], level, c1[rows] - c0[rows],
-                                                  d[rows], axis[rows], big[rows], corner[rows], top[rows],
-                                                  p_big[rows], p_height[rows])
+    for kind, solve in ((above, _above_pairs), (level_arc, _level_pairs), (steady, _steady_pairs)):
+        at = np.flatnonzero(kind)
+        if at.size:
+            c0_at = rows(c0, at)
+            start[at], end[at] = solve(rows(tip, at) - c0_at, rows(c1, at) - c0_at, *(
+                rows(part, at) for part in (d, axis, big, corner, top, p_big, p_height)),
+                None if arc is None else rows(arc, at))
     return below | level_arc | steady | above, start, end
+
+
+def _above_pairs(q, m, d, axis, big, corner, top, p_big, p_height, arc):
+    """_arc_above of arc_level_intervals' pairs above (q: the tip from c0, m the move; the others as there)."""
+    rise = -row_dot(q, axis)
+    return _arc_above(q + rise[:, None] * axis, rise, m, d, big, corner, top, arc)
+
+
+def _level_pairs(q, m, d, axis, big, corner, top, p_big, p_height, arc):
+    """_arc_in_level of arc_level_intervals' pairs at their level (arguments as _above_pairs)."""
+    return _arc_in_level(q, m, d, axis, big, corner, top)
+
+
+def _steady_pairs(q, m, d, axis, big, corner, top, p_big, p_height, arc):
+    """_arc_in_cylinder of arc_level_intervals' steady pairs (arguments as _above_pairs)."""
+    level = row_dot(q, axis)
+    return _arc_in_cylinder(q - level[:, None] * axis, level, m, d, axis, big, corner, top, p_big, p_height)
 
 
 def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner,
@@ -152,11 +159,11 @@ def arc_piece_intervals(tip, d, axis, centre, big, corner, top, c0, c1, p_axis, 
     plan, start, end = arc_level_intervals(tip, d, axis, big, corner, top, c0, c1, p_axis, p_big, p_height, p_corner,
                                            arc, kinds)
     pair = np.flatnonzero(plan & (end > start))
-    start, end = start[pair], end[pair]
+    start, end = rows(start, pair), rows(end, pair)
     rest = np.flatnonzero(~plan)
     if rest.size:
-        found = arc_swept_intervals(centre[rest], d[rest], axis[rest], corner[rest], np.zeros(rest.size), top[rest],
-                                    c0[rest], c1[rest], p_axis[rest], p_big[rest], p_height[rest], p_corner[rest])
+        found = arc_swept_intervals(*(rows(part, rest) for part in (centre, d, axis, corner)), np.zeros(rest.size),
+                                    *(rows(part, rest) for part in (top, c0, c1, p_axis, p_big, p_height, p_corner)))
         pair, start, end = np.r_[pair, rest[found[0]]], np.r_[start, found[1]], np.r_[end, found[2]]
     return pair, start, end
 
@@ -187,8 +194,8 @@ def _arc_above(g0, rise, m, d, big, corner, top, arc=None):
     length = row_dot(m, m)
     inverse = np.where(length > 0.0, 1.0 / np.where(length > 0.0, length, 1.0), 0.0)
 
-    def gather(rows):
-        return g0[rows], rim[rows], corner[rows], d[rows], m[rows], inverse[rows], rise[rows]
+    def gather(at):
+        return tuple(rows(part, at) for part in (g0, rim, corner, d, m, inverse, rise))
 
     def gap(psi, pairs):
         g0, rim, corner, d, m, inverse, rise = pairs
@@ -202,21 +209,21 @@ def _arc_above(g0, rise, m, d, big, corner, top, arc=None):
     first = np.minimum(np.arccos(clamp(1.0 - rise / corner, -1.0, 1.0)), top)
     at_top, at_first = gap(top, every), gap(first, every)
     start = np.where(at_first <= 0.0, first, top)
-    rows = np.flatnonzero((at_top <= 0.0) & (at_first > 0.0))
-    if arc is None or rows.size == 0:
-        _bracketed(gap, gather, rows, first, top, at_first, at_top, start)
+    open_ = np.flatnonzero((at_top <= 0.0) & (at_first > 0.0))
+    if arc is None or open_.size == 0:
+        _bracketed(gap, gather, open_, first, top, at_first, at_top, start)
     else:
-        key = arc[rows]
-        order = np.lexsort((at_top[rows], key))
-        lead = np.zeros(rows.size, dtype=bool)
+        key = arc[open_]
+        order = np.lexsort((at_top[open_], key))
+        lead = np.zeros(open_.size, dtype=bool)
         lead[order[run_starts(key[order])[0]]] = True
         least = np.full(arc.max() + 1, np.inf)
         whole = np.flatnonzero((at_top <= 0.0) & (at_first <= 0.0))
         np.minimum.at(least, arc[whole], first[whole])
         lead &= np.isinf(least[key])
-        _bracketed(gap, gather, rows[lead], first, top, at_first, at_top, start)
-        np.minimum.at(least, key[lead], start[rows[lead]])
-        rest = rows[~lead]
+        _bracketed(gap, gather, open_[lead], first, top, at_first, at_top, start)
+        np.minimum.at(least, key[lead], start[open_[lead]])
+        rest = open_[~lead]
         later = gap(least[arc[rest]], gather(rest)) > 0.0
         _bracketed(gap, gather, rest[~later], first, top, at_first, at_top, start)
         start[rest[later]] = np.nan

@@ -45,6 +45,30 @@ def every_column(x):
     return out
 
 
+def rows(table, index):
+    """table[index]: the rows index (K,) int of table (N, …), by ndarray.take, which numpy runs five to fifteen times
+    faster than indexing for (N, 2) and (N, 3) tables and about twice as fast for (N,) (nor is it dispatched)."""
+    return table.take(index, axis=0)
+
+
+def kept(mask, *arrays):
+    """(array[mask], …): the rows where mask (K,) bool holds of each array (K, …), by one nonzero and a take per array
+    (boolean indexing costs numpy several times that: about 6 ns a row where the mask is mixed)."""
+    index = mask.nonzero()[0]
+    return tuple(array.take(index, axis=0) for array in arrays)
+
+
+def row_cross(a, b):
+    """(P, 3): the cross products of the rows of a and b (P, 3), as np.cross computes them (each component one
+    difference of two rounded products: the same numbers), without its reshaping, several times slower on the
+    short arrays of the in-process searches."""
+    out = np.empty(np.broadcast_shapes(a.shape, b.shape))
+    out[:, 0] = a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1]
+    out[:, 1] = a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2]
+    out[:, 2] = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+    return out
+
+
 def row_dot(a, b):
     """Row-wise dot product of (P, 3) arrays: (P,), summed x, y, z in that order (column by
     column: two to three times faster than np.einsum on three columns)."""
