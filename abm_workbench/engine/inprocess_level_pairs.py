@@ -355,9 +355,9 @@ def _nearest_first(view, line, k, far, group, before, envelope, solve, segment):
         a, b, reach = segment(left, rows(envelope[0], edge), rows(envelope[1], edge))
         # What is left of an edge outside the level's heights (reach −inf): no piece of the level reaches it.
         left, a, b, reach = kept(reach > -np.inf, left, a, b, reach)
-        mine = rows(before, left)
-        query, chain, _, _ = near_chains(view, rows(group, left), rows(k, left), a, b, reach, mine)
-        query, quarter, low = view.quarters_near(query, chain, a, b, reach, mine)
+        latest = rows(before, left)
+        query, chain, _, _ = near_chains(view, rows(group, left), rows(k, left), a, b, reach, latest)
+        query, quarter, low = view.quarters_near(query, chain, a, b, reach, latest)
         order = np.lexsort((low, query))
         found += rounds(view, rows(left, rows(query, order)), rows(quarter, order), line, envelope, solve, segment,
                         before, previous)
