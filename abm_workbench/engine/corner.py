@@ -43,6 +43,7 @@ import numpy as np
 
 from .engagement import SURFACES
 from .intervals import EdgeIntervals
+from .ordering import group_order
 from .polynomials import guarded_root, horner, product
 from .terraced import merged_intervals, plan_crossings, side_changes
 from .terraced_pieces import bernstein_to_power, slab_pieces
@@ -271,7 +272,7 @@ def isolated_changes(degree, bernstein):
     rest = np.flatnonzero(unsettled)
     pair, at = side_changes(degree, bernstein[rest]) if rest.size else (np.zeros(0, dtype=np.intp), np.zeros(0))
     pair, at = np.concatenate([owner, rest[pair]]), np.concatenate([lo + width * local, at])
-    order = np.lexsort((at, pair))
+    order = group_order(at, pair)
     return pair[order], at[order]
 
 

@@ -20,6 +20,7 @@ import numpy as np
 from .allocator import keep_freed_memory
 from .arguments import check_arguments
 from .model import CutSettings, Staircase, Tool, Toolpath
+from .ordering import group_order
 from .polynomials import compose_columns, horner, monotone_root_unit, proved_monotone_unit, real_roots_unit
 from .rows import row_any, row_count, row_sum
 from .intervals import EdgeIntervals
@@ -493,7 +494,7 @@ def reversed_lines(intervals, which, length):
         (intervals.start_surface, intervals.end_surface), (intervals.start_section, intervals.end_section),
         (intervals.start_wall, intervals.end_wall), (intervals.end_surface, intervals.start_surface),
         (intervals.end_section, intervals.start_section), (intervals.end_wall, intervals.start_wall))]
-    order = np.lexsort((start, intervals.rows))
+    order = group_order(start, intervals.rows)
     return EdgeIntervals(intervals.n_rows, intervals.rows[order], start[order], end[order],
                          *(label[order] for label in labels))
 

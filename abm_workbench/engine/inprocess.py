@@ -32,6 +32,7 @@ from .inprocess_reach import capsule_spheres, group_capsules
 from .inprocess_touch import touching
 from .inprocess_plan import piece_line_interval
 from .intervals import EdgeIntervals
+from .ordering import group_order
 from .swept import FEASIBLE_EPS, clamp, every_column, line_hull_interval, row_dot
 from .swept import rows as _rows  # (this module names its rows of intervals `rows`)
 from .tolerances import LENGTH_EPS
@@ -1260,7 +1261,7 @@ class _Ranking:
     sorted once for rounds that each take the first few rows still open."""
 
     def __init__(self, owner, key):
-        self.order = np.lexsort((key, owner))
+        self.order = group_order(key, owner)
         ranked = owner[self.order]
         self.start, self.count = run_starts(ranked)
 
@@ -1395,7 +1396,7 @@ def subtract(stock: EdgeIntervals, rows, enter, leave):
     ev_pos = np.concatenate([stock.end[edit], enter, leave, stock.start[edit]])
     ev_kind = np.repeat(np.arange(4), [k, r, r, k])
     ev_source = np.concatenate([edit, np.full(2 * r, -1), edit])
-    order = np.lexsort((ev_pos, ev_row))
+    order = group_order(ev_pos, ev_row)
     ev_row, ev_pos, ev_kind, ev_source = ev_row[order], ev_pos[order], ev_kind[order], ev_source[order]
     # Kinds 0 … 3: stock end, removal start, removal end, stock start.
     in_stock = np.cumsum(np.array([-1, 0, 0, 1])[ev_kind])

@@ -35,6 +35,7 @@ Shapes: K (arc, piece) pairs, (K, 3) vectors and (K,) numbers; ψ in radians; le
 import numpy as np
 
 from .inprocess_swept import monotone_root, swept_gauge
+from .ordering import group_order
 from .swept import row_dot
 
 #: An arc within this many ulps of its coordinates of lying on the earlier tool's corner (the foot bound) is on
@@ -220,7 +221,7 @@ def _crowded(pair, h, open_):
     if not many.any():
         return crowded
     rows = rows[many]
-    order = np.lexsort((-h[rows], pair[rows]))
+    order = group_order(-h[rows], pair[rows])
     rows = rows[order]
     first = np.searchsorted(pair[rows], pair[rows])
     crowded[rows[np.arange(rows.size) - first >= MAX_OPEN]] = True
@@ -247,7 +248,7 @@ def _merged(pair, start, end):
     pair, start, end = pair[keep].astype(np.intp), start[keep], end[keep]
     if pair.size == 0:
         return pair, start, end
-    order = np.lexsort((start, pair))
+    order = group_order(start, pair)
     pair, start, end = pair[order], start[order], end[order]
     first = np.flatnonzero(np.r_[True, pair[1:] != pair[:-1]])
     count = np.diff(np.r_[first, pair.size])

@@ -33,6 +33,7 @@ from .inprocess import _CLEAR, _apart, _across, _chain_spans, _csr, _seen_along,
 from .inprocess_cover import narrow
 from .inprocess_level_pairs import GROUP, arcs as level_arcs
 from .inprocess_plan import arc_kinds, arc_piece_intervals
+from .ordering import group_order
 from .swept import every_column, row_dot, rows
 from .tolerances import LENGTH_EPS
 
@@ -380,7 +381,7 @@ class _Units:
         self.whole = np.r_[np.ones(int(whole.sum()), dtype=bool), np.zeros(piece.size, dtype=bool)]
         depth = np.r_[_depth(centre[g[whole]], *pieces.hulls("chain", k[whole])[:4], pieces.chain_corner[k[whole]]),
                       _depth(centre[g_piece], *pieces.hulls("piece", piece)[:4], pieces.corner[piece])]
-        order = np.lexsort((depth, owner))
+        order = group_order(depth, owner)
         owner, self.index, self.whole = owner[order], self.index[order], self.whole[order]
         self.count = np.bincount(owner, minlength=first.size)
         self.start = np.cumsum(self.count) - self.count

@@ -3,6 +3,8 @@ material from either end without a gap (the narrowing of the in-process searches
 
 import numpy as np
 
+from .ordering import group_order
+
 
 def run_starts(key):
     """(start, count): where each run of equal values of key (K,) starts, and its length (both
@@ -35,7 +37,7 @@ def covered_from(start, seg, enter, leave):
     itself where none covers it): a sweep of each segment's intervals in order of enter (no sort where seg holds
     each segment once, in order: most calls of the level view, whose each query takes one piece at a time)."""
     if seg.size > 1 and not (seg[1:] > seg[:-1]).all():
-        order = np.lexsort((enter, seg))
+        order = group_order(enter, seg)
         seg, enter, leave = seg[order], enter[order], leave[order]
     head, count = run_starts(seg)
     owners = seg[head]

@@ -26,6 +26,7 @@ import numpy as np
 
 from .inprocess_cover import narrow, run_starts
 from .inprocess_plan import arc_kinds, arc_piece_intervals, piece_line_interval
+from .ordering import group_order
 from .swept import clamp, kept, row_dot, rows
 from .tolerances import LENGTH_EPS
 
@@ -52,20 +53,27 @@ def norm(x, y):
     return np.sqrt(x * x + y * y)
 
 
+def _toward(qx, qy, dx, dy, dd):
+    """(K,) the plan distance of the points a + q from the segments a … a + d (columns qx, qy, dx, dy (K,); dd (K,) the
+    squared length of d): the point's distance from the segment's nearest point (a itself where d = 0)."""
+    # Where d = 0 so is the numerator: t = 0 (dd + 1 there; dd itself elsewhere, exactly).
+    t = clamp((qx * dx + qy * dy) / (dd + (dd == 0.0)), 0.0, 1.0)
+    return norm(qx - t * dx, qy - t * dy)
+
+
 def plan_distance(p, a, b):
     """Distance (K,) in plan from points p (K, 2) to the segments a … b (K, 2) (a point where a = b)."""
-    d = b - a
-    dd = d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]
-    q = p - a
-    # Where a = b, d = 0 and so is the numerator: t = 0 (dd + 1 there; dd itself elsewhere, exactly).
-    t = clamp((q[:, 0] * d[:, 0] + q[:, 1] * d[:, 1]) / (dd + (dd == 0.0)), 0.0, 1.0)
-    return norm(q[:, 0] - t * d[:, 0], q[:, 1] - t * d[:, 1])
+    ax, ay = a[:, 0], a[:, 1]
+    dx, dy = b[:, 0] - ax, b[:, 1] - ay
+    return _toward(p[:, 0] - ax, p[:, 1] - ay, dx, dy, dx * dx + dy * dy)
 
 
 def _point_distance(p, a, b):
     """segment_distance where each first segment is the point p (K, 2): the same numbers, a quarter of the work."""
-    return np.minimum(plan_distance(p, a, b), np.minimum(norm(a[:, 0] - p[:, 0], a[:, 1] - p[:, 1]),
-                                                         norm(b[:, 0] - p[:, 0], b[:, 1] - p[:, 1])))
+    px, py, ax, ay, bx, by = p[:, 0], p[:, 1], a[:, 0], a[:, 1], b[:, 0], b[:, 1]
+    dx, dy, qx, qy = bx - ax, by - ay, px - ax, py - ay
+    # |a − p| is |p − a| bit for bit: the squares of opposite numbers are the same.
+    return np.minimum(_toward(qx, qy, dx, dy, dx * dx + dy * dy), np.minimum(norm(qx, qy), norm(bx - px, by - py)))
 
 
 def segment_distance(p0, p1, a, b):
@@ -87,14 +95,20 @@ def segment_distance(p0, p1, a, b):
 
 
 def _segment_distance(p0, p1, a, b):
-    """segment_distance of segments p0 … p1 (K, 2) of length."""
-    d = np.minimum(np.minimum(plan_distance(p0, a, b), plan_distance(p1, a, b)),
-                   np.minimum(plan_distance(a, p0, p1), plan_distance(b, p0, p1)))
-
-    def side(o, x, y):
-        return (x[:, 0] - o[:, 0]) * (y[:, 1] - o[:, 1]) - (x[:, 1] - o[:, 1]) * (y[:, 0] - o[:, 0])
-
-    cross = (side(a, b, p0) * side(a, b, p1) < 0.0) & (side(p0, p1, a) * side(p0, p1, b) < 0.0)
+    """segment_distance of segments p0 … p1 (K, 2) of length: each difference of two ends taken once, shared by the
+    four end distances and the two crossing tests (the same numbers as plan_distance and a side test per pair)."""
+    ax, ay, bx, by = a[:, 0], a[:, 1], b[:, 0], b[:, 1]
+    x0, y0, x1, y1 = p0[:, 0], p0[:, 1], p1[:, 0], p1[:, 1]
+    dx, dy, ex, ey = bx - ax, by - ay, x1 - x0, y1 - y0
+    dd, ee = dx * dx + dy * dy, ex * ex + ey * ey
+    # The ends p0, p1 from a; a and b from p0.
+    q0x, q0y, q1x, q1y = x0 - ax, y0 - ay, x1 - ax, y1 - ay
+    rax, ray, rbx, rby = ax - x0, ay - y0, bx - x0, by - y0
+    d = np.minimum(np.minimum(_toward(q0x, q0y, dx, dy, dd), _toward(q1x, q1y, dx, dy, dd)),
+                   np.minimum(_toward(rax, ray, ex, ey, ee), _toward(rbx, rby, ex, ey, ee)))
+    # Each segment's ends on either side of the other's line (the sign of a cross product).
+    cross = (((dx * q0y - dy * q0x) * (dx * q1y - dy * q1x) < 0.0)
+             & ((ex * ray - ey * rax) * (ex * rby - ey * rbx) < 0.0))
     return np.where(cross, 0.0, d)
 
 
@@ -209,10 +223,17 @@ def rounds(view, query, quarter, owner, envelope, solve, segment, before, skip):
         narrow(envelope, rows(owner, found[-1][0]), *found[-1][1:])
 
     head, count = run_starts(query)
-    rank = np.arange(query.size) - np.repeat(head, count)
+    # The runs (one per query) with quarters left, and their queries' edges.
+    run, edge = np.arange(head.size), rows(owner, rows(query, head))
     done, size = 0, 1
-    while done < count.max():
-        q, qu = kept((rank >= done) & (rank < done + size), query, quarter)
+    while True:
+        # The next (up to) size quarters of each query with quarters and material left: the rows of ranks done …
+        # done + size − 1 in its run, in the list's order, found without a pass over the whole list.
+        run, edge = kept((rows(count, run) > done) & (rows(envelope[0], edge) < rows(envelope[1], edge)), run, edge)
+        if run.size == 0:
+            break
+        _, at = expand(run, rows(head, run) + done, np.minimum(rows(count, run) - done, size))
+        q, qu = rows(query, at), rows(quarter, at)
         keep, a, b, reach = left(q)
         q, qu = rows(q, keep), rows(qu, keep)
         slack = rows(view.quarter_slack, qu)
@@ -338,7 +359,7 @@ def _nearest_first(view, line, k, far, group, before, envelope, solve, segment):
     previous CL point where that lies in the level (at a CL point of a pass it holds most of what the edges lost),
     then, for what is left, against the pieces near it (near_chains, found from the segments left: shorter than the
     edges), in rounds."""
-    order = np.lexsort((far, line))
+    order = group_order(far, line)
     head, count = run_starts(line[order])
     rank = np.empty(line.size, dtype=np.intp)
     rank[order] = np.arange(line.size) - np.repeat(head, count)
@@ -358,7 +379,7 @@ def _nearest_first(view, line, k, far, group, before, envelope, solve, segment):
         latest = rows(before, left)
         query, chain, _, _ = near_chains(view, rows(group, left), rows(k, left), a, b, reach, latest)
         query, quarter, low = view.quarters_near(query, chain, a, b, reach, latest)
-        order = np.lexsort((low, query))
+        order = group_order(low, query)
         found += rounds(view, rows(left, rows(query, order)), rows(quarter, order), line, envelope, solve, segment,
                         before, previous)
     return found

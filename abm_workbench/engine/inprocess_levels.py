@@ -33,6 +33,7 @@ import numpy as np
 
 from .inprocess_level_pairs import MARGIN, expand, plan_distance, segment_distance, sides
 from .inprocess_plan import earlier_radius
+from .ordering import group_order
 from .swept import clamp, every_column, kept, line_hull_interval, row_dot, rows
 from .tolerances import LENGTH_EPS
 
@@ -533,6 +534,6 @@ class LevelView:
         owner, at = expand(np.arange(line.size), start, count)
         candidate = self.chain_piece[at]
         gap = plan_distance(plan[line[owner]], self.a[candidate], self.b[candidate])
-        order = np.lexsort((gap, owner))
+        order = group_order(gap, owner)
         head = order[np.r_[True, owner[order][1:] != owner[order][:-1]]] if order.size else order
         return candidate[head]

@@ -33,6 +33,7 @@ import numpy as np
 from .inprocess_arc import COINCIDENT, arc_swept_intervals
 from .inprocess_cover import run_starts
 from .inprocess_swept import line_swept_interval
+from .ordering import group_order
 from .swept import clamp, every_column, line_hull_interval, row_cross, row_dot, rows
 
 
@@ -214,7 +215,7 @@ def _arc_above(g0, rise, m, d, big, corner, top, arc=None):
         _bracketed(gap, gather, open_, first, top, at_first, at_top, start)
     else:
         key = arc[open_]
-        order = np.lexsort((at_top[open_], key))
+        order = group_order(at_top[open_], key)
         lead = np.zeros(open_.size, dtype=bool)
         lead[order[run_starts(key[order])[0]]] = True
         least = np.full(arc.max() + 1, np.inf)

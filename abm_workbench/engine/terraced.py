@@ -45,6 +45,7 @@ from .engagement import SURFACES, edge_lines
 from .interval_engagement import engagement_from_intervals
 from .intervals import EdgeIntervals
 from .arguments import check_arguments
+from .ordering import group_order
 from .polynomials import horner, real_roots_unit
 from .terraced_pieces import bernstein_to_power, slab_pieces
 from .tolerances import LENGTH_EPS, PARALLEL_EPS
@@ -89,7 +90,7 @@ def _intervals(pieces, stock, origins, directions, length):
             continue
         ev_row, ev_at, ev_wall = plan_crossings(groups[k], o[rows, 0], o[rows, 1], ux[rows], uy[rows])
         ev_l = ev_at / scale[rows][ev_row]
-        order = np.lexsort((ev_l, ev_row))
+        order = group_order(ev_l, ev_row)
         ev_row, ev_l, ev_wall = ev_row[order], ev_l[order], ev_wall[order]
         # Vertical rows: inside when an odd number of crossings lie ahead on the +x ray.
         is_vertical = vertical[rows]
@@ -225,7 +226,7 @@ def merged_intervals(n, found):
     else:
         parts = [np.zeros(0, dtype=np.intp)] + [np.zeros(0)] * 2 + [np.zeros(0, dtype=np.intp)] * 5
     rows, start, end, s_surf, s_wall, e_surf, e_wall, slab = parts
-    order = np.lexsort((start, rows))
+    order = group_order(start, rows)
     rows, start, end, s_surf, s_wall, e_surf, e_wall, slab = (
         v[order] for v in (rows, start, end, s_surf, s_wall, e_surf, e_wall, slab))
     joins = np.zeros(rows.size, dtype=bool)
