@@ -342,9 +342,10 @@ def ends(view, origin, direction, lo, hi, before, group):
         enter, leave = _line_pairs(rows(line, q), hulls, origin, direction)
         return _hits(q, enter, leave, *material)
 
+    plan_of, toward_of = rows(plan, line), rows(toward, line)  # (each query's)
+
     def segment(q, start, end):
-        at = rows(line, q)
-        plan_at, toward_at = rows(plan, at), rows(toward, at)
+        plan_at, toward_at = rows(plan_of, q), rows(toward_of, q)
         return plan_at + start[:, None] * toward_at, plan_at + end[:, None] * toward_at, rows(reach, q)
 
     found = _nearest_first(view, line, k, np.abs(h), group[line], before[line], np.stack([lo, hi]), solve, segment)
@@ -417,14 +418,14 @@ def arcs(view, tip, d, w, centre, lo, hi, before, group, big, radius, top, scree
     # part of the arc holds its last point (docs/ENGINE.md, "The level view for tools with a corner").
     same = view.aligned & view.exact[k] & (view.r[k] == big) & (view.rc[k] == radius) & (rise >= 0.0)
     material = rows(lo, line), rows(hi, line)
+    plan_of, toward_of = rows(plan, line), rows(toward, line)  # (each query's)
 
     def segment(q, start, end):
-        at = rows(line, q)
         # What is left of the arc outside the level's heights: no piece of the level reaches it.
         low, high = rows(first, q), rows(last, q)
         outside = (end < low) | (start > high)
         start, end = clamp(start, low, high), clamp(end, low, high)
-        plan_at, toward_at = rows(plan, at), rows(toward, at)
+        plan_at, toward_at = rows(plan_of, q), rows(toward_of, q)
         b = plan_at + (rim + radius * np.sin(end))[:, None] * toward_at
         # Of an arc against the same tool, its last point alone (a = b), within the earlier radius there.
         tight = rows(same, q)
