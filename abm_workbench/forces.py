@@ -524,9 +524,12 @@ def pass_forces(stock, tool, toolpath, settings, coefficients, *, immersion=FULL
     if lengths_at is not None and runs_at is not None:
         raise ValueError("give lengths_at or runs_at, not both")
     if tool.corner_radius > 0.0 and lengths_at is not None:
-        raise ValueError(f"the forces of a {tool.kind} mill need each flute's engaged runs along its corner, not "
-                         "only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; "
-                         "pass runs_at instead")
+        raise ValueError("the forces of a ball mill need each flute's engaged runs along its corner, not only its "
+                         "lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at "
+                         "instead" if tool.kind == "ball" else
+                         "the forces of a bull-nose mill need each flute's engaged runs along its corner, not only "
+                         "its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass "
+                         "runs_at instead")
     immersion = check_immersion(immersion)
     rotation = toolpath.frames()
     feed = settings.feed_per_tooth if feed is None else feed

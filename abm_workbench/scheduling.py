@@ -89,7 +89,8 @@ def schedule(forces: Forces, limit, *, kind="force", min_feed=None):
         raise ValueError(f"kind must be one of {LIMITS}, got {kind!r}")
     limit = float(limit)
     if not (np.isfinite(limit) and limit > 0.0):
-        raise ValueError(f"the {kind} limit must be a positive number, got {limit:g}")
+        raise ValueError(f"the force limit must be a positive number, got {limit:g}" if kind == "force" else
+                         f"the area limit must be a positive number, got {limit:g}")
     programmed = forces.feed
     floor = MIN_FEED_FRACTION * programmed if min_feed is None else np.broadcast_to(
         np.asarray(min_feed, dtype=float), programmed.shape)

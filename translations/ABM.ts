@@ -969,6 +969,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{path}: no solid named {name} in the {kind} file (its solids: none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{path}: no solid named {name} in the {kind} file (its solids: {listed})</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1789,7 +1793,11 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>the forces of a {kind} mill need each flute's engaged runs along its corner, not only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at instead</source>
+        <source>the forces of a ball mill need each flute's engaged runs along its corner, not only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at instead</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the forces of a bull-nose mill need each flute's engaged runs along its corner, not only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at instead</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2969,7 +2977,11 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>the Z-map baseline samples a flat-end mill's edge; this {kind} mill (corner radius {corner_radius} mm) is computed by the ABM engine only</source>
+        <source>the Z-map baseline samples a flat-end mill's edge; this ball mill (corner radius {corner} mm) is computed by the ABM engine only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Z-map baseline samples a flat-end mill's edge; this bull-nose mill (corner radius {corner} mm) is computed by the ABM engine only</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3025,7 +3037,11 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{value} CL points cannot keep the {kind} at or under {limit} {unit} at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
+        <source>{count} CL points cannot keep the force at or under {limit} N at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{count} CL points cannot keep the area at or under {limit} mm² at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3077,7 +3093,11 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>the {kind} limit must be a positive number, got {limit}</source>
+        <source>the force limit must be a positive number, got {limit}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the area limit must be a positive number, got {limit}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -971,6 +971,10 @@ fläche (mm²)</translation>
         <translation>{path}: mehrere Volumenkörper ({join_names}); wählen Sie einen mit --solid NAME</translation>
     </message>
     <message>
+        <source>{path}: no solid named {name} in the {kind} file (its solids: none)</source>
+        <translation>{path}: kein Volumenkörper namens {name} in der {kind}-Datei (sie enthält keine Volumenkörper)</translation>
+    </message>
+    <message>
         <source>{path}: no solid named {name} in the {kind} file (its solids: {listed})</source>
         <translation>{path}: kein Volumenkörper namens {name} in der {kind}-Datei (ihre Volumenkörper: {listed})</translation>
     </message>
@@ -1791,8 +1795,12 @@ fläche (mm²)</translation>
         <translation>geben Sie lengths_at oder runs_at an, nicht beides</translation>
     </message>
     <message>
-        <source>the forces of a {kind} mill need each flute's engaged runs along its corner, not only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at instead</source>
-        <translation>die Kräfte eines {kind}-Fräsers erfordern die Eingriffsabschnitte jeder Schneide entlang ihres Eckenradius, nicht nur ihre Schnittlängen: lengths_at (etwa die des Zwischenrohteils) kann sie nicht liefern; übergeben Sie stattdessen runs_at</translation>
+        <source>the forces of a ball mill need each flute's engaged runs along its corner, not only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at instead</source>
+        <translation>die Kräfte eines Kugelfräsers erfordern die Eingriffsabschnitte jeder Schneide entlang ihres Eckenradius, nicht nur ihre Schnittlängen: lengths_at (etwa die des Zwischenrohteils) kann sie nicht liefern; übergeben Sie stattdessen runs_at</translation>
+    </message>
+    <message>
+        <source>the forces of a bull-nose mill need each flute's engaged runs along its corner, not only its lengths of cut: lengths_at (such as the in-process stock's) cannot give them; pass runs_at instead</source>
+        <translation>die Kräfte eines Torusfräsers erfordern die Eingriffsabschnitte jeder Schneide entlang ihres Eckenradius, nicht nur ihre Schnittlängen: lengths_at (etwa die des Zwischenrohteils) kann sie nicht liefern; übergeben Sie stattdessen runs_at</translation>
     </message>
     <message>
         <source>{where}: {stripped} is not a finite number (digits 0-9, optional sign, '.' and exponent)</source>
@@ -2971,8 +2979,12 @@ fläche (mm²)</translation>
         <translation>erfordert das abm-Verfahren</translation>
     </message>
     <message>
-        <source>the Z-map baseline samples a flat-end mill's edge; this {kind} mill (corner radius {corner_radius} mm) is computed by the ABM engine only</source>
-        <translation>das Z-Map-Basisverfahren tastet die Kante eines Schaftfräsers ab; dieser Fräser vom Typ {kind} (Eckenradius {corner_radius} mm) wird nur von der ABM-Engine berechnet</translation>
+        <source>the Z-map baseline samples a flat-end mill's edge; this ball mill (corner radius {corner} mm) is computed by the ABM engine only</source>
+        <translation>das Z-Map-Basisverfahren tastet die Kante eines Schaftfräsers ab; dieser Kugelfräser (Eckenradius {corner} mm) wird nur vom ABM-Rechenkern berechnet</translation>
+    </message>
+    <message>
+        <source>the Z-map baseline samples a flat-end mill's edge; this bull-nose mill (corner radius {corner} mm) is computed by the ABM engine only</source>
+        <translation>das Z-Map-Basisverfahren tastet die Kante eines Schaftfräsers ab; dieser Torusfräser (Eckenradius {corner} mm) wird nur vom ABM-Rechenkern berechnet</translation>
     </message>
     <message>
         <source>the Z-map method: {error}</source>
@@ -3027,8 +3039,12 @@ fläche (mm²)</translation>
         <translation> und {value} weitere</translation>
     </message>
     <message>
-        <source>{value} CL points cannot keep the {kind} at or under {limit} {unit} at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
-        <translation>{value} CL-Punkte können {kind} bei keinem Vorschub ab dem Mindestvorschub auf höchstens {limit} {unit} halten; sie erhalten den Mindestvorschub: {shown}{more}</translation>
+        <source>{count} CL points cannot keep the force at or under {limit} N at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
+        <translation>{count} CL-Punkte können die Schnittkraft bei keinem Vorschub ab dem Mindestvorschub auf höchstens {limit} N halten; sie erhalten den Mindestvorschub: {shown}{more}</translation>
+    </message>
+    <message>
+        <source>{count} CL points cannot keep the area at or under {limit} mm² at any feed from the minimum feed up; they get the minimum feed: {shown}{more}</source>
+        <translation>{count} CL-Punkte können den Spanungsquerschnitt bei keinem Vorschub ab dem Mindestvorschub auf höchstens {limit} mm² halten; sie erhalten den Mindestvorschub: {shown}{more}</translation>
     </message>
     <message>
         <source>{toolpath}: {operation_label}: the dressup's feeds are per minute and need a spindle speed (its tool controller's, or give the spindle speed)</source>
@@ -3079,8 +3095,12 @@ fläche (mm²)</translation>
         <translation>kind muss einer der Werte {LIMITS} sein, erhalten: {kind}</translation>
     </message>
     <message>
-        <source>the {kind} limit must be a positive number, got {limit}</source>
-        <translation>der Grenzwert {kind} muss eine positive Zahl sein, erhalten: {limit}</translation>
+        <source>the force limit must be a positive number, got {limit}</source>
+        <translation>der Grenzwert der Schnittkraft muss eine positive Zahl sein, erhalten: {limit}</translation>
+    </message>
+    <message>
+        <source>the area limit must be a positive number, got {limit}</source>
+        <translation>der Grenzwert des Spanungsquerschnitts muss eine positive Zahl sein, erhalten: {limit}</translation>
     </message>
     <message>
         <source>the minimum feed must be finite and not negative</source>

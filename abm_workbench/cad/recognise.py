@@ -123,8 +123,10 @@ def load_solid(path, name=None):
         if len(solids) > 1:
             raise InputError(f"{path}: several solids ({', '.join(names)}); choose one with --solid NAME")
         return _finite(shape, path, kind)
+    if not names:
+        raise InputError(f"{path}: no solid named {name!r} in the {kind} file (its solids: none)")
     if name not in names:
-        listed = ", ".join(names) or "none"
+        listed = ", ".join(names)
         raise InputError(f"{path}: no solid named {name!r} in the {kind} file (its solids: {listed})")
     return _finite(solids[names.index(name)], path, kind)
 

@@ -558,8 +558,12 @@ def engage(job: Job, out, *, plot=None, method=Method(), warn=print, progress=No
     check_run_size(job, prepared, workers=worker_count(method.workers) if method.name == "abm" and not method.scheduler
                    else 1, whole=bool(plot), out=out)
     if method.name != "abm" and tool.corner_radius:
-        raise ParameterError("method", f"the Z-map baseline samples a flat-end mill's edge; this {tool.kind} mill "
-                                       f"(corner radius {tool.corner_radius:g} mm) is computed by the ABM engine only")
+        corner = tool.corner_radius
+        raise ParameterError("method", f"the Z-map baseline samples a flat-end mill's edge; this ball mill (corner "
+                                       f"radius {corner:g} mm) is computed by the ABM engine only"
+                             if tool.kind == "ball" else
+                             f"the Z-map baseline samples a flat-end mill's edge; this bull-nose mill (corner "
+                             f"radius {corner:g} mm) is computed by the ABM engine only")
     prepared, stock, _ = load_job_stock(prepared)
     toolpath = prepared.toolpath  # in the frame of the stock (load_job_stock)
     check_model(stock, method.name, tool.helix)
@@ -829,8 +833,11 @@ def schedule(job: Job, out, *, max_force=None, max_area=None, min_feed=None, rep
     if plan.infeasible.any():
         shown = ", ".join(f"CL {i} (peak {plan.after[i]:.4g} {unit})" for i in np.flatnonzero(plan.infeasible)[:10])
         more = "" if plan.infeasible.sum() <= 10 else f" and {int(plan.infeasible.sum()) - 10} more"
-        warn(f"{int(plan.infeasible.sum())} CL points cannot keep the {kind} at or under {limit:g} {unit} at any "
-             f"feed from the minimum feed up; they get the minimum feed: {shown}{more}")
+        count = int(plan.infeasible.sum())
+        warn(f"{count} CL points cannot keep the force at or under {limit:g} N at any feed from the minimum feed up; "
+             f"they get the minimum feed: {shown}{more}" if kind == "force" else
+             f"{count} CL points cannot keep the area at or under {limit:g} mm² at any feed from the minimum feed "
+             f"up; they get the minimum feed: {shown}{more}")
     comment = (f"re-scheduled by abm schedule: peak {kind} <= {limit:g} {unit}, feed per tooth "
                f"{plan.feed.min():.6g}..{plan.feed.max():.6g} mm (programmed {plan.programmed.max():.6g} mm)")
     with output_folders([out] + ([report] if report else [])), \

@@ -169,3 +169,45 @@ def test_a_g_code_word_is_a_wort_in_every_german_message():
     # "Wort" (a letter and its number, DIN 66025), never "Adresse" (the letter alone)
     wrong = [german(text) for text in words if "Adresse" in german(text) or not re.search("Wort|Wörter", german(text))]
     assert wrong == []
+
+
+def test_a_kind_given_as_a_word_is_a_whole_german_phrase(monkeypatch):
+    """The feed schedule's limit and a mill's kind are whole messages, one for each kind: no English word
+    ("force", "bull-nose") is left as a value inside the German sentence."""
+    from abm_workbench import forces
+    from abm_workbench.scheduling import schedule
+
+    messages = Catalogue(templates())
+    shown = {kind: messages.translated(_raised(lambda: schedule(None, -2.0, kind=kind)), german)
+             for kind in ("force", "area")}
+    assert shown == {"force": "der Grenzwert der Schnittkraft muss eine positive Zahl sein, erhalten: -2",
+                     "area": "der Grenzwert des Spanungsquerschnitts muss eine positive Zahl sein, erhalten: -2"}
+    monkeypatch.setattr(forces, "check_arguments", lambda **given: None)
+    coefficients = forces.Coefficients(ktc=700.0, krc=210.0, kac=120.0, kte=25.0, kre=30.0, kae=4.0)
+    for kind, mill in (("ball", "Kugelfräsers"), ("bull-nose", "Torusfräsers")):
+        tool = SimpleNamespace(helix=0.0, corner_radius=2.0, kind=kind)
+        text = _raised(lambda: forces.pass_forces(None, tool, None, None, coefficients, lengths_at=len))
+        assert messages.translated(text, german).startswith(f"die Kräfte eines {mill} erfordern "), text
+    # the job model's (the Z-map baseline's refusal, the schedule's warning), as the code words them
+    for text, words in (
+            ("the Z-map baseline samples a flat-end mill's edge; this bull-nose mill (corner radius 2 mm) is computed "
+             "by the ABM engine only", "dieser Torusfräser (Eckenradius 2 mm)"),
+            ("the Z-map baseline samples a flat-end mill's edge; this ball mill (corner radius 5 mm) is computed by "
+             "the ABM engine only", "dieser Kugelfräser (Eckenradius 5 mm)"),
+            ("3 CL points cannot keep the area at or under 4 mm² at any feed from the minimum feed up; they get the "
+             "minimum feed: CL 1 (peak 5 mm²)", "können den Spanungsquerschnitt bei keinem Vorschub")):
+        assert words in messages.translated(text, german), text
+
+
+def test_a_file_without_solids_says_so_in_german(tmp_path):
+    """A BREP file of a face alone, asked for a solid by name: "(its solids: none)" is a message of its own, not
+    the English "none" as the list of solids."""
+    from abm_workbench.cad.freecad_env import Part
+    from abm_workbench.cad.recognise import load_solid
+
+    path = tmp_path / "face.brep"
+    Part.makePlane(10, 10).exportBrep(str(path))
+    text = _raised(lambda: load_solid(path, "Solid1"))
+    assert text == f"{path}: no solid named 'Solid1' in the BREP file (its solids: none)"
+    assert Catalogue(templates()).translated(text, german) == \
+        f"{path}: kein Volumenkörper namens 'Solid1' in der BREP-Datei (sie enthält keine Volumenkörper)"
