@@ -90,8 +90,11 @@ def check_large(why, what, count, limit, remedy=""):
     run large, e.g. 'toolpath.csv'."""
     if count <= limit or large_allowed():
         return
-    raise TooLarge(f"{why}: {what.format(count_text(count))} (more than the {count_text(limit)} a run takes without "
-                   f"confirmation): {remedy + ', or ' if remedy else ''}give --allow-large to run it anyway")
+    shown, most = what.format(count_text(count)), count_text(limit)
+    raise TooLarge(f"{why}: {shown} (more than the {most} a run takes without confirmation): {remedy}, or give "
+                   f"--allow-large to run it anyway" if remedy else
+                   f"{why}: {shown} (more than the {most} a run takes without confirmation): give --allow-large to "
+                   f"run it anyway")
 
 
 def check_memory(needed, why, what="the run", remedy=""):
@@ -100,8 +103,9 @@ def check_memory(needed, why, what="the run", remedy=""):
     available = available_memory()
     if needed <= available:
         return
-    raise TooLarge(f"{why}: {what} would need about {size_text(needed)} of memory, and this process may use "
-                   f"{size_text(available)}{': ' + remedy if remedy else ''}")
+    size, free = size_text(needed), size_text(available)
+    raise TooLarge(f"{why}: {what} would need about {size} of memory, and this process may use {free}: {remedy}"
+                   if remedy else f"{why}: {what} would need about {size} of memory, and this process may use {free}")
 
 
 def check_disk(needed, path, why):

@@ -26,7 +26,7 @@ import numpy as np
 
 from .engine import Engagement, engage
 from .engine.arguments import check_arguments
-from .errors import InputError, ParameterError
+from .errors import InputError, ParameterError, note
 from .limits import usable_cores
 
 #: Instants per chunk (CL points × angles): the engine's default chunk, about 3 MiB of results.
@@ -47,8 +47,9 @@ class ChunkError(RuntimeError):
     """A chunk of CL points failed on a worker: its job index, CL range [start, stop) and the cause."""
 
     def __init__(self, job, start, stop, cause, jobs=1):
-        where = f"job {job}, " if jobs > 1 else ""
-        super().__init__(f"{where}CL points {start}..{stop - 1}: {type(cause).__name__}: {cause}")
+        last, name = stop - 1, type(cause).__name__
+        super().__init__(note(f"job {job}, CL points {start}..{last}: {name}: {cause}" if jobs > 1 else
+                              f"CL points {start}..{last}: {name}: {cause}"))
         self.job, self.start, self.stop = job, start, stop
 
 

@@ -865,6 +865,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>a 2.5D stock has horizontal tops and vertical walls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>the edge {ends_edge} has no 3D curve, so its extent cannot be found</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1053,6 +1057,14 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{listed} has an edge bordering no other face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{listed} have edges bordering no other face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{where}y_window ({y0}, {y1}) must be increasing and inside the stock's y range [{y_min}, {y_max}]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1082,6 +1094,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>{where}{label}: wall does not run across the y window [{y0}, {y1}]: no x at y = {y} (its top edge spans y {y_low} to {y_high}); {_ALONG_X}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a staircase's walls run across y with one x for each y</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1118,6 +1134,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>{error} (the paper's quintic walls need a staircase stock)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no wall face</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1190,6 +1210,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>{where_line}: {name}: not a G-code command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{source}: toolbit {Label} of shape {shape}: a shape the reader does not know; its kind is unknown</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1841,7 +1865,35 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a special file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{name}: is {value}, not a file; give the input file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading its {st_size} bytes</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1937,6 +1989,14 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>its axes are not unit vectors square to each other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it is a reflection, not a rotation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{name}:{start}: the record ends with the continuation mark '$' but the file ends before it is continued</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1945,7 +2005,27 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>the knots decrease</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the knots leave the curve no parameter range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>knot {knot} is repeated more often than the degree {degree}: the curve breaks there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{count} knots and {count_2} control points fit no B-spline of degree 1 to {MAX_DEGREE} (knots = control points + degree + 1, or the end knots written once: control points - degree + 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{words}, degree {degree}: {reason}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its knots give no curve ({listed})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2217,6 +2297,22 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>parameters and expressions (#, [ ]) are not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>assignments (X=…) are not read: write a letter and a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a G-code word (a letter and a number)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a letter without a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{letter} is needed: with G90.1 the centre is written whole</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2234,6 +2330,18 @@ cut (mm)</source>
     </message>
     <message>
         <source>the end is {last} mm from the centre, the start {first} mm: the arc does not fit (at most {RADIUS_TOLERANCE} mm apart)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinate offsets set by the program (G92) are not read: use G54-G59 and an offsets table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>subprogram calls are not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>subprogram returns are not read</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2633,7 +2741,19 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>a list of numbers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a list of [x, y] points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{where}.degree: must be a whole number, got {value}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a non-empty list of slabs</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2642,6 +2762,14 @@ cut (mm)</source>
     </message>
     <message>
         <source>{where}: expected an object {"z_top": ..., "loops": [...]}, got {json_dumps_slab}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a non-empty list of loops</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a non-empty list of curves</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2869,6 +2997,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>needs a staircase stock: the helix solver does not take a general 2.5D stock yet (use straight flutes, helix 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>must be one of {value}, got {stock_model}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2897,7 +3029,47 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>give a larger --sweep-tolerance or --stock-model initial (the stock as given)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give --stock-model initial (the stock as given)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{toolpath}: the in-process stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its sweep ({value} pieces, {count_text_balls} bounding balls)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give a larger --phi-step or a shorter --phi-range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the {command} run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{toolpath}: the boolean reference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>check fewer CL points (--check, --check-every) or give a larger --phi-step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{grid} mm gives the stock {cells} Z-map cells, more than the Z-map holds ({MAX_CELLS}): give a larger --grid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Z-map's {cells} cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give a larger --grid</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2906,6 +3078,10 @@ cut (mm)</source>
     </message>
     <message>
         <source>an edge step of {edge_step} mm samples the {flute_length} mm flute at {along} points{default}, {p} angles x {along_2} = {p_along} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give a larger {option} or --phi-step</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3053,15 +3229,31 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{why}: {value} (more than the {count_text_limit} a run takes without confirmation): {value_2}give --allow-large to run it anyway</source>
+        <source>{why}: {shown} (more than the {most} a run takes without confirmation): {remedy}, or give --allow-large to run it anyway</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{why}: {what} would need about {size_text_needed} of memory, and this process may use {value}{value_2}</source>
+        <source>{why}: {shown} (more than the {most} a run takes without confirmation): give --allow-large to run it anyway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{why}: {what} would need about {size} of memory, and this process may use {free}: {remedy}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{why}: {what} would need about {size} of memory, and this process may use {free}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{why}: {os_fspath_path} would take about {size_text_needed}, and {folder} has {size_text_space} free; give --allow-large to try anyway</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>job {job}, CL points {start}..{last}: {name}: {cause}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL points {start}..{last}: {name}: {cause}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -867,6 +867,10 @@ fläche (mm²)</translation>
         <translation>OpenCASCADE hat den Torus der Ecke für die Bewegung {point_m} mm nicht entlang seiner Silhouette geteilt (Achse {point_w})</translation>
     </message>
     <message>
+        <source>a 2.5D stock has horizontal tops and vertical walls</source>
+        <translation>ein 2,5D-Rohteil hat waagerechte Deckflächen und senkrechte Wände</translation>
+    </message>
+    <message>
         <source>the edge {ends_edge} has no 3D curve, so its extent cannot be found</source>
         <translation>die Kante {ends_edge} hat keine 3D-Kurve, daher lässt sich ihre Ausdehnung nicht bestimmen</translation>
     </message>
@@ -1055,6 +1059,14 @@ fläche (mm²)</translation>
         <translation>{where}der Volumenkörper ist ungültig (shape.check() nennt den Grund)</translation>
     </message>
     <message>
+        <source>{listed} has an edge bordering no other face</source>
+        <translation>{listed} hat eine Kante, die an keine andere Fläche grenzt</translation>
+    </message>
+    <message>
+        <source>{listed} have edges bordering no other face</source>
+        <translation>{listed} haben Kanten, die an keine andere Fläche grenzen</translation>
+    </message>
+    <message>
         <source>{where}y_window ({y0}, {y1}) must be increasing and inside the stock's y range [{y_min}, {y_max}]</source>
         <translation>{where}y_window ({y0}, {y1}) muss aufsteigend sein und innerhalb des y-Bereichs [{y_min}, {y_max}] des Rohteils liegen</translation>
     </message>
@@ -1085,6 +1097,10 @@ fläche (mm²)</translation>
     <message>
         <source>{where}{label}: wall does not run across the y window [{y0}, {y1}]: no x at y = {y} (its top edge spans y {y_low} to {y_high}); {_ALONG_X}</source>
         <translation>{where}{label}: Wand verläuft nicht über das ganze y-Fenster [{y0}, {y1}]: kein x bei y = {y} (ihre obere Kante überspannt y {y_low} bis {y_high}); {_ALONG_X}</translation>
+    </message>
+    <message>
+        <source>a staircase's walls run across y with one x for each y</source>
+        <translation>die Wände eines Treppenstufen-Rohteils verlaufen quer zu y, mit einem x für jedes y</translation>
     </message>
     <message>
         <source>{where}{value}: top face at z = {z} does not reach y = {y_probe}: a section must have one top across the y window</source>
@@ -1121,6 +1137,10 @@ fläche (mm²)</translation>
     <message>
         <source>{error} (the paper's quintic walls need a staircase stock)</source>
         <translation>{error} (die quintischen Wände des Artikels erfordern ein Treppenstufen-Rohteil)</translation>
+    </message>
+    <message>
+        <source>no wall face</source>
+        <translation>keiner Wandfläche</translation>
     </message>
     <message>
         <source>{where}slab {k}: the section at z = {z} near x = {x}, y = {y} lies on {found}; expected one vertical wall</source>
@@ -1193,6 +1213,10 @@ fläche (mm²)</translation>
     <message>
         <source>{where_line}: {name}: not a G-code command</source>
         <translation>{where_line}: {name}: kein G-Code-Befehl</translation>
+    </message>
+    <message>
+        <source>{source}: toolbit {Label} of shape {shape}: a shape the reader does not know; its kind is unknown</source>
+        <translation>{source}: Werkzeug {Label} der Form {shape}: eine Form, die der Leser nicht kennt; seine Art ist unbekannt</translation>
     </message>
     <message>
         <source>{name} must be a {expected}, got {type}</source>
@@ -1843,8 +1867,36 @@ fläche (mm²)</translation>
         <translation>{name}: ist {kind_mode}, keine Datei; geben Sie die {what}-Datei selbst an</translation>
     </message>
     <message>
+        <source>a folder</source>
+        <translation>ein Ordner</translation>
+    </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>ein FIFO (benannte Pipe)</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>ein Socket</translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation>ein zeichenorientiertes Gerät</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>ein blockorientiertes Gerät</translation>
+    </message>
+    <message>
+        <source>a special file</source>
+        <translation>eine Spezialdatei</translation>
+    </message>
+    <message>
         <source>{name}: is {value}, not a file; give the input file itself</source>
         <translation>{name}: ist {value}, keine Datei; geben Sie die Eingabedatei selbst an</translation>
+    </message>
+    <message>
+        <source>reading its {st_size} bytes</source>
+        <translation>das Lesen ihrer {st_size} Bytes</translation>
     </message>
     <message>
         <source>{os_fspath_path}: not UTF-8 text ({reason} at byte {start})</source>
@@ -1939,6 +1991,14 @@ fläche (mm²)</translation>
         <translation>{source}:{value}: die Werkzeugart {kind} ist keine von {join_KINDS}</translation>
     </message>
     <message>
+        <source>its axes are not unit vectors square to each other</source>
+        <translation>seine Achsen sind keine zueinander senkrechten Einheitsvektoren</translation>
+    </message>
+    <message>
+        <source>it is a reflection, not a rotation</source>
+        <translation>es ist eine Spiegelung, keine Drehung</translation>
+    </message>
+    <message>
         <source>{name}:{start}: the record ends with the continuation mark '$' but the file ends before it is continued</source>
         <translation>{name}:{start}: der Datensatz endet mit dem Fortsetzungszeichen '$', aber die Datei endet, bevor er fortgesetzt wird</translation>
     </message>
@@ -1947,8 +2007,28 @@ fläche (mm²)</translation>
         <translation>{name}:{line}: der Datensatz {statement} hat kein Hauptwort vor '/'</translation>
     </message>
     <message>
+        <source>the knots decrease</source>
+        <translation>die Knoten fallen</translation>
+    </message>
+    <message>
+        <source>the knots leave the curve no parameter range</source>
+        <translation>die Knoten lassen der Kurve keinen Parameterbereich</translation>
+    </message>
+    <message>
+        <source>knot {knot} is repeated more often than the degree {degree}: the curve breaks there</source>
+        <translation>der Knoten {knot} wiederholt sich öfter als der Grad {degree}: die Kurve bricht dort ab</translation>
+    </message>
+    <message>
         <source>{count} knots and {count_2} control points fit no B-spline of degree 1 to {MAX_DEGREE} (knots = control points + degree + 1, or the end knots written once: control points - degree + 1)</source>
         <translation>{count} Knoten und {count_2} Kontrollpunkte ergeben keinen B-Spline vom Grad 1 bis {MAX_DEGREE} (Knoten = Kontrollpunkte + Grad + 1, oder bei nur einmal geschriebenen Endknoten: Kontrollpunkte - Grad + 1)</translation>
+    </message>
+    <message>
+        <source>{words}, degree {degree}: {reason}</source>
+        <translation>{words}, Grad {degree}: {reason}</translation>
+    </message>
+    <message>
+        <source>its knots give no curve ({listed})</source>
+        <translation>seine Knoten ergeben keine Kurve ({listed})</translation>
     </message>
     <message>
         <source>the curve bends too sharply to be interpolated (its second derivative is not finite)</source>
@@ -2219,6 +2299,22 @@ fläche (mm²)</translation>
         <translation>{name}:{number}: {match_group}: O-Wörter (Unterprogramme, Schleifen, Bedingungen) werden nicht gelesen; nur eine Programmnummer allein in ihrer Zeile</translation>
     </message>
     <message>
+        <source>parameters and expressions (#, [ ]) are not read</source>
+        <translation>Parameter und Ausdrücke (#, [ ]) werden nicht gelesen</translation>
+    </message>
+    <message>
+        <source>assignments (X=…) are not read: write a letter and a number</source>
+        <translation>Zuweisungen (X=…) werden nicht gelesen: schreiben Sie einen Buchstaben und eine Zahl</translation>
+    </message>
+    <message>
+        <source>not a G-code word (a letter and a number)</source>
+        <translation>kein G-Code-Wort (ein Buchstabe und eine Zahl)</translation>
+    </message>
+    <message>
+        <source>a letter without a number</source>
+        <translation>ein Buchstabe ohne Zahl</translation>
+    </message>
+    <message>
         <source>{letter} is needed: with G90.1 the centre is written whole</source>
         <translation>{letter} wird benötigt: mit G90.1 wird der Mittelpunkt vollständig (absolut) angegeben</translation>
     </message>
@@ -2237,6 +2333,18 @@ fläche (mm²)</translation>
     <message>
         <source>the end is {last} mm from the centre, the start {first} mm: the arc does not fit (at most {RADIUS_TOLERANCE} mm apart)</source>
         <translation>der Endpunkt ist {last} mm vom Mittelpunkt entfernt, der Startpunkt {first} mm: der Bogen passt nicht (höchstens {RADIUS_TOLERANCE} mm Unterschied)</translation>
+    </message>
+    <message>
+        <source>coordinate offsets set by the program (G92) are not read: use G54-G59 and an offsets table</source>
+        <translation>vom Programm gesetzte Koordinatenverschiebungen (G92) werden nicht gelesen: verwenden Sie G54-G59 und eine Nullpunkttabelle</translation>
+    </message>
+    <message>
+        <source>subprogram calls are not read</source>
+        <translation>Unterprogrammaufrufe werden nicht gelesen</translation>
+    </message>
+    <message>
+        <source>subprogram returns are not read</source>
+        <translation>Unterprogrammrücksprünge werden nicht gelesen</translation>
     </message>
     <message>
         <source>not a G code this reader knows (docs/GCODE.md)</source>
@@ -2635,8 +2743,20 @@ fläche (mm²)</translation>
         <translation>{where}.face: muss eine Zeichenkette sein, erhalten: {json_dumps_face}</translation>
     </message>
     <message>
+        <source>a list of numbers</source>
+        <translation>eine Liste von Zahlen</translation>
+    </message>
+    <message>
+        <source>a list of [x, y] points</source>
+        <translation>eine Liste von [x, y]-Punkten</translation>
+    </message>
+    <message>
         <source>{where}.degree: must be a whole number, got {value}</source>
         <translation>{where}.degree: muss eine ganze Zahl sein, erhalten: {value}</translation>
+    </message>
+    <message>
+        <source>a non-empty list of slabs</source>
+        <translation>eine nicht leere Liste von Schichten</translation>
     </message>
     <message>
         <source>{name}: slabs[{k}]</source>
@@ -2645,6 +2765,14 @@ fläche (mm²)</translation>
     <message>
         <source>{where}: expected an object {"z_top": ..., "loops": [...]}, got {json_dumps_slab}</source>
         <translation>{where}: erwartet wurde ein Objekt {"z_top": ..., "loops": [...]}, erhalten: {json_dumps_slab}</translation>
+    </message>
+    <message>
+        <source>a non-empty list of loops</source>
+        <translation>eine nicht leere Liste von Schleifen</translation>
+    </message>
+    <message>
+        <source>a non-empty list of curves</source>
+        <translation>eine nicht leere Liste von Kurven</translation>
     </message>
     <message>
         <source>{where}: encloses no area ({area} mm²): a loop must bound a region</source>
@@ -2871,6 +2999,10 @@ fläche (mm²)</translation>
         <translation>ist {helix}°, aber Schneiden mit Drall am Eckenradius werden nicht berechnet: ein Werkzeug mit Eckenradius ({corner} mm) braucht gerade Schneiden (helix 0)</translation>
     </message>
     <message>
+        <source>needs a staircase stock: the helix solver does not take a general 2.5D stock yet (use straight flutes, helix 0)</source>
+        <translation>erfordert ein Treppenstufen-Rohteil: der Drall-Löser nimmt noch kein allgemeines 2,5D-Rohteil (verwenden Sie gerade Schneiden, Drallwinkel 0)</translation>
+    </message>
+    <message>
         <source>must be one of {value}, got {stock_model}</source>
         <translation>muss einer der Werte {value} sein, erhalten: {stock_model}</translation>
     </message>
@@ -2899,8 +3031,48 @@ fläche (mm²)</translation>
         <translation>das Zwischenrohteil überstreicht die {curved} Bögen und Kurven des Programms als Sehnen zwischen ihren CL-Punkten, jede innerhalb von {tolerance} mm vom Bogen (höchstens {step} mm lang)</translation>
     </message>
     <message>
+        <source>give a larger --sweep-tolerance or --stock-model initial (the stock as given)</source>
+        <translation>geben Sie eine größere --sweep-tolerance oder --stock-model initial (das Rohteil wie gegeben) an</translation>
+    </message>
+    <message>
+        <source>give --stock-model initial (the stock as given)</source>
+        <translation>geben Sie --stock-model initial (das Rohteil wie gegeben) an</translation>
+    </message>
+    <message>
+        <source>{toolpath}: the in-process stock</source>
+        <translation>{toolpath}: das Zwischenrohteil</translation>
+    </message>
+    <message>
+        <source>its sweep ({value} pieces, {count_text_balls} bounding balls)</source>
+        <translation>sein Überstreichen ({value} Stücke, {count_text_balls} Hüllkugeln)</translation>
+    </message>
+    <message>
+        <source>give a larger --phi-step or a shorter --phi-range</source>
+        <translation>geben Sie einen größeren --phi-step oder einen kürzeren --phi-range an</translation>
+    </message>
+    <message>
+        <source>the {command} run</source>
+        <translation>der Lauf von {command}</translation>
+    </message>
+    <message>
+        <source>{toolpath}: the boolean reference</source>
+        <translation>{toolpath}: die Boolesche Referenz</translation>
+    </message>
+    <message>
+        <source>check fewer CL points (--check, --check-every) or give a larger --phi-step</source>
+        <translation>prüfen Sie weniger CL-Punkte (--check, --check-every) oder geben Sie einen größeren --phi-step an</translation>
+    </message>
+    <message>
         <source>{grid} mm gives the stock {cells} Z-map cells, more than the Z-map holds ({MAX_CELLS}): give a larger --grid</source>
         <translation>{grid} mm ergibt für das Rohteil {cells} Z-Map-Zellen, mehr als die Z-Map fasst ({MAX_CELLS}): geben Sie ein größeres --grid an</translation>
+    </message>
+    <message>
+        <source>the Z-map's {cells} cells</source>
+        <translation>die {cells} Zellen der Z-Map</translation>
+    </message>
+    <message>
+        <source>give a larger --grid</source>
+        <translation>geben Sie ein größeres --grid an</translation>
     </message>
     <message>
         <source> (the edge step is the grid's unless --edge-step is given)</source>
@@ -2909,6 +3081,10 @@ fläche (mm²)</translation>
     <message>
         <source>an edge step of {edge_step} mm samples the {flute_length} mm flute at {along} points{default}, {p} angles x {along_2} = {p_along} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
         <translation>eine Kantenschrittweite von {edge_step} mm tastet die {flute_length} mm lange Schneide an {along} Punkten{default} ab, {p} Winkel x {along_2} = {p_along} pro CL-Punkt, mehr als die Z-Map aufnimmt ({MAX_SAMPLES}): geben Sie ein größeres {option} oder --phi-step an</translation>
+    </message>
+    <message>
+        <source>give a larger {option} or --phi-step</source>
+        <translation>geben Sie einen größeren Wert für {option} oder --phi-step an</translation>
     </message>
     <message>
         <source>the Z-map baseline needs a staircase stock; {source} is a general 2.5D stock</source>
@@ -3055,16 +3231,32 @@ fläche (mm²)</translation>
         <translation>{source}: {operation_label}: Vorschübe pro Minute benötigen eine Drehzahl (SPINDL, oder geben Sie die Drehzahl an)</translation>
     </message>
     <message>
-        <source>{why}: {value} (more than the {count_text_limit} a run takes without confirmation): {value_2}give --allow-large to run it anyway</source>
-        <translation>{why}: {value} (mehr als die {count_text_limit}, die ein Lauf ohne Bestätigung verarbeitet): {value_2}geben Sie --allow-large an, um ihn trotzdem auszuführen</translation>
+        <source>{why}: {shown} (more than the {most} a run takes without confirmation): {remedy}, or give --allow-large to run it anyway</source>
+        <translation>{why}: {shown} (mehr als die {most}, die ein Lauf ohne Bestätigung verarbeitet): {remedy}, oder geben Sie --allow-large an, um ihn trotzdem auszuführen</translation>
     </message>
     <message>
-        <source>{why}: {what} would need about {size_text_needed} of memory, and this process may use {value}{value_2}</source>
-        <translation>{why}: {what} würde etwa {size_text_needed} Arbeitsspeicher benötigen, und der für diesen Prozess nutzbare Arbeitsspeicher beträgt {value}{value_2}</translation>
+        <source>{why}: {shown} (more than the {most} a run takes without confirmation): give --allow-large to run it anyway</source>
+        <translation>{why}: {shown} (mehr als die {most}, die ein Lauf ohne Bestätigung verarbeitet): geben Sie --allow-large an, um ihn trotzdem auszuführen</translation>
+    </message>
+    <message>
+        <source>{why}: {what} would need about {size} of memory, and this process may use {free}: {remedy}</source>
+        <translation>{why}: {what} würde etwa {size} Arbeitsspeicher benötigen, und der für diesen Prozess nutzbare Arbeitsspeicher beträgt {free}: {remedy}</translation>
+    </message>
+    <message>
+        <source>{why}: {what} would need about {size} of memory, and this process may use {free}</source>
+        <translation>{why}: {what} würde etwa {size} Arbeitsspeicher benötigen, und der für diesen Prozess nutzbare Arbeitsspeicher beträgt {free}</translation>
     </message>
     <message>
         <source>{why}: {os_fspath_path} would take about {size_text_needed}, and {folder} has {size_text_space} free; give --allow-large to try anyway</source>
         <translation>{why}: {os_fspath_path} würde etwa {size_text_needed} belegen, und in {folder} sind {size_text_space} frei; geben Sie --allow-large an, um es trotzdem zu versuchen</translation>
+    </message>
+    <message>
+        <source>job {job}, CL points {start}..{last}: {name}: {cause}</source>
+        <translation>Auftrag {job}, CL-Punkte {start}..{last}: {name}: {cause}</translation>
+    </message>
+    <message>
+        <source>CL points {start}..{last}: {name}: {cause}</source>
+        <translation>CL-Punkte {start}..{last}: {name}: {cause}</translation>
     </message>
     <message>
         <source>workers must be a whole number &gt;= 0 (0 = all cores), got {workers}</source>

@@ -42,11 +42,11 @@ import numpy as np
 
 from ..engine.polynomials import real_roots_unit
 from ..engine.tolerances import RECOGNITION_TOL as TOL
-from ..errors import InputError
+from ..errors import InputError, note
 from .freecad_env import FreeCAD, Part
 
 #: What every refusal adds: what a 2.5D stock must be.
-RULE = "a 2.5D stock has horizontal tops and vertical walls"
+RULE = note("a 2.5D stock has horizontal tops and vertical walls")
 
 
 @dataclass(frozen=True)

@@ -50,7 +50,7 @@ import numpy as np
 from ..engine import Staircase
 from ..engine.tolerances import RECOGNITION_TOL as TOL
 from ..engine.walls import SplineWall
-from ..errors import InputError
+from ..errors import InputError, note
 from .faces import bspline_of_edge, classify_face, critical_points, fold, shape_box
 from .freecad_env import DEBIAN_LIB, FreeCAD, Part
 from .solids import bspline_curve, parameter_at_y, trimmed_to_y
@@ -366,7 +366,9 @@ def _free_edges(shape):
         f"Face{k}" for k, face in enumerate(shape.Faces, start=1)
         if any(count[edge.hashCode()] == 1 for edge in face.Edges)
     ]
-    return f"{', '.join(faces)} {'has an edge' if len(faces) == 1 else 'have edges'} bordering no other face"
+    listed = ", ".join(faces)
+    return note(f"{listed} has an edge bordering no other face" if len(faces) == 1 else
+                f"{listed} have edges bordering no other face")
 
 
 def _window(y_window, limits, where):
@@ -501,7 +503,7 @@ def _wall(chain, names, kinds, window, y_samples, where):
 
 
 #: What a staircase's walls must be, added to refusals of its walls.
-_ALONG_X = "a staircase's walls run across y with one x for each y"
+_ALONG_X = note("a staircase's walls run across y with one x for each y")
 
 
 def _exact_curve(edges, window, straight_x):

@@ -41,7 +41,7 @@ from scipy.interpolate import BSpline
 
 from ..engine.terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
 from ..engine.tolerances import RECOGNITION_TOL as TOL
-from ..errors import InputError
+from ..errors import InputError, note
 from .faces import bezier_as_bspline, classify_face
 from .freecad_env import FreeCAD, Part
 from .recognise import recognise, single_solid
@@ -182,7 +182,7 @@ def _face_of(point, spanning, where, k):
     if len(near) > 1:
         near = [(face, kind) for face, kind in near if face.isPartOfDomain(*face.Surface.parameter(point))]
     if len(near) != 1:
-        found = ", ".join(kind.name for _, kind in near) or "no wall face"
+        found = ", ".join(kind.name for _, kind in near) or note("no wall face")
         raise InputError(f"{where}slab {k}: the section at z = {point.z:.6g} near x = {point.x:.6g}, "
                          f"y = {point.y:.6g} lies on {found}; expected one vertical wall")
     return near[0]

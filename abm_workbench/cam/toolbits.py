@@ -19,6 +19,7 @@ Another shape is named by the words of its name (a drill, tap, reamer …: forma
 
 import os
 
+from ..errors import note
 from ..formats.cl.tools import ToolSpec, kind_of_name
 
 #: Toolbit shape names -> kinds.
@@ -47,8 +48,8 @@ def controller_tool(controller):
     names = getattr(tool, "PropertiesList", ())
     shape = getattr(tool, "ShapeName", "") or os.path.splitext(os.path.basename(getattr(tool, "BitShape", "")))[0]
     kind = SHAPE_KINDS.get(shape.lower()) or kind_of_name(f"{shape} {tool.Label}")
-    warning = "" if kind else (f"{source}: toolbit {tool.Label!r} of shape {shape!r}: a shape the reader does not "
-                               "know; its kind is unknown")
+    warning = "" if kind else note(f"{source}: toolbit {tool.Label!r} of shape {shape!r}: a shape the reader does "
+                                   "not know; its kind is unknown")
     kind = kind or "unknown"
     diameter = _length(getattr(tool, "Diameter", None))
     radius = {"flat": 0.0, "ball": None if diameter is None else diameter / 2.0}.get(kind)

@@ -24,7 +24,7 @@ import re
 import secrets
 import stat
 
-from ..errors import InputError
+from ..errors import InputError, note
 
 
 #: The number grammar of every reader: optional sign, ASCII digits with an optional decimal point, optional exponent.
@@ -166,12 +166,12 @@ def check_input_file(path, what="input"):
 
 def _kind(mode):
     """What a file of `mode` (not a regular file) is, in words."""
-    for test, words in ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
-                        (stat.S_ISSOCK, "a socket"), (stat.S_ISCHR, "a character device"),
-                        (stat.S_ISBLK, "a block device")):
+    for test, words in ((stat.S_ISDIR, note("a folder")), (stat.S_ISFIFO, note("a FIFO (named pipe)")),
+                        (stat.S_ISSOCK, note("a socket")), (stat.S_ISCHR, note("a character device")),
+                        (stat.S_ISBLK, note("a block device"))):
         if test(mode):
             return words
-    return "a special file"
+    return note("a special file")
 
 
 def read_bytes(path, factor=TEXT_MEMORY_FACTOR):
@@ -189,7 +189,7 @@ def read_bytes(path, factor=TEXT_MEMORY_FACTOR):
         status = os.fstat(descriptor)
         if not stat.S_ISREG(status.st_mode):
             raise InputError(f"{name}: is {_kind(status.st_mode)}, not a file; give the input file itself")
-        check_memory(factor * status.st_size, name, f"reading its {status.st_size:,} bytes")
+        check_memory(factor * status.st_size, name, note(f"reading its {status.st_size:,} bytes"))
         file = open(descriptor, "rb", closefd=False)
         try:
             return file.read()

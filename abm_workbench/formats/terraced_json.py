@@ -26,7 +26,7 @@ import os
 import numpy as np
 
 from ..engine.terraced_model import Loop, PlanArc, PlanLine, PlanSpline, Slab, TerracedStock
-from ..errors import InputError
+from ..errors import InputError, note
 from . import check_keys, json_number, load_json_object, replacing
 
 FORMAT = "abm-terraced/1"
@@ -70,13 +70,13 @@ def _curve(data, where):
                            np.radians(json_number(data["start_angle"], f"{where}.start_angle")),
                            np.radians(json_number(data["sweep"], f"{where}.sweep")), face)
         knots = [json_number(v, f"{where}.knots[{i}]") for i, v in enumerate(_list(data["knots"], f"{where}.knots",
-                                                                                    "a list of numbers"))]
+                                                                                    note("a list of numbers")))]
         control = [_point(v, f"{where}.control[{i}]") for i, v in enumerate(_list(data["control"], f"{where}.control",
-                                                                                   "a list of [x, y] points"))]
+                                                                                   note("a list of [x, y] points")))]
         weights = None
         if "weights" in data:
             weights = [json_number(v, f"{where}.weights[{i}]")
-                       for i, v in enumerate(_list(data["weights"], f"{where}.weights", "a list of numbers"))]
+                       for i, v in enumerate(_list(data["weights"], f"{where}.weights", note("a list of numbers")))]
         degree = data["degree"]
         if isinstance(degree, bool) or not isinstance(degree, int):
             raise InputError(f"{where}.degree: must be a whole number, got {json.dumps(degree)}")
@@ -98,16 +98,17 @@ def load_terraced(path):
         raise InputError(f"{name}: units must be 'mm', got {json.dumps(data['units'])}")
     bottom = json_number(data["base_z"], f"{name}: base_z")
     slabs = []
-    for k, slab in enumerate(_list(data["slabs"], f"{name}: slabs", "a non-empty list of slabs")):
+    for k, slab in enumerate(_list(data["slabs"], f"{name}: slabs", note("a non-empty list of slabs"))):
         where = f"{name}: slabs[{k}]"
         if not isinstance(slab, dict):
             raise InputError(f"{where}: expected an object {{\"z_top\": ..., \"loops\": [...]}}, got {json.dumps(slab)}")
         check_keys(slab, ("z_top", "loops"), (), where)
         z_top = json_number(slab["z_top"], f"{where}.z_top")
         loops = []
-        for i, loop in enumerate(_list(slab["loops"], f"{where}.loops", "a non-empty list of loops")):
+        for i, loop in enumerate(_list(slab["loops"], f"{where}.loops", note("a non-empty list of loops"))):
             curves = [_curve(c, f"{where}.loops[{i}][{c_index}]")
-                      for c_index, c in enumerate(_list(loop, f"{where}.loops[{i}]", "a non-empty list of curves"))]
+                      for c_index, c in enumerate(_list(loop, f"{where}.loops[{i}]",
+                                                        note("a non-empty list of curves")))]
             try:
                 loops.append(Loop(tuple(curves)))
             except ValueError as error:

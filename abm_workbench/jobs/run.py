@@ -32,8 +32,8 @@ from .job import Job, cl_indices, load_job_stock, prepare
 
 
 #: Why a helical tool is refused on a general 2.5D stock.
-HELIX_NEEDS_STAIRCASE = ("needs a staircase stock: the helix solver does not take a general 2.5D stock yet (use "
-                         "straight flutes, helix 0)")
+HELIX_NEEDS_STAIRCASE = note("needs a staircase stock: the helix solver does not take a general 2.5D stock yet "
+                              "(use straight flutes, helix 0)")
 
 
 def flute_1(stock, tool, toolpath, settings, progress=None):
@@ -147,13 +147,13 @@ def check_sweep(moves, tolerance, toolpath):
     from ..limits import LARGE_PIECES, check_large, check_memory, count_text
 
     pieces, spans, balls = sweep_size(moves, tolerance)
-    remedy = ("give a larger --sweep-tolerance or --stock-model initial (the stock as given)" if pieces > 2 * spans
-              else "give --stock-model initial (the stock as given)")
-    why = f"{toolpath}: the in-process stock"
+    remedy = note("give a larger --sweep-tolerance or --stock-model initial (the stock as given)" if pieces > 2 * spans
+                  else "give --stock-model initial (the stock as given)")
+    why = note(f"{toolpath}: the in-process stock")
     check_large(toolpath, "the in-process stock would sweep the program's cutting moves into {} pieces and bounding "
                 "balls", pieces + balls, LARGE_PIECES, remedy)
     check_memory(PIECE_BYTES * pieces + SPAN_BYTES * spans + BALL_BYTES * balls, why,
-                 f"its sweep ({count_text(pieces)} pieces, {count_text(balls)} bounding balls)", remedy)
+                 note(f"its sweep ({count_text(pieces)} pieces, {count_text(balls)} bounding balls)"), remedy)
 
 
 #: Bytes of memory per instant (CL point × angle): the engine's temporaries while it computes a chunk
@@ -178,7 +178,7 @@ def check_run_size(job, prepared, *, command="engage", workers=1, whole=False, o
     m, p = len(prepared.toolpath), prepared.settings.phi.size
     instants = m * p
     why = f"{job.toolpath}: {count_text(m)} CL points x {count_text(p)} angles"
-    remedy = "give a larger --phi-step or a shorter --phi-range"
+    remedy = note("give a larger --phi-step or a shorter --phi-range")
     check_large(job.toolpath, f"{count_text(m)} CL points x {count_text(p)} angles = {{}} instants", instants,
                 LARGE_INSTANTS, remedy)
     chunk = max(p, CHUNK_INSTANTS)
@@ -188,16 +188,16 @@ def check_run_size(job, prepared, *, command="engage", workers=1, whole=False, o
         per_instant = FORCE_BYTES * prepared.tool.flutes
     needed = (BASE_MEMORY + max(1, workers) * chunk * (ENGINE_BYTES + IN_FLIGHT_CHUNKS * CSV_BYTES)
               + per_instant * instants)
-    check_memory(needed, why, f"the {command} run", remedy)
+    check_memory(needed, why, note(f"the {command} run"), remedy)
     if out is not None:
         check_disk((NPZ_BYTES if os.fspath(out).lower().endswith(".npz") else CSV_BYTES) * instants, out, why)
     if boolean is not None or command == "validate":
         checked = m if boolean is None else len(boolean)
         flutes = prepared.tool.flutes if prepared.tool.helix else 1
-        check_large(f"{job.toolpath}: the boolean reference", f"would check {count_text(checked)} CL points x "
+        check_large(note(f"{job.toolpath}: the boolean reference"), f"would check {count_text(checked)} CL points x "
                     f"{count_text(p)} angles{f' x {flutes} flutes' if flutes > 1 else ''} = {{}} instants",
                     checked * p * flutes, LARGE_BOOLEAN_INSTANTS,
-                    "check fewer CL points (--check, --check-every) or give a larger --phi-step")
+                    note("check fewer CL points (--check, --check-every) or give a larger --phi-step"))
 
 
 def check_zmap_size(staircase, tool, m, p, method):
@@ -215,7 +215,8 @@ def check_zmap_size(staircase, tool, m, p, method):
     if cells > MAX_CELLS:
         raise ParameterError("grid", f"{grid:g} mm gives the stock {cells:,.0f} Z-map cells, more than the Z-map "
                                      f"holds ({MAX_CELLS:,}): give a larger --grid")
-    check_memory(ZMAP_CELL_BYTES * cells, "--grid", f"the Z-map's {cells:,.0f} cells", "give a larger --grid")
+    check_memory(ZMAP_CELL_BYTES * cells, "--grid", note(f"the Z-map's {cells:,.0f} cells"),
+                 note("give a larger --grid"))
     field, option = ("edge_step", "--edge-step") if method.edge_step is not None else ("grid", "--grid")
     default = "" if method.edge_step is not None else " (the edge step is the grid's unless --edge-step is given)"
     along = max(1, math.ceil(tool.flute_length / edge_step - 1e-9)) + 1  # as engine.zmap.zmap_engage samples
@@ -226,7 +227,7 @@ def check_zmap_size(staircase, tool, m, p, method):
                                     "or --phi-step")
     check_large(option, f"the Z-map would sample {{}} edge points ({m:,} CL points x {p:,} angles x {along:,} along "
                 f"the edge){default}", float(m) * p * along, LARGE_ZMAP_SAMPLES,
-                f"give a larger {option} or --phi-step")
+                note(f"give a larger {option} or --phi-step"))
 
 
 #: Bytes of memory per Z-map cell (its heights, sections and the temporaries of an update).

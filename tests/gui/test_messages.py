@@ -211,3 +211,37 @@ def test_a_file_without_solids_says_so_in_german(tmp_path):
     assert text == f"{path}: no solid named 'Solid1' in the BREP file (its solids: none)"
     assert Catalogue(templates()).translated(text, german) == \
         f"{path}: kein Volumenkörper namens 'Solid1' in der BREP-Datei (sie enthält keine Volumenkörper)"
+
+
+def test_phrases_returned_or_joined_into_a_message_are_german_too(tmp_path):
+    """Words a helper returns into a message (what a path is instead of a file, why a G-code word or a B-spline's
+    knots are refused, what a JSON value must be) and a remedy added to the size checks' messages are gathered
+    (errors.note) and shown in German, the values kept."""
+    from abm_workbench.formats import check_input_file
+    from abm_workbench.formats.cl.nurbs import resolve
+    from abm_workbench.formats.gcode.blocks import blocks_of_text
+    from abm_workbench.formats.terraced_json import load_terraced
+    from abm_workbench.limits import check_large, check_memory
+
+    messages = Catalogue(templates())
+
+    def shown(call):
+        return messages.translated(_raised(call), german)
+
+    assert shown(lambda: check_input_file(tmp_path)) == \
+        f"{tmp_path}: ist ein Ordner, keine Datei; geben Sie die Eingabedatei selbst an"
+    assert shown(lambda: blocks_of_text("G1 X=5\n", "a.nc")) == \
+        "a.nc:1: X=5: Zuweisungen (X=…) werden nicht gelesen: schreiben Sie einen Buchstaben und eine Zahl"
+    assert shown(lambda: resolve([0, 0, 1, 0.5, 1, 1], [(0, 0, 0), (1, 0, 0), (2, 0, 0)], None, 0.01)) == \
+        "seine Knoten ergeben keine Kurve (full, Grad 2: die Knoten fallen)"
+    stock = tmp_path / "plate.json"
+    stock.write_text('{"format": "abm-terraced/1", "units": "mm", "base_z": 0, "slabs": []}')
+    assert shown(lambda: load_terraced(stock)) == \
+        f"{stock}: slabs: muss eine nicht leere Liste von Schichten sein, erhalten: []"
+    memory = shown(lambda: check_memory(1e30, "a.apt", "the engage run", "give a larger --grid"))
+    assert memory.startswith("a.apt: der Lauf von engage würde etwa ") and \
+        memory.endswith(": geben Sie ein größeres --grid an"), memory
+    large = shown(lambda: check_large("a.apt", "{} pieces", 10, 5, "give --stock-model initial (the stock as given)"))
+    assert large == ("a.apt: 10 pieces (mehr als die 5, die ein Lauf ohne Bestätigung verarbeitet): geben Sie "
+                     "--stock-model initial (das Rohteil wie gegeben) an, oder geben Sie --allow-large an, um ihn "
+                     "trotzdem auszuführen")

@@ -24,6 +24,8 @@ import math
 
 import numpy as np
 
+from ...errors import note
+
 #: Direction cosines must be unit and square to within this.
 FRAME_TOLERANCE = 1e-3
 IDENTITY = (np.eye(3), np.zeros(3))
@@ -35,11 +37,11 @@ def _orthonormal(rotation):
     rotation = np.asarray(rotation, dtype=float)
     error = np.abs(rotation.T @ rotation - np.eye(3)).max()
     if error > FRAME_TOLERANCE:
-        return "its axes are not unit vectors square to each other"
+        return note("its axes are not unit vectors square to each other")
     u, _, vt = np.linalg.svd(rotation)
     nearest = u @ vt
     if np.linalg.det(nearest) < 0.0:
-        return "it is a reflection, not a rotation"
+        return note("it is a reflection, not a rotation")
     return nearest
 
 

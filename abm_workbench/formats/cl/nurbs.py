@@ -29,6 +29,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ...errors import note
 from .arcs import spend
 
 #: Highest degree read.
@@ -67,14 +68,15 @@ def _check(layout):
     """A reason the layout's knots make no curve, or None."""
     knots, n, degree = layout.knots, len(layout.control), layout.degree
     if np.any(np.diff(knots) < 0.0):
-        return "the knots decrease"
+        return note("the knots decrease")
     low, high = knots[degree], knots[n]
     if not high > low:
-        return "the knots leave the curve no parameter range"
+        return note("the knots leave the curve no parameter range")
     inner = knots[(knots > low) & (knots < high)]
     values, counts = np.unique(inner, return_counts=True)
     if (counts > degree).any():
-        return f"knot {values[counts > degree][0]:g} is repeated more often than the degree {degree}: the curve breaks there"
+        knot = values[counts > degree][0]
+        return note(f"knot {knot:g} is repeated more often than the degree {degree}: the curve breaks there")
     return None
 
 
@@ -97,7 +99,7 @@ def resolve(knots, control, start, tolerance):
     for layout in candidates:
         reason = _check(layout)
         if reason is not None:
-            reasons.append(f"{layout.words}, degree {layout.degree}: {reason}")
+            reasons.append(note(f"{layout.words}, degree {layout.degree}: {reason}"))
             continue
         if start is None:
             return layout, 0.0
@@ -107,7 +109,8 @@ def resolve(knots, control, start, tolerance):
             return layout, 0.0
         curves.append((layout, gap))
     if not curves:
-        raise ValueError("its knots give no curve (" + "; ".join(reasons) + ")")
+        listed = "; ".join(reasons)
+        raise ValueError(f"its knots give no curve ({listed})")
     return curves[0]
 
 

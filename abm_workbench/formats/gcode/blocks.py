@@ -20,7 +20,7 @@ parameters and expressions (``#1``, ``[…]``), LinuxCNC's O-word subroutines an
 import re
 from typing import NamedTuple
 
-from ...errors import InputError
+from ...errors import InputError, note
 from .. import MAX_MAGNITUDE
 from ..cl.lexer import split_lines
 
@@ -120,11 +120,11 @@ def _reason(compact, at):
     """Why the text at `at` is no word."""
     char = compact[at]
     if char in "#[]":
-        return "parameters and expressions (#, [ ]) are not read"
+        return note("parameters and expressions (#, [ ]) are not read")
     if char.isalpha():
         if at + 1 < len(compact) and compact[at + 1] == "=":
-            return "assignments (X=…) are not read: write a letter and a number"
+            return note("assignments (X=…) are not read: write a letter and a number")
         if at + 1 < len(compact) and compact[at + 1].isalpha():
-            return "not a G-code word (a letter and a number)"
-        return "a letter without a number"
-    return "not a G-code word (a letter and a number)"
+            return note("not a G-code word (a letter and a number)")
+        return note("a letter without a number")
+    return note("not a G-code word (a letter and a number)")

@@ -7,6 +7,7 @@ coolant, overrides, outputs, modal state, LinuxCNC's user M codes 100-199). Anyt
 with the word and the reason.
 """
 
+from ...errors import note
 from .cycles import HOLE_CYCLES
 
 #: Letters a block may hold besides G and M (N and O are taken out by the lexer; D, H: the
@@ -29,9 +30,9 @@ READ_M = {3.0, 4.0, 5.0, 6.0, 61.0, 128.0, 129.0}
 IGNORED_M = {0.0, 1.0, 2.0, 30.0, 60.0, 7.0, 8.0, 9.0, 48.0, 49.0, 50.0, 51.0, 52.0, 53.0, 62.0, 63.0, 64.0, 65.0,
              66.0, 67.0, 68.0, 70.0, 71.0, 72.0, 73.0, *map(float, range(100, 200))}
 #: Codes refused with their reason.
-REFUSED = {("G", 92.0): "coordinate offsets set by the program (G92) are not read: use G54-G59 and an offsets "
-                        "table",
-           ("M", 98.0): "subprogram calls are not read", ("M", 99.0): "subprogram returns are not read"}
+REFUSED = {("G", 92.0): note("coordinate offsets set by the program (G92) are not read: use G54-G59 and an "
+                             "offsets table"),
+           ("M", 98.0): note("subprogram calls are not read"), ("M", 99.0): note("subprogram returns are not read")}
 
 
 class CodeError(ValueError):
