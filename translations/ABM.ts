@@ -88,6 +88,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{label}: validation report {page}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Tool table of {file}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -140,6 +144,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>validation cancelled: nothing written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{file}: not imported: it works in inches, and the units of the tool table {table} were not said</source>
         <translation type="unfinished"></translation>
     </message>
@@ -152,15 +160,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{label}: validation report {page}</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>{file}: not imported: its program loads tools by number, and no tool table was chosen (a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>validation cancelled: nothing written</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -88,6 +88,10 @@
         <translation>Eingriffe</translation>
     </message>
     <message>
+        <source>{label}: validation report {page}</source>
+        <translation>{label}: Validierungsbericht {page}</translation>
+    </message>
+    <message>
         <source>Tool table of {file}</source>
         <translation>Werkzeugtabelle zu {file}</translation>
     </message>
@@ -140,6 +144,10 @@
         <translation>{label}: berechnen Sie es zuerst (berechnen Sie das Dokument neu)</translation>
     </message>
     <message>
+        <source>validation cancelled: nothing written</source>
+        <translation>Validierung abgebrochen: nichts geschrieben</translation>
+    </message>
+    <message>
         <source>{file}: not imported: it works in inches, and the units of the tool table {table} were not said</source>
         <translation>{file}: nicht importiert: es arbeitet in Zoll, und die Einheiten der Werkzeugtabelle {table} wurden nicht angegeben</translation>
     </message>
@@ -152,16 +160,8 @@
         <translation>Ordner für den Validierungsbericht</translation>
     </message>
     <message>
-        <source>{label}: validation report {page}</source>
-        <translation>{label}: Validierungsbericht {page}</translation>
-    </message>
-    <message>
         <source>{file}: not imported: its program loads tools by number, and no tool table was chosen (a LinuxCNC tool table, or the FreeCAD document that posted the program)</source>
         <translation>{file}: nicht importiert: das Programm lädt Werkzeuge per Nummer, und es wurde keine Werkzeugtabelle gewählt (eine LinuxCNC-Werkzeugtabelle oder das FreeCAD-Dokument, aus dem das Programm erzeugt wurde)</translation>
-    </message>
-    <message>
-        <source>validation cancelled: nothing written</source>
-        <translation>Validierung abgebrochen: nichts geschrieben</translation>
     </message>
     <message>
         <source>length of cut</source>

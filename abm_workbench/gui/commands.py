@@ -489,7 +489,8 @@ class ValidateEngagement(Command):
             doc = FreeCAD.ActiveDocument
             engagement = selected_engagement(doc)
             if engagement.Proxy.result(engagement) is None:
-                raise CommandError(translate("{label}: compute it first (recompute the document)", label=engagement.Label))
+                raise CommandError(translate("{label}: compute it first (recompute the document)",
+                                             label=engagement.Label))
             count = len(engagement.Toolpath.Proxy.load(engagement.Toolpath)[0])
         except Exception as error:  # noqa: BLE001 (said in a dialog and the report view; the GUI goes on)
             report_error(error, window)
@@ -551,12 +552,13 @@ class ValidateEngagement(Command):
                                             label=engagement.Label, count=len(cls)))
         try:
             run = prepare(engagement, cls, folder or report_folder(engagement))
-            page = worker.work(run, sink=progress, cancelled=Cancelled(translate("validation cancelled: nothing written")))
+            cancelled = Cancelled(translate("validation cancelled: nothing written"))
+            page = worker.work(run, sink=progress, cancelled=cancelled)
         finally:
             progress.close()
         engagement.ValidationReport = page
-        FreeCAD.Console.PrintMessage(f"{PROG}: " + translate("{label}: validation report {page}", label=engagement.Label,
-                                                             page=page) + "\n")
+        said = translate("{label}: validation report {page}", label=engagement.Label, page=page)
+        FreeCAD.Console.PrintMessage(f"{PROG}: {said}\n")
         if open_report:
             from PySide import QtCore, QtGui
 
