@@ -714,6 +714,46 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>ABM against booleans</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Helical edges (β = {helix}°), flute 1 of {flutes}, ABM against booleans</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL points {listed} of the pass, numbered 0..{last} here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the paper's quintic walls (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in-process: the stock minus what earlier cutting moves of the program removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>initial: the stock as given ({why})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>initial: the stock as given</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pass CL {cl}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>exact walls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>quintic walls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Input files missing: choose the folder that holds them</source>
         <translation type="unfinished"></translation>
     </message>
@@ -751,6 +791,398 @@ cut (mm)</source>
     </message>
     <message>
         <source>Computing the in-process stock…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chosen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>largest error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>deepest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>shallowest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>middle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL points shown: {listed}. Shaded: the engagement segments (ABM).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bull-nose mill D {diameter} mm, corner radius {corner} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{checked} of {count}: {spans} (the statistics, comparison.csv and segments.csv are over these; the engine computed all {count})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ABM {abm_low}–{abm_high} mm, boolean {low}–{high} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL points shown: {listed} (the first {count} of {total}). Shaded: the engagement segments (ABM).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flat end mill D {diameter} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ball-end mill D {diameter} mm (R {corner} mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all {count} (the statistics are over every instant)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>swept pieces near</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>angles changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max l, stock as given (ABM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max l, in-process (ABM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max l, in-process (boolean)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |Δl| (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>instants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>relative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |rel. error|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean |rel. error|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |ΔLEP| (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |ΔUEP| (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mismatched</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |Δ end| (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>end mismatched</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error by UEP surface, whole pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The paper (Siemens NX reference): negligible error with the UEP on a top or a straight wall, below 6 % with the UEP on a curved wall.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Length of cut along the pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth of cut along the pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Length of cut and cut area over φ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shape of the cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error per engagement segment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error over the pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>largest |relative error| over {count} instants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean |relative error|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>largest |l_ABM − l_ref|, all instants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>largest |Δ end edge| over {count} instants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ABM {abm} s vs boolean {boolean} s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{path}: {count} CL points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CL points checked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rotation angles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>φ {start}..{end}° step {step}°: {count} angles, {instants} instants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cutting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>parameters [from]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stock model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{swept} ({gauged} by the exact test)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error of the length of cut as the paper defines it: relative, (l&lt;sub&gt;ABM&lt;/sub&gt; − l&lt;sub&gt;ref&lt;/sub&gt;)/l&lt;sub&gt;ref&lt;/sub&gt;, with l&lt;sub&gt;ref&lt;/sub&gt; from the OpenCASCADE boolean of the cutting edges with the stock solid. Where l&lt;sub&gt;ref&lt;/sub&gt; &amp;lt; {tiny} mm (the edge grazes the stock) the absolute difference l&lt;sub&gt;ABM&lt;/sub&gt; − l&lt;sub&gt;ref&lt;/sub&gt; in mm is used instead; those instants are counted apart. LEP/UEP: largest difference along the edge (mm). Mismatched: instants where only one method finds engagement. End edge: the largest |end&lt;sub&gt;ABM&lt;/sub&gt; − end&lt;sub&gt;ref&lt;/sub&gt;| of the end cutting edge's engaged length (tip to the corner, in the tip plane) over the instants where both give it, and the instants where only one finds it in the stock.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>segment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UEP on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>section</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every CL point: &lt;code&gt;segments.csv&lt;/code&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>model test {number} {low}–{high} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This job is model test {number}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth of cut over the pass (highest UEP z − lowest LEP z per CL point): {ours}. The paper's passes: {papers}.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ABM engine, whole pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{time} µs per instant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>boolean reference (OpenCASCADE)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{time} s per CL point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>boolean / ABM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stock solid and staircase (read, build or recognise)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>paper, {name}, 53 CC points (MATLAB, i7 2.7 GHz)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>angle step not stated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, LEP and UEP of both, pieces of both, segment, uep_surface, end_abm, end_ref, end_difference (the end edge's engaged length; against the in-process stock also l_initial: ABM in the stock as given)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error per CL point and engagement segment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error per kind of UEP surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>depth of cut per CL point, both methods, and checked (1 where the boolean checked it; against the in-process stock also changed: whether earlier moves changed the CL point, and swept: the swept pieces the boolean sectioned)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>depth of cut (ABM); paper {low}–{high} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>depth of cut (ABM); paper: not a model test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{stock} ({walls}; y window {low}..{high} mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{tool}, {flutes} flutes, flute length {length} mm, helix {helix}°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{tool}, {flutes} flutes, flute length {length} mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed {feed} mm/tooth, inclination {inclination}°, {speed} rpm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed {feed} mm/tooth, inclination {inclination}°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{count} of the swept pieces that meet the tool's edges (summed over the checked CL points) are moves OpenCASCADE has no reliable solids for (a bull-nose mill's moves within 5.74° of the plane across its axis, whose solids have nearly degenerate faces its booleans misjudge; oblique moves of a tool shorter than its corner radius): the reference decides where the edges lie in those with an exact inside test of its own (the tool's distance function minimised along the move, every crossing isolated to 10⁻¹⁰ mm), independent of the engine (column &lt;code&gt;gauged&lt;/code&gt; of &lt;code&gt;depth.csv&lt;/code&gt;).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process stock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>For this ball mill the cutting edge is the corner arc (radius {radius} mm, sectioned by the boolean as a true circular arc) followed by the straight side: l is the arc length along both, LEP and UEP are heights along the tool axis above the tip (mm).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>For this bull-nose mill the cutting edge is the corner arc (radius {radius} mm, sectioned by the boolean as a true circular arc) followed by the straight side: l is the arc length along both, LEP and UEP are heights along the tool axis above the tip (mm).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>peak resultant force over the pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{force} N at CL {cl}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean resultant force, pass average</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>peak torque</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fig.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Both the engine and the boolean reference work on the &lt;b&gt;in-process stock&lt;/b&gt;: at each CL point, the stock minus the volumes swept by the cutting moves that end before it. The boolean reference sections each cutting-edge line with the stock solid and with exact solids of the volumes swept by the earlier moves that can reach the tool, and keeps what lies in the stock and in none of them. The pictures show the top of that in-process stock around the tool, found the same way along vertical lines. Earlier moves changed {changed} of {count} CL points ({instants} instants by more than {tiny} mm; {engaged} of the changed CL points still engage). Per instant, &lt;code&gt;comparison.csv&lt;/code&gt; has the length in the stock as given (&lt;code&gt;l_initial&lt;/code&gt;) beside both in-process lengths; &lt;code&gt;depth.csv&lt;/code&gt; says which CL points changed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>peak spindle power</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linear edge-force model (docs/FORCES.md) on the ABM engagement, global frame, summed over the flutes cutting at each angle of flute 1; over φ at CL {shown} (dotted in the first plot). Also &lt;a href='forces.png'&gt;&lt;code&gt;forces.png&lt;/code&gt;&lt;/a&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>whole pass</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -716,6 +716,46 @@ fläche (mm²)</translation>
         <translation>Durch die Werkzeugbahndatei festgelegt, die Werte, für die sie erstellt wurde:</translation>
     </message>
     <message>
+        <source>ABM against booleans</source>
+        <translation>ABM gegen boolesche Operationen</translation>
+    </message>
+    <message>
+        <source>Helical edges (β = {helix}°), flute 1 of {flutes}, ABM against booleans</source>
+        <translation>Wendelförmige Schneiden (β = {helix}°), Schneide 1 von {flutes}, ABM gegen boolesche Operationen</translation>
+    </message>
+    <message>
+        <source>CL points {listed} of the pass, numbered 0..{last} here.</source>
+        <translation>CL-Punkte {listed} des Durchgangs, hier mit 0..{last} nummeriert.</translation>
+    </message>
+    <message>
+        <source>the paper's quintic walls (JSON)</source>
+        <translation>die quintischen Wände des Artikels (JSON)</translation>
+    </message>
+    <message>
+        <source>in-process: the stock minus what earlier cutting moves of the program removed</source>
+        <translation>Zwischenrohteil: das Rohteil ohne das, was frühere Schnittbewegungen des Programms entfernt haben</translation>
+    </message>
+    <message>
+        <source>initial: the stock as given ({why})</source>
+        <translation>Ausgangsrohteil: das Rohteil wie gegeben ({why})</translation>
+    </message>
+    <message>
+        <source>initial: the stock as given</source>
+        <translation>Ausgangsrohteil: das Rohteil wie gegeben</translation>
+    </message>
+    <message>
+        <source>pass CL {cl}</source>
+        <translation>CL {cl} des Durchgangs</translation>
+    </message>
+    <message>
+        <source>exact walls</source>
+        <translation>exakte Wände</translation>
+    </message>
+    <message>
+        <source>quintic walls</source>
+        <translation>quintische Wände</translation>
+    </message>
+    <message>
         <source>Input files missing: choose the folder that holds them</source>
         <translation>Eingabedateien fehlen: den Ordner wählen, der sie enthält</translation>
     </message>
@@ -754,6 +794,398 @@ fläche (mm²)</translation>
     <message>
         <source>Computing the in-process stock…</source>
         <translation>Zwischenrohteil wird berechnet…</translation>
+    </message>
+    <message>
+        <source>chosen</source>
+        <translation>gewählt</translation>
+    </message>
+    <message>
+        <source>largest error</source>
+        <translation>größter Fehler</translation>
+    </message>
+    <message>
+        <source>deepest</source>
+        <translation>tiefster</translation>
+    </message>
+    <message>
+        <source>shallowest</source>
+        <translation>flachster</translation>
+    </message>
+    <message>
+        <source>middle</source>
+        <translation>Mitte</translation>
+    </message>
+    <message>
+        <source>CL points shown: {listed}. Shaded: the engagement segments (ABM).</source>
+        <translation>Gezeigte CL-Punkte: {listed}. Schattiert: die Eingriffssegmente (ABM).</translation>
+    </message>
+    <message>
+        <source>bull-nose mill D {diameter} mm, corner radius {corner} mm</source>
+        <translation>Torusfräser D {diameter} mm, Eckenradius {corner} mm</translation>
+    </message>
+    <message>
+        <source>{checked} of {count}: {spans} (the statistics, comparison.csv and segments.csv are over these; the engine computed all {count})</source>
+        <translation>{checked} von {count}: {spans} (die Statistik, comparison.csv und segments.csv beziehen sich auf diese; der Rechenkern hat alle {count} berechnet)</translation>
+    </message>
+    <message>
+        <source>ABM {abm_low}–{abm_high} mm, boolean {low}–{high} mm</source>
+        <translation>ABM {abm_low}–{abm_high} mm, boolesch {low}–{high} mm</translation>
+    </message>
+    <message>
+        <source>CL points shown: {listed} (the first {count} of {total}). Shaded: the engagement segments (ABM).</source>
+        <translation>Gezeigte CL-Punkte: {listed} (die ersten {count} von {total}). Schattiert: die Eingriffssegmente (ABM).</translation>
+    </message>
+    <message>
+        <source>flat end mill D {diameter} mm</source>
+        <translation>Schaftfräser D {diameter} mm</translation>
+    </message>
+    <message>
+        <source>ball-end mill D {diameter} mm (R {corner} mm)</source>
+        <translation>Kugelfräser D {diameter} mm (R {corner} mm)</translation>
+    </message>
+    <message>
+        <source>all {count} (the statistics are over every instant)</source>
+        <translation>alle {count} (die Statistik bezieht sich auf jeden Zeitpunkt)</translation>
+    </message>
+    <message>
+        <source>changed</source>
+        <translation>verändert</translation>
+    </message>
+    <message>
+        <source>swept pieces near</source>
+        <translation>überstrichene Stücke in der Nähe</translation>
+    </message>
+    <message>
+        <source>angles changed</source>
+        <translation>veränderte Winkel</translation>
+    </message>
+    <message>
+        <source>max l, stock as given (ABM)</source>
+        <translation>max. l, Rohteil wie gegeben (ABM)</translation>
+    </message>
+    <message>
+        <source>max l, in-process (ABM)</source>
+        <translation>max. l, Zwischenrohteil (ABM)</translation>
+    </message>
+    <message>
+        <source>max l, in-process (boolean)</source>
+        <translation>max. l, Zwischenrohteil (boolesch)</translation>
+    </message>
+    <message>
+        <source>max |Δl| (mm)</source>
+        <translation>max. |Δl| (mm)</translation>
+    </message>
+    <message>
+        <source>instants</source>
+        <translation>Zeitpunkte</translation>
+    </message>
+    <message>
+        <source>relative</source>
+        <translation>relativ</translation>
+    </message>
+    <message>
+        <source>max |rel. error|</source>
+        <translation>max. |rel. Fehler|</translation>
+    </message>
+    <message>
+        <source>mean |rel. error|</source>
+        <translation>mittl. |rel. Fehler|</translation>
+    </message>
+    <message>
+        <source>max |ΔLEP| (mm)</source>
+        <translation>max. |ΔLEP| (mm)</translation>
+    </message>
+    <message>
+        <source>max |ΔUEP| (mm)</source>
+        <translation>max. |ΔUEP| (mm)</translation>
+    </message>
+    <message>
+        <source>mismatched</source>
+        <translation>abweichend</translation>
+    </message>
+    <message>
+        <source>max |Δ end| (mm)</source>
+        <translation>max. |Δ Stirn| (mm)</translation>
+    </message>
+    <message>
+        <source>end mismatched</source>
+        <translation>Stirn abweichend</translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <source>Error by UEP surface, whole pass</source>
+        <translation>Fehler nach UEP-Fläche, ganzer Durchgang</translation>
+    </message>
+    <message>
+        <source>The paper (Siemens NX reference): negligible error with the UEP on a top or a straight wall, below 6 % with the UEP on a curved wall.</source>
+        <translation>Der Artikel (Referenz Siemens NX): vernachlässigbarer Fehler mit dem UEP auf einer Deckfläche oder einer geraden Wand, unter 6 % mit dem UEP auf einer gekrümmten Wand.</translation>
+    </message>
+    <message>
+        <source>Length of cut along the pass</source>
+        <translation>Schnittlänge entlang des Durchgangs</translation>
+    </message>
+    <message>
+        <source>Depth of cut along the pass</source>
+        <translation>Schnitttiefe entlang des Durchgangs</translation>
+    </message>
+    <message>
+        <source>Length of cut and cut area over φ</source>
+        <translation>Schnittlänge und Spanungsquerschnitt über φ</translation>
+    </message>
+    <message>
+        <source>Shape of the cut</source>
+        <translation>Form des Schnitts</translation>
+    </message>
+    <message>
+        <source>Error per engagement segment</source>
+        <translation>Fehler je Eingriffssegment</translation>
+    </message>
+    <message>
+        <source>Error over the pass</source>
+        <translation>Fehler über den Durchgang</translation>
+    </message>
+    <message>
+        <source>Timings</source>
+        <translation>Laufzeiten</translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation>Dateien</translation>
+    </message>
+    <message>
+        <source>largest |relative error| over {count} instants</source>
+        <translation>größter |relativer Fehler| über {count} Zeitpunkte</translation>
+    </message>
+    <message>
+        <source>mean |relative error|</source>
+        <translation>mittlerer |relativer Fehler|</translation>
+    </message>
+    <message>
+        <source>largest |l_ABM − l_ref|, all instants</source>
+        <translation>größtes |l_ABM − l_ref|, alle Zeitpunkte</translation>
+    </message>
+    <message>
+        <source>largest |Δ end edge| over {count} instants</source>
+        <translation>größtes |Δ Stirnschneide| über {count} Zeitpunkte</translation>
+    </message>
+    <message>
+        <source>ABM {abm} s vs boolean {boolean} s</source>
+        <translation>ABM {abm} s gegenüber boolesch {boolean} s</translation>
+    </message>
+    <message>
+        <source>{path}: {count} CL points</source>
+        <translation>{path}: {count} CL-Punkte</translation>
+    </message>
+    <message>
+        <source>CL points checked</source>
+        <translation>geprüfte CL-Punkte</translation>
+    </message>
+    <message>
+        <source>rotation angles</source>
+        <translation>Drehwinkel</translation>
+    </message>
+    <message>
+        <source>φ {start}..{end}° step {step}°: {count} angles, {instants} instants</source>
+        <translation>φ {start}..{end}° Schritt {step}°: {count} Winkel, {instants} Zeitpunkte</translation>
+    </message>
+    <message>
+        <source>tool</source>
+        <translation>Werkzeug</translation>
+    </message>
+    <message>
+        <source>cutting</source>
+        <translation>Schnittwerte</translation>
+    </message>
+    <message>
+        <source>parameters [from]</source>
+        <translation>Parameter [aus]</translation>
+    </message>
+    <message>
+        <source>stock model</source>
+        <translation>Rohteilmodell</translation>
+    </message>
+    <message>
+        <source>{swept} ({gauged} by the exact test)</source>
+        <translation>{swept} ({gauged} durch den exakten Test)</translation>
+    </message>
+    <message>
+        <source>Error of the length of cut as the paper defines it: relative, (l&lt;sub&gt;ABM&lt;/sub&gt; − l&lt;sub&gt;ref&lt;/sub&gt;)/l&lt;sub&gt;ref&lt;/sub&gt;, with l&lt;sub&gt;ref&lt;/sub&gt; from the OpenCASCADE boolean of the cutting edges with the stock solid. Where l&lt;sub&gt;ref&lt;/sub&gt; &amp;lt; {tiny} mm (the edge grazes the stock) the absolute difference l&lt;sub&gt;ABM&lt;/sub&gt; − l&lt;sub&gt;ref&lt;/sub&gt; in mm is used instead; those instants are counted apart. LEP/UEP: largest difference along the edge (mm). Mismatched: instants where only one method finds engagement. End edge: the largest |end&lt;sub&gt;ABM&lt;/sub&gt; − end&lt;sub&gt;ref&lt;/sub&gt;| of the end cutting edge's engaged length (tip to the corner, in the tip plane) over the instants where both give it, and the instants where only one finds it in the stock.</source>
+        <translation>Fehler der Schnittlänge, wie der Artikel ihn definiert: relativ, (l&lt;sub&gt;ABM&lt;/sub&gt; − l&lt;sub&gt;ref&lt;/sub&gt;)/l&lt;sub&gt;ref&lt;/sub&gt;, mit l&lt;sub&gt;ref&lt;/sub&gt; aus der booleschen Operation von OpenCASCADE der Schneiden mit dem Rohteilkörper. Wo l&lt;sub&gt;ref&lt;/sub&gt; &amp;lt; {tiny} mm ist (die Schneide streift das Rohteil), wird stattdessen die absolute Differenz l&lt;sub&gt;ABM&lt;/sub&gt; − l&lt;sub&gt;ref&lt;/sub&gt; in mm verwendet; diese Zeitpunkte werden gesondert gezählt. LEP/UEP: größte Differenz entlang der Schneide (mm). Abweichend: Zeitpunkte, an denen nur ein Verfahren Eingriff findet. Stirnschneide: das größte |end&lt;sub&gt;ABM&lt;/sub&gt; − end&lt;sub&gt;ref&lt;/sub&gt;| der Eingriffslänge der Stirnschneide (von der Spitze bis zur Ecke, in der Spitzenebene) über die Zeitpunkte, an denen beide sie liefern, und die Zeitpunkte, an denen nur eines sie im Rohteil findet.</translation>
+    </message>
+    <message>
+        <source>segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>UEP on</source>
+        <translation>UEP auf</translation>
+    </message>
+    <message>
+        <source>section</source>
+        <translation>Abschnitt</translation>
+    </message>
+    <message>
+        <source>wall</source>
+        <translation>Wand</translation>
+    </message>
+    <message>
+        <source>Every CL point: &lt;code&gt;segments.csv&lt;/code&gt;.</source>
+        <translation>Jeder CL-Punkt: &lt;code&gt;segments.csv&lt;/code&gt;.</translation>
+    </message>
+    <message>
+        <source>model test {number} {low}–{high} mm</source>
+        <translation>Modelltest {number} {low}–{high} mm</translation>
+    </message>
+    <message>
+        <source>This job is model test {number}.</source>
+        <translation>Dieser Auftrag ist Modelltest {number}.</translation>
+    </message>
+    <message>
+        <source>Depth of cut over the pass (highest UEP z − lowest LEP z per CL point): {ours}. The paper's passes: {papers}.</source>
+        <translation>Schnitttiefe über den Durchgang (höchstes UEP-z − niedrigstes LEP-z je CL-Punkt): {ours}. Die Durchgänge des Artikels: {papers}.</translation>
+    </message>
+    <message>
+        <source>ABM engine, whole pass</source>
+        <translation>ABM-Rechenkern, ganzer Durchgang</translation>
+    </message>
+    <message>
+        <source>{time} µs per instant</source>
+        <translation>{time} µs je Zeitpunkt</translation>
+    </message>
+    <message>
+        <source>boolean reference (OpenCASCADE)</source>
+        <translation>boolesche Referenz (OpenCASCADE)</translation>
+    </message>
+    <message>
+        <source>{time} s per CL point</source>
+        <translation>{time} s je CL-Punkt</translation>
+    </message>
+    <message>
+        <source>boolean / ABM</source>
+        <translation>boolesch / ABM</translation>
+    </message>
+    <message>
+        <source>stock solid and staircase (read, build or recognise)</source>
+        <translation>Rohteilkörper und Treppenstufen-Modell (lesen, aufbauen oder erkennen)</translation>
+    </message>
+    <message>
+        <source>paper, {name}, 53 CC points (MATLAB, i7 2.7 GHz)</source>
+        <translation>Artikel, {name}, 53 CC-Punkte (MATLAB, i7 2.7 GHz)</translation>
+    </message>
+    <message>
+        <source>angle step not stated</source>
+        <translation>Winkelschritt nicht angegeben</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, LEP and UEP of both, pieces of both, segment, uep_surface, end_abm, end_ref, end_difference (the end edge's engaged length; against the in-process stock also l_initial: ABM in the stock as given)</source>
+        <translation>eine Zeile je Zeitpunkt, den die boolesche Referenz geprüft hat: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, LEP und UEP beider, pieces beider, segment, uep_surface, end_abm, end_ref, end_difference (die Eingriffslänge der Stirnschneide; gegen das Zwischenrohteil auch l_initial: ABM im Rohteil wie gegeben)</translation>
+    </message>
+    <message>
+        <source>error per CL point and engagement segment</source>
+        <translation>Fehler je CL-Punkt und Eingriffssegment</translation>
+    </message>
+    <message>
+        <source>error per kind of UEP surface</source>
+        <translation>Fehler je Art der UEP-Fläche</translation>
+    </message>
+    <message>
+        <source>depth of cut per CL point, both methods, and checked (1 where the boolean checked it; against the in-process stock also changed: whether earlier moves changed the CL point, and swept: the swept pieces the boolean sectioned)</source>
+        <translation>Schnitttiefe je CL-Punkt, beide Verfahren, und checked (1, wo die boolesche Referenz ihn geprüft hat; gegen das Zwischenrohteil auch changed: ob frühere Bewegungen den CL-Punkt verändert haben, und swept: die überstrichenen Stücke, die die boolesche Referenz geschnitten hat)</translation>
+    </message>
+    <message>
+        <source>depth of cut (ABM); paper {low}–{high} mm</source>
+        <translation>Schnitttiefe (ABM); Artikel {low}–{high} mm</translation>
+    </message>
+    <message>
+        <source>depth of cut (ABM); paper: not a model test</source>
+        <translation>Schnitttiefe (ABM); Artikel: kein Modelltest</translation>
+    </message>
+    <message>
+        <source>{stock} ({walls}; y window {low}..{high} mm)</source>
+        <translation>{stock} ({walls}; y-Fenster {low}..{high} mm)</translation>
+    </message>
+    <message>
+        <source>{tool}, {flutes} flutes, flute length {length} mm, helix {helix}°</source>
+        <translation>{tool}, {flutes} Schneiden, Schneidenlänge {length} mm, Drallwinkel {helix}°</translation>
+    </message>
+    <message>
+        <source>{tool}, {flutes} flutes, flute length {length} mm</source>
+        <translation>{tool}, {flutes} Schneiden, Schneidenlänge {length} mm</translation>
+    </message>
+    <message>
+        <source>feed {feed} mm/tooth, inclination {inclination}°, {speed} rpm</source>
+        <translation>Vorschub {feed} mm/Zahn, Anstellwinkel {inclination}°, {speed} 1/min</translation>
+    </message>
+    <message>
+        <source>feed {feed} mm/tooth, inclination {inclination}°</source>
+        <translation>Vorschub {feed} mm/Zahn, Anstellwinkel {inclination}°</translation>
+    </message>
+    <message>
+        <source>{count} of the swept pieces that meet the tool's edges (summed over the checked CL points) are moves OpenCASCADE has no reliable solids for (a bull-nose mill's moves within 5.74° of the plane across its axis, whose solids have nearly degenerate faces its booleans misjudge; oblique moves of a tool shorter than its corner radius): the reference decides where the edges lie in those with an exact inside test of its own (the tool's distance function minimised along the move, every crossing isolated to 10⁻¹⁰ mm), independent of the engine (column &lt;code&gt;gauged&lt;/code&gt; of &lt;code&gt;depth.csv&lt;/code&gt;).</source>
+        <translation>{count} der überstrichenen Stücke, die die Schneiden des Werkzeugs treffen (summiert über die geprüften CL-Punkte), sind Bewegungen, für die OpenCASCADE keine verlässlichen Volumenkörper hat (Bewegungen eines Torusfräsers innerhalb von 5.74° der Ebene quer zu seiner Achse, deren Volumenkörper fast entartete Flächen haben, die seine booleschen Operationen falsch beurteilen; schräge Bewegungen eines Werkzeugs, das kürzer als sein Eckenradius ist): die Referenz entscheidet in diesen mit einem eigenen exakten Innen-Test, wo die Schneiden liegen (die Abstandsfunktion des Werkzeugs entlang der Bewegung minimiert, jeder Übergang auf 10⁻¹⁰ mm eingegrenzt), unabhängig vom Rechenkern (Spalte &lt;code&gt;gauged&lt;/code&gt; von &lt;code&gt;depth.csv&lt;/code&gt;).</translation>
+    </message>
+    <message>
+        <source>In-process stock</source>
+        <translation>Zwischenrohteil</translation>
+    </message>
+    <message>
+        <source>For this ball mill the cutting edge is the corner arc (radius {radius} mm, sectioned by the boolean as a true circular arc) followed by the straight side: l is the arc length along both, LEP and UEP are heights along the tool axis above the tip (mm).</source>
+        <translation>Bei diesem Kugelfräser ist die Schneide der Eckenbogen (Radius {radius} mm, von der booleschen Referenz als echter Kreisbogen geschnitten), gefolgt von der geraden Seite: l ist die Bogenlänge entlang beider, LEP und UEP sind Höhen entlang der Werkzeugachse über der Spitze (mm).</translation>
+    </message>
+    <message>
+        <source>For this bull-nose mill the cutting edge is the corner arc (radius {radius} mm, sectioned by the boolean as a true circular arc) followed by the straight side: l is the arc length along both, LEP and UEP are heights along the tool axis above the tip (mm).</source>
+        <translation>Bei diesem Torusfräser ist die Schneide der Eckenbogen (Radius {radius} mm, von der booleschen Referenz als echter Kreisbogen geschnitten), gefolgt von der geraden Seite: l ist die Bogenlänge entlang beider, LEP und UEP sind Höhen entlang der Werkzeugachse über der Spitze (mm).</translation>
+    </message>
+    <message>
+        <source>peak resultant force over the pass</source>
+        <translation>größte resultierende Kraft über den Durchgang</translation>
+    </message>
+    <message>
+        <source>{force} N at CL {cl}</source>
+        <translation>{force} N an CL {cl}</translation>
+    </message>
+    <message>
+        <source>mean resultant force, pass average</source>
+        <translation>mittlere resultierende Kraft, Mittel über den Durchgang</translation>
+    </message>
+    <message>
+        <source>peak torque</source>
+        <translation>größtes Drehmoment</translation>
+    </message>
+    <message>
+        <source>Fig.</source>
+        <translation>Abb.</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>Both the engine and the boolean reference work on the &lt;b&gt;in-process stock&lt;/b&gt;: at each CL point, the stock minus the volumes swept by the cutting moves that end before it. The boolean reference sections each cutting-edge line with the stock solid and with exact solids of the volumes swept by the earlier moves that can reach the tool, and keeps what lies in the stock and in none of them. The pictures show the top of that in-process stock around the tool, found the same way along vertical lines. Earlier moves changed {changed} of {count} CL points ({instants} instants by more than {tiny} mm; {engaged} of the changed CL points still engage). Per instant, &lt;code&gt;comparison.csv&lt;/code&gt; has the length in the stock as given (&lt;code&gt;l_initial&lt;/code&gt;) beside both in-process lengths; &lt;code&gt;depth.csv&lt;/code&gt; says which CL points changed.</source>
+        <translation>Sowohl der Rechenkern als auch die boolesche Referenz arbeiten mit dem &lt;b&gt;Zwischenrohteil&lt;/b&gt;: an jedem CL-Punkt das Rohteil ohne die Volumen, die die vor ihm endenden Schnittbewegungen überstrichen haben. Die boolesche Referenz schneidet jede Schneidenlinie mit dem Rohteilkörper und mit exakten Volumenkörpern der Volumen, die die früheren, das Werkzeug erreichenden Bewegungen überstrichen haben, und behält, was im Rohteil und in keinem von ihnen liegt. Die Bilder zeigen die Oberseite dieses Zwischenrohteils um das Werkzeug, ebenso entlang senkrechter Linien ermittelt. Frühere Bewegungen haben {changed} von {count} CL-Punkten verändert ({instants} Zeitpunkte um mehr als {tiny} mm; {engaged} der veränderten CL-Punkte sind noch im Eingriff). Je Zeitpunkt enthält &lt;code&gt;comparison.csv&lt;/code&gt; die Länge im Rohteil wie gegeben (&lt;code&gt;l_initial&lt;/code&gt;) neben beiden Längen am Zwischenrohteil; &lt;code&gt;depth.csv&lt;/code&gt; gibt an, welche CL-Punkte sich verändert haben.</translation>
+    </message>
+    <message>
+        <source>peak spindle power</source>
+        <translation>größte Spindelleistung</translation>
+    </message>
+    <message>
+        <source>Linear edge-force model (docs/FORCES.md) on the ABM engagement, global frame, summed over the flutes cutting at each angle of flute 1; over φ at CL {shown} (dotted in the first plot). Also &lt;a href='forces.png'&gt;&lt;code&gt;forces.png&lt;/code&gt;&lt;/a&gt;.</source>
+        <translation>Lineares Schneidkantenkraftmodell (docs/FORCES.md) auf dem ABM-Eingriff, globales Koordinatensystem, summiert über die Schneiden, die bei jedem Winkel von Schneide 1 schneiden; über φ an CL {shown} (im ersten Diagramm gepunktet). Außerdem &lt;a href='forces.png'&gt;&lt;code&gt;forces.png&lt;/code&gt;&lt;/a&gt;.</translation>
+    </message>
+    <message>
+        <source>whole pass</source>
+        <translation>ganzer Durchgang</translation>
     </message>
 </context>
 <context>

@@ -30,6 +30,8 @@ from xml.sax.saxutils import escape
 CONTEXT = "ABM"
 PARAMETERS = "ABM_parameters"
 GUI = os.path.dirname(os.path.abspath(__file__))
+#: The validation report's sources: their words passed to translate / noop are the GUI's too (context ABM).
+REPORT = os.path.join(os.path.dirname(GUI), "report")
 #: The translations folder and its template.
 FOLDER = os.path.join(os.path.dirname(os.path.dirname(GUI)), "translations")
 TEMPLATE = os.path.join(FOLDER, "ABM.ts")
@@ -52,6 +54,16 @@ def translate(text, context=CONTEXT, **values):
         return translated.format(**values)
     except (KeyError, IndexError, ValueError):
         return text.format(**values)
+
+
+def language():
+    """The code of the GUI's language ("de"; "en" where FreeCAD does not say it, or without its GUI)."""
+    try:
+        import FreeCADGui
+
+        return FreeCADGui.supportedLocales().get(FreeCADGui.getLocale(), "en").replace("_", "-")
+    except (ImportError, AttributeError):
+        return "en"
 
 
 def noop(text):
@@ -94,12 +106,15 @@ def messages(folder=GUI):
 
 
 def catalogue():
-    """{context: [text, …]} of everything the template holds: the GUI's words (:func:`messages`), the
-    engine's and readers' message templates (messages.templates) and the job parameters' labels."""
+    """{context: [text, …]} of everything the template holds: the GUI's words (:func:`messages`) and the
+    validation report's (report.html.translate), the engine's and readers' message templates
+    (messages.templates) and the job parameters' labels."""
     from ..jobs.parameters import PARAMETERS as LABELLED
     from .messages import CONTEXT as MESSAGES, templates
 
     found = messages()
+    for context, texts in messages(REPORT).items():  # the validation report's words (report.html.translate)
+        found[context] = list(dict.fromkeys(found.get(context, []) + texts))
     found[MESSAGES] = templates()
     found[PARAMETERS] = list(dict.fromkeys(parameter.label for parameter in LABELLED))
     return found

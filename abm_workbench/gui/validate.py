@@ -16,7 +16,8 @@ The boolean reference runs on the processes of the preference "Validation worker
 (``preferences.validation_workers``: N spawned processes, 0 one per core), as ``validate
 --workers``, never on FreeCAD's own process while its GUI is up (its bindings hold Python's lock through
 each boolean, which would stall the GUI's thread as long); a progress callback that raises (Cancel) ends
-those processes at once.
+those processes at once. The report is in the GUI's language (its headings and sentences, report.html's
+``words``; the plots and CSV files stay English), as the command line's is in English.
 """
 
 import os
@@ -26,6 +27,7 @@ import numpy as np
 
 from ..errors import InputError, ParameterError
 from .cancel import Cancelled as _WorkCancelled  # not .worker: this module runs without Qt too
+from .i18n import language, translate
 
 
 class Cancelled(_WorkCancelled):
@@ -94,6 +96,7 @@ def prepare(obj, cls, folder, workers=None, apart=None):
     if sweep is not None:
         sweep = (sweep[0], np.asarray(sweep[1])[index])
     label, workers = obj.Label, validation_workers() if workers is None else workers
+    code = language()  # here: FreeCAD's GUI is asked on its own thread
     if apart is None:
         import FreeCAD
 
@@ -109,24 +112,41 @@ def prepare(obj, cls, folder, workers=None, apart=None):
         forces = None if model is None else pass_forces_of(stock.model, tool, pass_, settings, model,
                                                              validation.engagement, in_process=sweep)
         subset = len(chosen) < len(toolpath)
-        what = "ABM against booleans" if helix is None else (
-            f"Helical edges (β = {tool.helix:g}°), flute 1 of {tool.flutes}, ABM against booleans")
+        what = translate("ABM against booleans") if helix is None else translate(
+            "Helical edges (β = {helix}°), flute 1 of {flutes}, ABM against booleans", helix=f"{tool.helix:g}",
+            flutes=tool.flutes)
         title = f"{what}: {label} ({os.path.basename(stock.source)} / {os.path.basename(hints.source)})"
-        description = (f"CL points {_cl_list(chosen)} of the pass, numbered 0..{len(chosen) - 1} here."
-                       if subset else "")
-        walls = "the paper's quintic walls (JSON)" if stock.shape is None else f"{stock.walls} walls"
+        description = translate("CL points {listed} of the pass, numbered 0..{last} here.", listed=_cl_list(chosen),
+                                last=len(chosen) - 1) if subset else ""
+        walls = translate("the paper's quintic walls (JSON)") if stock.shape is None else {
+            "exact": translate("exact walls"), "quintic": translate("quintic walls")}.get(stock.walls,
+                                                                                       f"{stock.walls} walls")
+        if sweep is not None:
+            stock_model = translate("in-process: the stock minus what earlier cutting moves of the program removed")
+        elif model_note:
+            stock_model = translate("initial: the stock as given ({why})", why=_localized(model_note))
+        else:
+            stock_model = translate("initial: the stock as given")
         job = ReportJob(title, description, stock.source, hints.source, pass_, tool, settings,
                         parameters.describe(lambda parameter: parameter.prop), walls, stock.y_window, stock_seconds,
-                        stock_model="in-process: the stock minus what earlier cutting moves of the program removed"
-                        if sweep is not None else
-                        "initial: the stock as given" + (f" ({model_note})" if model_note else ""))
-        shown = [(i, f"pass CL {cl}") for i, cl in enumerate(chosen)][:6]
+                        stock_model=stock_model)
+        shown = [(i, translate("pass CL {cl}", cl=cl)) for i, cl in enumerate(chosen)][:6]
         os.makedirs(os.path.dirname(os.path.abspath(folder)), exist_ok=True)
         with staged(folder, folder=True) as temporary:
-            page = write_report(temporary, validation, job, shown, forces)
+            page = write_report(temporary, validation, job, shown, forces, words=translate, language=code)
         return os.path.join(os.path.abspath(folder), os.path.basename(page))
 
     return run
+
+
+def _localized(text):
+    """`text`, a message of the job model, in the GUI's language (gui.reporting.localized; as it is without
+    FreeCAD's GUI modules)."""
+    try:
+        from .reporting import localized
+    except ImportError:
+        return text
+    return localized(text)
 
 
 def _cl_list(cls):

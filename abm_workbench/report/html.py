@@ -5,9 +5,14 @@ plot a PNG embedded as base64) and the tables of :mod:`.tables`; with cutting fo
 "Cutting forces" section (force over φ at the CL points shown, peak force along the pass) whose
 figure is also ``forces.png``. Lengths in mm, angles in degrees, times in s, relative errors in
 %, forces in N.
+
+The page's headings and sentences are English, or in the reader's language where ``words`` is given
+(:func:`translate`; the GUI gives Qt's translation of the workbench's context ``ABM``, whose template gathers
+the texts passed to :func:`translate` here). The plots, the CSV files and their column names stay English.
 """
 
 import base64
+import contextvars
 import html
 import io
 import os
@@ -33,6 +38,33 @@ _OWN_MODEL_TEST = re.compile(r"\s*model test (\d+)\b", re.IGNORECASE)
 DETAIL_PLOTS = 8
 #: At most this many CL points get a picture of the in-process stock.
 STOCK_VIEWS = 4
+
+#: The report's words in the reader's language: a function of an English text (a template with {placeholders})
+#: that gives its translation, or None for English (:func:`translate`).
+_WORDS = contextvars.ContextVar("report_words", default=None)
+
+
+def translate(text, **values):
+    """`text`, words of the report (a template with {placeholders}), in the language the report is written
+    in (report_page's `words`; English where none is given), its placeholders filled with `values`. A
+    translation whose placeholders are not the text's (a translator's slip) is not used."""
+    words = _WORDS.get()
+    shown = text if words is None else words(text)
+    if not values:
+        return shown
+    try:
+        return shown.format(**values)
+    except (KeyError, IndexError, ValueError):
+        return text.format(**values)
+
+
+def noop(text):
+    """`text` unchanged, marked for the translation template: translated where it is shown (:func:`translate`)."""
+    return text
+
+
+#: Why a CL point is shown in detail (report_cls, plots.representative_cl), for the translation template.
+WHY_WORDS = (noop("chosen"), noop("largest error"), noop("deepest"), noop("shallowest"), noop("middle"))
 
 _CSS = """
 body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", sans-serif; color: #222; background: #f6f7f9;
@@ -105,14 +137,15 @@ def report_cls(validation, requested=None):
     return chosen
 
 
-def write_report(folder, validation, job: ReportJob, cls, forces=None, views=None):
+def write_report(folder, validation, job: ReportJob, cls, forces=None, views=None, words=None, language="en"):
     """Write index.html and the four CSV tables of `validation` into `folder` (which exists).
 
     cls: (index, why) of the CL points shown in detail. forces: the pass's Forces (or an
     engagement object's PassForces), for the "Cutting forces" section and forces.png; None: no
     forces. views: for a validation against the in-process stock, {cl: (x (c,), y (c,), z (c, c))
     mm} the top of the in-process stock around those CL points (cad.inprocess_boolean.stock_heights),
-    pictured in the "In-process stock" section. Returns the path of index.html.
+    pictured in the "In-process stock" section. words, language: the page's language (see report_page).
+    Returns the path of index.html.
     """
     for name, text in report_tables(validation, job.toolpath).items():
         with open(os.path.join(folder, name), "w", encoding="utf-8", newline="") as file:
@@ -126,7 +159,7 @@ def write_report(folder, validation, job: ReportJob, cls, forces=None, views=Non
             file.write(force_png)
     page = os.path.join(folder, "index.html")
     with open(page, "w", encoding="utf-8") as file:
-        file.write(report_page(validation, job, cls, forces, force_png, views))
+        file.write(report_page(validation, job, cls, forces, force_png, views, words, language))
     return page
 
 
@@ -136,10 +169,21 @@ def force_figure(forces, cls):
     return force_over_phi_figure(forces, sorted({cl for cl, _ in cls[:SHOWN_CL]}), along=True)
 
 
-def report_page(validation, job: ReportJob, cls, forces=None, force_png=None, views=None):
+def report_page(validation, job: ReportJob, cls, forces=None, force_png=None, views=None, words=None, language="en"):
     """The HTML text of the report; with `forces`, the "Cutting forces" section showing `force_png`
     (force_figure's PNG bytes, made here when not given); against the in-process stock, the
-    "In-process stock" section (pictures of `views`, see write_report)."""
+    "In-process stock" section (pictures of `views`, see write_report). words: a function of each English
+    text of the page (a template with {placeholders}) giving it in the reader's language (None: English),
+    `language` its code for the page's ``lang`` ("en", "de")."""
+    token = _WORDS.set(words)
+    try:
+        return _page(validation, job, cls, forces, force_png, views, language)
+    finally:
+        _WORDS.reset(token)
+
+
+def _page(validation, job, cls, forces, force_png, views, language):
+    """report_page's text, in the language :func:`translate` gives."""
     shown = [cl for cl, _ in cls][:DETAIL_PLOTS]
     model = paper_model_test(job.description)
     paper_range = PAPER_DEPTH.get(model)
@@ -147,32 +191,52 @@ def report_page(validation, job: ReportJob, cls, forces=None, force_png=None, vi
         f"<h1>{_e(job.title)}</h1>",
         f"<p class='lead'>{_e(job.description)}</p>" if job.description else "",
         _headline(validation, paper_range),
-        "<h2>Job</h2>", _job_table(validation, job),
+        _heading(translate("Job")), _job_table(validation, job),
         _inprocess_section(validation, job, cls, views or {}) if validation.in_process is not None else "",
-        "<h2>Error by UEP surface, whole pass</h2>", _error_definition(job.tool), _surface_table(validation),
-        "<p class='note'>The paper (Siemens NX reference): negligible error with the UEP on a top or a straight "
-        "wall, below 6 % with the UEP on a curved wall.</p>",
-        "<h2>Length of cut along the pass <small>(Fig. 6(e)/(f))</small></h2>",
+        _heading(translate("Error by UEP surface, whole pass")), _error_definition(job.tool),
+        _surface_table(validation),
+        _note(translate("The paper (Siemens NX reference): negligible error with the UEP on a top or a straight "
+                        "wall, below 6 % with the UEP on a curved wall.")),
+        _heading(translate("Length of cut along the pass"), "Fig. 6(e)/(f)"),
         _image(figures.pass_length_figure(validation)),
-        "<h2>Depth of cut along the pass</h2>", _depth_text(validation, model),
+        _heading(translate("Depth of cut along the pass")), _depth_text(validation, model),
         _image(figures.depth_figure(validation, paper_range, f"paper, model test {model}")),
-        "<h2>Length of cut and cut area over φ <small>(Fig. 7)</small></h2>",
-        f"<p class='note'>CL points shown: {_e(_cl_list(cls[:DETAIL_PLOTS]))}"
-        f"{f' (the first {DETAIL_PLOTS} of {len(cls)})' if len(cls) > DETAIL_PLOTS else ''}. "
-        "Shaded: the engagement segments (ABM).</p>",
+        _heading(translate("Length of cut and cut area over φ"), "Fig. 7"),
+        _note(_shown_words(cls)),
         _image(figures.phi_figure(validation, shown)),
-        "<h2>Shape of the cut <small>(Fig. 6(c)/(d))</small></h2>",
+        _heading(translate("Shape of the cut"), "Fig. 6(c)/(d)"),
         _image(figures.shape_figure(validation, shown[:4])),
-        "<h2>Error per engagement segment <small>(Fig. 8(c), 8(e))</small></h2>",
+        _heading(translate("Error per engagement segment"), "Fig. 8(c), 8(e)"),
         _image(figures.error_figure(validation, shown)), _segment_table(validation, shown),
-        "<h2>Error over the pass</h2>", _image(figures.error_pass_figure(validation)),
+        _heading(translate("Error over the pass")), _image(figures.error_pass_figure(validation)),
         _force_section(forces, cls, force_png) if forces is not None else "",
-        "<h2>Timings</h2>", _timings(validation, job),
-        "<h2>Files</h2>", _files(),
+        _heading(translate("Timings")), _timings(validation, job),
+        _heading(translate("Files")), _files(),
     ]
     body = "\n".join(part for part in parts if part)
-    return (f"<!DOCTYPE html>\n<html lang='en'>\n<head>\n<meta charset='utf-8'>\n<title>{_e(job.title)}</title>\n"
+    return (f"<!DOCTYPE html>\n<html lang='{_e(language)}'>\n<head>\n<meta charset='utf-8'>\n"
+            f"<title>{_e(job.title)}</title>\n"
             f"<style>{_CSS}</style>\n</head>\n<body>\n<main>\n{body}\n</main>\n</body>\n</html>\n")
+
+
+def _heading(text, figure=""):
+    """An <h2> of `text` (escaped), with the paper's `figure` it matches in small print ("Fig. 7")."""
+    small = f" <small>({_e(translate('Fig.'))}{_e(figure[len('Fig.'):])})</small>" if figure else ""
+    return f"<h2>{_e(text)}{small}</h2>"
+
+
+def _note(text):
+    """A paragraph of class note of `text` (escaped)."""
+    return f"<p class='note'>{_e(text)}</p>"
+
+
+def _shown_words(cls):
+    """Which CL points the plots over φ show, in words."""
+    listed = _cl_list(cls[:DETAIL_PLOTS])
+    if len(cls) > DETAIL_PLOTS:
+        return translate("CL points shown: {listed} (the first {count} of {total}). Shaded: the engagement segments "
+                         "(ABM).", listed=listed, count=DETAIL_PLOTS, total=len(cls))
+    return translate("CL points shown: {listed}. Shaded: the engagement segments (ABM).", listed=listed)
 
 
 def _headline(validation, paper_range):
@@ -180,14 +244,19 @@ def _headline(validation, paper_range):
     total = overall(validation.comparison)
     comparison, seconds = validation.comparison, validation.seconds
     depth = f"{np.nanmin(comparison.depth_abm):.2f}–{np.nanmax(comparison.depth_abm):.2f} mm"
-    paper = f"paper {paper_range[0]:g}–{paper_range[1]:g} mm" if paper_range else "paper: not a model test"
     cards = [
-        (_percent(total["max_rel_error"]), f"largest |relative error| over {total['relative_instants']} instants"),
-        (_percent(total["mean_rel_error"]), "mean |relative error|"),
-        (f"{total['max_abs_difference']:.3g} mm", "largest |l_ABM − l_ref|, all instants"),
-        (f"{_mm(total['max_end_difference'])} mm", f"largest |Δ end edge| over {total['end_instants']} instants"),
-        (depth, f"depth of cut (ABM); {paper}"),
-        (f"{validation.speed_ratio:.0f} ×", f"ABM {seconds['abm']:.3g} s vs boolean {seconds['boolean']:.3g} s"),
+        (_percent(total["max_rel_error"]),
+         translate("largest |relative error| over {count} instants", count=total["relative_instants"])),
+        (_percent(total["mean_rel_error"]), translate("mean |relative error|")),
+        (f"{total['max_abs_difference']:.3g} mm", translate("largest |l_ABM − l_ref|, all instants")),
+        (f"{_mm(total['max_end_difference'])} mm",
+         translate("largest |Δ end edge| over {count} instants", count=total["end_instants"])),
+        (depth, translate("depth of cut (ABM); paper {low}–{high} mm", low=f"{paper_range[0]:g}",
+                          high=f"{paper_range[1]:g}") if paper_range else
+         translate("depth of cut (ABM); paper: not a model test")),
+        (f"{validation.speed_ratio:.0f} ×",
+         translate("ABM {abm} s vs boolean {boolean} s", abm=f"{seconds['abm']:.3g}",
+                   boolean=f"{seconds['boolean']:.3g}")),
     ]
     items = "".join(f"<div class='card'><b>{_e(value)}</b><span>{_e(text)}</span></div>" for value, text in cards)
     return f"<div class='cards'>{items}</div>"
@@ -197,41 +266,50 @@ def _job_table(validation, job):
     """Inputs and parameters of the job."""
     m, p = validation.engagement.shape
     settings = job.settings
+    tool, window = job.tool, job.y_window
+    size = dict(tool=tool_words(tool), flutes=tool.flutes, length=f"{tool.flute_length:g}")
+    feed = dict(feed=f"{settings.feed_per_tooth:g}", inclination=f"{settings.inclination:g}")
     rows = [
-        ("stock", f"{job.stock} ({job.walls}" + ("" if job.y_window is None else
-                                                f"; y window {job.y_window[0]:.6g}..{job.y_window[1]:.6g} mm") + ")"),
-        ("toolpath", f"{job.path}: {m} CL points"),
-        ("CL points checked", _checked_words(validation.checked)),
-        ("rotation angles", f"φ {settings.phi_start:g}..{settings.phi_end:g}° step {settings.phi_step:g}°: "
-                            f"{p} angles, {m * p} instants"),
-        ("tool", f"{tool_words(job.tool)}, {job.tool.flutes} flutes, flute length "
-                 f"{job.tool.flute_length:g} mm" + (f", helix {job.tool.helix:g}°" if job.tool.helix else "")),
-        ("cutting", f"feed {settings.feed_per_tooth:g} mm/tooth, inclination {settings.inclination:g}°"
-                    + (f", {settings.spindle_rpm:g} rpm" if settings.spindle_rpm else "")),
-        ("parameters [from]", job.parameters),
-        ("stock model", job.stock_model),
+        (translate("stock"), f"{job.stock} ({job.walls})" if window is None else
+         translate("{stock} ({walls}; y window {low}..{high} mm)", stock=job.stock, walls=job.walls,
+                   low=f"{window[0]:.6g}", high=f"{window[1]:.6g}")),
+        (translate("toolpath"), translate("{path}: {count} CL points", path=job.path, count=m)),
+        (translate("CL points checked"), _checked_words(validation.checked)),
+        (translate("rotation angles"),
+         translate("φ {start}..{end}° step {step}°: {count} angles, {instants} instants",
+                   start=f"{settings.phi_start:g}", end=f"{settings.phi_end:g}", step=f"{settings.phi_step:g}",
+                   count=p, instants=m * p)),
+        (translate("tool"), translate("{tool}, {flutes} flutes, flute length {length} mm, helix {helix}°",
+                                      helix=f"{tool.helix:g}", **size) if tool.helix else
+         translate("{tool}, {flutes} flutes, flute length {length} mm", **size)),
+        (translate("cutting"), translate("feed {feed} mm/tooth, inclination {inclination}°, {speed} rpm",
+                                         speed=f"{settings.spindle_rpm:g}", **feed) if settings.spindle_rpm else
+         translate("feed {feed} mm/tooth, inclination {inclination}°", **feed)),
+        (translate("parameters [from]"), job.parameters),
+        (translate("stock model"), job.stock_model),
     ]
     return _table(("", ""), rows, header=False)
 
 
 def tool_words(tool):
     """'flat end mill D 12 mm', 'bull-nose mill D 16 mm, corner radius 4 mm', 'ball-end mill D 6 mm (R 3 mm)'."""
+    size = dict(diameter=f"{tool.diameter:g}", corner=f"{tool.corner_radius:g}")
     if tool.corner_radius == 0.0:
-        return f"flat end mill D {tool.diameter:g} mm"
+        return translate("flat end mill D {diameter} mm", **size)
     if tool.corner_radius == tool.radius:
-        return f"ball-end mill D {tool.diameter:g} mm (R {tool.corner_radius:g} mm)"
-    return f"bull-nose mill D {tool.diameter:g} mm, corner radius {tool.corner_radius:g} mm"
+        return translate("ball-end mill D {diameter} mm (R {corner} mm)", **size)
+    return translate("bull-nose mill D {diameter} mm, corner radius {corner} mm", **size)
 
 
 def _checked_words(checked):
     """Which CL points the boolean checked ((m,) bool), in words: 'all 53', or 'k of m: 0, 27, 80–82'."""
     m, chosen = checked.size, np.flatnonzero(checked)
     if chosen.size == m:
-        return f"all {m} (the statistics are over every instant)"
+        return translate("all {count} (the statistics are over every instant)", count=m)
     runs = np.split(chosen, np.flatnonzero(np.diff(chosen) > 1) + 1)
     spans = ", ".join(str(run[0]) if run.size == 1 else f"{run[0]}–{run[-1]}" for run in runs)
-    return (f"{chosen.size} of {m}: {spans} (the statistics, comparison.csv and segments.csv are over these; "
-            f"the engine computed all {m})")
+    return translate("{checked} of {count}: {spans} (the statistics, comparison.csv and segments.csv are over these; "
+                     "the engine computed all {count})", checked=chosen.size, count=m, spans=spans)
 
 
 def _inprocess_section(validation, job, cls, views):
@@ -243,40 +321,42 @@ def _inprocess_section(validation, job, cls, views):
     rows = []
     gauged = check.gauged
     for cl, why in cls:
-        near = f"{check.swept[cl]:.0f}" + ("" if gauged is None or not gauged[cl] > 0 else
-                                            f" ({gauged[cl]:.0f} by the exact test)")
-        rows.append([f"{cl} ({why})", "yes" if check.changed[cl] else "no", near,
+        near = f"{check.swept[cl]:.0f}" if gauged is None or not gauged[cl] > 0 else translate(
+            "{swept} ({gauged} by the exact test)", swept=f"{check.swept[cl]:.0f}", gauged=f"{gauged[cl]:.0f}")
+        rows.append([f"{cl} ({translate(why)})", translate("yes") if check.changed[cl] else translate("no"), near,
                      str(int(differs[cl].sum())), _mm(check.initial[cl].max()), _mm(comparison.l_abm[cl].max()),
                      _mm(comparison.l_ref[cl].max()), _mm(np.abs(comparison.difference[cl]).max())])
-    head = ("CL", "changed", "swept pieces near", "angles changed", "max l, stock as given (ABM)",
-            "max l, in-process (ABM)", "max l, in-process (boolean)", "max |Δl| (mm)")
+    head = ("CL", translate("changed"), translate("swept pieces near"), translate("angles changed"),
+            translate("max l, stock as given (ABM)"), translate("max l, in-process (ABM)"),
+            translate("max l, in-process (boolean)"), translate("max |Δl| (mm)"))
     exact_test = ""
     if gauged is not None and np.nansum(gauged) > 0:
-        exact_test = (f"<p>{int(np.nansum(gauged))} of the swept pieces that meet the tool's edges (summed over the "
-                      f"checked CL points) are moves OpenCASCADE has no reliable solids for (a bull-nose mill's "
-                      f"moves within 5.74° of "
-                      f"the plane across its axis, whose solids have nearly degenerate faces its booleans misjudge; "
-                      f"oblique moves of a tool shorter than its corner radius): the reference decides where the "
-                      f"edges lie in those with an exact inside test of its own (the tool's distance function "
-                      f"minimised along the move, every crossing isolated to 10⁻¹⁰ mm), independent of the engine "
-                      f"(column <code>gauged</code> of <code>depth.csv</code>).</p>")
+        exact_test = "<p>" + translate(
+            "{count} of the swept pieces that meet the tool's edges (summed over the checked CL points) are moves "
+            "OpenCASCADE has no reliable solids for (a bull-nose mill's moves within 5.74° of the plane across its "
+            "axis, whose solids have nearly degenerate faces its booleans misjudge; oblique moves of a tool shorter "
+            "than its corner radius): the reference decides where the edges lie in those with an exact inside test "
+            "of its own (the tool's distance function minimised along the move, every crossing isolated to "
+            "10⁻¹⁰ mm), independent of the engine (column <code>gauged</code> of <code>depth.csv</code>).",
+            count=int(np.nansum(gauged))) + "</p>"
     inside = _table(head, rows, css="wide")
     picture = ""
     if views:
         picture = _image(figures.inprocess_figure(validation, views, job.toolpath, job.tool))
     changed_rows = check.changed & (comparison.l_abm > 0.0).any(axis=1)
     return "\n".join([
-        "<h2>In-process stock</h2>",
-        f"<p>Both the engine and the boolean reference work on the <b>in-process stock</b>: at each CL point, "
-        f"the stock minus the volumes swept by the cutting moves that end before it. The boolean reference "
-        f"sections each cutting-edge line with the stock solid and with exact solids of the volumes swept by "
-        f"the earlier moves that can reach the tool, and keeps what "
-        f"lies in the stock and in none of them. The pictures show the top of that in-process stock "
-        f"around the tool, found the same way along vertical lines. Earlier moves "
-        f"changed {int(check.changed.sum())} of {m} CL points ({int(differs.sum())} instants by more than "
-        f"{TINY_LENGTH:g} mm; {int(changed_rows.sum())} of the changed CL points still engage). Per instant, "
-        f"<code>comparison.csv</code> has the length in the stock as given (<code>l_initial</code>) beside "
-        f"both in-process lengths; <code>depth.csv</code> says which CL points changed.</p>",
+        _heading(translate("In-process stock")),
+        "<p>" + translate(
+            "Both the engine and the boolean reference work on the <b>in-process stock</b>: at each CL point, the "
+            "stock minus the volumes swept by the cutting moves that end before it. The boolean reference sections "
+            "each cutting-edge line with the stock solid and with exact solids of the volumes swept by the earlier "
+            "moves that can reach the tool, and keeps what lies in the stock and in none of them. The pictures show "
+            "the top of that in-process stock around the tool, found the same way along vertical lines. Earlier "
+            "moves changed {changed} of {count} CL points ({instants} instants by more than {tiny} mm; {engaged} of "
+            "the changed CL points still engage). Per instant, <code>comparison.csv</code> has the length in the "
+            "stock as given (<code>l_initial</code>) beside both in-process lengths; <code>depth.csv</code> says "
+            "which CL points changed.", changed=int(check.changed.sum()), count=m, instants=int(differs.sum()),
+            tiny=f"{TINY_LENGTH:g}", engaged=int(changed_rows.sum())) + "</p>",
         exact_test, inside, picture,
     ])
 
@@ -285,18 +365,23 @@ def _error_definition(tool=None):
     """How the error is defined (and, for a tool with a corner, what l, LEP and UEP are on it)."""
     corner = ""
     if tool is not None and tool.corner_radius > 0.0:
-        corner = (f" For this {tool.kind} mill the cutting edge is the corner arc (radius {tool.corner_radius:g} mm, "
-                  "sectioned by the boolean as a true circular arc) followed by the straight side: l is the arc "
-                  "length along both, LEP and UEP are heights along the tool axis above the tip (mm).")
-    return (f"<p class='note'>Error of the length of cut as the paper defines it: relative, "
-            f"(l<sub>ABM</sub> − l<sub>ref</sub>)/l<sub>ref</sub>, with l<sub>ref</sub> from the OpenCASCADE "
-            f"boolean of the cutting edges with the stock solid. Where l<sub>ref</sub> &lt; {TINY_LENGTH:g} mm "
-            f"(the edge grazes the stock) the absolute difference l<sub>ABM</sub> − l<sub>ref</sub> in mm is "
-            f"used instead; those instants are counted apart. LEP/UEP: largest difference along the edge "
-            f"(mm). Mismatched: instants where only one method finds engagement. End edge: the largest "
-            f"|end<sub>ABM</sub> − end<sub>ref</sub>| of the end cutting edge's engaged length (tip to the corner, in "
-            f"the tip plane) over the instants where both give it, and the instants where only one finds it in "
-            f"the stock.{_e(corner)}</p>")
+        radius = f"{tool.corner_radius:g}"
+        corner = " " + (translate(
+            "For this ball mill the cutting edge is the corner arc (radius {radius} mm, sectioned by the boolean as a "
+            "true circular arc) followed by the straight side: l is the arc length along both, LEP and UEP are "
+            "heights along the tool axis above the tip (mm).", radius=radius) if tool.kind == "ball" else translate(
+            "For this bull-nose mill the cutting edge is the corner arc (radius {radius} mm, sectioned by the boolean "
+            "as a true circular arc) followed by the straight side: l is the arc length along both, LEP and UEP are "
+            "heights along the tool axis above the tip (mm).", radius=radius))
+    return "<p class='note'>" + translate(
+        "Error of the length of cut as the paper defines it: relative, (l<sub>ABM</sub> − l<sub>ref</sub>)/"
+        "l<sub>ref</sub>, with l<sub>ref</sub> from the OpenCASCADE boolean of the cutting edges with the stock "
+        "solid. Where l<sub>ref</sub> &lt; {tiny} mm (the edge grazes the stock) the absolute difference "
+        "l<sub>ABM</sub> − l<sub>ref</sub> in mm is used instead; those instants are counted apart. LEP/UEP: "
+        "largest difference along the edge (mm). Mismatched: instants where only one method finds engagement. End "
+        "edge: the largest |end<sub>ABM</sub> − end<sub>ref</sub>| of the end cutting edge's engaged length (tip to "
+        "the corner, in the tip plane) over the instants where both give it, and the instants where only one finds "
+        "it in the stock.", tiny=f"{TINY_LENGTH:g}") + f"{_e(corner)}</p>"
 
 
 def _statistics_cells(row):
@@ -309,38 +394,46 @@ def _statistics_cells(row):
     ]
 
 
-_STATISTICS_HEAD = ("instants", "relative", "max |rel. error|", "mean |rel. error|", "max |Δl| (mm)",
-                    "max |ΔLEP| (mm)", "max |ΔUEP| (mm)", "mismatched", "max |Δ end| (mm)", "end mismatched")
+def _statistics_head():
+    """The heads of the statistics' columns (:func:`_statistics_cells`)."""
+    return (translate("instants"), translate("relative"), translate("max |rel. error|"), translate("mean |rel. error|"),
+            translate("max |Δl| (mm)"), translate("max |ΔLEP| (mm)"), translate("max |ΔUEP| (mm)"),
+            translate("mismatched"), translate("max |Δ end| (mm)"), translate("end mismatched"))
 
 
 def _surface_table(validation):
     """Errors per kind of UEP surface, and over the whole pass."""
-    rows = [[row["surface"].replace("_", " ")] + _statistics_cells(row)
+    rows = [[_e(translate(row["surface"].replace("_", " ")))] + _statistics_cells(row)
             for row in surface_summary(validation.engagement, validation.comparison)]
-    rows.append(["<b>whole pass</b>"] + _statistics_cells(overall(validation.comparison)))
-    return _table(("UEP on",) + _STATISTICS_HEAD, rows, escape_first=False, css="wide")
+    rows.append([f"<b>{_e(translate('whole pass'))}</b>"] + _statistics_cells(overall(validation.comparison)))
+    return _table((translate("UEP on"),) + _statistics_head(), rows, escape_first=False, css="wide")
 
 
 def _segment_table(validation, cls):
     """Errors per engagement segment at the CL points shown."""
     rows = [
         [str(row["cl"]), row["segment"], _phi_span(row["phi_start"], row["phi_end"]),
-         row["surface"].replace("_", " "), str(row["section"]), str(row["wall"])] + _statistics_cells(row)
+         translate(row["surface"].replace("_", " ")), str(row["section"]), str(row["wall"])] + _statistics_cells(row)
         for row in segment_summary(validation.engagement, validation.comparison, cls)
     ]
-    head = ("CL", "segment", "φ (deg)", "UEP on", "section", "wall") + _STATISTICS_HEAD
-    return _table(head, rows, css="wide") + "<p class='note'>Every CL point: <code>segments.csv</code>.</p>"
+    head = ("CL", translate("segment"), translate("φ (deg)"), translate("UEP on"), translate("section"),
+            translate("wall")) + _statistics_head()
+    return _table(head, rows, css="wide") + "<p class='note'>" + translate(
+        "Every CL point: <code>segments.csv</code>.") + "</p>"
 
 
 def _depth_text(validation, model):
     """The depth of cut of both methods beside the paper's ranges."""
     comparison = validation.comparison
-    ours = (f"ABM {np.nanmin(comparison.depth_abm):.2f}–{np.nanmax(comparison.depth_abm):.2f} mm, boolean "
-            f"{np.nanmin(comparison.depth_ref):.2f}–{np.nanmax(comparison.depth_ref):.2f} mm")
-    papers = "; ".join(f"model test {k} {low:g}–{high:g} mm" for k, (low, high) in PAPER_DEPTH.items())
-    which = f" This job is model test {model}." if model else ""
-    return (f"<p>Depth of cut over the pass (highest UEP z − lowest LEP z per CL point): {ours}. "
-            f"The paper's passes: {papers}.{_e(which)}</p>")
+    ours = translate("ABM {abm_low}–{abm_high} mm, boolean {low}–{high} mm",
+                     abm_low=f"{np.nanmin(comparison.depth_abm):.2f}",
+                     abm_high=f"{np.nanmax(comparison.depth_abm):.2f}",
+                     low=f"{np.nanmin(comparison.depth_ref):.2f}", high=f"{np.nanmax(comparison.depth_ref):.2f}")
+    papers = "; ".join(translate("model test {number} {low}–{high} mm", number=k, low=f"{low:g}", high=f"{high:g}")
+                       for k, (low, high) in PAPER_DEPTH.items())
+    which = " " + translate("This job is model test {number}.", number=model) if model else ""
+    return "<p>" + translate("Depth of cut over the pass (highest UEP z − lowest LEP z per CL point): {ours}. The "
+                             "paper's passes: {papers}.", ours=ours, papers=papers) + f"{_e(which)}</p>"
 
 
 def _timings(validation, job):
@@ -348,15 +441,16 @@ def _timings(validation, job):
     seconds = validation.seconds
     m, p = validation.engagement.shape
     rows = [
-        ("ABM engine, whole pass", f"{seconds['abm']:.4g} s", f"{1e6 * seconds['abm'] / (m * p):.3g} µs per instant"),
-        ("boolean reference (OpenCASCADE)", f"{seconds['boolean']:.4g} s",
-         f"{seconds['boolean'] / m:.3g} s per CL point"),
-        ("boolean / ABM", f"{validation.speed_ratio:.4g} ×", ""),
-        ("stock solid and staircase (read, build or recognise)", f"{job.stock_seconds:.3g} s", ""),
+        (translate("ABM engine, whole pass"), f"{seconds['abm']:.4g} s",
+         translate("{time} µs per instant", time=f"{1e6 * seconds['abm'] / (m * p):.3g}")),
+        (translate("boolean reference (OpenCASCADE)"), f"{seconds['boolean']:.4g} s",
+         translate("{time} s per CL point", time=f"{seconds['boolean'] / m:.3g}")),
+        (translate("boolean / ABM"), f"{validation.speed_ratio:.4g} ×", ""),
+        (translate("stock solid and staircase (read, build or recognise)"), f"{job.stock_seconds:.3g} s", ""),
     ]
-    rows += [(f"paper, {name}, 53 CC points (MATLAB, i7 2.7 GHz)", f"{value:g} s", "angle step not stated")
-             for name, value in PAPER_SECONDS.items()]
-    return _table(("", "time", ""), rows)
+    rows += [(translate("paper, {name}, 53 CC points (MATLAB, i7 2.7 GHz)", name=name), f"{value:g} s",
+              translate("angle step not stated")) for name, value in PAPER_SECONDS.items()]
+    return _table(("", translate("time"), ""), rows)
 
 
 def _force_section(forces, cls, png):
@@ -369,16 +463,18 @@ def _force_section(forces, cls, png):
     worst = int(np.argmax(peak))
     shown = sorted({cl for cl, _ in cls[:SHOWN_CL]})
     rows = [
-        ("peak resultant force over the pass", f"{peak[worst]:.4g} N at CL {worst}"),
-        ("mean resultant force, pass average", f"{forces.mean.mean():.4g} N"),
-        ("peak torque", f"{forces.torque.max():.4g} N·mm"),
-    ] + ([("peak spindle power", f"{forces.power.max():.4g} W")] if forces.power is not None else [])
+        (translate("peak resultant force over the pass"),
+         translate("{force} N at CL {cl}", force=f"{peak[worst]:.4g}", cl=worst)),
+        (translate("mean resultant force, pass average"), f"{forces.mean.mean():.4g} N"),
+        (translate("peak torque"), f"{forces.torque.max():.4g} N·mm"),
+    ] + ([(translate("peak spindle power"), f"{forces.power.max():.4g} W")] if forces.power is not None else [])
     data = base64.b64encode(png).decode("ascii")
     return "\n".join([
-        "<h2>Cutting forces</h2>",
-        "<p class='note'>Linear edge-force model (docs/FORCES.md) on the ABM engagement, global frame, summed "
-        f"over the flutes cutting at each angle of flute 1; over φ at CL {_e(', '.join(map(str, shown)))} "
-        "(dotted in the first plot). Also <a href='forces.png'><code>forces.png</code></a>.</p>",
+        _heading(translate("Cutting forces")),
+        "<p class='note'>" + translate(
+            "Linear edge-force model (docs/FORCES.md) on the ABM engagement, global frame, summed over the flutes "
+            "cutting at each angle of flute 1; over φ at CL {shown} (dotted in the first plot). Also "
+            "<a href='forces.png'><code>forces.png</code></a>.", shown=_e(", ".join(map(str, shown)))) + "</p>",
         _table(("", ""), rows, header=False),
         f"<img alt='cutting forces' src='data:image/png;base64,{data}'>",
     ])
@@ -387,16 +483,16 @@ def _force_section(forces, cls, png):
 def _files():
     """The CSV files beside the page."""
     rows = [
-        ("comparison.csv", "one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, "
-                           "error, error_kind, "
-                           "LEP and UEP of both, pieces of both, segment, uep_surface, end_abm, end_ref, "
-                           "end_difference (the end edge's engaged length; against the in-process "
-                           "stock also l_initial: ABM in the stock as given)"),
-        ("segments.csv", "error per CL point and engagement segment"),
-        ("surfaces.csv", "error per kind of UEP surface"),
-        ("depth.csv", "depth of cut per CL point, both methods, and checked (1 where the boolean checked it; "
-                      "against the in-process stock also changed: whether earlier moves changed the "
-                      "CL point, and swept: the swept pieces the boolean sectioned)"),
+        ("comparison.csv", translate(
+            "one row per instant the boolean checked: cl, phi_deg, l_abm, l_ref, difference, error, error_kind, LEP "
+            "and UEP of both, pieces of both, segment, uep_surface, end_abm, end_ref, end_difference (the end edge's "
+            "engaged length; against the in-process stock also l_initial: ABM in the stock as given)")),
+        ("segments.csv", translate("error per CL point and engagement segment")),
+        ("surfaces.csv", translate("error per kind of UEP surface")),
+        ("depth.csv", translate(
+            "depth of cut per CL point, both methods, and checked (1 where the boolean checked it; against the "
+            "in-process stock also changed: whether earlier moves changed the CL point, and swept: the swept pieces "
+            "the boolean sectioned)")),
     ]
     body = "".join(f"<tr><td><a href='{name}'><code>{name}</code></a></td><td>{_e(text)}</td></tr>"
                    for name, text in rows)
@@ -435,7 +531,7 @@ def _phi_span(start, end):
 
 def _cl_list(cls):
     """'22 (deepest), 3 (shallowest)'."""
-    return ", ".join(f"{cl} ({why})" for cl, why in cls)
+    return ", ".join(f"{cl} ({translate(why)})" for cl, why in cls)
 
 
 def _percent(value):

@@ -227,3 +227,38 @@ def test_in_process_section_says_what_the_exact_test_decided(tmp_path, validatio
         depth = read_csv(folder / "depth.csv")
         assert tuple(depth) == DEPTH_COLUMNS + INPROCESS_DEPTH_COLUMNS + CORNER_DEPTH_COLUMNS
         assert depth["gauged"] == [str(n) for n in gauged]
+
+
+def test_the_page_in_german_where_words_are_given(tmp_path, validation, monkeypatch):
+    """With the GUI's translation (here ABM_de.ts's German, context ABM) the headings and sentences are German,
+    the numbers, file names and the CSV files as they are; every text the page translates is in the translation
+    template and has German with the same placeholders."""
+    from abm_workbench.gui.i18n import REPORT, TEMPLATE, messages, read_translations
+    from abm_workbench.report import html
+
+    german = read_translations(os.path.join(os.path.dirname(TEMPLATE), "ABM_de.ts"))
+    texts = messages(REPORT)["ABM"]
+    assert len(texts) > 60 and all(("ABM", text) in german for text in texts)
+    assert all(sorted(re.findall(r"\{(\w+)\}", german[("ABM", text)])) == sorted(re.findall(r"\{(\w+)\}", text))
+               for text in texts)
+    monkeypatch.setattr(html, "_image", lambda figure: "<img alt=''>")
+    cls = [(2, "deepest"), (0, "chosen")]
+    english = html.report_page(validation, job(), cls)
+    page = html.report_page(validation, job(), cls, words=lambda text: german.get(("ABM", text), text),
+                            language="de")
+    assert html.report_page(validation, job(), cls) == english  # the language is the call's only
+    assert "<html lang='de'>" in page and "<html lang='en'>" in english
+    for heading in ("Auftrag", "Fehler nach UEP-Fläche, ganzer Durchgang", "Laufzeiten", "Dateien",
+                    "Schnittlänge entlang des Durchgangs <small>(Abb. 6(e)/(f))</small>"):
+        assert f"<h2>{heading}</h2>" in page
+    assert "Gezeigte CL-Punkte: 2 (tiefster), 0 (gewählt). Schattiert: die Eingriffssegmente (ABM)." in page
+    assert "Schaftfräser D 12 mm, 2 Schneiden, Schneidenlänge 25 mm" in page
+    assert "{path}" not in page and "Error" not in page.replace("error_kind", "")
+    headings = re.findall(r"<h2>(.*?)</h2>", english)
+    assert len(re.findall(r"<h2>(.*?)</h2>", page)) == len(headings)
+    assert not set(headings) & set(re.findall(r"<h2>(.*?)</h2>", page))
+    # the numbers of the English page are all on the German one, as they were
+    def numbers(text):
+        return set(re.findall(r"\d+(?:\.\d+)?(?:e[-+]\d+)?", re.sub(r"<[^>]*>|&#?\w+;", " ", text)))
+
+    assert numbers(english) <= numbers(page)

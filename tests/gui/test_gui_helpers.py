@@ -58,3 +58,25 @@ def test_validation_of_an_engagement_object_writes_the_report_or_nothing(engagem
     assert sorted(os.listdir(tmp_path)) == ["report"]  # no staging folder left
     with pytest.raises(InputError, match="CL points: choose at least one"):
         validate_engagement(engagement, [], str(tmp_path / "none"))
+
+
+def test_the_report_of_a_validation_from_the_gui_is_in_its_language(engagement, tmp_path, monkeypatch):
+    """The GUI's translation (here ABM_de.ts's German, context ABM, in place of Qt's) words the report's
+    headings and sentences and what the GUI says of the job; its numbers and the CSV files as they are."""
+    from abm_workbench.gui import validate
+    from abm_workbench.gui.i18n import FOLDER, read_translations
+
+    german = read_translations(os.path.join(FOLDER, "ABM_de.ts"))
+
+    def translate(text, context="ABM", **values):
+        return german.get((context, text), text).format(**values) if values else german.get((context, text), text)
+
+    monkeypatch.setattr(validate, "translate", translate)
+    monkeypatch.setattr(validate, "language", lambda: "de")
+    folder = tmp_path / "bericht"
+    text = open(validate_engagement(engagement, [22], str(folder)), encoding="utf-8").read()
+    assert "<html lang='de'>" in text and "<h2>Auftrag</h2>" in text and "<h2>Laufzeiten</h2>" in text
+    assert "CL-Punkte 22 des Durchgangs, hier mit 0..0 nummeriert." in text and "0 (CL 22 des Durchgangs)" in text
+    assert "<title>ABM gegen boolesche Operationen: " in text and "<h2>Zwischenrohteil</h2>" in text
+    assert "Zwischenrohteil: das Rohteil ohne das, was frühere Schnittbewegungen des Programms entfernt haben" in text
+    assert (folder / "comparison.csv").read_text().splitlines()[0].startswith("cl,phi_deg,")
