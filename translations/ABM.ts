@@ -2289,11 +2289,43 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>give the input file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the stock file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the toolpath file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the job file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the tool table file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the machine file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the work offsets file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give the results archive file itself</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{name}: cannot read: {value}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{name}: is {kind_mode}, not a file; give the {what} file itself</source>
+        <source>{name}: is {kind_mode}, not a file; {give}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -2291,12 +2291,44 @@ fläche (mm²)</translation>
         <translation>{text}: der Dateiname ist {count} Bytes lang; hier sind höchstens {longest} erlaubt</translation>
     </message>
     <message>
+        <source>give the input file itself</source>
+        <translation>geben Sie die Eingabedatei selbst an</translation>
+    </message>
+    <message>
+        <source>give the stock file itself</source>
+        <translation>geben Sie die Rohteildatei selbst an</translation>
+    </message>
+    <message>
+        <source>give the toolpath file itself</source>
+        <translation>geben Sie die Werkzeugbahndatei selbst an</translation>
+    </message>
+    <message>
+        <source>give the job file itself</source>
+        <translation>geben Sie die Auftragsdatei selbst an</translation>
+    </message>
+    <message>
+        <source>give the tool table file itself</source>
+        <translation>geben Sie die Werkzeugtabellendatei selbst an</translation>
+    </message>
+    <message>
+        <source>give the machine file itself</source>
+        <translation>geben Sie die Maschinendatei selbst an</translation>
+    </message>
+    <message>
+        <source>give the work offsets file itself</source>
+        <translation>geben Sie die Datei der Nullpunktverschiebungen selbst an</translation>
+    </message>
+    <message>
+        <source>give the results archive file itself</source>
+        <translation>geben Sie die Datei des Ergebnisarchivs selbst an</translation>
+    </message>
+    <message>
         <source>{name}: cannot read: {value}</source>
         <translation>{name}: kann nicht gelesen werden: {value}</translation>
     </message>
     <message>
-        <source>{name}: is {kind_mode}, not a file; give the {what} file itself</source>
-        <translation>{name}: ist {kind_mode}, keine Datei; geben Sie die {what}-Datei selbst an</translation>
+        <source>{name}: is {kind_mode}, not a file; {give}</source>
+        <translation>{name}: ist {kind_mode}, keine Datei; {give}</translation>
     </message>
     <message>
         <source>a folder</source>

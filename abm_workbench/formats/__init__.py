@@ -152,16 +152,27 @@ def _new_temporary(path, temporaries):
 TEXT_MEMORY_FACTOR = 16
 
 
+#: What check_input_file tells to give instead of a path that is no regular file, by what the file is: whole
+#: phrases, so that each is translated whole.
+_GIVE = {"input": note("give the input file itself"), "stock": note("give the stock file itself"),
+         "toolpath": note("give the toolpath file itself"), "job": note("give the job file itself"),
+         "tool table": note("give the tool table file itself"), "machine": note("give the machine file itself"),
+         "work offsets": note("give the work offsets file itself"),
+         "results archive": note("give the results archive file itself")}
+
+
 def check_input_file(path, what="input"):
     """InputError unless `path` names a regular file (not a folder, FIFO, socket or device such as
-    /dev/zero, whose reading would block or never end), naming the file. Links are followed."""
+    /dev/zero, whose reading would block or never end), naming the file and the `what` file to give
+    ("tool table"). Links are followed."""
     name = os.fspath(path)
     try:
         mode = os.stat(name).st_mode
     except OSError as error:
         raise InputError(f"{name}: cannot read: {error.strerror or error}") from None
     if not stat.S_ISREG(mode):
-        raise InputError(f"{name}: is {_kind(mode)}, not a file; give the {what} file itself")
+        give = _GIVE.get(what) or f"give the {what} file itself"
+        raise InputError(f"{name}: is {_kind(mode)}, not a file; {give}")
 
 
 def _kind(mode):

@@ -230,6 +230,10 @@ def test_phrases_returned_or_joined_into_a_message_are_german_too(tmp_path):
 
     assert shown(lambda: check_input_file(tmp_path)) == \
         f"{tmp_path}: ist ein Ordner, keine Datei; geben Sie die Eingabedatei selbst an"
+    assert _raised(lambda: check_input_file(tmp_path, "tool table")) == \
+        f"{tmp_path}: is a folder, not a file; give the tool table file itself"
+    assert shown(lambda: check_input_file(tmp_path, "tool table")) == \
+        f"{tmp_path}: ist ein Ordner, keine Datei; geben Sie die Werkzeugtabellendatei selbst an"
     assert shown(lambda: blocks_of_text("G1 X=5\n", "a.nc")) == \
         "a.nc:1: X=5: Zuweisungen (X=…) werden nicht gelesen: schreiben Sie einen Buchstaben und eine Zahl"
     assert shown(lambda: resolve([0, 0, 1, 0.5, 1, 1], [(0, 0, 0), (1, 0, 0), (2, 0, 0)], None, 0.01)) == \
