@@ -86,11 +86,11 @@ def count_text(count):
 def check_large(why, what, count, limit, remedy=""):
     """TooLarge unless `count` ≤ `limit` or large runs are allowed (:func:`allowing_large`):
     '<why>: <what> (more than the <limit> a run takes without confirmation): <remedy>, or give
-    --allow-large ...', `what` with '{}' where the count goes. why: the file or option that makes the
-    run large, e.g. 'toolpath.csv'."""
+    --allow-large ...', `what` with '{}' where the count goes, or the count already in its words (a
+    message of its own, errors.note). why: the file or option that makes the run large, e.g. 'toolpath.csv'."""
     if count <= limit or large_allowed():
         return
-    shown, most = what.format(count_text(count)), count_text(limit)
+    shown, most = what.format(count_text(count)) if "{}" in what else what, count_text(limit)
     raise TooLarge(f"{why}: {shown} (more than the {most} a run takes without confirmation): {remedy}, or give "
                    f"--allow-large to run it anyway" if remedy else
                    f"{why}: {shown} (more than the {most} a run takes without confirmation): give --allow-large to "

@@ -2437,6 +2437,26 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>give a coarser --tolerance or --step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at least {more} CL points (the program's arcs and curves so far: {so_far})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{more} CL points (the program's arcs and curves so far: {so_far})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interpolating it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{so_far} CL points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>the circle's axis is zero</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3505,6 +3525,10 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>the in-process stock would sweep the program's cutting moves into {value} pieces and bounding balls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>its sweep ({value} pieces, {count_text_balls} bounding balls)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3513,7 +3537,19 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>{count_text_m} CL points x {count_text_p} angles = {value} instants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>the {command} run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>would check {many} CL points x {angles} angles x {flutes} flutes = {total} instants</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>would check {many} CL points x {angles} angles = {total} instants</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3537,11 +3573,19 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source> (the edge step is the grid's unless --edge-step is given)</source>
+        <source>an edge step of {edge_step} mm samples the {length} mm flute at {along} points, {p} angles x {along_2} = {each} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>an edge step of {edge_step} mm samples the {flute_length} mm flute at {along} points{default}, {p} angles x {along_2} = {p_along} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
+        <source>an edge step of {edge_step} mm samples the {length} mm flute at {along} points (the edge step is the grid's unless --edge-step is given), {p} angles x {along_2} = {each} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Z-map would sample {samples} edge points ({m} CL points x {p} angles x {along} along the edge)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Z-map would sample {samples} edge points ({m} CL points x {p} angles x {along} along the edge) (the edge step is the grid's unless --edge-step is given)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -2439,6 +2439,26 @@ fläche (mm²)</translation>
         <translation>das Modul {__name__} hat kein Attribut {name}</translation>
     </message>
     <message>
+        <source>give a coarser --tolerance or --step</source>
+        <translation>geben Sie eine gröbere --tolerance oder --step an</translation>
+    </message>
+    <message>
+        <source>at least {more} CL points (the program's arcs and curves so far: {so_far})</source>
+        <translation>mindestens {more} CL-Punkte (die Kreisbögen und Kurven des Programms bisher: {so_far})</translation>
+    </message>
+    <message>
+        <source>{more} CL points (the program's arcs and curves so far: {so_far})</source>
+        <translation>{more} CL-Punkte (die Kreisbögen und Kurven des Programms bisher: {so_far})</translation>
+    </message>
+    <message>
+        <source>interpolating it</source>
+        <translation>beim Interpolieren</translation>
+    </message>
+    <message>
+        <source>{so_far} CL points</source>
+        <translation>{so_far} CL-Punkte</translation>
+    </message>
+    <message>
         <source>the circle's axis is zero</source>
         <translation>die Achse des Kreises ist null</translation>
     </message>
@@ -3507,6 +3527,10 @@ fläche (mm²)</translation>
         <translation>{toolpath}: das Zwischenrohteil</translation>
     </message>
     <message>
+        <source>the in-process stock would sweep the program's cutting moves into {value} pieces and bounding balls</source>
+        <translation>das Zwischenrohteil würde die Schnittbewegungen des Programms in {value} Stücke und Hüllkugeln überstreichen</translation>
+    </message>
+    <message>
         <source>its sweep ({value} pieces, {count_text_balls} bounding balls)</source>
         <translation>sein Überstreichen ({value} Stücke, {count_text_balls} Hüllkugeln)</translation>
     </message>
@@ -3515,8 +3539,20 @@ fläche (mm²)</translation>
         <translation>geben Sie einen größeren --phi-step oder einen kürzeren --phi-range an</translation>
     </message>
     <message>
+        <source>{count_text_m} CL points x {count_text_p} angles = {value} instants</source>
+        <translation>{count_text_m} CL-Punkte x {count_text_p} Winkel = {value} Zeitpunkte</translation>
+    </message>
+    <message>
         <source>the {command} run</source>
         <translation>der Lauf von {command}</translation>
+    </message>
+    <message>
+        <source>would check {many} CL points x {angles} angles x {flutes} flutes = {total} instants</source>
+        <translation>würde {many} CL-Punkte x {angles} Winkel x {flutes} Schneiden = {total} Zeitpunkte prüfen</translation>
+    </message>
+    <message>
+        <source>would check {many} CL points x {angles} angles = {total} instants</source>
+        <translation>würde {many} CL-Punkte x {angles} Winkel = {total} Zeitpunkte prüfen</translation>
     </message>
     <message>
         <source>{toolpath}: the boolean reference</source>
@@ -3539,12 +3575,20 @@ fläche (mm²)</translation>
         <translation>geben Sie ein größeres --grid an</translation>
     </message>
     <message>
-        <source> (the edge step is the grid's unless --edge-step is given)</source>
-        <translation> (die Schrittweite entlang der Schneide ist die des Rasters, außer --edge-step ist angegeben)</translation>
+        <source>an edge step of {edge_step} mm samples the {length} mm flute at {along} points, {p} angles x {along_2} = {each} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
+        <translation>ein Kantenschritt von {edge_step} mm tastet die {length} mm lange Schneide an {along} Punkten ab, {p} Winkel x {along_2} = {each} je CL-Punkt, mehr als die Z-Map aufnimmt ({MAX_SAMPLES}): geben Sie einen größeren Wert für {option} oder --phi-step an</translation>
     </message>
     <message>
-        <source>an edge step of {edge_step} mm samples the {flute_length} mm flute at {along} points{default}, {p} angles x {along_2} = {p_along} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
-        <translation>eine Kantenschrittweite von {edge_step} mm tastet die {flute_length} mm lange Schneide an {along} Punkten{default} ab, {p} Winkel x {along_2} = {p_along} pro CL-Punkt, mehr als die Z-Map aufnimmt ({MAX_SAMPLES}): geben Sie ein größeres {option} oder --phi-step an</translation>
+        <source>an edge step of {edge_step} mm samples the {length} mm flute at {along} points (the edge step is the grid's unless --edge-step is given), {p} angles x {along_2} = {each} per CL point, more than the Z-map takes ({MAX_SAMPLES}): give a larger {option} or --phi-step</source>
+        <translation>ein Kantenschritt von {edge_step} mm tastet die {length} mm lange Schneide an {along} Punkten ab (der Kantenschritt ist der des Rasters, sofern --edge-step nicht angegeben ist), {p} Winkel x {along_2} = {each} je CL-Punkt, mehr als die Z-Map aufnimmt ({MAX_SAMPLES}): geben Sie einen größeren Wert für {option} oder --phi-step an</translation>
+    </message>
+    <message>
+        <source>the Z-map would sample {samples} edge points ({m} CL points x {p} angles x {along} along the edge)</source>
+        <translation>die Z-Map würde {samples} Kantenpunkte abtasten ({m} CL-Punkte x {p} Winkel x {along} entlang der Schneide)</translation>
+    </message>
+    <message>
+        <source>the Z-map would sample {samples} edge points ({m} CL points x {p} angles x {along} along the edge) (the edge step is the grid's unless --edge-step is given)</source>
+        <translation>die Z-Map würde {samples} Kantenpunkte abtasten ({m} CL-Punkte x {p} Winkel x {along} entlang der Schneide) (der Kantenschritt ist der des Rasters, sofern --edge-step nicht angegeben ist)</translation>
     </message>
     <message>
         <source>give a larger {option} or --phi-step</source>

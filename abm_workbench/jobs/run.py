@@ -150,8 +150,9 @@ def check_sweep(moves, tolerance, toolpath):
     remedy = note("give a larger --sweep-tolerance or --stock-model initial (the stock as given)" if pieces > 2 * spans
                   else "give --stock-model initial (the stock as given)")
     why = note(f"{toolpath}: the in-process stock")
-    check_large(toolpath, "the in-process stock would sweep the program's cutting moves into {} pieces and bounding "
-                "balls", pieces + balls, LARGE_PIECES, remedy)
+    check_large(toolpath, note(f"the in-process stock would sweep the program's cutting moves into "
+                               f"{count_text(pieces + balls)} pieces and bounding balls"), pieces + balls, LARGE_PIECES,
+                remedy)
     check_memory(PIECE_BYTES * pieces + SPAN_BYTES * spans + BALL_BYTES * balls, why,
                  note(f"its sweep ({count_text(pieces)} pieces, {count_text(balls)} bounding balls)"), remedy)
 
@@ -179,8 +180,8 @@ def check_run_size(job, prepared, *, command="engage", workers=1, whole=False, o
     instants = m * p
     why = f"{job.toolpath}: {count_text(m)} CL points x {count_text(p)} angles"
     remedy = note("give a larger --phi-step or a shorter --phi-range")
-    check_large(job.toolpath, f"{count_text(m)} CL points x {count_text(p)} angles = {{}} instants", instants,
-                LARGE_INSTANTS, remedy)
+    check_large(job.toolpath, note(f"{count_text(m)} CL points x {count_text(p)} angles = {count_text(instants)} "
+                                   f"instants"), instants, LARGE_INSTANTS, remedy)
     chunk = max(p, CHUNK_INSTANTS)
     per_instant = (RESULT_BYTES + (PLOT_BYTES if command == "engage" else VALIDATION_BYTES if command == "validate"
                                    else FORCE_BYTES)) if whole else 0
@@ -194,9 +195,10 @@ def check_run_size(job, prepared, *, command="engage", workers=1, whole=False, o
     if boolean is not None or command == "validate":
         checked = m if boolean is None else len(boolean)
         flutes = prepared.tool.flutes if prepared.tool.helix else 1
-        check_large(note(f"{job.toolpath}: the boolean reference"), f"would check {count_text(checked)} CL points x "
-                    f"{count_text(p)} angles{f' x {flutes} flutes' if flutes > 1 else ''} = {{}} instants",
-                    checked * p * flutes, LARGE_BOOLEAN_INSTANTS,
+        many, angles, total = count_text(checked), count_text(p), count_text(checked * p * flutes)
+        what = note(f"would check {many} CL points x {angles} angles x {flutes} flutes = {total} instants"
+                    if flutes > 1 else f"would check {many} CL points x {angles} angles = {total} instants")
+        check_large(note(f"{job.toolpath}: the boolean reference"), what, checked * p * flutes, LARGE_BOOLEAN_INSTANTS,
                     note("check fewer CL points (--check, --check-every) or give a larger --phi-step"))
 
 
@@ -207,7 +209,7 @@ def check_zmap_size(staircase, tool, m, p, method):
     point's edge samples are more than engine.zmap.MAX_SAMPLES; TooLarge when the run's edge samples (CL
     points x angles x points along the edge) are above limits.LARGE_ZMAP_SAMPLES."""
     from ..engine.zmap import MAX_CELLS, MAX_SAMPLES
-    from ..limits import LARGE_ZMAP_SAMPLES, check_large, check_memory
+    from ..limits import LARGE_ZMAP_SAMPLES, check_large, check_memory, count_text
 
     grid, edge_step = zmap_cells(method)
     cells = (max(1.0, math.ceil((staircase.x_max - staircase.x_min) / grid - 1e-9))
@@ -218,15 +220,23 @@ def check_zmap_size(staircase, tool, m, p, method):
     check_memory(ZMAP_CELL_BYTES * cells, "--grid", note(f"the Z-map's {cells:,.0f} cells"),
                  note("give a larger --grid"))
     field, option = ("edge_step", "--edge-step") if method.edge_step is not None else ("grid", "--grid")
-    default = "" if method.edge_step is not None else " (the edge step is the grid's unless --edge-step is given)"
+    given = method.edge_step is not None
     along = max(1, math.ceil(tool.flute_length / edge_step - 1e-9)) + 1  # as engine.zmap.zmap_engage samples
     if p * along > MAX_SAMPLES:
-        raise ParameterError(field, f"an edge step of {edge_step:g} mm samples the {tool.flute_length:g} mm flute at "
-                                    f"{along:,} points{default}, {p:,} angles x {along:,} = {p * along:,} per CL "
-                                    f"point, more than the Z-map takes ({MAX_SAMPLES:,}): give a larger {option} "
-                                    "or --phi-step")
-    check_large(option, f"the Z-map would sample {{}} edge points ({m:,} CL points x {p:,} angles x {along:,} along "
-                f"the edge){default}", float(m) * p * along, LARGE_ZMAP_SAMPLES,
+        length, each = tool.flute_length, p * along
+        raise ParameterError(field, f"an edge step of {edge_step:g} mm samples the {length:g} mm flute at {along:,} "
+                                    f"points, {p:,} angles x {along:,} = {each:,} per CL point, more than the Z-map "
+                                    f"takes ({MAX_SAMPLES:,}): give a larger {option} or --phi-step" if given else
+                                    f"an edge step of {edge_step:g} mm samples the {length:g} mm flute at {along:,} "
+                                    f"points (the edge step is the grid's unless --edge-step is given), {p:,} angles "
+                                    f"x {along:,} = {each:,} per CL point, more than the Z-map takes "
+                                    f"({MAX_SAMPLES:,}): give a larger {option} or --phi-step")
+    samples = count_text(float(m) * p * along)
+    what = note(f"the Z-map would sample {samples} edge points ({m:,} CL points x {p:,} angles x {along:,} along the "
+                f"edge)" if given else
+                f"the Z-map would sample {samples} edge points ({m:,} CL points x {p:,} angles x {along:,} along the "
+                f"edge) (the edge step is the grid's unless --edge-step is given)")
+    check_large(option, what, float(m) * p * along, LARGE_ZMAP_SAMPLES,
                 note(f"give a larger {option} or --phi-step"))
 
 

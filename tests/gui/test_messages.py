@@ -245,6 +245,11 @@ def test_phrases_returned_or_joined_into_a_message_are_german_too(tmp_path):
     memory = shown(lambda: check_memory(1e30, "a.apt", "the engage run", "give a larger --grid"))
     assert memory.startswith("a.apt: der Lauf von engage würde etwa ") and \
         memory.endswith(": geben Sie ein größeres --grid an"), memory
+    from abm_workbench.jobs.run import check_run_size
+
+    run = SimpleNamespace(toolpath=range(10 ** 7), settings=SimpleNamespace(phi=SimpleNamespace(size=1000)))
+    assert shown(lambda: check_run_size(SimpleNamespace(toolpath="a.apt"), run)).startswith(
+        "a.apt: 10,000,000 CL-Punkte x 1,000 Winkel = 10,000,000,000 Zeitpunkte (mehr als die ")
     large = shown(lambda: check_large("a.apt", "{} pieces", 10, 5, "give --stock-model initial (the stock as given)"))
     assert large == ("a.apt: 10 pieces (mehr als die 5, die ein Lauf ohne Bestätigung verarbeitet): geben Sie "
                      "--stock-model initial (das Rohteil wie gegeben) an, oder geben Sie --allow-large an, um ihn "

@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 
+from ...errors import note
 from ...limits import LARGE_INTERPOLATION, check_large, check_memory, count_text
 
 #: Largest angle (rad) between two interpolated points, however coarse the tolerance.
@@ -66,10 +67,12 @@ def _check(count, words=""):
     """The program's interpolated CL points with `count` more; TooLarge as spend says."""
     spent = _SPENT.get()
     total = count + (spent[0] if spent is not None else 0)
-    remedy = "give a coarser --tolerance or --step"
-    check_large("interpolating it", f"{words}{count_text(count)} CL points (the program's arcs and curves so far: "
-                "{})", total, LARGE_INTERPOLATION, remedy)
-    check_memory(total * POINT_BYTES, "interpolating it", f"{count_text(total)} CL points", remedy)
+    remedy = note("give a coarser --tolerance or --step")
+    more, so_far = count_text(count), count_text(total)
+    what = note(f"at least {more} CL points (the program's arcs and curves so far: {so_far})" if words else
+                f"{more} CL points (the program's arcs and curves so far: {so_far})")
+    check_large(note("interpolating it"), what, total, LARGE_INTERPOLATION, remedy)
+    check_memory(total * POINT_BYTES, note("interpolating it"), note(f"{so_far} CL points"), remedy)
     return total
 
 
