@@ -3521,7 +3521,7 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{toolpath}: the in-process stock</source>
+        <source>the in-process stock</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3553,7 +3553,7 @@ cut (mm)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>{toolpath}: the boolean reference</source>
+        <source>the boolean reference</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

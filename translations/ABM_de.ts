@@ -3523,8 +3523,8 @@ fläche (mm²)</translation>
         <translation>geben Sie --stock-model initial (das Rohteil wie gegeben) an</translation>
     </message>
     <message>
-        <source>{toolpath}: the in-process stock</source>
-        <translation>{toolpath}: das Zwischenrohteil</translation>
+        <source>the in-process stock</source>
+        <translation>das Zwischenrohteil</translation>
     </message>
     <message>
         <source>the in-process stock would sweep the program's cutting moves into {value} pieces and bounding balls</source>
@@ -3555,8 +3555,8 @@ fläche (mm²)</translation>
         <translation>würde {many} CL-Punkte x {angles} Winkel = {total} Zeitpunkte prüfen</translation>
     </message>
     <message>
-        <source>{toolpath}: the boolean reference</source>
-        <translation>{toolpath}: die Boolesche Referenz</translation>
+        <source>the boolean reference</source>
+        <translation>die boolesche Referenz</translation>
     </message>
     <message>
         <source>check fewer CL points (--check, --check-every) or give a larger --phi-step</source>

@@ -149,7 +149,7 @@ def check_sweep(moves, tolerance, toolpath):
     pieces, spans, balls = sweep_size(moves, tolerance)
     remedy = note("give a larger --sweep-tolerance or --stock-model initial (the stock as given)" if pieces > 2 * spans
                   else "give --stock-model initial (the stock as given)")
-    why = note(f"{toolpath}: the in-process stock")
+    why = f"{toolpath}: {note('the in-process stock')}"  # the phrase a message of its own, after the file
     check_large(toolpath, note(f"the in-process stock would sweep the program's cutting moves into "
                                f"{count_text(pieces + balls)} pieces and bounding balls"), pieces + balls, LARGE_PIECES,
                 remedy)
@@ -198,8 +198,9 @@ def check_run_size(job, prepared, *, command="engage", workers=1, whole=False, o
         many, angles, total = count_text(checked), count_text(p), count_text(checked * p * flutes)
         what = note(f"would check {many} CL points x {angles} angles x {flutes} flutes = {total} instants"
                     if flutes > 1 else f"would check {many} CL points x {angles} angles = {total} instants")
-        check_large(note(f"{job.toolpath}: the boolean reference"), what, checked * p * flutes, LARGE_BOOLEAN_INSTANTS,
-                    note("check fewer CL points (--check, --check-every) or give a larger --phi-step"))
+        check_large(f"{job.toolpath}: {note('the boolean reference')}", what, checked * p * flutes,
+                    LARGE_BOOLEAN_INSTANTS, note("check fewer CL points (--check, --check-every) or give a larger "
+                                                 "--phi-step"))
 
 
 def check_zmap_size(staircase, tool, m, p, method):

@@ -250,6 +250,13 @@ def test_phrases_returned_or_joined_into_a_message_are_german_too(tmp_path):
     run = SimpleNamespace(toolpath=range(10 ** 7), settings=SimpleNamespace(phi=SimpleNamespace(size=1000)))
     assert shown(lambda: check_run_size(SimpleNamespace(toolpath="a.apt"), run)).startswith(
         "a.apt: 10,000,000 CL-Punkte x 1,000 Winkel = 10,000,000,000 Zeitpunkte (mehr als die ")
+    # the in-process stock's sweep, as check_sweep words it: the file, then what is large, each translated
+    assert messages.translated("a.apt: the in-process stock: its sweep (5 pieces, 7 bounding balls) would need about "
+                               "3 GiB of memory, and this process may use 1 GiB: give --stock-model initial (the "
+                               "stock as given)", german) == \
+        ("a.apt: das Zwischenrohteil: sein Überstreichen (5 Stücke, 7 Hüllkugeln) würde etwa 3 GiB Arbeitsspeicher "
+         "benötigen, und der für diesen Prozess nutzbare Arbeitsspeicher beträgt 1 GiB: geben Sie --stock-model "
+         "initial (das Rohteil wie gegeben) an")
     large = shown(lambda: check_large("a.apt", "{} pieces", 10, 5, "give --stock-model initial (the stock as given)"))
     assert large == ("a.apt: 10 pieces (mehr als die 5, die ein Lauf ohne Bestätigung verarbeitet): geben Sie "
                      "--stock-model initial (das Rohteil wie gegeben) an, oder geben Sie --allow-large an, um ihn "
