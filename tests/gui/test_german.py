@@ -19,6 +19,8 @@ FreeCADGui.setLocale("German")
 settle()
 FreeCADGui.activateWorkbench("ABMWorkbench")
 from abm_workbench.gui import commands, dock, task_panel
+from abm_workbench.gui.i18n import language
+verdict["language"] = language()  # the validation report's lang
 press(toolbar_button("ABM_OpenModelTest"))
 settle()
 shown = dock.find()
@@ -64,6 +66,7 @@ def test_german_labels(tmp_path, run_gui):
     bad = tmp_path / "kaputt.apt"
     bad.write_text("CUTTER/6\nGOTO/1,2\n")
     verdict = run_gui(BODY.format(events=EVENTS, dialogs=DIALOGS, bad=str(bad)))
+    assert verdict["language"] == "de"
     title, tab, about = verdict["dock"]
     assert title == "ABM-Eingriff" and tab == "Eingriff" and about.startswith("CL ") and "Schnitttiefe" in about
     assert "Durchmesser" in verdict["panel"] and "Wandmodell" in verdict["panel"]
